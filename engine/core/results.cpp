@@ -1,0 +1,95 @@
+#include "core/results.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace maris {
+
+Column& Table::add(std::string column_name, std::string unit, std::vector<double> values) {
+  columns.push_back(Column{std::move(column_name), std::move(unit), std::move(values)});
+  return columns.back();
+}
+
+const Column* Table::find(const std::string& column_name) const {
+  for (const auto& c : columns)
+    if (c.name == column_name) return &c;
+  return nullptr;
+}
+
+static void appendCsvField(std::string& out, const std::string& field) {
+  if (field.find_first_of(",\"\n") == std::string::npos) {
+    out += field;
+    return;
+  }
+  out += '"';
+  for (char c : field) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+}
+
+std::string Table::toCsv() const {
+  std::string out;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i) out += ',';
+    appendCsvField(out, columns[i].name);
+  }
+  out += '\n';
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i) out += ',';
+    appendCsvField(out, columns[i].unit.empty() ? "-" : columns[i].unit);
+  }
+  out += '\n';
+  char buf[32];
+  for (std::size_t r = 0; r < rows(); ++r) {
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      if (i) out += ',';
+      const double v = r < columns[i].values.size() ? columns[i].values[r] : std::nan("");
+      // 17 significant digits: the CSV round-trips the double exactly.
+      std::snprintf(buf, sizeof buf, "%.17g", v);
+      out += buf;
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+const Table* Results::findTable(const std::string& name) const {
+  for (const auto& t : tables)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+const Scalar* Results::findScalar(const std::string& name) const {
+  for (const auto& s : scalars)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+void Results::addScalar(std::string name, double value, std::string unit, std::string description) {
+  scalars.push_back(Scalar{std::move(name), value, std::move(unit), std::move(description)});
+}
+
+Json summaryJson(const Results& results) {
+  Json j;
+  j["results"] = Json::object();
+  for (const auto& s : results.scalars) {
+    Json e;
+    e["value"] = std::isfinite(s.value) ? Json(s.value) : Json(nullptr);
+    e["unit"] = s.unit;
+    e["description"] = s.description;
+    j["results"][s.name] = e;
+  }
+  const auto& st = results.stats;
+  j["solver"] = {{"method", st.method},
+                 {"steps", st.steps},
+                 {"rejected_steps", st.rejected_steps},
+                 {"rhs_evaluations", st.rhs_evaluations},
+                 {"wall_time", {{"value", st.wall_time_s}, {"unit", "s"}}},
+                 {"error_estimate", {{"value", st.error_estimate}, {"unit", st.error_unit}}}};
+  j["warnings"] = results.warnings;
+  return j;
+}
+
+}  // namespace maris

@@ -1,0 +1,113 @@
+// What a run returns: value types the CLI writes to disk and the GUI plots and draws.
+// Every number carries its unit. Tables are the data behind plots; PlotSpec says how to plot
+// them; View3D holds the geometry to draw per animation frame. Nothing here knows a scene.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/schema.hpp"
+
+namespace maris {
+
+// A key scalar result ("tip deflection", "max bending stress").
+struct Scalar {
+  std::string name;         // machine name, snake_case: "tip_deflection"
+  double value = 0.0;
+  std::string unit;         // "m", "Pa", "-"
+  std::string description;  // one line for people
+};
+
+struct Column {
+  std::string name;  // "time", "tip_x"
+  std::string unit;  // "s", "m", "-"
+  std::vector<double> values;
+};
+
+// A table of equally long columns: a time series, a field along arc length at chosen times,
+// a spectrum, a resistance curve. Written as CSV: a row of names, a row of units, then data.
+struct Table {
+  std::string name;   // file stem, snake_case: "tip_history"
+  std::string title;  // "Tip displacement history"
+  std::vector<Column> columns;
+
+  Column& add(std::string column_name, std::string unit, std::vector<double> values = {});
+  const Column* find(const std::string& column_name) const;
+  std::size_t rows() const { return columns.empty() ? 0 : columns.front().values.size(); }
+  std::string toCsv() const;
+};
+
+// How to plot a table: y columns against an x column.
+struct PlotSpec {
+  std::string name;                    // file stem for exports: "tip_displacement"
+  std::string title;                   // "Tip displacement"
+  std::string table;                   // Table::name
+  std::string x;                       // column name on the x axis
+  std::vector<std::string> y;          // column names on the y axis (same unit preferred)
+  bool log_x = false;
+  bool log_y = false;
+  std::string reference_table;         // optional: a table of reference points drawn as markers
+  std::vector<std::string> reference_y;  // its y columns (x column has the same name as `x`)
+};
+
+// One drawable object. Coordinates in metres, z up, in the scene's global frame.
+struct Shape3D {
+  enum class Kind { Tube, Polyline, Sphere, Hemisphere, Box, Surface, Points };
+  Kind kind = Kind::Tube;
+  std::string name;                        // "riser", "float 1", "free surface"
+  std::vector<Eigen::Vector3d> points;     // Tube/Polyline/Points: vertices; Sphere/Hemisphere/Box: [0] = centre;
+                                           // Surface: grid_u × grid_v vertices, u fastest
+  std::vector<double> scalars;             // optional, one per point, coloured with View3D's colour map
+  double radius = 0.0;                     // Tube, Sphere, Hemisphere [m]
+  Eigen::Vector3d direction{0, 0, -1};     // Hemisphere: from centre towards the pole; Box: unused
+  Eigen::Vector3d size{1, 1, 1};           // Box edge lengths [m]
+  int grid_u = 0, grid_v = 0;              // Surface grid size
+  Eigen::Vector3d color{0.8, 0.8, 0.8};    // RGB in [0, 1], used when scalars are empty
+  double opacity = 1.0;
+};
+
+struct Frame3D {
+  double time = 0.0;  // [s] (or mode phase for mode shapes)
+  std::vector<Shape3D> shapes;
+};
+
+struct View3D {
+  std::vector<Frame3D> frames;   // one per animation step; a static result has one frame
+  std::string scalar_name;       // what Shape3D::scalars mean: "bending stress"
+  std::string scalar_unit;       // "Pa"
+  std::optional<double> water_level_z;  // [m] still-water free surface, drawn as a translucent plane
+  std::optional<double> seabed_z;       // [m] sea bed plane
+  bool empty() const { return frames.empty(); }
+};
+
+// Solver bookkeeping reported with every run.
+struct SolverStats {
+  long steps = 0;
+  long rejected_steps = 0;
+  long rhs_evaluations = 0;
+  double wall_time_s = 0.0;
+  double error_estimate = 0.0;  // the solver's own global error estimate, in `error_unit` (0 if none)
+  std::string error_unit;
+  std::string method;           // "RK4 h=1e-4 s", "Dormand-Prince 5(4) rtol=1e-6"
+};
+
+struct Results {
+  std::vector<Scalar> scalars;
+  std::vector<Table> tables;
+  std::vector<PlotSpec> plots;
+  View3D view;
+  SolverStats stats;
+  std::vector<std::string> warnings;
+
+  const Table* findTable(const std::string& name) const;
+  const Scalar* findScalar(const std::string& name) const;
+  void addScalar(std::string name, double value, std::string unit, std::string description);
+};
+
+// summary.json content: scalars with units, solver statistics and warnings.
+Json summaryJson(const Results& results);
+
+}  // namespace maris

@@ -1,0 +1,150 @@
+#include "core/scenario.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace maris {
+
+Json scenarioToJson(const Scenario& s) {
+  Json j = Json::object();
+  j["format"] = kScenarioFormat;
+  j["scene"] = s.scene;
+  j["name"] = s.name;
+  j["description"] = s.description;
+  j["parameters"] = s.parameters;
+  return j;
+}
+
+std::string scenarioToText(const Scenario& s) { return scenarioToJson(s).dump(2) + "\n"; }
+
+Scenario scenarioFromJson(const Json& doc) {
+  std::vector<FieldError> errors;
+  if (!doc.is_object()) throw InputError("(document)", jsonSnippet(doc), "a scenario must be a JSON object");
+  const auto fmt = doc.find("format");
+  if (fmt == doc.end())
+    errors.push_back({"format", "", std::string("is missing; expected \"") + kScenarioFormat + "\""});
+  else if (!fmt->is_string() || fmt->get<std::string>() != kScenarioFormat)
+    errors.push_back({"format", jsonSnippet(*fmt), std::string("must be \"") + kScenarioFormat + "\""});
+  Scenario s;
+  auto text = [&](const char* key, std::string& out, bool required) {
+    auto it = doc.find(key);
+    if (it == doc.end()) {
+      if (required) errors.push_back({key, "", "is missing (text)"});
+      return;
+    }
+    if (!it->is_string())
+      errors.push_back({key, jsonSnippet(*it), "must be a text string"});
+    else
+      out = it->get<std::string>();
+  };
+  text("scene", s.scene, true);
+  text("name", s.name, false);
+  text("description", s.description, false);
+  auto p = doc.find("parameters");
+  if (p == doc.end())
+    errors.push_back({"parameters", "", "is missing (an object of parameters)"});
+  else if (!p->is_object())
+    errors.push_back({"parameters", jsonSnippet(*p), "must be a JSON object"});
+  else
+    s.parameters = *p;
+  static const std::vector<std::string> known = {"format", "scene", "name", "description", "parameters"};
+  for (auto it = doc.begin(); it != doc.end(); ++it) {
+    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
+    const auto guess = didYouMean(it.key(), known);
+    errors.push_back({it.key(), jsonSnippet(it.value()),
+                      "unknown field" + (guess.empty() ? std::string() : "; did you mean '" + guess + "'?")});
+  }
+  if (!errors.empty()) throw InputError(std::move(errors));
+  return s;
+}
+
+Scenario scenarioFromText(const std::string& text, const std::string& origin) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(origin, "", "is empty; expected a JSON scenario document");
+  Json doc;
+  try {
+    doc = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    // e.byte is the 1-based offset of the error; turn it into line and column.
+    std::size_t line = 1, col = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
+    }
+    throw InputError(origin, "", "is not valid JSON (line " + std::to_string(line) + ", column " +
+                                     std::to_string(col) + ")");
+  }
+  return scenarioFromJson(doc);
+}
+
+std::string readTextFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string(), "", std::string("cannot be opened: ") + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+Scenario loadScenarioFile(const std::filesystem::path& file) {
+  if (std::filesystem::is_directory(file)) throw InputError(file.string(), "", "is a folder, not a scenario file");
+  return scenarioFromText(readTextFile(file), file.string());
+}
+
+void writeFileAtomic(const std::filesystem::path& file, const std::string& content) {
+  const auto dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  std::string tmpl = (dir / ("." + file.filename().string() + ".XXXXXX")).string();
+  const int fd = ::mkstemp(tmpl.data());
+  if (fd < 0) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0) {
+      const int err = errno;
+      ::close(fd);
+      ::unlink(tmpl.c_str());
+      throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(err));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    const int err = errno;
+    ::unlink(tmpl.c_str());
+    throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(err));
+  }
+  ::chmod(tmpl.c_str(), 0644);
+  std::error_code ec;
+  std::filesystem::rename(tmpl, file, ec);
+  if (ec) {
+    ::unlink(tmpl.c_str());
+    throw std::runtime_error("cannot write " + file.string() + ": " + ec.message());
+  }
+}
+
+void saveScenarioFile(const Scenario& scenario, const std::filesystem::path& file) {
+  writeFileAtomic(file, scenarioToText(scenario));
+}
+
+void applyOverride(Scenario& scenario, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set " + assignment, "", "must look like path=value, e.g. geometry.length=120");
+  std::string path = assignment.substr(0, eq);
+  const std::string text = assignment.substr(eq + 1);
+  if (path.rfind("parameters.", 0) == 0) path = path.substr(11);
+  Json value;
+  try {
+    value = Json::parse(text);
+  } catch (const Json::parse_error&) {
+    value = text;
+  }
+  setAtPath(scenario.parameters, path, std::move(value));
+}
+
+}  // namespace maris

@@ -1,0 +1,38 @@
+#include "core/scene.hpp"
+
+#include <algorithm>
+
+
+namespace maris {
+
+std::vector<FieldError> validateParameters(const SceneDefinition& scene, const Json& parameters) {
+  auto errors = validateAgainstSchema(scene.schema, parameters, "parameters");
+  if (!errors.empty() || !scene.check) return errors;
+  for (auto e : scene.check(parameters)) {
+    e.path = "parameters." + e.path;
+    errors.push_back(std::move(e));
+  }
+  return errors;
+}
+
+Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunContext& context) {
+  if (scenario.scene != scene.name)
+    throw InputError("scene", "\"" + scenario.scene + "\"", "does not match the solver's scene \"" + scene.name + "\"");
+  auto errors = validateParameters(scene, scenario.parameters);
+  if (!errors.empty()) throw InputError(std::move(errors));
+  const double t0 = context.elapsedSeconds();
+  Results r = scene.run(scenario.parameters, context);
+  r.stats.wall_time_s = context.elapsedSeconds() - t0;
+  for (auto& w : context.warnings()) r.warnings.push_back(std::move(w));
+  return r;
+}
+
+Scenario defaultScenario(const SceneDefinition& scene) {
+  Scenario s;
+  s.scene = scene.name;
+  s.name = "New " + scene.title;
+  s.parameters = scene.schema.defaults();
+  return s;
+}
+
+}  // namespace maris
