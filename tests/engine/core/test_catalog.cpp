@@ -12,12 +12,15 @@ namespace {
 void expectSpecComplete(const ParamSpec& f, const std::string& scene) {
   SCOPED_TRACE(scene + ": " + f.path);
   EXPECT_FALSE(f.description.empty()) << "every field needs a one-line description";
-  if (f.kind == ParamKind::Real || f.kind == ParamKind::Integer || f.kind == ParamKind::RealList)
+  if (f.kind == ParamKind::Real || f.kind == ParamKind::Integer || f.kind == ParamKind::RealList) {
     EXPECT_FALSE(f.unit.empty()) << "numbers need a unit (\"-\" when dimensionless)";
-  if (f.kind == ParamKind::Real || f.kind == ParamKind::Integer)
+  }
+  if (f.kind == ParamKind::Real || f.kind == ParamKind::Integer) {
     EXPECT_TRUE(f.range.contains(f.default_value.get<double>())) << "default outside " << f.range.str();
-  if (f.kind == ParamKind::Choice)
+  }
+  if (f.kind == ParamKind::Choice) {
     EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), f.default_value.get<std::string>()), f.choices.end());
+  }
   for (const auto& c : f.columns) expectSpecComplete(c, scene);
 }
 
@@ -60,7 +63,9 @@ TEST(Catalog, EverySceneHasAnExampleAndTheDefaultExists) {
     for (const auto& b : builtinScenarios()) found = found || b.scenario.scene == s.name;
     EXPECT_TRUE(found) << s.name << " has no built-in scenario";
   }
-  if (!sceneCatalog().empty()) EXPECT_NO_THROW(defaultBuiltin());
+  if (!sceneCatalog().empty()) {
+    EXPECT_NO_THROW(defaultBuiltin());
+  }
 }
 
 TEST(Catalog, UnknownSceneErrorListsKnownScenes) {
