@@ -164,25 +164,26 @@ void addCalibrationResults(Results& results, const CalibrationResult& cal) {
   Table t;
   t.name = "calibration_residuals";
   t.title = "Calibration residuals (quantity 0 = amplitude [m], 1 = frequency [Hz], 2 = power [W])";
-  Column& u = t.add("U", "m/s");
-  Column& h = t.add("h_star_or_0_for_deep", "-");
-  Column& q = t.add("quantity", "-");
-  Column& ref = t.add("reference", "SI");
-  Column& before = t.add("model_before", "SI");
-  Column& after = t.add("model_after", "SI");
-  Column& sig = t.add("sigma", "SI");
-  Column& norm = t.add("normalised_residual_after", "-");
+  std::vector<double> u, h, q, ref, before, after, sig, norm;
   for (std::size_t i = 0; i < cal.residuals.size(); ++i) {
     const auto& r = cal.residuals[i];
-    u.values.push_back(r.speed);
-    h.values.push_back(std::isfinite(r.submergence_ratio) ? r.submergence_ratio : 0.0);
-    q.values.push_back(static_cast<double>(static_cast<int>(r.quantity)));
-    ref.values.push_back(r.reference);
-    before.values.push_back(cal.residuals_initial[i].model);
-    after.values.push_back(r.model);
-    sig.values.push_back(r.sigma);
-    norm.values.push_back(r.normalised());
+    u.push_back(r.speed);
+    h.push_back(std::isfinite(r.submergence_ratio) ? r.submergence_ratio : 0.0);
+    q.push_back(static_cast<double>(static_cast<int>(r.quantity)));
+    ref.push_back(r.reference);
+    before.push_back(cal.residuals_initial[i].model);
+    after.push_back(r.model);
+    sig.push_back(r.sigma);
+    norm.push_back(r.normalised());
   }
+  t.add("U", "m/s", u);
+  t.add("h_star_or_0_for_deep", "-", h);
+  t.add("quantity", "-", q);
+  t.add("reference", "SI", ref);
+  t.add("model_before", "SI", before);
+  t.add("model_after", "SI", after);
+  t.add("sigma", "SI", sig);
+  t.add("normalised_residual_after", "-", norm);
   results.tables.push_back(std::move(t));
 }
 

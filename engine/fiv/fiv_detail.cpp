@@ -103,22 +103,23 @@ void addDetailResults(Results& results, const FivModel& model, const DetailPoint
   Table t;
   t.name = "detail_history";
   t.title = "Time history at the detail point (after convergence)";
-  Column& ct = t.add("time", "s");
-  Column& cy = t.add("y", "m");
-  Column& cv = t.add("ydot", "m/s");
-  Column& cq = t.add("wake_q", "-");
-  Column& cf = t.add("lift", "N");
-  Column& cg = t.add("force_galloping", "N");
-  Column& cw = t.add("force_vortex", "N");
+  std::vector<double> ct, cy, cv, cq, cf, cg, cw;
   for (std::size_t i = 0; i < h.time.size(); i += stride) {
-    ct.values.push_back(h.time[i]);
-    cy.values.push_back(h.displacement[i]);
-    cv.values.push_back(h.velocity[i]);
-    cq.values.push_back(h.wake[i]);
-    cf.values.push_back(h.force_galloping[i] + h.force_vortex[i]);
-    cg.values.push_back(h.force_galloping[i]);
-    cw.values.push_back(h.force_vortex[i]);
+    ct.push_back(h.time[i]);
+    cy.push_back(h.displacement[i]);
+    cv.push_back(h.velocity[i]);
+    cq.push_back(h.wake[i]);
+    cf.push_back(h.force_galloping[i] + h.force_vortex[i]);
+    cg.push_back(h.force_galloping[i]);
+    cw.push_back(h.force_vortex[i]);
   }
+  t.add("time", "s", ct);
+  t.add("y", "m", cy);
+  t.add("ydot", "m/s", cv);
+  t.add("wake_q", "-", cq);
+  t.add("lift", "N", cf);
+  t.add("force_galloping", "N", cg);
+  t.add("force_vortex", "N", cw);
   results.tables.push_back(std::move(t));
   const PlotSpec py = makePlot("detail_displacement", "Displacement y(t) at the detail point", "detail_history", "time", {"y"});
   const PlotSpec pf = makePlot("detail_lift", "Fluid force components at the detail point", "detail_history", "time",

@@ -18,6 +18,7 @@ struct CycleRecord {
   double y_max = 0.0, y_min = 0.0;
   double energy_damper = 0.0;  // [J] ∫cẏ² over the cycle
   double energy_fluid = 0.0;   // [J] ∫Fẏ over the cycle
+  double crossing_speed = 0.0; // [m/s] ẏ at the up-crossing that closes the cycle
   double max_tan_alpha = 0.0;
 };
 
@@ -27,18 +28,30 @@ double hermite(double y0, double v0, double y1, double v1, double h, double tau)
   return (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + tau) * h * v0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * h * v1;
 }
 
-// Estimated remaining relative change of A from the last three cycle amplitudes, assuming geometric
-// convergence A_k = A_∞ + C ρ^k (ρ from two successive differences; capped for slow/oscillating drift).
-double remainingDrift(const std::vector<CycleRecord>& cycles, double floor) {
+// Estimated remaining relative change of a per-cycle quantity x_k (amplitude, crossing speed), assuming
+// geometric convergence x_k = x_∞ + C ρ^k with ρ from successive differences (capped at 0.98). The largest
+// of the last three differences is used, so that an oscillating approach that happens to pause for one
+// cycle is not taken for convergence.
+template <class Get>
+double remainingDrift(const std::vector<CycleRecord>& cycles, double floor, Get value) {
   const std::size_t n = cycles.size();
-  const double d1 = cycles[n - 1].amplitude - cycles[n - 2].amplitude;
-  const double d0 = cycles[n - 2].amplitude - cycles[n - 3].amplitude;
-  double factor = 1.0;
-  if (d0 != 0.0) {
-    const double rho = d1 / d0;
-    if (rho > 0.0) factor = std::min(rho, 0.98) / (1.0 - std::min(rho, 0.98));
+  double worst = 0.0;
+  for (std::size_t k = n - 3; k < n; ++k) {
+    const double d1 = value(cycles[k]) - value(cycles[k - 1]);
+    const double d0 = value(cycles[k - 1]) - value(cycles[k - 2]);
+    double factor = 1.0;
+    if (d0 != 0.0 && d1 / d0 > 0.0) factor = std::max(1.0, std::min(d1 / d0, 0.98) / (1.0 - std::min(d1 / d0, 0.98)));
+    worst = std::max(worst, std::abs(d1) * factor);
   }
-  return std::abs(d1) * std::max(factor, 1.0) / std::max(cycles[n - 1].amplitude, floor);
+  return worst / std::max(std::abs(value(cycles[n - 1])), floor);
+}
+
+// Relative amplitude change over the last cycle implied by the energy balance: the fluid work minus the
+// damper work is the change of mechanical energy E = ½ m_t v² at the up-crossing, and δA/A ≈ δE/(2E).
+// On an exact cycle it is zero (paper eqs 8 = 13); what remains is the integration error of the works.
+double energyImbalance(const CycleRecord& c, double total_mass) {
+  const double energy = 0.5 * total_mass * c.crossing_speed * c.crossing_speed;
+  return energy > 0.0 ? std::abs(c.energy_fluid - c.energy_damper) / (2.0 * energy) : 0.0;
 }
 
 // Largest RK4 step keeping h·rate <= 1.5 for every |ẏ/U| up to tan_alpha (rate sampled on 17 points).
@@ -101,10 +114,21 @@ MarchOutcome march(const FivRhs& rhs, State& s, const LimitCycleSettings& set, d
     }
     // Zero up-crossing closes a cycle.
     if (!(prev[0] < 0.0 && s[0] >= 0.0)) continue;
-    const double tau = prev[0] / (prev[0] - s[0]);
+    // Crossing time, speed and works from cubic Hermite interpolants (O(h⁴), so that the per-cycle
+    // values used by the convergence test are smooth in the cycle count, not noisy at O(h²)).
+    State d_prev, d_cur;
+    rhs.derivative(prev, d_prev);
+    rhs.derivative(s, d_cur);
+    auto at = [&](int i, double x) { return hermite(prev[i], d_prev[i], s[i], d_cur[i], h, x); };
+    double tau = prev[0] / (prev[0] - s[0]);
+    for (int newton = 0; newton < 3; ++newton) {
+      const double slope = (at(0, std::min(1.0, tau + 1e-6)) - at(0, std::max(0.0, tau - 1e-6))) /
+                           (std::min(1.0, tau + 1e-6) - std::max(0.0, tau - 1e-6));
+      if (slope > 0.0) tau = std::clamp(tau - at(0, tau) / slope, 0.0, 1.0);
+    }
     const double t_up = t - h + tau * h;
-    const double e_damper = prev[4] + tau * (s[4] - prev[4]);
-    const double e_fluid = prev[5] + tau * (s[5] - prev[5]);
+    const double e_damper = at(4, tau);
+    const double e_fluid = at(5, tau);
     if (last_up >= 0.0 && cur_max > -1e300 && cur_min < 1e300) {
       CycleRecord c;
       c.period = t_up - last_up;
@@ -114,6 +138,7 @@ MarchOutcome march(const FivRhs& rhs, State& s, const LimitCycleSettings& set, d
       c.energy_damper = e_damper - e_damper_up;
       c.energy_fluid = e_fluid - e_fluid_up;
       c.max_tan_alpha = cur_tan;
+      c.crossing_speed = at(1, tau);
       out.cycles.push_back(c);
     }
     last_up = t_up;
@@ -132,7 +157,10 @@ MarchOutcome march(const FivRhs& rhs, State& s, const LimitCycleSettings& set, d
       return out;
     }
     if (static_cast<int>(n) < set.min_cycles) continue;
-    out.residual = remainingDrift(out.cycles, floor);
+    const CycleRecord& last = out.cycles[n - 1];
+    out.residual = std::max({remainingDrift(out.cycles, floor, [](const CycleRecord& c) { return c.amplitude; }),
+                             remainingDrift(out.cycles, 1e-300, [](const CycleRecord& c) { return c.crossing_speed; }),
+                             energyImbalance(last, model.total_mass)});
     const double period_change = std::abs(out.cycles[n - 1].period / out.cycles[n - 2].period - 1.0);
     if (out.residual < set.tolerance && period_change < set.tolerance) {
       out.converged = true;

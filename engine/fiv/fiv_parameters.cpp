@@ -80,6 +80,8 @@ void bindSurfaceSweepNumerics(SchemaBinder<P>& b) {
   b.real("sweep.speed_max", &P::speed_max, "m/s", Range::positive(100), "Highest current speed");
   b.integer("sweep.speed_count", &P::speed_count, "-", Range::closed(1, 2000), "Number of speeds");
   b.boolean("sweep.sweep_down", &P::sweep_down, "Also sweep down from the top speed (hysteresis)");
+  b.boolean("sweep.up_from_rest", &P::up_from_rest,
+            "Start every up-sweep speed from the seed, like independent CFD runs, instead of continuing");
   b.real("sweep.onset_amplitude_ratio", &P::onset_amplitude_ratio, "-", Range::positive(100),
          "A/D from which the up-sweep response counts as galloping (onset detection)");
   b.integer("numerics.steps_per_period", &P::steps_per_period, "-", Range::closed(8, 2000),

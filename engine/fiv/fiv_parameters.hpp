@@ -68,6 +68,7 @@ struct FivParameters {
   double speed_max = 2.5;                 // [m/s]
   int speed_count = 50;                   // [-]
   bool sweep_down = true;                 // also sweep back down (continuation shows hysteresis)
+  bool up_from_rest = false;              // every up-sweep speed starts from the seed (independent runs)
   double onset_amplitude_ratio = 1.0;     // [-] A/D above which the up-sweep counts as galloping
   // numerics
   int steps_per_period = 40;              // [-] RK4 steps per shortest period (structure or shedding)

@@ -15,6 +15,7 @@ SweepSettings sweepSettingsFrom(const FivParameters& p) {
   s.submergence_ratios = p.submergence_ratios;
   if (p.include_deep) s.submergence_ratios.push_back(kDeep);
   s.sweep_down = p.sweep_down;
+  s.up_from_rest = p.up_from_rest;
   s.seed_amplitude_ratio = p.initial_amplitude_ratio;
   s.onset_amplitude_ratio = p.onset_amplitude_ratio;
   s.cycle.steps_per_period = p.steps_per_period;
@@ -80,6 +81,7 @@ SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunCo
     // Up-sweep from the seed.
     State state = seedState(model, settings.seed_amplitude_ratio);
     for (double speed : settings.speeds) {
+      if (settings.up_from_rest) state = seedState(model, settings.seed_amplitude_ratio);
       applySeedFloor(model, settings.seed_amplitude_ratio, state);
       branch.up.push_back(solvePoint(model, speed, h_star, settings, state, context));
       account(branch.up.back());

@@ -15,6 +15,7 @@ struct SweepSettings {
   std::vector<double> speeds;              // [m/s] ascending
   std::vector<double> submergence_ratios;  // [-] h*; kDeep for no free surface
   bool sweep_down = true;
+  bool up_from_rest = false;               // up-sweep: every speed from the seed (no continuation)
   double seed_amplitude_ratio = 0.05;      // [-] A/D of the seed and floor on the way up
   double onset_amplitude_ratio = 1.0;      // [-] A/D that counts as galloping for onset detection
   LimitCycleSettings cycle;
