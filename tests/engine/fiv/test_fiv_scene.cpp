@@ -48,7 +48,14 @@ TEST(FivScene, DefaultSweepReportsEveryCurveFiniteWithTheEnergyBalanceOnConverge
     EXPECT_TRUE(found) << plot;
   }
   EXPECT_NE(r.findTable("paper_amplitude"), nullptr);
-  EXPECT_FALSE(r.view.empty());
+  // The animated view: one frame per requested step, the cylinder box first, the surface at z = 0
+  // (the detail point is at h* = 5.56, so the box centre sits 0.5 m below it, ± the amplitude).
+  ASSERT_EQ(r.view.frames.size(), 48u);
+  const Shape3D& box = r.view.frames.front().shapes.front();
+  EXPECT_EQ(box.kind, Shape3D::Kind::Box);
+  EXPECT_NEAR(box.points[0].z(), -5.56 * 0.09, r.findScalar("detail_amplitude")->value + 1e-9);
+  ASSERT_TRUE(r.view.water_level_z.has_value());
+  EXPECT_EQ(*r.view.water_level_z, 0.0);
   int checked = 0;
   for (const char* label : {"h1.11", "h5.56", "hinf"}) {
     const auto& p = sweep->find(std::string("P_up_") + label)->values;
