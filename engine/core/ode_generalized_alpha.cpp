@@ -32,7 +32,7 @@ class NewtonSolver {
  public:
   NewtonSolver(const SecondOrderSystem& sys, const OdeOptions& o, int max_iterations, OdeStats& stats)
       : sys_(sys), options_(o), max_iterations_(max_iterations), stats_(stats), n_(sys.size),
-        q_(n_), v_(n_), r_(n_), delta_(n_), r_pert_(n_), acc_pert_(n_), q_pert_(n_), v_pert_(n_), matrix_(n_, n_) {}
+        q_(n_), v_(n_), r_(n_), delta_(n_), solution_(n_), r_pert_(n_), acc_pert_(n_), q_pert_(n_), v_pert_(n_), matrix_(n_, n_) {}
 
   const Eigen::VectorXd& q() const { return q_; }
   const Eigen::VectorXd& v() const { return v_; }
@@ -115,7 +115,8 @@ class NewtonSolver {
         return false;
       }
     }
-    delta_ = lu_.solve(delta_);
+    solution_.noalias() = lu_.solve(delta_);
+    delta_.swap(solution_);
     return delta_.allFinite();
   }
 
@@ -144,7 +145,7 @@ class NewtonSolver {
   int max_iterations_;
   OdeStats& stats_;
   Eigen::Index n_;
-  Eigen::VectorXd q_, v_, r_, delta_, r_pert_, acc_pert_, q_pert_, v_pert_;
+  Eigen::VectorXd q_, v_, r_, delta_, solution_, r_pert_, acc_pert_, q_pert_, v_pert_;
   Eigen::MatrixXd matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   bool have_matrix_ = false, matrix_fresh_ = false, slow_ = false;
