@@ -67,11 +67,15 @@ const std::vector<double> kHeaveLambda = {0.0,    0.1036, 0.1816, 0.2793, 0.3254
                                           0.2899, 0.2691, 0.2484, 0.2096, 0.1756, 0.1469, 0.1229, 0.1031, 0.0674,
                                           0.0452, 0.0219, 0.0116, 0.0066, 0.0040, 0.0026, 0.0017, 0.0012};
 
-// Hulme (1982) Table 2, surge added mass (the node printed "3.4" is taken as 3.5, which matches the
-// WAMIT run at ka = 3.22 better). The ka = 0 row is the exact rigid-lid limit.
+// Hulme (1982) Table 2, surge added mass as transcribed in the source file, with two corrections:
+//  * the node printed "3.4" is taken as 3.5, which matches the WAMIT run at ka = 3.22 better;
+//  * ka = 0.7 reads 0.6682 there; 0.6582 is used (transposed digits): with 0.6682 the Ogilvie relation
+//    returns A∞/(ρV) = 0.2805 at ka = 0.69 against 0.2716 ± 0.0005 at every other ka in [0.03, 5], and the
+//    WAMIT run gives μ11 = 0.6597 at ka = 0.665 (0.6650 interpolated from 0.6682, 0.6584 from 0.6582).
+// The ka = 0 row is the exact rigid-lid limit.
 const std::vector<double> kSurgeMuKa = {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2, 1.4, 1.6,
                                         1.8, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0};
-const std::vector<double> kSurgeMu = {0.5,    0.5223, 0.5515, 0.5848, 0.6175, 0.6439, 0.6586, 0.6682, 0.6421,
+const std::vector<double> kSurgeMu = {0.5,    0.5223, 0.5515, 0.5848, 0.6175, 0.6439, 0.6586, 0.6582, 0.6421,
                                       0.6127, 0.5740, 0.4860, 0.4038, 0.3371, 0.2866, 0.2493, 0.1961, 0.1720,
                                       0.1634, 0.1620, 0.1641, 0.1679, 0.1772, 0.1865, 0.1949, 0.2022, 0.2085};
 // Surge damping: Hulme Table 2 for ka ≤ 1.4, then WAMIT sphere.out (a = 5 m, B̄11/V at T = 3.5, 3, 2.5,
@@ -141,6 +145,13 @@ HemisphereHydro::HemisphereHydro(double radius, double density, double gravity)
 double HemisphereHydro::displacedVolume() const { return 2.0 / 3.0 * std::numbers::pi * std::pow(radius_, 3); }
 
 FloatHydro HemisphereHydro::at(double omega) const {
+  if (omega <= 0.0) {  // zero-frequency limit: rigid-lid added masses, no damping, no excitation
+    const double rho_v = density_ * displacedVolume();
+    FloatHydro h;
+    h.surge.added_mass = rho_v * HulmeLimits::surge_added_mass_zero;
+    h.heave.added_mass = rho_v * HulmeLimits::heave_added_mass_zero;
+    return h;
+  }
   const double ka = omega * omega * radius_ / gravity_;
   const double rho_v = density_ * displacedVolume();
   const double g3_w3 = std::pow(gravity_ / omega, 3);

@@ -81,6 +81,24 @@ FloatExcitation excitationAt(const WecModel& model, const FloatModel& f, double 
   return {s * h.surge.excitation * location, h.heave.excitation * location};
 }
 
+double finiteDepthWaveNumber(double omega, double gravity, double depth) {
+  const double w2 = omega * omega / gravity;
+  double k = std::max(w2, omega / std::sqrt(gravity * depth));
+  for (int i = 0; i < 50; ++i) {
+    const double th = std::tanh(k * depth);
+    const double f = k * th - w2, df = th + k * depth * (1.0 - th * th);
+    const double step = f / df;
+    k -= step;
+    if (std::abs(step) < 1e-15 * k) break;
+  }
+  return k;
+}
+
+double groupVelocity(double omega, double gravity, double depth) {
+  const double k = finiteDepthWaveNumber(omega, gravity, depth), kh2 = 2.0 * k * depth;
+  return 0.5 * omega / k * (1.0 + (kh2 > 700.0 ? 0.0 : kh2 / std::sinh(kh2)));
+}
+
 // ---------------------------------------------------------------------------------------------
 double WaveField::ramp(double t) const {
   if (t >= ramp_duration) return 1.0;

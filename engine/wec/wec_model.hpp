@@ -64,6 +64,10 @@ void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt);
 
 // Deep-water wave number k = ω²/g [1/m].
 inline double waveNumber(double omega, double gravity) { return omega * omega / gravity; }
+// Finite-depth wave number: root of ω² = g k tanh(k h) (Newton from the deep-water value) [1/m],
+// and group velocity C_g = ½ (ω/k)(1 + 2kh / sinh 2kh) [m/s]. Used for the depth flag and checks.
+double finiteDepthWaveNumber(double omega, double gravity, double depth);
+double groupVelocity(double omega, double gravity, double depth);
 
 // Excitation per unit amplitude on float `f` at its equilibrium position for waves along `direction`:
 // the surge force of waves travelling along −x is the mirror image (sign flip), and the location phase

@@ -24,7 +24,7 @@ RadiationKernel computeKernel(const std::function<double(double)>& damping, doub
   const auto m = static_cast<std::size_t>(std::ceil(omega_max / d_omega));
   const double h = omega_max / static_cast<double>(m);
   std::vector<double> b(m + 1, 0.0);
-  for (std::size_t i = 1; i <= m; ++i) b[i] = damping(h * static_cast<double>(i));
+  for (std::size_t i = 0; i <= m; ++i) b[i] = damping(h * static_cast<double>(i));
   RadiationKernel k;
   k.dt = dt;
   const auto n = static_cast<std::size_t>(std::llround(duration / dt)) + 1;
