@@ -63,6 +63,33 @@ double naturalFrequency(const WecModel& model, const FloatModel& f) {
   return 0.0;
 }
 
+Complex freeDecayEigenvalue(const WecModel& model, const FloatModel& f) {
+  const double rx = f.arm_length * std::cos(f.theta0), rz = f.arm_length * std::sin(f.theta0);
+  const double j_inf = f.inertia_hinge + f.heave.a_inf * rx * rx + f.surge.a_inf * rz * rz;
+  const double k_theta = model.density * model.gravity * f.waterplane_area * rx * rx + f.pto_stiffness;
+  auto transfer = [](const ModalKernel& fit, Complex s) {
+    Complex h(0.0, 0.0);
+    for (const auto& m : fit.modes) {
+      h += m.residue / (s - m.pole);
+      if (m.paired) h += std::conj(m.residue) / (s - std::conj(m.pole));
+    }
+    return h;
+  };
+  auto z = [&](Complex s) {
+    return s * s * j_inf + s * (f.pto_damping + rx * rx * transfer(f.heave.fit, s) + rz * rz * transfer(f.surge.fit, s)) +
+           k_theta;
+  };
+  const double wn = naturalFrequency(model, f);
+  Complex s(0.0, wn > 0.0 ? wn : 1.0);
+  for (int i = 0; i < 100; ++i) {
+    const Complex h = 1e-7 * (1.0 + std::abs(s));
+    const Complex step = z(s) / ((z(s + h) - z(s - h)) / (2.0 * h));
+    s -= step;
+    if (std::abs(step) < 1e-13 * std::abs(s)) return s;
+  }
+  return {0.0, 0.0};
+}
+
 double irregularMeanPower(const WecModel& model, const FloatModel& f, const std::string& spectrum, double hs,
                           double tp, double gamma) {
   const double wp = 2.0 * std::numbers::pi / tp;

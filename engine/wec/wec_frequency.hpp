@@ -40,6 +40,12 @@ FrequencyResponse solveFrequency(const WecModel& model, const FloatModel& f, dou
 // Returns 0 if there is no root (no restoring).
 double naturalFrequency(const WecModel& model, const FloatModel& f);
 
+// Complex free-decay eigenvalue s = −σ + iω_d of the linearised float: root of
+//   Z(s) = s² J∞ + s (B_PTO + r_x0² K̂_z(s) + r_z0² K̂_x(s)) + K_θ,  J∞ = I + A∞z r_x0² + A∞x r_z0²,
+// with K̂(s) continued off the imaginary axis through the modal fit of K(t) (Newton from s = iω_n).
+// On s = iω this is exactly the impedance above. Requires buildRadiation. Returns 0 if Newton fails.
+Complex freeDecayEigenvalue(const WecModel& model, const FloatModel& f);
+
 // Mean PTO power in an irregular sea [W]: ∫ B_PTO ω² |Θ(ω)|² S(ω) dω on [0.2, 6]·ω_p (2000 points).
 double irregularMeanPower(const WecModel& model, const FloatModel& f, const std::string& spectrum, double hs,
                           double tp, double gamma);

@@ -91,21 +91,30 @@ bool ModalKernel::stable() const {
 
 namespace {
 
-// Poles of an order-n ERA realization from K samples y_j = K(j·Δ).
-std::vector<std::complex<double>> eraPoles(const std::vector<double>& y, double delta, int order) {
-  const int rows = static_cast<int>((y.size() - 1) / 2);
-  Eigen::MatrixXd h0(rows, rows), h1(rows, rows);
-  for (int i = 0; i < rows; ++i)
-    for (int j = 0; j < rows; ++j) {
-      h0(i, j) = y[static_cast<std::size_t>(i + j)];
-      h1(i, j) = y[static_cast<std::size_t>(i + j + 1)];
-    }
-  Eigen::BDCSVD<Eigen::MatrixXd> svd(h0, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const int n = std::min(order, rows);
-  const Eigen::VectorXd s = svd.singularValues().head(n);
+// Hankel matrices of the K samples y_j = K(j·Δ) and the SVD of the first, computed once per fit.
+struct Hankel {
+  Eigen::MatrixXd h1;
+  Eigen::BDCSVD<Eigen::MatrixXd> svd;
+  explicit Hankel(const std::vector<double>& y) {
+    const int rows = static_cast<int>((y.size() - 1) / 2);
+    Eigen::MatrixXd h0(rows, rows);
+    h1.resize(rows, rows);
+    for (int i = 0; i < rows; ++i)
+      for (int j = 0; j < rows; ++j) {
+        h0(i, j) = y[static_cast<std::size_t>(i + j)];
+        h1(i, j) = y[static_cast<std::size_t>(i + j + 1)];
+      }
+    svd.compute(h0, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  }
+};
+
+// Poles of the order-n ERA realization A = Σ^{-1/2} Uᵀ H1 V Σ^{-1/2}, mapped to continuous time.
+std::vector<std::complex<double>> eraPoles(const Hankel& hankel, double delta, int order) {
+  const int n = std::min<int>(order, static_cast<int>(hankel.h1.rows()));
+  const Eigen::VectorXd s = hankel.svd.singularValues().head(n);
   const Eigen::VectorXd s_inv_sqrt = s.cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
-  const Eigen::MatrixXd a = s_inv_sqrt.asDiagonal() * svd.matrixU().leftCols(n).transpose() * h1 *
-                            svd.matrixV().leftCols(n) * s_inv_sqrt.asDiagonal();
+  const Eigen::MatrixXd a = s_inv_sqrt.asDiagonal() * hankel.svd.matrixU().leftCols(n).transpose() * hankel.h1 *
+                            hankel.svd.matrixV().leftCols(n) * s_inv_sqrt.asDiagonal();
   Eigen::EigenSolver<Eigen::MatrixXd> eig(a, false);
   std::vector<std::complex<double>> poles;
   for (int i = 0; i < n; ++i) {
@@ -168,10 +177,11 @@ ModalKernel fitModalKernel(const RadiationKernel& kernel, const KernelFitOptions
   const double delta = kernel.duration() / options.samples;
   std::vector<double> y(static_cast<std::size_t>(options.samples) + 1);
   for (std::size_t j = 0; j < y.size(); ++j) y[j] = kernel.at(delta * static_cast<double>(j));
+  const Hankel hankel(y);
   ModalKernel best;
   best.r_squared = -1e300;
   for (int order = 2; order <= options.max_order; order += 2) {
-    const auto poles = eraPoles(y, delta, order);
+    const auto poles = eraPoles(hankel, delta, order);
     if (poles.empty()) continue;
     ModalKernel fit = residuesFor(poles, y, delta);
     if (fit.r_squared > best.r_squared) best = fit;
