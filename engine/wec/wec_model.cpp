@@ -156,10 +156,15 @@ WaveField makeIrregularWave(const WecParameters& p, double direction) {
   const auto s = spectrumDensity(p.spectrum, p.significant_height, p.peak_period, p.peak_enhancement, omega);
   std::mt19937_64 rng(static_cast<std::uint64_t>(p.seed));
   std::uniform_real_distribution<double> phase(0.0, 2.0 * kPi);
+  double m0 = 0.0;
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     w.components.push_back({omega[k], std::sqrt(2.0 * s[k] * dw), phase(rng)});
+    m0 += s[k] * dw;
   }
+  // The band holds 99.7 % of m0; rescale so that the generated sea has exactly 4√m0 = Hs.
+  const double scale = m0 > 0.0 ? p.significant_height / (4.0 * std::sqrt(m0)) : 0.0;
+  for (auto& c : w.components) c.amplitude *= scale;
   return w;
 }
 

@@ -92,8 +92,8 @@ struct WaveField {
   double elevation(double x, double t) const;  // [m] η(x, t), ramped
 };
 WaveField makeRegularWave(double height, double omega, double ramp, double direction, double gravity);
-// Irregular sea: equally spaced components on [0.3, 3.5]·ω_p (spectrum below 1e-3 of its peak outside),
-// amplitudes √(2 S Δω), phases uniform from std::mt19937_64(seed); S normalised so that 4√m0 = Hs.
+// Irregular sea: equally spaced components on [0.3, 3.5]·ω_p (99.7 % of the variance), amplitudes √(2 S Δω)
+// rescaled so that the components' 4√m0 = Hs exactly, phases uniform from std::mt19937_64(seed).
 WaveField makeIrregularWave(const WecParameters& p, double direction);
 // One-sided spectrum S(ω) [m²·s/rad] (JONSWAP with σ = 0.07/0.09, or Pierson–Moskowitz), normalised to Hs.
 std::vector<double> spectrumDensity(const std::string& kind, double hs, double tp, double gamma,
