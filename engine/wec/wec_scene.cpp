@@ -123,6 +123,7 @@ void addTimeDomainChecks(const WecParameters& p, const WecModel& model, const Ti
 
 Results solveWec(const WecParameters& p, RunContext& ctx) {
   Results res;
+  ctx.throwIfCancelled();
   ctx.progress(0.0, "radiation kernels");
   WecModel model = buildWecModel(p);
   buildRadiation(model, p.kernel_duration, p.time_step);
