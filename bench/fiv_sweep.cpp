@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "core/ode.hpp"
 #include "core/run_context.hpp"
 #include "fiv/fiv_sweep.hpp"
 
@@ -50,6 +51,37 @@ double amplitudeError(const SweepResult& a, const SweepResult& ref, double side)
   return worst;
 }
 
+// CPU seconds per RK4 step of the same 6-state system: the scene's fixed-size inlined loop against
+// core/ode.hpp integrateRk4 (std::function right-hand side on Eigen::VectorXd, no events).
+void compareWithCoreRk4(std::ostream& out) {
+  FivParameters p;
+  const FivModel model = buildFivModel(p);
+  const FivRhs rhs(model, makeOperatingPoint(model, 2.2, kDeep));
+  const long steps = 2'000'000;
+  const double h = 1e-3;
+  State s = seedState(model, 0.5);
+  double t0 = cpuSeconds();
+  for (long i = 0; i < steps; ++i) rhs.step(s, h);
+  const double own = (cpuSeconds() - t0) / steps;
+  const State start = seedState(model, 0.5);
+  Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(start.data(), kStateSize);
+  OdeOptions options;
+  options.t1 = steps * h;
+  options.step = h;
+  RunContext ctx;
+  const OdeRhs f = [&](double, const Eigen::VectorXd& x, Eigen::VectorXd& dx) {
+    State a, da;
+    for (int i = 0; i < kStateSize; ++i) a[i] = x[i];
+    rhs.derivative(a, da);
+    for (int i = 0; i < kStateSize; ++i) dx[i] = da[i];
+  };
+  t0 = cpuSeconds();
+  integrateRk4(f, y, options, ctx);
+  const double core = (cpuSeconds() - t0) / steps;
+  out << "RK4 step: scene loop " << own * 1e9 << " ns, core integrateRk4 " << core * 1e9 << " ns (final y "
+      << s[0] << " vs " << y[0] << " m)\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -73,6 +105,7 @@ int main(int argc, char** argv) {
                 << " unconverged), max amplitude error " << err << "\n";
     }
   }
+  compareWithCoreRk4(std::cout);
   std::cout << "written " << out_file << "\n";
   return 0;
 }
