@@ -139,6 +139,7 @@ void WigleyKochin::evaluate(double k0, double lambda, double& fine, double& coar
 
 WaveResistance michellWaveResistance(KochinFunction& kochin, double speed, double gravity, double density,
                                      const MichellSettings& s, const RunContext* context) {
+  kochin.prepare(speed);
   const double k0 = gravity / (speed * speed);
   const double k0_hat = k0 * s.wave_number_factor;
   const double k_pre = s.prefactor_uses_corrected_wave_number ? k0_hat : k0;
@@ -238,6 +239,7 @@ WaveResistance michellWaveResistance(KochinFunction& kochin, double speed, doubl
 
 std::vector<double> waveSpectrum(KochinFunction& kochin, double speed, double gravity, double density,
                                  const MichellSettings& s, const std::vector<double>& theta) {
+  kochin.prepare(speed);
   const double k0 = gravity / (speed * speed);
   const double k0_hat = k0 * s.wave_number_factor;
   const double k_pre = s.prefactor_uses_corrected_wave_number ? k0_hat : k0;

@@ -22,6 +22,8 @@ namespace maris::ship {
 class KochinFunction {
  public:
   virtual ~KochinFunction() = default;
+  // Called once per speed before any evaluate() (speed-dependent hull corrections hook in here).
+  virtual void prepare(double /*speed*/) {}
   // `fine`: the value; `coarse`: the same on the grid with every other station and waterline (equal to
   // `fine` for closed forms), used for the Richardson estimate of the discretisation error.
   virtual void evaluate(double k0, double lambda, double& fine, double& coarse) = 0;

@@ -166,8 +166,38 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     s.title = "Wave-angle spectrum dR_W/dtheta at Fn = " + std::to_string(c.froude[d]);
     s.add("theta_deg", "deg", theta_deg);
     s.add("dr_dtheta", "N/rad", waveSpectrum(kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, false), theta));
+    if (corrected) {
+      auto corrected_kochin = correctedKochin(m);
+      s.add("dr_dtheta_corrected", "N/rad",
+            waveSpectrum(*corrected_kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, true), theta));
+    }
     r.tables.push_back(std::move(s));
-    r.plots.push_back(makePlot("wave_spectrum", "Wave-angle spectrum of R_W", "wave_spectrum", "theta_deg", {"dr_dtheta"}));
+    r.plots.push_back(makePlot("wave_spectrum", "Wave-angle spectrum of R_W", "wave_spectrum", "theta_deg",
+                               corrected ? std::vector<std::string>{"dr_dtheta", "dr_dtheta_corrected"}
+                                         : std::vector<std::string>{"dr_dtheta"}));
+  }
+
+  // Boundary layer at the design speed on the waterline nearest 0.2 T (the depth of the paper's Fig. 4).
+  if (m.tangency) {
+    const int j = static_cast<int>(std::lround(0.2 * (m.grid.nz() - 1)));
+    const HullGrid corrected_grid = m.tangency->correctedGrid(c.speed[d], m.water.kinematic_viscosity);
+    const auto dstar = m.tangency->displacementThickness(j, c.speed[d], m.water.kinematic_viscosity);
+    Table b;
+    b.name = "boundary_layer";
+    b.title = "Displacement thickness at z = " + std::to_string(m.grid.z(j)) + " m, Fn = " + std::to_string(c.froude[d]);
+    std::vector<double> x, y, ye;
+    for (int i = 0; i < m.grid.nx(); ++i) {
+      x.push_back(m.grid.x(i));
+      y.push_back(m.grid.half_breadth(i, j));
+      ye.push_back(corrected_grid.half_breadth(i, j));
+    }
+    b.add("x", "m", x);
+    b.add("half_breadth", "m", y);
+    b.add("displacement_thickness", "m", dstar);
+    b.add("corrected_half_breadth", "m", ye);
+    r.tables.push_back(std::move(b));
+    r.plots.push_back(makePlot("boundary_layer", "Boundary layer on the waterline at 0.2 T", "boundary_layer", "x",
+                               {"half_breadth", "corrected_half_breadth", "displacement_thickness"}));
   }
 
   // 3-D view: the hull, both sides, with the still waterline.

@@ -26,7 +26,6 @@ ShipModel buildShipModel(const ShipParameters& p, RunContext& context) {
     m.notes.push_back("offsets: " + std::to_string(m.hull.offsets.ignored_rows_above_waterline) +
                       " rows above the waterline (z > 0) were ignored");
   m.grid = sampleHull(m.hull, p.stations, p.waterlines);
-  m.corrected_grid = m.grid;
   m.particulars = computeParticulars(m.grid, m.hull.length_pp);
   m.wetted_surface = p.wetted_surface > 0 ? p.wetted_surface : m.particulars.wetted_surface;
   m.water = waterProperties(p.water == "sea" ? WaterKind::Sea : WaterKind::Fresh, p.temperature);
@@ -53,8 +52,14 @@ ShipModel buildShipModel(const ShipParameters& p, RunContext& context) {
   m.fore_shoulder = foreShoulder(m.grid);
   if (p.wave_number_correction && m.fore_shoulder.distance > 0)
     m.wave_number_factor = 1.0 + 3.7 * (m.fore_shoulder.arc_length / m.fore_shoulder.distance - 1.0);
+  if (p.tangency_correction) m.tangency = std::make_shared<const TangencyCorrection>(m.grid, p.trip_position);
   m.any_correction = p.tangency_correction || p.wave_number_correction || p.short_wave_cutoff > 0;
   return m;
+}
+
+std::unique_ptr<KochinFunction> correctedKochin(const ShipModel& m) {
+  if (m.tangency) return std::make_unique<TangencyKochin>(m.tangency, m.water.kinematic_viscosity);
+  return std::make_unique<GridKochin>(m.grid);
 }
 
 MichellSettings michellSettings(const ShipParameters& p, const ShipModel& m, bool corrected) {
@@ -82,8 +87,7 @@ ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipMode
   c.michell = waveResistanceSweep([&] { return std::make_unique<GridKochin>(grid); }, c.speed, g, rho,
                                   michellSettings(p, m, false), p.threads, &context, "Michell wave resistance");
   if (m.any_correction) {
-    const HullGrid& corrected = m.corrected_grid;
-    c.corrected = waveResistanceSweep([&] { return std::make_unique<GridKochin>(corrected); }, c.speed, g, rho,
+    c.corrected = waveResistanceSweep([&] { return correctedKochin(m); }, c.speed, g, rho,
                                       michellSettings(p, m, true), p.threads, &context, "corrected wave resistance");
   }
   if (m.hull.isWigley()) {

@@ -4,11 +4,13 @@
 //   buildShipResults      tables, plots, 3-D view and scalars.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/results.hpp"
 #include "core/run_context.hpp"
+#include "ship/boundary_layer.hpp"
 #include "ship/holtrop_mennen.hpp"
 #include "ship/michell_resistance.hpp"
 #include "ship/ship_parameters.hpp"
@@ -19,7 +21,7 @@ namespace maris::ship {
 struct ShipModel {
   HullForm hull;
   HullGrid grid;                 // the Michell grid (numerics.stations × numerics.waterlines)
-  HullGrid corrected_grid;       // grid with the tangency correction applied (= grid when it is off)
+  std::shared_ptr<const TangencyCorrection> tangency;  // boundary-layer correction (null when off)
   HullParticulars particulars;
   double wetted_surface = 0;     // [m²] S of the coefficients (override or computed)
   WaterProperties water;
@@ -41,6 +43,9 @@ struct ResistanceCurves {
   std::vector<double> c_friction;             // [-] ITTC-57
   std::vector<HoltropResistance> holtrop;
 };
+
+// Kochin function of the corrected hull (tangency-corrected when enabled, else the plain grid).
+std::unique_ptr<KochinFunction> correctedKochin(const ShipModel& m);
 
 // Michell settings of the corrected computation (wave-number factor, cutoff) or of the plain one.
 MichellSettings michellSettings(const ShipParameters& p, const ShipModel& m, bool corrected);
