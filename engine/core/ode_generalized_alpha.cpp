@@ -5,10 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include <Eigen/LU>
-
 #include "core/errors.hpp"
 #include "core/ode_internal.hpp"
+#include "core/ode_newton.hpp"
 #include "core/ode_second_order.hpp"
 
 namespace maris {
@@ -26,131 +25,7 @@ GeneralizedAlphaCoefficients generalizedAlphaCoefficients(double rho_inf) {
 
 namespace {
 
-// Newton solver for the acceleration at one time: q = q_base + dq·acc, v = v_base + dv·acc.
-// Holds the work vectors and (for the default path) the LU of the dense iteration matrix.
-class NewtonSolver {
- public:
-  NewtonSolver(const SecondOrderSystem& sys, const OdeOptions& o, int max_iterations, OdeStats& stats)
-      : sys_(sys), options_(o), max_iterations_(max_iterations), stats_(stats), n_(sys.size),
-        q_(n_), v_(n_), r_(n_), delta_(n_), solution_(n_), r_pert_(n_), acc_pert_(n_), q_pert_(n_), v_pert_(n_), matrix_(n_, n_) {}
-
-  const Eigen::VectorXd& q() const { return q_; }
-  const Eigen::VectorXd& v() const { return v_; }
-  const Eigen::VectorXd& lastCorrection() const { return delta_; }
-  void invalidateMatrix() { have_matrix_ = false; }
-  bool matrixIsFresh() const { return matrix_fresh_; }
-
-  // Solves r(t, q_base + dq·acc, v_base + dv·acc, acc) = 0 for acc, starting from `acc`.
-  // Returns true on convergence; `acc`, q(), v() then hold the solution.
-  bool solve(double t, const Eigen::VectorXd& q_base, const Eigen::VectorXd& v_base, double dq, double dv,
-             Eigen::VectorXd& acc) {
-    const bool coefficients_changed = dq != matrix_dq_ || dv != matrix_dv_;
-    matrix_fresh_ = false;
-    double previous_norm = 0.0;
-    for (int iteration = 0; iteration < max_iterations_; ++iteration) {
-      q_ = q_base + dq * acc;
-      v_ = v_base + dv * acc;
-      sys_.residual(t, q_, v_, acc, r_);
-      ++stats_.rhs_evaluations;
-      if (!r_.allFinite()) return false;
-      // Refresh the iteration matrix at the first iteration if it is stale, or when convergence is slow.
-      const bool refresh = !have_matrix_ || (coefficients_changed && iteration == 0) || slow_;
-      delta_ = -r_;
-      if (!solveLinear(t, acc, dq, dv, refresh)) return false;
-      acc += delta_;
-      const double norm = correctionNorm(dq, dv, q_base, v_base, acc);
-      if (!std::isfinite(norm)) return false;
-      // Converged when the correction is within tolerance, or the contraction rate θ says the
-      // remaining error θ/(1−θ)·|Δ| is.
-      const double theta = iteration > 0 ? norm / std::max(previous_norm, 1e-300) : 0.0;
-      slow_ = theta > 0.5;
-      if (norm <= 1.0 || (iteration > 0 && theta < 1.0 && theta / (1.0 - theta) * norm <= 1.0)) {
-        q_ = q_base + dq * acc;
-        v_ = v_base + dv * acc;
-        return true;
-      }
-      if (iteration > 0 && theta >= 1.0) return false;  // diverging
-      previous_norm = norm;
-    }
-    slow_ = true;
-    return false;
-  }
-
- private:
-  // delta_ ← S⁻¹ delta_, through the caller's solver or the dense finite-difference LU.
-  bool solveLinear(double t, const Eigen::VectorXd& acc, double dq, double dv, bool refresh) {
-    if (refresh) {
-      ++stats_.jacobian_evaluations;
-      matrix_fresh_ = true;
-      matrix_dq_ = dq;
-      matrix_dv_ = dv;
-      slow_ = false;
-    }
-    if (sys_.solve_iteration_matrix) {
-      have_matrix_ = true;
-      return sys_.solve_iteration_matrix(IterationMatrixRequest{t, q_, v_, acc, dv, dq, refresh}, delta_);
-    }
-    if (refresh) {
-      // Forward differences of the residual along acc (q and v follow), one column per coordinate.
-      const double acc_scale = std::max(acc.size() ? acc.cwiseAbs().maxCoeff() : 0.0, 1.0);
-      for (Eigen::Index j = 0; j < n_; ++j) {
-        const double eps = std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(acc[j]), acc_scale);
-        acc_pert_ = acc;
-        acc_pert_[j] += eps;
-        q_pert_ = q_;
-        q_pert_[j] += dq * eps;
-        v_pert_ = v_;
-        v_pert_[j] += dv * eps;
-        sys_.residual(t, q_pert_, v_pert_, acc_pert_, r_pert_);
-        matrix_.col(j) = (r_pert_ - r_) / eps;
-      }
-      stats_.rhs_evaluations += n_;
-      if (!matrix_.allFinite()) return false;
-      lu_.compute(matrix_);
-      have_matrix_ = true;
-      // A (numerically) singular matrix: PartialPivLU does not detect it, so look at the pivots.
-      const Eigen::VectorXd pivots = lu_.matrixLU().diagonal().cwiseAbs();
-      if (n_ > 0 && !(pivots.minCoeff() > 1e-14 * pivots.maxCoeff())) {
-        have_matrix_ = false;
-        return false;
-      }
-    }
-    solution_.noalias() = lu_.solve(delta_);
-    delta_.swap(solution_);
-    return delta_.allFinite();
-  }
-
-  // Weighted RMS of the corrections to q and v (weights 1/(atol + rtol·|value|)); the larger one.
-  // With dq = dv = 0 (initial acceleration) the acceleration itself is measured.
-  double correctionNorm(double dq, double dv, const Eigen::VectorXd& q_base, const Eigen::VectorXd& v_base,
-                        const Eigen::VectorXd& acc) const {
-    if (n_ == 0) return 0.0;
-    const double atol = options_.atol, rtol = options_.rtol;
-    double sum_q = 0.0, sum_v = 0.0, sum_a = 0.0;
-    for (Eigen::Index i = 0; i < n_; ++i) {
-      const double eq = dq * delta_[i] / (atol + rtol * std::abs(q_base[i] + dq * acc[i]));
-      const double ev = dv * delta_[i] / (atol + rtol * std::abs(v_base[i] + dv * acc[i]));
-      const double ea = delta_[i] / (atol + rtol * std::abs(acc[i]));
-      sum_q += eq * eq;
-      sum_v += ev * ev;
-      sum_a += ea * ea;
-    }
-    const double count = static_cast<double>(n_);
-    if (dq == 0.0 && dv == 0.0) return std::sqrt(sum_a / count);
-    return std::sqrt(std::max(sum_q, sum_v) / count);
-  }
-
-  const SecondOrderSystem& sys_;
-  const OdeOptions& options_;
-  int max_iterations_;
-  OdeStats& stats_;
-  Eigen::Index n_;
-  Eigen::VectorXd q_, v_, r_, delta_, solution_, r_pert_, acc_pert_, q_pert_, v_pert_;
-  Eigen::MatrixXd matrix_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
-  bool have_matrix_ = false, matrix_fresh_ = false, slow_ = false;
-  double matrix_dq_ = -1.0, matrix_dv_ = -1.0;
-};
+using ode_detail::NewtonSolver;
 
 std::string newtonFailure(const NewtonSolver& newton, const OdeOptions& o, double h, Eigen::Index* worst) {
   *worst = 0;
@@ -171,7 +46,7 @@ OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::Vecto
   if (!system.residual || q.size() != n || v.size() != n)
     throw std::invalid_argument("integrateGeneralizedAlpha: need a residual and q, v of size " + std::to_string(n));
   OdeStats stats;
-  NewtonSolver newton(system, options, std::max(1, alpha_options.max_newton_iterations), stats);
+  NewtonSolver newton(system, options, std::max(1, alpha_options.max_newton_iterations), stats, ctx);
   OutputSchedule schedule(options);
   ProgressTicker ticker(ctx, options);
 

@@ -55,6 +55,11 @@ struct SecondOrderSystem {
   // systems with structure (banded, block-tridiagonal). Return false if S is singular (a Newton failure).
   // Default: dense S by forward differences of `residual` (n extra calls) and a partial-pivoting LU.
   std::function<bool(const IterationMatrixRequest& request, Eigen::VectorXd& rhs)> solve_iteration_matrix;
+
+  // Optional, for the default path: S is banded, S_ij = 0 unless −lower ≤ j − i ≤ upper (a chain whose
+  // coordinate i couples to i ± b: b and b). Then S is formed from lower + upper + 1 grouped residual
+  // differences instead of n and factorised by BandedLu in O(n·b²). −1 (either): dense.
+  Eigen::Index lower_bandwidth = -1, upper_bandwidth = -1;
 };
 
 // Sees t0, every output time and t1: coordinates, velocities and accelerations (q̈). Between step

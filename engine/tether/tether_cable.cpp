@@ -149,6 +149,9 @@ CableStepReport LumpedMassCable::project() {
   for (report.iterations = 0; report.iterations < kMaxProjectionIterations; ++report.iterations) {
     // Constraint errors c_j = |x_{j+1} - x_j|^2 - l^2 and the tridiagonal J(x~) M^-1 J(x_old)^T.
     double worst = 0.0;
+    // After the SHAKE step along the old links, Newton steps along the current ones.
+    if (report.iterations > 0)
+      for (std::size_t j = 0; j < n; ++j) dir_[j] = x_[j + 1] - x_[j];
     for (std::size_t j = 0; j < n; ++j) {
       const Eigen::Vector3d now = x_[j + 1] - x_[j];
       const double c = now.squaredNorm() - l2;

@@ -6,9 +6,10 @@
 //   m dv_i/dt = -w l e_z - c l v_i - (1/2) rho Cd d l |v_n| v_n + constraint forces,
 // with w the wet weight per length, c a linear damping per length, v_n the velocity normal to the local tangent
 // (Morison drag, optional) and the constraints |x_{i+1} - x_i| = l (inextensible links).
-// Time step (symplectic Euler + SHAKE projection): v += dt f/m; x~ = x + dt v; then Lagrange multipliers mu_j
-// solve the link constraints along the old link directions, J M^-1 J^T mu = -c(x~), a tridiagonal system per
-// quasi-Newton iteration (O(N)); v = (x_new - x_old)/dt. The links are exact to 1e-12 l^2 after every step, so
+// Time step (symplectic Euler + constraint projection): v += dt f/m; x~ = x + dt v; then Lagrange multipliers
+// mu_j solve J M^-1 J^T mu = -c(x~), a tridiagonal system per iteration (O(N)): the first correction runs along
+// the old link directions (SHAKE), later ones along the current links (Newton on the constraints, which converges
+// from much larger link rotations than SHAKE's fixed directions); v = (x_new - x_old)/dt. The links are exact to 1e-12 l^2 after every step, so
 // the time step is limited only by the transverse waves (dt << l / sqrt(T/mu)), not by an axial stiffness.
 //
 // Static reference: staticChainProfile solves the discrete catenary of the same chain exactly (equal node weights

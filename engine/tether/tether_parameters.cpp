@@ -90,6 +90,12 @@ SchemaBinder<TetherParameters> tetherBinder() {
   b.real("cable.damping", &P::cable_damping, "N s/m^2", Range::nonNegative(1e3), "Linear damping per length on node velocities");
   b.real("cable.drag_coefficient", &P::cable_drag_coefficient, "-", Range::nonNegative(10), "Morison normal drag Cd (0: off)");
   b.integer("cable.substeps", &P::cable_substeps, "-", Range::closed(1, 1000), "Cable time steps per control tick");
+  b.boolean("vision.enabled", &P::vision_enabled, "Estimate a and b from a synthetic follower camera by Gauss-Newton");
+  b.real("vision.noise", &P::vision_noise, "-", Range::nonNegative(0.1), "Image noise std dev (normalised coordinates)");
+  b.real("vision.half_fov_deg", &P::vision_half_fov_deg, "deg", Range::open(5, 85), "Camera half field of view");
+  b.real("vision.camera_x", &P::vision_camera_x, "m", Range::closed(-5, 5), "Camera position, follower body x");
+  b.real("vision.camera_z", &P::vision_camera_z, "m", Range::closed(-5, 5), "Camera position, follower body z (up)");
+  b.integer("vision.points", &P::vision_points, "-", Range::closed(5, 10000), "Tether points imaged per frame");
   b.integer("output.animation_frames", &P::animation_frames, "-", Range::closed(1, 2000), "Maximum number of 3D frames");
   return b;
 }
@@ -122,6 +128,15 @@ ServoSettings servoSettingsOf(const TetherParameters& p) {
   s.max_linear_speed = p.max_linear_speed;
   s.max_yaw_rate = p.max_yaw_rate_deg * kDegree;
   return s;
+}
+
+CameraModel cameraOf(const TetherParameters& p) {
+  CameraModel c;
+  c.position_in_body = {p.vision_camera_x, 0.0, p.vision_camera_z};
+  c.half_field_of_view = p.vision_half_fov_deg * kDegree;
+  c.noise = p.vision_noise;
+  c.sample_count = p.vision_points;
+  return c;
 }
 
 CableProperties cablePropertiesOf(const TetherParameters& p) {

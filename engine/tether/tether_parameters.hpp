@@ -10,6 +10,7 @@
 #include "core/schema_binder.hpp"
 #include "tether/tether_cable.hpp"
 #include "tether/tether_servo.hpp"
+#include "tether/tether_vision.hpp"
 
 namespace maris::tether {
 
@@ -77,6 +78,13 @@ struct TetherParameters {
   double cable_damping = 0.5;           // [N s/m^2] linear damping per length
   double cable_drag_coefficient = 0.0;  // [-] Morison normal drag (0: off, as the paper's simulator)
   int cable_substeps = 20;              // [-] cable steps per control tick (600 Hz at 30 Hz: below l/sqrt(T/mu))
+  // Synthetic follower camera and shape estimator (a and b estimated; d from depth and b1 stay exact)
+  bool vision_enabled = false;
+  double vision_noise = 1e-3;            // [-] image noise std dev (normalised image coordinates)
+  double vision_half_fov_deg = 40.0;     // [deg] half field of view
+  double vision_camera_x = 0.0;          // [m] camera in the follower body frame (FLU)
+  double vision_camera_z = 0.1;          // [m]
+  int vision_points = 60;                // [-] tether points imaged per frame (before the field-of-view cut)
   // Output
   int animation_frames = 150;           // [-] at most this many 3D frames
 };
@@ -88,6 +96,7 @@ std::vector<FieldError> checkTetherParameters(const TetherParameters& p);
 TetherRig rigOf(const TetherParameters& p);
 ServoSettings servoSettingsOf(const TetherParameters& p);
 CableProperties cablePropertiesOf(const TetherParameters& p);
-double wetWeightPerLength(const TetherParameters& p);  // [N/m] (mu - rho pi d^2/4) g
+double wetWeightPerLength(const TetherParameters& p);
+CameraModel cameraOf(const TetherParameters& p);  // [N/m] (mu - rho pi d^2/4) g
 
 }  // namespace maris::tether

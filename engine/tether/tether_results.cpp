@@ -31,6 +31,10 @@ Table featureTable(const TetherParameters& p, const SimulationOutput& sim) {
   t.add("b_target", "-", std::vector<double>(sim.ticks.size(), p.target_b));
   t.add("d_target", "-", std::vector<double>(sim.ticks.size(), p.target_d));
   t.add("b1_target", "-", std::vector<double>(sim.ticks.size(), p.target_b1));
+  t.add("a_measured", "-", column(sim, [](const TickRecord& r) { return r.measured.a; }));
+  t.add("b_measured", "-", column(sim, [](const TickRecord& r) { return r.measured.b; }));
+  t.add("vision_held", "-", column(sim, [](const TickRecord& r) { return r.vision_held ? 1.0 : 0.0; }));
+  t.add("visible_points", "-", column(sim, [](const TickRecord& r) { return double(r.visible_points); }));
   t.add("error_norm", "-", column(sim, [](const TickRecord& r) { return std::max(r.error.norm(), 1e-16); }));
   t.add("sag", "m", column(sim, [](const TickRecord& r) { return r.sag; }));
   t.add("rise", "m", column(sim, [](const TickRecord& r) { return r.rise; }));
@@ -150,6 +154,8 @@ void addPlots(const TetherParameters& p, Results& r) {
   std::vector<std::string> features{"a", "b", "d", "a_target", "b_target", "d_target"};
   if (four) features.insert(features.end(), {"b1", "b1_target"});
   r.plots.push_back(plot("features", "Features and targets", "features", features));
+  if (p.vision_enabled)
+    r.plots.push_back(plot("estimates", "Estimated vs true a and b", "features", {"a", "a_measured", "b", "b_measured"}));
   r.plots.push_back(plot("error_norm", "Feature error norm", "features", {"error_norm"}, true));
   r.plots.push_back(plot("shape", "Catenary shape: sag, rise, span", "features", {"sag", "rise", "span"}));
   r.plots.push_back(plot("angles", "Tether-plane angles", "features", {"alpha2_deg", "alpha1_deg"}));
@@ -229,7 +235,7 @@ Results buildTetherResults(const TetherParameters& p, const SimulationOutput& si
   r.stats.error_estimate = sim.worst_constraint_error;
   r.stats.error_unit = "relative link length^2 error of the cable";
   r.stats.method = "kinematic robots at " + std::to_string(p.control_rate).substr(0, 5) + " Hz (exact pose update)" +
-                   (p.cable_enabled ? "; lumped-mass cable, symplectic Euler + SHAKE projection, " +
+                   (p.cable_enabled ? "; lumped-mass cable, symplectic Euler + link projection (SHAKE, then Newton), " +
                                           std::to_string(p.cable_substeps) + " sub-steps per tick"
                                     : std::string());
   return r;

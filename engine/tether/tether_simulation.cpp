@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <random>
 
 #include <Eigen/Geometry>
 
@@ -44,6 +45,21 @@ void measureCable(const LumpedMassCable& cable, const TetherState& tether, TickR
   record.cable_kinetic_energy = cable.kineticEnergy();
 }
 
+std::vector<Eigen::Vector3d> sampleCatenary(const TetherState& tether, int count) {
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < count; ++i)
+    points.push_back(tetherPointAtArcLength(tether, tether.catenary.length * (i + 0.5) / count));
+  return points;
+}
+
+// Every k-th point so that at most `count` remain.
+std::vector<Eigen::Vector3d> subsample(const std::vector<Eigen::Vector3d>& points, int count) {
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / static_cast<std::size_t>(count));
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t i = stride / 2; i < points.size(); i += stride) out.push_back(points[i]);
+  return out;
+}
+
 }  // namespace
 
 Vector4 leaderTwistAt(const TetherParameters& p, double time) {
@@ -68,6 +84,13 @@ SimulationOutput simulateTether(const TetherParameters& p, RunContext& context) 
   LumpedMassCable cable(cablePropertiesOf(p));
   TetherState tether = tetherState(rig, follower, leader);
   if (p.cable_enabled) cable.placeOnCatenary(tether.follower_point, tether.leader_point, tether.catenary);
+
+  // Vision: a fixed seed keeps runs reproducible; the first estimate starts from the initial shape's guess.
+  const CameraModel camera = cameraOf(p);
+  std::mt19937 rng(20200107u);
+  ShapeEstimate estimate;
+  estimate.a = 0.5;
+  estimate.b = 0.0;
 
   const double period = 1.0 / p.control_rate;
   const double substep = period / p.cable_substeps;
@@ -101,9 +124,21 @@ SimulationOutput simulateTether(const TetherParameters& p, RunContext& context) 
     rec.leader_angle = tether.leader_angle;
     rec.regime = tether.catenary.regime;
     rec.leader_twist = leaderTwistAt(p, t);
-    const Features model = withModelError(p, rec.features);
+    rec.measured = rec.features;
+    if (p.vision_enabled) {
+      // The camera sees the cable when it is simulated, else the catenary; d (depth) and b1 stay exact.
+      const std::vector<Eigen::Vector3d> points =
+          p.cable_enabled ? cable.positions() : sampleCatenary(tether, p.vision_points);
+      const auto image = projectTether(camera, follower, subsample(points, p.vision_points), &rng);
+      estimate = estimateShape(rig, camera, image, tether.rise, estimate);
+      rec.measured.a = estimate.a;
+      rec.measured.b = estimate.b;
+      rec.vision_held = estimate.held;
+      rec.visible_points = static_cast<int>(image.size());
+    }
+    const Features model = withModelError(p, rec.measured);
     const bool fits = tether.catenary.fitsPaperModel();
-    const ServoCommand cmd = servo.update(rec.features, model, target, rec.leader_twist);
+    const ServoCommand cmd = servo.update(rec.measured, model, target, rec.leader_twist);
     rec.error = cmd.error;
     rec.command = fits ? cmd.twist : Vector4::Zero();
     rec.held = cmd.held || !fits;

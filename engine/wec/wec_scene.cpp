@@ -167,6 +167,8 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   res.stats.method = main.method;
   res.stats.steps = main.steps;
   res.stats.rhs_evaluations = main.rhs_evaluations;
+  res.stats.error_estimate = main.error_estimate;
+  res.stats.error_unit = "rad (theta, sum of embedded RK4 local-error estimates)";
   if (both) {
     TimeDomainOptions aug = base;
     aug.augmented = true;
@@ -189,8 +191,8 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
     res.stats.method += "; " + second.method;
     res.stats.steps += second.steps;
     res.stats.rhs_evaluations += second.rhs_evaluations;
-    res.stats.error_estimate = d_theta;
-    res.stats.error_unit = "rad (classical vs augmented)";
+    res.addScalar("rk4_error_estimate_augmented", second.error_estimate, "rad",
+                  "Sum of embedded RK4 local-error estimates of theta, augmented run");
   }
   res.tables.push_back(std::move(hist));
   for (std::size_t i = 0; i < model.floats.size(); ++i) {

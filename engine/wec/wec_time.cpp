@@ -159,6 +159,12 @@ class Simulator {
   }
 
   long evaluations() const { return evaluations_; }
+  // Index of θ of every float in the state vector.
+  std::vector<int> thetaIndices() const {
+    std::vector<int> idx;
+    for (const auto& s : systems_) idx.push_back(s.offset + (o_.augmented ? 2 : 0));
+    return idx;
+  }
 
  private:
   void velocities(const FloatSystem& s, const Eigen::VectorXd& y, double& vx, double& vz) const {
@@ -318,9 +324,16 @@ TimeDomainResult simulateTimeDomain(const WecModel& model, const WaveField& wave
     }
   };
 
+  const std::vector<int> theta_index = sim.thetaIndices();
   for (long n = 0;; ++n) {
     const double t = h * static_cast<double>(n);
     sim.rhs(t, 0.0, y, k1, &loads);
+    // Local error of the previous step from the embedded companion (k1 here is that step's k5).
+    if (n > 0) {
+      double local = 0.0;
+      for (int i : theta_index) local = std::max(local, std::abs(k4[i] - k1[i]));
+      r.error_estimate += h / 6.0 * local;
+    }
     // Energy bookkeeping by the trapezoid rule between recorded instants.
     if (n > 0)
       for (std::size_t i = 0; i < nf; ++i) {

@@ -59,6 +59,9 @@ struct TimeDomainResult {
   double max_position_drift = 0.0;         // [m] max |C| over the run (before projection)
   double max_velocity_drift = 0.0;         // [m/s] max |C_q q̇|
   double stability_step = 0.0;             // [s] estimated RK4 stability limit of the fastest mode
+  // [rad] Σ over steps of the local error of θ from the embedded 3rd-order companion, h|k4 − k5|/6 with
+  // k5 = the next step's k1 (as in core/ode.hpp); an over-estimate of RK4's global error.
+  double error_estimate = 0.0;
   long steps = 0;
   long rhs_evaluations = 0;
   std::string method;

@@ -111,6 +111,9 @@ TEST(WecTime, ClassicalAndAugmentedFormulationsAgree) {
   }
   EXPECT_LT(dth, 0.005 * amp);
   EXPECT_LT(df, 0.01 * famp);
+  // The embedded error estimate bounds the difference of two 4th-order solutions of the same motion.
+  EXPECT_GT(cl.error_estimate, 0.0);
+  EXPECT_LT(dth, 10.0 * (cl.error_estimate + au.error_estimate));
   const double inertia = m.floats[0].inertia_hinge;
   for (std::size_t k = 0; k < a.theta.size(); ++k) {
     EXPECT_NEAR(a.moment_y[k], inertia * a.theta_dtdt[k], 1e-9 * mrange);

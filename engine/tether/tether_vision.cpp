@@ -1,0 +1,214 @@
+#include "tether/tether_vision.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+
+#include "tether/tether_cable.hpp"
+
+namespace maris::tether {
+
+namespace {
+
+constexpr double kMinDepth = 0.02;           // [m] points closer to the camera plane are not imaged
+constexpr double kDegenerateSpread = 1e-3;   // [-] std dev of abscissas below which the image is a vertical line
+constexpr int kMinPoints = 5;
+constexpr int kMaxIterations = 50;
+constexpr double kDerivativeStep = 1e-6;     // [-] central differences in (a, b)
+constexpr double kRetryRms = 0.03;           // [-] rms residual above which the fit is retried from a grid
+
+// Body (FLU) to camera (x right, y down, z forward).
+Eigen::Vector3d bodyToCamera(const Eigen::Vector3d& body) { return {-body.y(), -body.z(), body.x()}; }
+
+// Residual of one image point for features (a, b): y - y(x) where x back-projects onto the model tether, else the
+// image distance to the nearer projected end of the tether (continuous at the ends), so that no point drops out
+// of the cost and the fit cannot lower it by shortening the curve. False if (a, b) is not a model shape.
+bool pointResidual(const TetherRig& rig, const Eigen::Vector3d& p2c, double rise, double a, double b,
+                   const ImagePoint& p, double& residual) {
+  double y = 0.0;
+  if (modelOrdinate(rig, p2c, rise, a, b, p.x, y)) {
+    residual = p.y - y;
+    return true;
+  }
+  const Catenary c = catenaryFromShape(a * rig.sag_max, rise, rig.length);
+  if (!c.fitsPaperModel() || !(std::abs(b) < 1.0)) return false;
+  const double cos_a = std::sqrt(1.0 - b * b);
+  const Eigen::Vector3d p1c(p2c.x() - c.span * b, p2c.y() - rise, p2c.z() + c.span * cos_a);
+  double best = 1e300;
+  for (const Eigen::Vector3d& end : {p2c, p1c})
+    if (end.z() >= kMinDepth) best = std::min(best, std::hypot(p.x - end.x() / end.z(), p.y - end.y() / end.z()));
+  if (best == 1e300) return false;
+  residual = best;
+  return true;
+}
+
+// Residuals of all points and (if jac) their (a, b) derivatives by central differences. Returns the number of points, or
+// 0 when a stencil point is not a model shape.
+int residuals(const TetherRig& rig, const Eigen::Vector3d& p2c, double rise, const std::vector<ImagePoint>& image,
+              double a, double b, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+  const auto m = static_cast<Eigen::Index>(image.size());
+  r.resize(m);
+  if (jac) jac->resize(m, 2);
+  const double h = kDerivativeStep;
+  for (Eigen::Index j = 0; j < m; ++j) {
+    const ImagePoint& p = image[static_cast<std::size_t>(j)];
+    double r0, ra_plus, ra_minus, rb_plus, rb_minus;
+    if (!pointResidual(rig, p2c, rise, a, b, p, r0)) return 0;
+    r[j] = r0;
+    if (!jac) continue;
+    if (!pointResidual(rig, p2c, rise, a + h, b, p, ra_plus) || !pointResidual(rig, p2c, rise, a - h, b, p, ra_minus) ||
+        !pointResidual(rig, p2c, rise, a, b + h, p, rb_plus) || !pointResidual(rig, p2c, rise, a, b - h, p, rb_minus))
+      return 0;
+    (*jac)(j, 0) = (ra_plus - ra_minus) / (2 * h);
+    (*jac)(j, 1) = (rb_plus - rb_minus) / (2 * h);
+  }
+  return static_cast<int>(m);
+}
+
+// (a, b) and its finite-difference stencil are shapes of the paper's model.
+bool insideBox(const TetherRig& rig, double a, double b, double rise, double margin) {
+  const double d = (rise + rig.rise_max) / (2.0 * rig.rise_max);
+  for (double da : {-margin, margin})
+    for (double db : {-margin, margin})
+      if (!featureInfeasibility(rig, Features{a + da, b + db, d, 0.0}).empty()) return false;
+  return std::abs(b) + margin < 0.99;
+}
+
+// Damped Gauss-Newton on (a, b) from `est`; iterates stay in the feasible box by step halving.
+ShapeEstimate levenbergMarquardt(const TetherRig& rig, const Eigen::Vector3d& p2c, double rise,
+                                 const std::vector<ImagePoint>& image, ShapeEstimate est) {
+  Eigen::VectorXd r;
+  Eigen::MatrixXd jac;
+  int used = residuals(rig, p2c, rise, image, est.a, est.b, r, &jac);
+  est.points_used = used;
+  if (used < kMinPoints) return est;
+  double cost = r.squaredNorm() / used;
+  double mu = 1e-3;
+  for (est.iterations = 1; est.iterations <= kMaxIterations; ++est.iterations) {
+    const Eigen::Matrix2d normal = jac.transpose() * jac;
+    const Eigen::Vector2d gradient = jac.transpose() * r;
+    Eigen::Matrix2d damped = normal;
+    damped.diagonal() *= 1.0 + mu;
+    Eigen::Vector2d step = -damped.ldlt().solve(gradient);
+    double factor = 1.0;
+    while (!insideBox(rig, est.a + factor * step[0], est.b + factor * step[1], rise, kDerivativeStep) &&
+           factor > 1e-6)
+      factor *= 0.5;
+    step *= factor;
+    Eigen::VectorXd r_new;
+    Eigen::MatrixXd jac_new;
+    const int used_new = residuals(rig, p2c, rise, image, est.a + step[0], est.b + step[1], r_new, &jac_new);
+    const double cost_new = used_new >= kMinPoints ? r_new.squaredNorm() / used_new : 1e300;
+    if (cost_new < cost) {
+      est.a += step[0];
+      est.b += step[1];
+      const bool converged = cost - cost_new <= 1e-14 * cost || step.norm() < 1e-11;
+      r = std::move(r_new);
+      jac = std::move(jac_new);
+      used = used_new;
+      cost = cost_new;
+      mu = std::max(mu / 3.0, 1e-12);
+      if (converged) break;
+    } else {
+      mu *= 4.0;
+      if (mu > 1e8 || step.norm() < 1e-12) break;
+    }
+  }
+  est.iterations = std::min(est.iterations, kMaxIterations);
+  est.points_used = used;
+  est.rms_residual = std::sqrt(cost);
+  return est;
+}
+
+}  // namespace
+
+Eigen::Vector3d attachmentInCamera(const TetherRig& rig, const CameraModel& camera) {
+  return bodyToCamera(rig.follower_attachment - camera.position_in_body);
+}
+
+std::vector<ImagePoint> projectTether(const CameraModel& camera, const RobotPose& follower,
+                                      const std::vector<Eigen::Vector3d>& world_points, std::mt19937* noise) {
+  const Eigen::Matrix3d world_to_body = Eigen::AngleAxisd(-follower.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const double limit = std::tan(camera.half_field_of_view);
+  std::normal_distribution<double> gauss(0.0, camera.noise);
+  std::vector<ImagePoint> image;
+  for (const auto& w : world_points) {
+    const Eigen::Vector3d c = bodyToCamera(world_to_body * (w - follower.position) - camera.position_in_body);
+    if (c.z() < kMinDepth) continue;
+    ImagePoint p{c.x() / c.z(), c.y() / c.z()};
+    if (std::abs(p.x) > limit || std::abs(p.y) > limit) continue;
+    if (noise && camera.noise > 0.0) {
+      p.x += gauss(*noise);
+      p.y += gauss(*noise);
+    }
+    image.push_back(p);
+  }
+  return image;
+}
+
+bool modelOrdinate(const TetherRig& rig, const Eigen::Vector3d& p2c, double rise, double a, double b, double x,
+                   double& y) {
+  const Catenary c = catenaryFromShape(a * rig.sag_max, rise, rig.length);
+  if (!c.fitsPaperModel() || !(std::abs(b) < 1.0)) return false;
+  const double sin_a = b, cos_a = std::sqrt(1.0 - b * b);
+  // A plane point at horizontal distance zeta has camera coordinates (cx2 - zeta sin, cy2 - h, cz2 + zeta cos);
+  // its abscissa is x when zeta (x cos + sin) = cx2 - x cz2.
+  const double denominator = x * cos_a + sin_a;
+  if (std::abs(denominator) < 1e-12) return false;
+  const double zeta = (p2c.x() - x * p2c.z()) / denominator;
+  if (!(zeta >= 0.0 && zeta <= c.span)) return false;  // unbounded residual: outside the tether
+  const double depth = p2c.z() + zeta * cos_a;
+  if (depth < kMinDepth) return false;
+  y = (p2c.y() - catenaryHeightAt(c, zeta)) / depth;
+  return std::isfinite(y);
+}
+
+ShapeEstimate estimateShape(const TetherRig& rig, const CameraModel& camera, const std::vector<ImagePoint>& image,
+                            double rise, const ShapeEstimate& start) {
+  ShapeEstimate held = start;
+  held.held = true;
+  held.iterations = 0;
+  held.points_used = static_cast<int>(image.size());
+  // Degenerate view (paper eqs. 20-21): all points on one image column.
+  if (static_cast<int>(image.size()) < kMinPoints) return held;
+  double mean = 0.0, var = 0.0;
+  for (const auto& p : image) mean += p.x;
+  mean /= static_cast<double>(image.size());
+  for (const auto& p : image) var += (p.x - mean) * (p.x - mean);
+  if (std::sqrt(var / static_cast<double>(image.size())) < kDegenerateSpread) return held;
+
+  const Eigen::Vector3d p2c = attachmentInCamera(rig, camera);
+  ShapeEstimate est = start;
+  est.held = false;
+  if (!insideBox(rig, est.a, est.b, rise, kDerivativeStep))
+    est.a = 0.5 * (0.5 * (rig.length - rise) + std::max(0.0, -rise)) / rig.sag_max;
+  est = levenbergMarquardt(rig, p2c, rise, image, est);
+  // A poor fit (the paper starts from the lowest detected point; we have no image processing) is retried from the
+  // best point of a coarse grid over the feasible box: the cost has local minima near b = 0, where the tether
+  // plane passes close to the camera and the curve collapses to a vertical segment.
+  if (est.points_used < kMinPoints || est.rms_residual > kRetryRms) {
+    ShapeEstimate best = est;
+    double best_cost = 1e300;
+    Eigen::VectorXd r;
+    for (int i = 1; i <= 20; ++i)
+      for (int j = -19; j <= 19; ++j) {
+        const double a = 1.5 * i / 20.0, b = j / 20.0;
+        if (!insideBox(rig, a, b, rise, kDerivativeStep)) continue;
+        const int n = residuals(rig, p2c, rise, image, a, b, r, nullptr);
+        if (n >= kMinPoints && r.squaredNorm() / n < best_cost) {
+          best_cost = r.squaredNorm() / n;
+          best.a = a;
+          best.b = b;
+        }
+      }
+    const ShapeEstimate retry = levenbergMarquardt(rig, p2c, rise, image, best);
+    if (retry.points_used >= kMinPoints && (est.points_used < kMinPoints || retry.rms_residual < est.rms_residual))
+      est = retry;
+  }
+  if (est.points_used < kMinPoints) return held;
+  return est;
+}
+
+}  // namespace maris::tether
