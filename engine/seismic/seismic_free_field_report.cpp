@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include "seismic/free_field_synthesis.hpp"
@@ -8,22 +9,34 @@
 
 namespace maris::seismic {
 
-std::vector<double> incidentHistory(const SeismicParameters& p, double dt, int n, double arrival) {
-  std::vector<double> u(n, 0.0);
+std::function<double(double)> incidentFunction(const SeismicParameters& p, double arrival) {
+  const double a = p.input_amplitude;
   if (p.input_kind == "pulse") {
-    for (int k = 0; k < n; ++k) u[k] = p.input_amplitude * bsplinePulse(k * dt - arrival, p.pulse_duration);
-  } else if (p.input_kind == "ricker") {
-    // Centred 1.5/f_p after the arrival: the wavelet is below 1e-9 of its peak before that.
-    const double centre = arrival + 1.5 / p.ricker_peak_frequency;
-    for (int k = 0; k < n; ++k) u[k] = p.input_amplitude * rickerWavelet(k * dt, p.ricker_peak_frequency, centre);
-  } else {
-    const Accelerogram rec =
-        loadAccelerogram(p.accelerogram_file, dt, p.accelerogram_peak_acceleration, "input.accelerogram_file");
-    for (int k = 0; k < n; ++k) {
-      const long j = std::lround(k - arrival / dt);
-      if (j >= 0) u[k] = rec.displacement[std::min<std::size_t>(j, rec.displacement.size() - 1)];
-    }
+    const double length = p.pulse_duration;
+    return [=](double t) { return a * bsplinePulse(t - arrival, length); };
   }
+  if (p.input_kind == "ricker") {
+    // Centred 1.5/f_p after the arrival: the wavelet is below 1e-9 of its peak before that.
+    const double f = p.ricker_peak_frequency, centre = arrival + 1.5 / f;
+    return [=](double t) { return a * rickerWavelet(t, f, centre); };
+  }
+  const double dt = 0.002;
+  const auto rec = std::make_shared<Accelerogram>(
+      loadAccelerogram(p.accelerogram_file, dt, p.accelerogram_peak_acceleration, "input.accelerogram_file"));
+  return [rec, arrival, dt](double t) {
+    const double s = (t - arrival) / dt;
+    if (s <= 0.0) return 0.0;
+    const auto& d = rec->displacement;
+    const std::size_t k = static_cast<std::size_t>(s);
+    if (k + 1 >= d.size()) return d.back();
+    return d[k] + (s - k) * (d[k + 1] - d[k]);
+  };
+}
+
+std::vector<double> incidentHistory(const SeismicParameters& p, double dt, int n, double arrival) {
+  const auto u0 = incidentFunction(p, arrival);
+  std::vector<double> u(n);
+  for (int k = 0; k < n; ++k) u[k] = u0(k * dt);
   return u;
 }
 
