@@ -27,6 +27,8 @@ struct FeMesh {
   std::vector<ElasticMaterial> solids;   // 0 = seabed, 1.. = reef layers from the top down
   WaterLayer water;                      // depth = y of the water surface; 0 = no water
   double reef_height = 0.0;              // [m] top of the reef flat above y = 0 (0: box)
+  bool periodic_x = false;               // true: the last cell column connects to node column 0 and there are
+                                         // no lateral boundaries (1D column tests); node column nx is unused
 
   int nodeCount() const { return (nx + 1) * (ny + 1); }
   int cellCount() const { return nx * ny; }

@@ -16,6 +16,10 @@ inline void cellNodes(const FeMesh& m, int c, int (&n)[4]) {
   n[1] = n[0] + 1;
   n[2] = n[0] + m.nx + 2;
   n[3] = n[0] + m.nx + 1;
+  if (m.periodic_x && i == m.nx - 1) {
+    n[1] -= m.nx;
+    n[2] -= m.nx;
+  }
 }
 
 // 2×2 Gauss integration of the bilinear square: K_λ = ∫Bᵀ m mᵀ B, K_μ = ∫Bᵀ diag(2,2,1) B,
@@ -142,9 +146,10 @@ FeModel buildFeModel(const FeMesh& mesh) {
   };
   for (int i = 0; i < m.nx; ++i) {
     const int c = i;  // bottom row is seabed
-    if (m.cell_kind[c] == CellKind::Solid) solidEdge(c, m.node(i, 0), m.node(i + 1, 0), false);
+    const int right = m.periodic_x && i == m.nx - 1 ? m.node(0, 0) : m.node(i + 1, 0);
+    if (m.cell_kind[c] == CellKind::Solid) solidEdge(c, m.node(i, 0), right, false);
   }
-  for (int j = 0; j < m.ny; ++j) {
+  for (int j = 0; j < m.ny && !m.periodic_x; ++j) {
     for (int side = 0; side < 2; ++side) {
       const int i = side == 0 ? 0 : m.nx - 1, edge_i = side == 0 ? 0 : m.nx;
       const int c = j * m.nx + i;
@@ -164,7 +169,8 @@ FeModel buildFeModel(const FeMesh& mesh) {
   std::vector<std::uint8_t> in_layer(nn, 0);
   for (int c = 0; c < m.cellCount(); ++c) {
     const int i = c % m.nx, j = c / m.nx;
-    if (m.cell_kind[c] == CellKind::Void || !(i == 0 || i == m.nx - 1 || j == 0)) continue;
+    const bool lateral = !m.periodic_x && (i == 0 || i == m.nx - 1);
+    if (m.cell_kind[c] == CellKind::Void || !(lateral || j == 0)) continue;
     (m.cell_kind[c] == CellKind::Solid ? f.layer_solid_cells : f.layer_water_cells).push_back(c);
     int n[4];
     cellNodes(m, c, n);
@@ -174,7 +180,7 @@ FeModel buildFeModel(const FeMesh& mesh) {
     if (!in_layer[a]) continue;
     f.layer_nodes.push_back(a);
     const int i = a % (m.nx + 1), j = a / (m.nx + 1);
-    if (i == 0 || i == m.nx || j == 0) f.boundary_nodes.push_back(a);
+    if ((!m.periodic_x && (i == 0 || i == m.nx)) || j == 0) f.boundary_nodes.push_back(a);
   }
   return f;
 }

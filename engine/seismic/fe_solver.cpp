@@ -101,6 +101,7 @@ FeRunResult runExplicit(const FeModel& model, BoundaryDrive* drive, FeState s, c
     std::fill(fy.begin(), fy.end(), 0.0);
     std::fill(fphi.begin(), fphi.end(), 0.0);
     if (drive) drive->addForces(n, fx, fy, fphi);
+    if (settings.extra_solid_forces) settings.extra_solid_forces(n, fx, fy);
 
     // Water first: −K_f φ, boundary, flux from the solid; φ̈^n is kept in fphi.
     addWaterInternalForces(model, model.water_cells, s.phi, fphi);

@@ -8,6 +8,7 @@
 // that turns non-finite stops the run with a SolverError naming the node, time and step.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -30,6 +31,8 @@ struct FeRunSettings {
   bool enforce_stable_step = true;    // false only in tests that provoke divergence
   std::vector<int> record_nodes;      // nodes whose displacement is recorded every step (water: ∇φ)
   int snapshot_count = 0;             // frames of |u| over the grid, evenly spaced
+  // Optional extra solid loads at step n, added into per-node (fx, fy) [N/m] (e.g. a Lysmer-boundary input).
+  std::function<void(long, std::vector<double>&, std::vector<double>&)> extra_solid_forces;
 };
 
 struct FeSnapshot {
