@@ -64,6 +64,8 @@ TEST(FeLayer, SoftLayerResonatesAtQuarterWavelength) {
     if (r > best) best = r, best_f = k * df;
   }
   const double alpha = rho1 * v1 / (p.seabed_density * p.seabed_vs);
+  RecordProperty("resonance_over_quarter_wave", std::to_string(best_f / (v1 / (4.0 * layer_thickness))));
+  RecordProperty("peak_times_alpha", std::to_string(best * alpha));
   EXPECT_NEAR(best_f / (v1 / (4.0 * layer_thickness)), 1.0, 0.02);
   EXPECT_NEAR(best * alpha, 1.0, 0.05);
 }
