@@ -1,23 +1,26 @@
 #include "seismic/free_field_synthesis.hpp"
 
+#include <bit>
 #include <cmath>
 #include <numbers>
 
-#include "seismic/seismic_fft.hpp"
+#include "core/spectrum.hpp"
 
 namespace maris::seismic {
 
 FreeFieldSynthesis::FreeFieldSynthesis(const FreeField& field, const std::vector<double>& incident, double t0,
                                        double dt)
     : field_(field), t0_(t0), dt_(dt), n_out_(static_cast<int>(incident.size())) {
-  n_fft_ = nextPowerOfTwo(std::max<std::size_t>(64, 2 * incident.size()));
+  n_fft_ = std::bit_ceil(std::max<std::size_t>(64, 2 * incident.size()));
   const double window = static_cast<double>(n_fft_) * dt;
   eps_ = std::log(1.0e6) / window;
 
   // Damped input spectrum in the e^{+iωt} transform: U(ω+iε) = Σ u_k e^{-ε t_k} e^{iω t_k} dt (t from t0).
   std::vector<Complex> buffer(n_fft_, Complex(0.0));
   for (int k = 0; k < n_out_; ++k) buffer[k] = incident[k] * std::exp(-eps_ * k * dt);
-  fftInPlace(buffer, +1);
+  // Σ x e^{+iωt} of real samples = conj(Σ x e^{−iωt}).
+  buffer = fft(std::move(buffer));
+  for (auto& b : buffer) b = std::conj(b);
   const std::size_t half = n_fft_ / 2;
   omega_.resize(half + 1);
   input_spectrum_.resize(half + 1);
@@ -42,7 +45,7 @@ void FreeFieldSynthesis::invertPair(const std::vector<Complex>& first, const std
     if (k > 0 && k < half) z[n_fft_ - k] = std::conj(a) + i * std::conj(b);
   }
   // e^{-iωt} synthesis: y(t_n) = (1/(N dt)) Σ_k Y_k e^{-2πi kn/N}.
-  fftInPlace(z, -1);
+  z = fft(std::move(z));
   out_first.resize(n_out_);
   out_second.resize(n_out_);
   const double scale = 1.0 / (static_cast<double>(n_fft_) * dt_);

@@ -3,11 +3,12 @@
 // The reference motion is the surface of a homogeneous half-space under the same wave at vertical
 // incidence: twice the incident displacement, velocity or acceleration (paper §4.1).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <complex>
 #include <numeric>
 
-#include "seismic/seismic_fft.hpp"
+#include "core/spectrum.hpp"
 #include "seismic/seismic_solve.hpp"
 
 namespace maris::seismic {
@@ -34,10 +35,10 @@ double peak(const std::vector<double>& v) {
 double mean(const std::vector<double>& v) { return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
 
 // Fourier amplitude |Σ a_k e^{-iωt_k} dt| on the FFT grid (zero-padded to a power of two).
-std::vector<double> amplitudeSpectrum(const std::vector<double>& a, double dt, std::size_t n_fft) {
+std::vector<double> fourierAmplitude(const std::vector<double>& a, double dt, std::size_t n_fft) {
   std::vector<std::complex<double>> z(n_fft, 0.0);
   for (std::size_t k = 0; k < a.size() && k < n_fft; ++k) z[k] = a[k];
-  fftInPlace(z, -1);
+  z = fft(std::move(z));
   std::vector<double> out(n_fft / 2 + 1);
   for (std::size_t k = 0; k < out.size(); ++k) out[k] = std::abs(z[k]) * dt;
   return out;
@@ -136,8 +137,8 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
                            {"incident", "ux_centre", "uy_centre", "ux_right", "uy_right"}, false, false, "", {}});
 
   // Fourier spectral ratios H_a = |A(f)| / (2|A_0(f)|) (paper eq 30), up to f_cut where the input has energy.
-  const std::size_t n_fft = nextPowerOfTwo(c.incident.size());
-  const auto a0 = amplitudeSpectrum(rate(rate(c.incident, dt), dt), dt, n_fft);
+  const std::size_t n_fft = std::bit_ceil(c.incident.size());
+  const auto a0 = fourierAmplitude(rate(rate(c.incident, dt), dt), dt, n_fft);
   const double a0_max = *std::max_element(a0.begin(), a0.end());
   Table spec{"spectral_ratio", "Acceleration Fourier spectral ratios H_a", {}};
   auto& f_col = spec.add("frequency", "Hz").values;
@@ -145,8 +146,8 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   std::vector<std::vector<double>> s_ax(3), s_ay(3);
   const std::size_t which[3] = {0, mid, last};
   for (int w = 0; w < 3; ++w) {
-    s_ax[w] = amplitudeSpectrum(rate(rate(c.ux[which[w]], dt), dt), dt, n_fft);
-    s_ay[w] = amplitudeSpectrum(rate(rate(c.uy[which[w]], dt), dt), dt, n_fft);
+    s_ax[w] = fourierAmplitude(rate(rate(c.ux[which[w]], dt), dt), dt, n_fft);
+    s_ay[w] = fourierAmplitude(rate(rate(c.uy[which[w]], dt), dt), dt, n_fft);
   }
   for (std::size_t k = 1; k < a0.size(); ++k) {
     const double f = k / (n_fft * dt);

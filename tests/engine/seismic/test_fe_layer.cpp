@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "fe_test_support.hpp"
-#include "seismic/seismic_fft.hpp"
+#include "core/spectrum.hpp"
 
 namespace maris::seismic {
 namespace {
@@ -55,8 +55,8 @@ TEST(FeLayer, SoftLayerResonatesAtQuarterWavelength) {
     surf[n] = run.ux[0][n];
     inc[n] = bsplinePulse(n * dt - start, pulse);
   }
-  fftInPlace(surf, -1);
-  fftInPlace(inc, -1);
+  surf = fft(std::move(surf));
+  inc = fft(std::move(inc));
   const double df = 1.0 / (n_fft * dt);
   double best_f = 0.0, best = 0.0;
   for (std::size_t k = static_cast<std::size_t>(1.0 / df); k * df < 4.0; ++k) {
