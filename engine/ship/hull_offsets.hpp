@@ -1,0 +1,49 @@
+// Offsets tables: half-breadths on stations × waterlines read from CSV, and the monotone cubic (PCHIP,
+// Fritsch & Carlson 1980) interpolation that turns them into a smooth surface Y(x, z).
+//
+// CSV format (the format of /work/shared/data/hulls): a header row naming three columns with their units,
+//   x_m,z_m,half_breadth_m          (or x,z,half_breadth followed by a units row  m,m,m)
+// then one row per offset, station by station (x ascending), any z order within a station. z is measured from
+// the design waterline, negative down; rows with z > 0 (above the waterline) are ignored. Every half-breadth
+// must be a finite number ≥ 0; 0 means the line misses the hull.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace maris::ship {
+
+struct OffsetsStation {
+  double x = 0;                     // [m] from the AP, positive forward
+  std::vector<double> z;            // [m] ascending (deepest first), all ≤ 0
+  std::vector<double> half_breadth; // [m] at z, ≥ 0
+};
+
+struct OffsetsTable {
+  std::vector<OffsetsStation> stations;  // x strictly ascending, ≥ 3 stations, ≥ 2 points each
+  int ignored_rows_above_waterline = 0;
+  double deepest() const;                // [m] most negative z of any station
+};
+
+// Parses the CSV text. `origin` names the source in error messages (a parameter path or a file name).
+// Throws InputError listing every bad row: missing or non-numeric entries, negative or non-finite
+// half-breadths, stations out of order, duplicate z within a station, too few stations or points.
+OffsetsTable parseOffsetsCsv(std::string_view text, const std::string& origin);
+
+// Multiplies every length of the table by `scale`.
+OffsetsTable scaledOffsets(const OffsetsTable& table, double scale);
+
+// Monotone piecewise-cubic Hermite interpolation through (x_k, y_k), x strictly ascending, n ≥ 2.
+// Shape preserving: no overshoot, so non-negative data stay non-negative. Outside [x_0, x_{n-1}] it returns
+// `outside`.
+class Pchip {
+ public:
+  Pchip(std::vector<double> x, std::vector<double> y);
+  double operator()(double x, double outside = 0.0) const;
+
+ private:
+  std::vector<double> x_, y_, slope_;
+};
+
+}  // namespace maris::ship

@@ -1,0 +1,170 @@
+#include "ship/ship_parameters.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/errors.hpp"
+#include "core/resources.hpp"
+#include "core/scenario.hpp"
+
+namespace maris::ship {
+
+namespace {
+
+// Built-in offsets tables (resources/data/ship, provenance in its README.md) and the Lpp they are written at.
+struct BuiltinHull {
+  const char* source;
+  const char* resource;
+  const char* name;
+  double length_pp;  // [m]
+};
+constexpr BuiltinHull kBuiltinHulls[] = {
+    {"series60", "data/ship/series60_cb060_offsets.csv", "Series 60 C_B 0.60 (Todd 1963)", 3.048},
+    {"kcs", "data/ship/kcs_model_offsets.csv", "KCS (SIMMAN 2014 IGES)", 230.0 / 31.5994},
+};
+
+}  // namespace
+
+SchemaBinder<ShipParameters> shipSchemaBinder() {
+  using P = ShipParameters;
+  SchemaBinder<P> b;
+  b.choice("hull.source", &P::hull_source, {"wigley", "parametric", "series60", "kcs", "offsets_file"},
+           "Hull: Wigley formula, parametric family, built-in Series 60 / KCS tables, or an offsets CSV");
+  b.real("hull.length", &P::length, "m", Range::positive(1000), "Length between perpendiculars Lpp (tables are scaled to it)");
+  b.real("hull.beam", &P::beam, "m", Range::positive(200), "Beam B of the wigley/parametric hull");
+  b.real("hull.draft", &P::draft, "m", Range::positive(100), "Draft T of the wigley/parametric hull");
+  b.real("hull.waterline_exponent", &P::waterline_exponent, "-", Range::closed(1, 20),
+         "Parametric hull: waterline exponent p, Y ∝ 1 − |2ξ/L|^p");
+  b.real("hull.section_exponent", &P::section_exponent, "-", Range::closed(1, 20),
+         "Parametric hull: section exponent q, Y ∝ 1 − |z/T|^q");
+  b.text("hull.offsets_file", &P::offsets_file, "Offsets CSV (x_m,z_m,half_breadth_m) when hull.source = offsets_file");
+  b.real("hull.offsets_length_pp", &P::offsets_length_pp, "m", Range::positive(1000),
+         "Lpp of the offsets file as written (the table is scaled to hull.length)");
+  b.real("hull.wetted_surface", &P::wetted_surface, "m^2", Range::nonNegative(1e6),
+         "Wetted surface for the coefficients; 0 = computed from the geometry");
+  b.real("speed.froude_min", &P::froude_min, "-", Range::closed(0.02, 3), "First Froude number of the sweep");
+  b.real("speed.froude_max", &P::froude_max, "-", Range::closed(0.02, 3), "Last Froude number of the sweep");
+  b.integer("speed.count", &P::froude_count, "-", Range::closed(2, 5000), "Number of speeds in the sweep");
+  b.real("speed.design_froude", &P::design_froude, "-", Range::closed(0.02, 3),
+         "Froude number of the scalar results, the wave spectrum and the wave pattern");
+  b.choice("water.kind", &P::water, {"fresh", "sea"}, "Fresh water or sea water (salinity 35 g/kg)");
+  b.real("water.temperature", &P::temperature, "degC", Range::closed(0, 40), "Water temperature");
+  b.real("water.gravity", &P::gravity, "m/s^2", Range::closed(9.7, 9.9), "Gravitational acceleration");
+  b.choice("viscous.form_factor_method", &P::form_factor_method, {"input", "holtrop"},
+           "Form factor 1+k: the value below, or Holtrop's regression from the particulars");
+  b.real("viscous.form_factor", &P::form_factor, "-", Range::closed(1, 2), "Form factor 1+k (R_V = (1+k) R_F)");
+  b.real("viscous.correlation_allowance", &P::correlation_allowance, "-", Range::closed(-0.001, 0.002),
+         "Correlation allowance C_A added to C_T");
+  b.choice("holtrop.stern_shape", &P::stern_shape, {"pram_gondola", "v_shaped", "normal", "u_shaped"},
+           "Holtrop-Mennen afterbody form (C_stern = -25, -10, 0, 10)");
+  b.boolean("holtrop.correlation_allowance", &P::holtrop_correlation_allowance,
+            "Add Holtrop's correlation allowance R_A (meant for full-scale ships)");
+  b.boolean("corrections.tangency", &P::tangency_correction,
+            "Boundary-layer tangency correction of the hull slopes (paper eqs 9-11)");
+  b.boolean("corrections.wave_number", &P::wave_number_correction,
+            "Wave-number (phase) correction k0 -> k0 [1 + 3.7 (s_FS/l_FS - 1)] (paper eq 12)");
+  b.boolean("corrections.corrected_prefactor", &P::corrected_prefactor,
+            "Use the corrected wave number also in the k0^2 prefactor of the resistance integral");
+  b.real("corrections.short_wave_cutoff", &P::short_wave_cutoff, "-", Range::closed(0, 1),
+         "Discard waves shorter than this fraction of Lpp (paper section 3.3); 0 = keep all");
+  b.real("corrections.trip_position", &P::trip_position, "-", Range::closed(0, 1),
+         "Forced laminar-turbulent transition of the boundary layer, fraction of the waterline from the bow");
+  b.integer("numerics.stations", &P::stations, "-", Range::closed(9, 4001), "Grid stations along the hull (4m+1)");
+  b.integer("numerics.waterlines", &P::waterlines, "-", Range::closed(5, 1001), "Grid waterlines (odd)");
+  b.real("numerics.relative_tolerance", &P::relative_tolerance, "-", Range::closed(1e-10, 0.1),
+         "Relative tolerance of the wave-angle quadrature and tail, per speed");
+  b.integer("numerics.threads", &P::threads, "-", Range::closed(0, 256), "Threads for the speed sweep (0 = all cores)");
+  b.text("measured.file", &P::measured_file, "Optional CSV of measured points: columns froude, c_total");
+  return b;
+}
+
+std::vector<FieldError> checkShipParameters(const ShipParameters& p) {
+  std::vector<FieldError> e;
+  auto num = [](double v) { return Json(v).dump(); };
+  if (p.froude_min >= p.froude_max)
+    e.push_back({"speed.froude_max", num(p.froude_max), "must be greater than speed.froude_min = " + num(p.froude_min)});
+  if (p.stations % 4 != 1)
+    e.push_back({"numerics.stations", num(p.stations),
+                 "must be 4m+1 (e.g. 129, 257, 513): Filon-Simpson needs an odd count on the grid and its coarse half"});
+  if (p.waterlines % 2 != 1) e.push_back({"numerics.waterlines", num(p.waterlines), "must be odd (e.g. 41, 51)"});
+  if (p.hull_source == "offsets_file" && p.offsets_file.empty())
+    e.push_back({"hull.offsets_file", "\"\"", "must name a CSV file when hull.source = offsets_file"});
+  if (p.hull_source == "offsets_file" && !p.offsets_file.empty() && !std::filesystem::is_regular_file(p.offsets_file))
+    e.push_back({"hull.offsets_file", Json(p.offsets_file).dump(), "is not a readable file"});
+  if (!p.measured_file.empty() && !std::filesystem::is_regular_file(p.measured_file))
+    e.push_back({"measured.file", Json(p.measured_file).dump(), "is not a readable file"});
+  if ((p.hull_source == "wigley" || p.hull_source == "parametric") && p.draft > p.length)
+    e.push_back({"hull.draft", num(p.draft), "must not exceed hull.length = " + num(p.length) + " m (a thin ship)"});
+  return e;
+}
+
+HullForm buildHullForm(const ShipParameters& p) {
+  if (p.hull_source == "wigley") return makeParametricHull(p.length, p.beam, p.draft);
+  if (p.hull_source == "parametric")
+    return makeParametricHull(p.length, p.beam, p.draft, p.waterline_exponent, p.section_exponent);
+  if (p.hull_source == "offsets_file") {
+    const std::string text = readTextFile(p.offsets_file);
+    auto table = parseOffsetsCsv(text, "parameters.hull.offsets_file (" + p.offsets_file + ")");
+    return makeOffsetsHull(std::filesystem::path(p.offsets_file).filename().string(), std::move(table),
+                           p.offsets_length_pp, p.length / p.offsets_length_pp);
+  }
+  for (const auto& b : kBuiltinHulls) {
+    if (p.hull_source != b.source) continue;
+    const auto text = builtinResource(b.resource);
+    if (!text) throw InputError("parameters.hull.source", Json(p.hull_source).dump(), "built-in table is missing");
+    return makeOffsetsHull(b.name, parseOffsetsCsv(*text, b.resource), b.length_pp, p.length / b.length_pp);
+  }
+  throw InputError("parameters.hull.source", Json(p.hull_source).dump(), "unknown hull source");
+}
+
+MeasuredPoints readMeasuredPoints(const std::string& path) {
+  const std::string origin = "parameters.measured.file (" + path + ")";
+  const std::string text = readTextFile(path);
+  MeasuredPoints m;
+  std::size_t pos = 0;
+  int line = 0, froude_col = -1, ct_col = -1;
+  std::vector<FieldError> errors;
+  while (pos < text.size()) {
+    auto nl = text.find('\n', pos);
+    if (nl == std::string::npos) nl = text.size();
+    std::string row = text.substr(pos, nl - pos);
+    pos = nl + 1;
+    ++line;
+    if (!row.empty() && row.back() == '\r') row.pop_back();
+    if (row.empty()) continue;
+    std::vector<std::string> f;
+    for (std::size_t a = 0;;) {
+      const auto c = row.find(',', a);
+      f.push_back(row.substr(a, c == std::string::npos ? std::string::npos : c - a));
+      if (c == std::string::npos) break;
+      a = c + 1;
+    }
+    if (froude_col < 0) {
+      for (std::size_t k = 0; k < f.size(); ++k) {
+        if (f[k] == "froude") froude_col = static_cast<int>(k);
+        if (f[k] == "c_total") ct_col = static_cast<int>(k);
+      }
+      if (froude_col < 0 || ct_col < 0)
+        throw InputError(origin, row, "line 1: expected a header with columns froude and c_total");
+      continue;
+    }
+    char* end = nullptr;
+    const auto field = [&](int k) { return k < static_cast<int>(f.size()) ? f[k] : std::string(); };
+    const std::string sf = field(froude_col), sc = field(ct_col);
+    const double fn = std::strtod(sf.c_str(), &end);
+    const bool ok_fn = !sf.empty() && end == sf.c_str() + sf.size();
+    const double ct = std::strtod(sc.c_str(), &end);
+    const bool ok_ct = !sc.empty() && end == sc.c_str() + sc.size();
+    if (!ok_fn && !ok_ct && line == 2) continue;  // a units row
+    if (!ok_fn || !ok_ct || !std::isfinite(fn) || !std::isfinite(ct)) {
+      errors.push_back({origin, row, "line " + std::to_string(line) + ": froude and c_total must be numbers"});
+      continue;
+    }
+    m.froude.push_back(fn);
+    m.c_total.push_back(ct);
+  }
+  if (!errors.empty()) throw InputError(std::move(errors));
+  return m;
+}
+
+}  // namespace maris::ship

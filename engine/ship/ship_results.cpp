@@ -1,0 +1,230 @@
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "ship/ship_study.hpp"
+
+namespace maris::ship {
+
+namespace {
+
+// Index of the sweep point closest to the design Froude number.
+std::size_t designIndex(const ResistanceCurves& c, double design_froude) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < c.froude.size(); ++i)
+    if (std::abs(c.froude[i] - design_froude) < std::abs(c.froude[best] - design_froude)) best = i;
+  return best;
+}
+
+void addParticulars(Results& r, const ShipModel& m) {
+  const HullParticulars& q = m.particulars;
+  r.addScalar("length_pp", q.length_pp, "m", "Length between perpendiculars Lpp");
+  r.addScalar("length_wl", q.length_wl, "m", "Waterline length");
+  r.addScalar("beam_wl", q.beam_wl, "m", "Waterline beam");
+  r.addScalar("draft", q.draft, "m", "Draft (deepest point below the waterline)");
+  r.addScalar("displacement_volume", q.volume, "m^3", "Displacement volume");
+  r.addScalar("displacement_mass", q.volume * m.water.density, "kg", "Displacement mass");
+  r.addScalar("wetted_surface_geometry", q.wetted_surface, "m^2", "Wetted surface computed from the grid");
+  r.addScalar("wetted_surface", m.wetted_surface, "m^2", "Wetted surface used for the coefficients");
+  r.addScalar("waterplane_area", q.waterplane_area, "m^2", "Waterplane area");
+  r.addScalar("block_coefficient", q.block_coefficient, "-", "C_B = volume/(Lpp B T)");
+  r.addScalar("prismatic_coefficient", q.prismatic_coefficient, "-", "C_P = volume/(A_M Lpp)");
+  r.addScalar("midship_coefficient", q.midship_coefficient, "-", "C_M = A_M/(B T), A_M the largest section");
+  r.addScalar("waterplane_coefficient", q.waterplane_coefficient, "-", "C_WP = A_WP/(Lpp B)");
+  r.addScalar("lcb", q.lcb_percent, "%", "LCB forward of midship, % of Lpp");
+  r.addScalar("form_factor", m.form_factor, "-", "Form factor 1+k used for C_T");
+  r.addScalar("holtrop_form_factor", holtropFormFactor(m.holtrop_hull), "-", "Holtrop's regression 1+k1");
+  r.addScalar("water_density", m.water.density, "kg/m^3", "Water density");
+  r.addScalar("kinematic_viscosity", m.water.kinematic_viscosity, "m^2/s", "Kinematic viscosity");
+  if (m.fore_shoulder.distance > 0)
+    r.addScalar("fore_shoulder_ratio", m.fore_shoulder.arc_length / m.fore_shoulder.distance, "-",
+                "s_FS/l_FS: waterline arc over distance from FP to the fore shoulder");
+  r.addScalar("wave_number_factor", m.wave_number_factor, "-", "k0_hat/k0 applied by the wave-number correction");
+}
+
+PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
+  PlotSpec plot;
+  plot.name = std::move(name);
+  plot.title = std::move(title);
+  plot.table = std::move(table);
+  plot.x = std::move(x);
+  plot.y = std::move(y);
+  return plot;
+}
+
+// The hull as two Surface shapes (port and starboard), sampled coarser than the Michell grid.
+Shape3D hullSurface(const HullForm& hull, double side) {
+  const HullGrid g = sampleHull(hull, 81, 21);
+  Shape3D s;
+  s.kind = Shape3D::Kind::Surface;
+  s.name = side > 0 ? "hull (starboard)" : "hull (port)";
+  s.grid_u = g.nx();
+  s.grid_v = g.nz();
+  for (int j = 0; j < g.nz(); ++j)
+    for (int i = 0; i < g.nx(); ++i) s.points.emplace_back(g.x(i), side * g.half_breadth(i, j), g.z(j));
+  s.color = {0.75, 0.3, 0.2};
+  return s;
+}
+
+}  // namespace
+
+Results buildShipResults(const ShipParameters& p, const ShipModel& m, const ResistanceCurves& c, RunContext& context) {
+  Results r;
+  const std::size_t n = c.froude.size();
+  const double S = m.wetted_surface, rho = m.water.density;
+  auto q = [&](std::size_t i) { return 0.5 * rho * c.speed[i] * c.speed[i] * S; };
+  const bool corrected = !c.corrected.empty(), exact = !c.exact.empty();
+
+  // Resistance curve table.
+  Table t;
+  t.name = "resistance_curve";
+  t.title = "Resistance curves: " + m.hull.name;
+  std::vector<double> cw, cw_err, cwc, cwe, ct, ctc, cth, cwh, rw, rt, rtc, rth;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double viscous = m.form_factor * c.c_friction[i] + p.correlation_allowance;
+    cw.push_back(c.michell[i].resistance / q(i));
+    cw_err.push_back(c.michell[i].error_estimate / q(i));
+    ct.push_back(cw.back() + viscous);
+    rw.push_back(c.michell[i].resistance);
+    rt.push_back(ct.back() * q(i));
+    if (corrected) {
+      cwc.push_back(c.corrected[i].resistance / q(i));
+      ctc.push_back(cwc.back() + viscous);
+      rtc.push_back(ctc.back() * q(i));
+    }
+    if (exact) cwe.push_back(c.exact[i].resistance / q(i));
+    cwh.push_back(c.holtrop[i].wave / q(i));
+    rth.push_back(c.holtrop[i].total);
+    cth.push_back(rth.back() / q(i));
+  }
+  t.add("froude", "-", c.froude);
+  t.add("speed", "m/s", c.speed);
+  t.add("c_wave", "-", cw);
+  t.add("c_wave_error", "-", cw_err);
+  if (corrected) t.add("c_wave_corrected", "-", cwc);
+  if (exact) t.add("c_wave_exact", "-", cwe);
+  t.add("c_wave_holtrop", "-", cwh);
+  t.add("c_friction", "-", c.c_friction);
+  t.add("c_total", "-", ct);
+  if (corrected) t.add("c_total_corrected", "-", ctc);
+  t.add("c_total_holtrop", "-", cth);
+  t.add("r_wave", "N", rw);
+  t.add("r_total", "N", rt);
+  if (corrected) t.add("r_total_corrected", "N", rtc);
+  t.add("r_total_holtrop", "N", rth);
+  r.tables.push_back(std::move(t));
+
+  // Plots.
+  std::vector<std::string> cw_cols{"c_wave"}, ct_cols{"c_total"}, rt_cols{"r_total"};
+  if (corrected) {
+    cw_cols.push_back("c_wave_corrected");
+    ct_cols.push_back("c_total_corrected");
+    rt_cols.push_back("r_total_corrected");
+  }
+  cw_cols.push_back("c_wave_holtrop");
+  ct_cols.push_back("c_total_holtrop");
+  rt_cols.push_back("r_total_holtrop");
+  r.plots.push_back(makePlot("wave_resistance_coefficient", "Wave resistance coefficient C_W", "resistance_curve", "froude", cw_cols));
+  PlotSpec ct_plot = makePlot("total_resistance_coefficient", "Total resistance coefficient C_T", "resistance_curve", "froude", ct_cols);
+  if (!p.measured_file.empty()) {
+    const MeasuredPoints mp = readMeasuredPoints(p.measured_file);
+    Table mt;
+    mt.name = "measured";
+    mt.title = "Measured points (" + p.measured_file + ")";
+    mt.add("froude", "-", mp.froude);
+    mt.add("c_total", "-", mp.c_total);
+    r.tables.push_back(std::move(mt));
+    ct_plot.reference_table = "measured";
+    ct_plot.reference_y = {"c_total"};
+  }
+  r.plots.push_back(ct_plot);
+  r.plots.push_back(makePlot("friction_coefficient", "ITTC-57 friction coefficient C_F", "resistance_curve", "froude", {"c_friction"}));
+  r.plots.push_back(makePlot("total_resistance", "Total resistance R_T", "resistance_curve", "speed", rt_cols));
+
+  // Design speed: scalars and the wave-angle spectrum.
+  const std::size_t d = designIndex(c, p.design_froude);
+  addParticulars(r, m);
+  r.addScalar("design_froude", c.froude[d], "-", "Froude number of the design-speed results");
+  r.addScalar("design_speed", c.speed[d], "m/s", "Speed at the design Froude number");
+  r.addScalar("c_wave", cw[d], "-", "Michell wave resistance coefficient at the design speed");
+  r.addScalar("c_wave_error", cw_err[d], "-", "Error estimate of c_wave (quadrature + tail + grid)");
+  if (corrected) r.addScalar("c_wave_corrected", cwc[d], "-", "Corrected wave resistance coefficient");
+  r.addScalar("c_friction", c.c_friction[d], "-", "ITTC-57 friction coefficient at the design speed");
+  r.addScalar("c_total", ct[d], "-", "C_T = C_W + (1+k) C_F + C_A (uncorrected Michell)");
+  r.addScalar("r_total", rt[d], "N", "Total resistance at the design speed (uncorrected Michell)");
+  r.addScalar("r_total_holtrop", rth[d], "N", "Holtrop-Mennen total resistance at the design speed");
+  context.progress(0.95, "wave spectrum");
+  {
+    std::vector<double> theta, theta_deg;
+    for (int k = 0; k < 400; ++k) {
+      theta.push_back(0.5 * std::numbers::pi * k / 400.0 * 0.98);
+      theta_deg.push_back(theta.back() * 180.0 / std::numbers::pi);
+    }
+    GridKochin kochin(m.grid, false);
+    Table s;
+    s.name = "wave_spectrum";
+    s.title = "Wave-angle spectrum dR_W/dtheta at Fn = " + std::to_string(c.froude[d]);
+    s.add("theta_deg", "deg", theta_deg);
+    s.add("dr_dtheta", "N/rad", waveSpectrum(kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, false), theta));
+    if (corrected) {
+      auto corrected_kochin = correctedKochin(m);
+      s.add("dr_dtheta_corrected", "N/rad",
+            waveSpectrum(*corrected_kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, true), theta));
+    }
+    r.tables.push_back(std::move(s));
+    r.plots.push_back(makePlot("wave_spectrum", "Wave-angle spectrum of R_W", "wave_spectrum", "theta_deg",
+                               corrected ? std::vector<std::string>{"dr_dtheta", "dr_dtheta_corrected"}
+                                         : std::vector<std::string>{"dr_dtheta"}));
+  }
+
+  // Boundary layer at the design speed on the waterline nearest 0.2 T (the depth of the paper's Fig. 4).
+  if (m.tangency) {
+    const int j = static_cast<int>(std::lround(0.2 * (m.grid.nz() - 1)));
+    const HullGrid corrected_grid = m.tangency->correctedGrid(c.speed[d], m.water.kinematic_viscosity);
+    const auto dstar = m.tangency->displacementThickness(j, c.speed[d], m.water.kinematic_viscosity);
+    Table b;
+    b.name = "boundary_layer";
+    b.title = "Displacement thickness at z = " + std::to_string(m.grid.z(j)) + " m, Fn = " + std::to_string(c.froude[d]);
+    std::vector<double> x, y, ye;
+    for (int i = 0; i < m.grid.nx(); ++i) {
+      x.push_back(m.grid.x(i));
+      y.push_back(m.grid.half_breadth(i, j));
+      ye.push_back(corrected_grid.half_breadth(i, j));
+    }
+    b.add("x", "m", x);
+    b.add("half_breadth", "m", y);
+    b.add("displacement_thickness", "m", dstar);
+    b.add("corrected_half_breadth", "m", ye);
+    r.tables.push_back(std::move(b));
+    r.plots.push_back(makePlot("boundary_layer", "Boundary layer on the waterline at 0.2 T", "boundary_layer", "x",
+                               {"half_breadth", "corrected_half_breadth", "displacement_thickness"}));
+  }
+
+  // 3-D view: the hull, both sides, with the still waterline.
+  Frame3D frame;
+  frame.shapes.push_back(hullSurface(m.hull, 1.0));
+  frame.shapes.push_back(hullSurface(m.hull, -1.0));
+  r.view.frames.push_back(std::move(frame));
+  r.view.water_level_z = 0.0;
+
+  // Solver statistics: the largest relative error estimate over the sweep.
+  double worst = 0;
+  long evaluations = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    worst = std::max(worst, c.michell[i].error_estimate / c.michell[i].resistance);
+    evaluations += c.michell[i].evaluations;
+    if (!c.michell[i].converged)
+      context.warn("Fn = " + std::to_string(c.froude[i]) + ": the wave-angle quadrature stopped before the tolerance");
+  }
+  r.stats.steps = static_cast<long>(n);
+  r.stats.rhs_evaluations = evaluations;
+  r.stats.error_estimate = worst;
+  r.stats.error_unit = "relative (largest over the sweep, uncorrected C_W)";
+  r.stats.method = "Michell: exp-fitted trapezoid (z) x Filon-Simpson (x) on " + std::to_string(p.stations) + "x" +
+                   std::to_string(p.waterlines) + ", adaptive Gauss-Kronrod 7/15 in lambda = cosh u, rtol " +
+                   std::to_string(p.relative_tolerance);
+  for (const auto& note : m.notes) context.warn(note);
+  return r;
+}
+
+}  // namespace maris::ship

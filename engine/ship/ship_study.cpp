@@ -1,0 +1,108 @@
+#include "ship/ship_study.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include "ship/resistance_sweep.hpp"
+
+namespace maris::ship {
+
+namespace {
+
+double sternShapeCoefficient(const std::string& s) {
+  if (s == "pram_gondola") return -25.0;
+  if (s == "v_shaped") return -10.0;
+  if (s == "u_shaped") return 10.0;
+  return 0.0;
+}
+
+}  // namespace
+
+ShipModel buildShipModel(const ShipParameters& p, RunContext& context) {
+  ShipModel m;
+  context.progress(0.0, "hull geometry");
+  m.hull = buildHullForm(p);
+  if (m.hull.kind == HullForm::Kind::Offsets && m.hull.offsets.ignored_rows_above_waterline > 0)
+    m.notes.push_back("offsets: " + std::to_string(m.hull.offsets.ignored_rows_above_waterline) +
+                      " rows above the waterline (z > 0) were ignored");
+  m.grid = sampleHull(m.hull, p.stations, p.waterlines);
+  m.particulars = computeParticulars(m.grid, m.hull.length_pp);
+  m.wetted_surface = p.wetted_surface > 0 ? p.wetted_surface : m.particulars.wetted_surface;
+  m.water = waterProperties(p.water == "sea" ? WaterKind::Sea : WaterKind::Fresh, p.temperature);
+
+  // Holtrop–Mennen inputs from the computed particulars (even keel, L = L_WL).
+  const HullParticulars& q = m.particulars;
+  HoltropHull& h = m.holtrop_hull;
+  h.length_wl = q.length_wl;
+  h.beam = q.beam_wl;
+  h.draft = q.draft;
+  h.volume = q.volume;
+  h.lcb_percent = q.lcb_percent * q.length_pp / q.length_wl;
+  h.midship_coefficient = q.midship_coefficient;
+  h.waterplane_coefficient = q.waterplane_area / (q.length_wl * q.beam_wl);
+  h.wetted_surface = m.wetted_surface;
+  h.bulb_area = q.bulb_area;
+  h.bulb_centre_height = q.bulb_centre_height;
+  h.transom_area = q.transom_area;
+  h.stern_shape = sternShapeCoefficient(p.stern_shape);
+  for (auto& note : holtropRangeNotes(h)) m.notes.push_back(note);
+  m.form_factor = p.form_factor_method == "holtrop" ? holtropFormFactor(h) : p.form_factor;
+
+  // The paper's corrections.
+  m.fore_shoulder = foreShoulder(m.grid);
+  if (p.wave_number_correction && m.fore_shoulder.distance > 0)
+    m.wave_number_factor = 1.0 + 3.7 * (m.fore_shoulder.arc_length / m.fore_shoulder.distance - 1.0);
+  if (p.tangency_correction) m.tangency = std::make_shared<const TangencyCorrection>(m.grid, p.trip_position);
+  m.any_correction = p.tangency_correction || p.wave_number_correction || p.short_wave_cutoff > 0;
+  return m;
+}
+
+std::unique_ptr<KochinFunction> correctedKochin(const ShipModel& m) {
+  if (m.tangency) return std::make_unique<TangencyKochin>(m.tangency, m.water.kinematic_viscosity);
+  return std::make_unique<GridKochin>(m.grid);
+}
+
+MichellSettings michellSettings(const ShipParameters& p, const ShipModel& m, bool corrected) {
+  MichellSettings s;
+  s.relative_tolerance = p.relative_tolerance;
+  if (!corrected) return s;
+  s.wave_number_factor = m.wave_number_factor;
+  s.prefactor_uses_corrected_wave_number = p.corrected_prefactor;
+  s.short_wave_cutoff = p.short_wave_cutoff;
+  s.cutoff_length = m.hull.length_pp;
+  return s;
+}
+
+ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipModel& m, RunContext& context) {
+  ResistanceCurves c;
+  const int n = p.froude_count;
+  const double L = m.hull.length_pp, g = p.gravity, rho = m.water.density;
+  for (int i = 0; i < n; ++i) {
+    const double fn = p.froude_min + (p.froude_max - p.froude_min) * i / (n - 1);
+    c.froude.push_back(fn);
+    c.speed.push_back(fn * std::sqrt(g * L));
+  }
+  // Michell, uncorrected and corrected (grid path), and the closed form for the Wigley hull.
+  const HullGrid& grid = m.grid;
+  c.michell = waveResistanceSweep([&] { return std::make_unique<GridKochin>(grid); }, c.speed, g, rho,
+                                  michellSettings(p, m, false), p.threads, &context, "Michell wave resistance");
+  if (m.any_correction) {
+    c.corrected = waveResistanceSweep([&] { return correctedKochin(m); }, c.speed, g, rho,
+                                      michellSettings(p, m, true), p.threads, &context, "corrected wave resistance");
+  }
+  if (m.hull.isWigley()) {
+    const HullForm& h = m.hull;
+    c.exact = waveResistanceSweep([&] { return std::make_unique<WigleyKochin>(h.length_pp, h.beam, h.draft); },
+                                  c.speed, g, rho, michellSettings(p, m, false), p.threads, &context,
+                                  "exact Wigley wave resistance");
+  }
+  // Friction (Re on the waterline length) and the Holtrop–Mennen comparison.
+  for (double U : c.speed) {
+    c.c_friction.push_back(ittc57FrictionCoefficient(U * m.particulars.length_wl / m.water.kinematic_viscosity));
+    c.holtrop.push_back(holtropMennen(m.holtrop_hull, U, rho, m.water.kinematic_viscosity, g,
+                                      p.holtrop_correlation_allowance));
+  }
+  return c;
+}
+
+}  // namespace maris::ship

@@ -1,0 +1,57 @@
+// The ship resistance study: parameters → hull model → resistance curves. Stages:
+//   buildShipModel        hull form, sampled grid, particulars, water, form factor, corrections' inputs;
+//   computeResistanceCurves  Michell (uncorrected), corrected Michell, exact Wigley, ITTC-57, Holtrop–Mennen;
+//   buildShipResults      tables, plots, 3-D view and scalars.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/results.hpp"
+#include "core/run_context.hpp"
+#include "ship/boundary_layer.hpp"
+#include "ship/holtrop_mennen.hpp"
+#include "ship/michell_resistance.hpp"
+#include "ship/ship_parameters.hpp"
+#include "ship/viscous_resistance.hpp"
+
+namespace maris::ship {
+
+struct ShipModel {
+  HullForm hull;
+  HullGrid grid;                 // the Michell grid (numerics.stations × numerics.waterlines)
+  std::shared_ptr<const TangencyCorrection> tangency;  // boundary-layer correction (null when off)
+  HullParticulars particulars;
+  double wetted_surface = 0;     // [m²] S of the coefficients (override or computed)
+  WaterProperties water;
+  double form_factor = 1;        // [-] 1 + k used for C_T
+  double wave_number_factor = 1; // [-] k̂0/k0 (1 when the correction is off)
+  ForeShoulder fore_shoulder;
+  HoltropHull holtrop_hull;
+  bool any_correction = false;
+  std::vector<std::string> notes;  // warnings for the user
+};
+
+ShipModel buildShipModel(const ShipParameters& p, RunContext& context);
+
+struct ResistanceCurves {
+  std::vector<double> froude, speed;          // [-], [m/s]
+  std::vector<WaveResistance> michell;        // uncorrected Michell, grid path
+  std::vector<WaveResistance> corrected;      // with the enabled corrections (empty when none)
+  std::vector<WaveResistance> exact;          // closed-form Wigley Kochin function (empty for other hulls)
+  std::vector<double> c_friction;             // [-] ITTC-57
+  std::vector<HoltropResistance> holtrop;
+};
+
+// Kochin function of the corrected hull (tangency-corrected when enabled, else the plain grid).
+std::unique_ptr<KochinFunction> correctedKochin(const ShipModel& m);
+
+// Michell settings of the corrected computation (wave-number factor, cutoff) or of the plain one.
+MichellSettings michellSettings(const ShipParameters& p, const ShipModel& m, bool corrected);
+
+ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipModel& m, RunContext& context);
+
+Results buildShipResults(const ShipParameters& p, const ShipModel& m, const ResistanceCurves& c, RunContext& context);
+
+}  // namespace maris::ship
