@@ -1,0 +1,121 @@
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "seismic/free_field_synthesis.hpp"
+#include "seismic/seismic_inputs.hpp"
+#include "seismic/seismic_solve.hpp"
+
+namespace maris::seismic {
+
+std::function<double(double)> incidentFunction(const SeismicParameters& p, double arrival) {
+  const double a = p.input_amplitude;
+  if (p.input_kind == "pulse") {
+    const double length = p.pulse_duration;
+    return [=](double t) { return a * bsplinePulse(t - arrival, length); };
+  }
+  if (p.input_kind == "ricker") {
+    // Centred 1.5/f_p after the arrival: the wavelet is below 1e-9 of its peak before that.
+    const double f = p.ricker_peak_frequency, centre = arrival + 1.5 / f;
+    return [=](double t) { return a * rickerWavelet(t, f, centre); };
+  }
+  const double dt = 0.002;
+  const auto rec = std::make_shared<Accelerogram>(
+      loadAccelerogram(p.accelerogram_file, dt, p.accelerogram_peak_acceleration, "input.accelerogram_file"));
+  return [rec, arrival, dt](double t) {
+    const double s = (t - arrival) / dt;
+    if (s <= 0.0) return 0.0;
+    const auto& d = rec->displacement;
+    const std::size_t k = static_cast<std::size_t>(s);
+    if (k + 1 >= d.size()) return d.back();
+    return d[k] + (s - k) * (d[k + 1] - d[k]);
+  };
+}
+
+std::vector<double> incidentHistory(const SeismicParameters& p, double dt, int n, double arrival) {
+  const auto u0 = incidentFunction(p, arrival);
+  std::vector<double> u(n);
+  for (int k = 0; k < n; ++k) u[k] = u0(k * dt);
+  return u;
+}
+
+double arrivalAtOrigin(const SeismicParameters& p, const FreeField& field) {
+  const ModelExtent box = modelExtent(p);
+  return 0.05 + std::abs(field.horizontalSlowness()) * box.half_width +
+         field.incidentVerticalSlowness() * box.seabed_depth;
+}
+
+void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Results& results, RunContext& ctx) {
+  ctx.progress(0.0, "free field");
+  const double h = field.water().depth;
+  const double deg = 180.0 / std::numbers::pi;
+  if (field.type() == WaveType::SV)
+    results.addScalar("sv_critical_angle", FreeField::criticalAngleSv(field.solid()) * deg, "deg",
+                      "SV incidence limit asin(vs/vp) of the seabed");
+  if (h > 0.0) {
+    const double sin_f = field.horizontalSlowness() * field.water().sound_speed;
+    results.addScalar("water_resonance_frequency", field.water().sound_speed / (4.0 * h * std::sqrt(1.0 - sin_f * sin_f)),
+                      "Hz", "First water-column resonance c_f/(4h cos θ_f): the seabed's vertical motion vanishes");
+  }
+
+  // Transfer functions per unit incident displacement, 0–2 f_cut.
+  Table transfer{"free_field_transfer", "Free-field amplitude per unit incident displacement", {}};
+  auto& f_col = transfer.add("frequency", "Hz").values;
+  auto& bx = transfer.add("seabed_ux", "m/m").values;
+  auto& by = transfer.add("seabed_uy", "m/m").values;
+  auto& ay = transfer.add("surface_uy", "m/m").values;
+  double worst_energy = 0.0;
+  const int count = 400;
+  for (int i = 1; i <= count; ++i) {
+    const double f = 2.0 * p.cutoff_frequency * i / count;
+    const Complex w(2.0 * std::numbers::pi * f, 0.0);
+    const auto a = field.solve(w);
+    const auto b = field.solidAt(a, w, 0.0, 0.0);
+    f_col.push_back(f);
+    bx.push_back(std::abs(b.ux));
+    by.push_back(std::abs(b.uy));
+    ay.push_back(h > 0.0 ? std::abs(field.waterAt(a, w, 0.0, h).uy) : std::abs(b.uy));
+    worst_energy = std::max(worst_energy, std::abs(field.energyResidual(a)));
+  }
+  results.addScalar("free_field_energy_residual", worst_energy, "-",
+                    "Largest |reflected/incident energy flux − 1| over the transfer-function frequencies");
+  results.tables.push_back(std::move(transfer));
+  results.plots.push_back({"free_field_transfer", "Free-field transfer functions (B seabed, A water surface)",
+                           "free_field_transfer", "frequency", {"seabed_ux", "seabed_uy", "surface_uy"}, false, false,
+                           "", {}});
+
+  // Histories at B (0, 0) and A (0, h) by Fourier synthesis.
+  const double dt = std::min(0.002, 1.0 / (40.0 * p.cutoff_frequency));
+  const int n = static_cast<int>(std::ceil(p.duration / dt)) + 1;
+  const auto u0 = incidentHistory(p, dt, n, arrivalAtOrigin(p, field));
+  const FreeFieldSynthesis synthesis(field, u0, 0.0, dt);
+  const auto seabed = synthesis.solid(0.0);
+  Table hist{"free_field_histories", "Free-field displacement histories", {}};
+  auto& t = hist.add("time", "s").values;
+  for (int k = 0; k < n; ++k) t.push_back(k * dt);
+  hist.add("incident", "m", u0);
+  hist.add("seabed_ux", "m", seabed.ux);
+  hist.add("seabed_uy", "m", seabed.uy);
+  std::vector<std::string> ys{"incident", "seabed_ux", "seabed_uy"};
+  auto peak = [](const std::vector<double>& v) {
+    double m = 0.0;
+    for (double x : v) m = std::max(m, std::abs(x));
+    return m;
+  };
+  results.addScalar("free_field_seabed_peak_ux", peak(seabed.ux), "m", "Peak |u_x| of the free field at the seabed (B)");
+  results.addScalar("free_field_seabed_peak_uy", peak(seabed.uy), "m", "Peak |u_y| of the free field at the seabed (B)");
+  if (h > 0.0) {
+    const auto surface = synthesis.water(h);
+    hist.add("surface_uy", "m", surface.uy);
+    ys.push_back("surface_uy");
+    results.addScalar("free_field_surface_peak_uy", peak(surface.uy), "m",
+                      "Peak |u_y| of the free field at the water surface (A)");
+  }
+  results.tables.push_back(std::move(hist));
+  results.plots.push_back(
+      {"free_field_histories", "Free-field displacement at B and A", "free_field_histories", "time", ys, false, false, "", {}});
+  ctx.progress(0.05, "free field");
+}
+
+}  // namespace maris::seismic

@@ -1,0 +1,93 @@
+// The scene's solve: free field, then the FE runs (main model, dry comparison, sweep angles), which are
+// independent and run on std::threads, at most one per hardware thread.
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <numbers>
+#include <thread>
+
+#include "seismic/seismic_solve.hpp"
+
+namespace maris::seismic {
+
+namespace {
+
+struct Job {
+  double angle_deg;
+  bool water;
+  bool snapshots;
+  FeCase result;
+  std::atomic<double> progress{0.0};
+  std::atomic<bool> done{false};
+};
+
+}  // namespace
+
+Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
+  Results results;
+  const FreeField field(seabedMaterial(p), waterLayer(p), waveType(p), p.angle_deg * std::numbers::pi / 180.0);
+  addFreeFieldResults(p, field, results, ctx);
+
+  // Independent FE runs.
+  std::vector<std::unique_ptr<Job>> jobs;
+  auto add = [&](double angle, bool water, bool snapshots) {
+    auto j = std::make_unique<Job>();
+    j->angle_deg = angle;
+    j->water = water;
+    j->snapshots = snapshots;
+    jobs.push_back(std::move(j));
+  };
+  add(p.angle_deg, p.include_water, true);
+  const bool compare = p.model == "reef" && p.include_water && p.compare_without_water;
+  if (compare) add(p.angle_deg, false, false);
+  for (double a : p.sweep_angles_deg) add(a, p.include_water, false);
+
+  // Each worker has its own RunContext whose cancel flag the calling thread raises on request.
+  std::atomic<bool> cancel{false};
+  std::mutex error_mutex;
+  std::exception_ptr first_error;  // the failure that ended the batch (others then see RunCancelled)
+  std::atomic<std::size_t> next{0};
+  auto worker = [&]() {
+    for (std::size_t k = next++; k < jobs.size(); k = next++) {
+      Job& job = *jobs[k];
+      RunContext local([&job](double f, const std::string&) { job.progress = f; }, &cancel);
+      try {
+        job.result = runFeCase(p, job.angle_deg, job.water, job.snapshots, local);
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!first_error) first_error = std::current_exception();
+        cancel = true;  // one failure ends the batch
+      }
+      job.done = true;
+    }
+  };
+  const std::size_t threads =
+      std::min<std::size_t>(jobs.size(), std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (;;) {
+    bool all_done = true;
+    double total = 0.0;
+    for (const auto& j : jobs) {
+      all_done = all_done && j->done;
+      total += j->done ? 1.0 : j->progress.load();
+    }
+    if (all_done) break;
+    if (ctx.cancelRequested()) cancel = true;
+    ctx.progress(0.05 + 0.9 * total / jobs.size(), "finite-element runs");
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  for (auto& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+  ctx.throwIfCancelled();
+
+  std::vector<FeCase> sweep;
+  for (std::size_t k = compare ? 2 : 1; k < jobs.size(); ++k) sweep.push_back(std::move(jobs[k]->result));
+  addFeResults(p, jobs[0]->result, compare ? &jobs[1]->result : nullptr, sweep, results);
+  ctx.progress(1.0, "done");
+  return results;
+}
+
+}  // namespace maris::seismic

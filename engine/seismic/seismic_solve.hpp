@@ -1,0 +1,58 @@
+// Stages of a seismic run, called by the scene (seismic_scene.cpp): input history, free-field report,
+// finite-element runs and their post-processing.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "core/results.hpp"
+#include "core/run_context.hpp"
+#include "seismic/free_field.hpp"
+#include "seismic/seismic_parameters.hpp"
+
+namespace maris::seismic {
+
+// Incident displacement at the origin [m] as a function of time [s], leaving zero at `arrival` [s].
+// Throws InputError for an unreadable accelerogram.
+std::function<double(double)> incidentFunction(const SeismicParameters& p, double arrival);
+
+// Incident displacement at the origin [m], sampled at t_k = k·dt (k < n), leaving zero at `arrival` [s].
+// Throws InputError for an unreadable accelerogram.
+std::vector<double> incidentHistory(const SeismicParameters& p, double dt, int n, double arrival);
+
+// Time [s] at which the incident wave reaches the origin, chosen so that it reaches the model's
+// first corner (bottom, upstream side) 0.05 s after t = 0.
+double arrivalAtOrigin(const SeismicParameters& p, const FreeField& field);
+
+// Free-field transfer functions, histories at the seabed (B) and water surface (A), energy check.
+void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Results& results, RunContext& ctx);
+
+// One finite-element run of the scene's model at one angle, with or without water.
+struct FeCase {
+  double angle_deg = 0.0;
+  bool water = true;
+  double element_size = 0.0, time_step = 0.0, stable_step = 0.0;  // [m], [s], [s]
+  int cell_count = 0;
+  long steps = 0;
+  std::vector<double> station_x;                    // [m] stations along the reef flat (box: the seabed)
+  std::vector<std::vector<double>> ux, uy;          // [m] station histories (t = n·dt)
+  std::vector<double> incident;                     // [m] incident displacement at the origin, same times
+  std::vector<double> probe_fe_uy, probe_ff_uy;     // [m] box only: water surface A, FE and free field
+  std::vector<double> seabed_fe_ux, seabed_ff_ux, seabed_fe_uy, seabed_ff_uy;  // [m] box only: seabed B
+  std::vector<std::vector<double>> snapshot_magnitude;  // [m] |u| per node per frame
+  std::vector<double> snapshot_time;                // [s]
+  int nx = 0, ny = 0;                               // grid cells (for the snapshots)
+  double x0 = 0.0, y0 = 0.0;                        // [m] grid corner
+};
+
+// Runs one case (throws SolverError, RunCancelled, InputError).
+FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx);
+
+// Amplification, spectral ratios, histories, the water's effect, snapshots and the angle sweep.
+void addFeResults(const SeismicParameters& p, const FeCase& main, const FeCase* dry, const std::vector<FeCase>& sweep,
+                  Results& results);
+
+// The whole run: free field, then the finite-element model(s) and their post-processing.
+Results solveSeismic(const SeismicParameters& p, RunContext& ctx);
+
+}  // namespace maris::seismic
