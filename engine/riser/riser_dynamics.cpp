@@ -306,7 +306,8 @@ double highestFrequencyEstimate(const RiserModel& m) {
     if (m.torsion && polar > 0) w = std::max(w, 2 * std::sqrt(m.joints[i].stiffness[0] * delta / polar) / delta);
   }
   if (m.bottom == BottomCondition::Spring) w = std::max(w, 2 * std::sqrt(m.spring_stiffness / m.segments[m.n].mass));
-  return w;
+  // Overdamped spring dampers add a real eigenvalue of about -β ω².
+  return w * std::max(1.0, m.stiffness_damping * w);
 }
 
 }  // namespace maris::riser

@@ -62,7 +62,7 @@ void normaliseState(const RiserModel& m, Eigen::VectorXd& y);
 double totalEnergy(const RiserModel& m, const RiserPose& pose);
 
 // Estimated highest natural frequency [rad/s] (bending 9√(EI/μ)/Δ², torsion 2√(GJ/ι)/Δ, tension
-// 4√(T/μ)/Δ, brief §6), used for the automatic RK4 step.
+// 4√(T/μ)/Δ, brief §6; times β ω when the spring dampers are overdamped), used for the automatic RK4 step.
 double highestFrequencyEstimate(const RiserModel& m);
 
 }  // namespace maris::riser

@@ -118,6 +118,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   const double d = m.element_length;
   m.formulation = p.formulation == "absolute" ? Formulation::Absolute : Formulation::Joint;
   m.torsion = p.torsion;
+  m.stiffness_damping = p.stiffness_damping;
   m.gravity = p.gravity;
   m.water_level = p.water_level;
   m.seabed_level = p.seabed_level;

@@ -69,6 +69,7 @@ struct RiserModel {
   std::vector<Joint> joints;     // n+1, index 0 unused
   Formulation formulation = Formulation::Joint;
   bool torsion = true;
+  double stiffness_damping = 0.0;  // [s] β of the spring dampers (B = β C)
   TopCondition top = TopCondition::Tensioner;
   BottomCondition bottom = BottomCondition::Pinned;
   int first_dynamic = 0;         // 1 when the top is clamped (segment 0 moves with the top)

@@ -90,6 +90,21 @@ class StaticProblem {
     return r;
   }
 
+  // The bottom reaction enters the residual linearly; start Newton from its least-squares value for
+  // the current shape (a zero initial reaction sends the first Newton steps far off for cables).
+  void fitEndReaction(Configuration& x, double lambda) {
+    if (!bottomHeld(m_)) return;
+    const Eigen::VectorXd r0 = residual(x, lambda);
+    const int rows = size_ - 3;
+    Eigen::MatrixXd a(rows, 3);
+    for (int k = 0; k < 3; ++k) {
+      Configuration y = x;
+      y.end_reaction[k] += force_ref_;
+      a.col(k) = (residual(y, lambda) - r0).head(rows);
+    }
+    x.end_reaction += force_ref_ * a.colPivHouseholderQr().solve(-r0.head(rows));
+  }
+
   // x ⊕ du: top coordinates, rotation increments (global rotation vector, or on the two normals), reaction.
   Configuration update(const Configuration& x, const Eigen::VectorXd& du) const {
     Configuration y = x;
@@ -126,6 +141,7 @@ bool newton(StaticProblem& problem, Configuration& x, double lambda, int& iterat
   constexpr double kTolerance = 1e-11;  // scaled residual (forces / F_ref, lengths / L)
   constexpr double kStep = 1e-7;        // forward-difference step of the scaled unknowns
   const int n = problem.size();
+  problem.fitEndReaction(x, lambda);
   Eigen::VectorXd r = problem.residual(x, lambda);
   Eigen::MatrixXd jac(n, n);
   for (int it = 0; it < 50; ++it) {

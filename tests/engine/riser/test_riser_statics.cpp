@@ -76,7 +76,9 @@ TEST_P(Elastica, MatchesBisshoppDruckerAndConvergesQuadratically) {
     const double deflection = -s.pose.end_position.z() / 10.0, shortening = 1.0 - s.pose.end_position.x() / 10.0;
     EXPECT_NEAR(shortening, row.shortening, 5e-3 * row.shortening + 2e-3 * row.deflection) << "n = " << n;
     errors[k++] = std::abs(deflection - row.deflection);
-    if (n == 40) EXPECT_NEAR(deflection, row.deflection, 2e-3 * row.deflection);
+    if (n == 40) {
+      EXPECT_NEAR(deflection, row.deflection, 2e-3 * row.deflection);
+    }
   }
   EXPECT_GT(errors[0] / errors[1], 3.0) << "expected O(1/n²): errors " << errors[0] << ", " << errors[1];
 }
@@ -99,7 +101,9 @@ TEST(RiserStatics, CantileverUnderOwnWeightConvergesAtSecondOrder) {
     const double expected = q * std::pow(10.0, 4) / (8 * test::bendingStiffness(p));
     const double error = std::abs(-s.pose.end_position.z() - expected) / expected;
     EXPECT_LT(error, 2.0 / (n * n)) << "n = " << n;
-    if (previous_error > 0) EXPECT_NEAR(previous_error / error, 4.0, 0.4) << "n = " << n;
+    if (previous_error > 0) {
+      EXPECT_NEAR(previous_error / error, 4.0, 0.4) << "n = " << n;
+    }
     previous_error = error;
   }
 }
