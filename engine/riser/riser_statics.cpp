@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
 
@@ -144,7 +145,7 @@ bool newton(StaticProblem& problem, Configuration& x, double lambda, int& iterat
   problem.fitEndReaction(x, lambda);
   Eigen::VectorXd r = problem.residual(x, lambda);
   Eigen::MatrixXd jac(n, n);
-  for (int it = 0; it < 50; ++it) {
+  for (int it = 0; it < 100; ++it) {
     residual_norm = r.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(residual_norm)) return false;
     if (residual_norm < kTolerance) return true;
@@ -162,6 +163,7 @@ bool newton(StaticProblem& problem, Configuration& x, double lambda, int& iterat
     if (biggest > 0.5) du *= 0.5 / biggest;
     const double merit = r.norm();
     bool accepted = false;
+    double accepted_length = 0.0;
     for (double s = 1.0; s > 1e-3; s *= 0.5) {
       Configuration trial = problem.update(x, s * du);
       Eigen::VectorXd rt = problem.residual(trial, lambda);
@@ -169,7 +171,26 @@ bool newton(StaticProblem& problem, Configuration& x, double lambda, int& iterat
         x = std::move(trial);
         r = std::move(rt);
         accepted = true;
+        accepted_length = s;
         break;
+      }
+    }
+    // A failed or heavily shortened Newton step (soft, nearly singular modes of slack cables): try
+    // Levenberg-Marquardt steps (JᵀJ + μI) du = -Jᵀr, which descend for μ large enough, keep the best.
+    if (accepted_length < 0.25) {
+      const Eigen::MatrixXd normal = jac.transpose() * jac;
+      const Eigen::VectorXd gradient = jac.transpose() * r;
+      const double top = normal.diagonal().maxCoeff();
+      for (double mu = 1e-10 * top; mu < 1e6 * top; mu *= 10) {
+        const Eigen::VectorXd step = (normal + mu * Eigen::MatrixXd::Identity(n, n)).ldlt().solve(-gradient);
+        Configuration trial = problem.update(x, step);
+        Eigen::VectorXd rt = problem.residual(trial, lambda);
+        if (rt.allFinite() && rt.norm() < (accepted ? r.norm() : merit)) {
+          x = std::move(trial);
+          r = std::move(rt);
+          accepted = true;
+          break;
+        }
       }
     }
     if (!accepted) {
