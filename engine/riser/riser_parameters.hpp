@@ -15,7 +15,7 @@ namespace maris::riser {
 // Rows override the uniform `section.*` values; later rows win where rows overlap.
 struct SectionRow {
   double start = 0.0;                 // [m] arc length from the top where the section begins
-  double end = 0.0;                   // [m] arc length from the top where it ends
+  double end = 1.0e5;                 // [m] arc length from the top where it ends (clipped to L)
   double outer_diameter = 0.5;        // [m]
   double inner_diameter = 0.45;       // [m]
   double youngs_modulus = 2.07e11;    // [Pa]
