@@ -1,0 +1,313 @@
+#include "riser/riser_dynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+namespace maris::riser {
+namespace {
+
+constexpr int kHeader = 6;  // r_top, v_top
+
+int stride(const RiserModel& m) { return m.formulation == Formulation::Joint ? 7 : 13; }
+int segmentOffset(const RiserModel& m, int i) { return kHeader + (i - m.first_dynamic) * stride(m); }
+int workOffset(const RiserModel& m) { return segmentOffset(m, m.last_dynamic + 1); }
+int quaternionOffset(const RiserModel& m) { return m.formulation == Formulation::Joint ? 0 : 3; }
+
+// Top components whose force is known (free top: all; tensioner: z) instead of their motion.
+bool topForceKnown(const RiserModel& m, int c) {
+  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
+}
+
+Mat3 skew(const Vec3& v) {
+  Mat3 s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
+
+// D'ᵀ x = a + α × d: acceleration of the far end of a segment from its (a, α).
+Vec3 farEnd(const Vec6& x, const Vec3& d) { return x.head<3>() + x.tail<3>().cross(d); }
+
+// Point the bottom end is held at: the anchor (pinned) or the origin of the fixed last segment (clamped).
+Vec3 bottomHoldPoint(const RiserModel& m) {
+  if (m.bottom != BottomCondition::Clamped) return m.anchor;
+  return m.anchor - m.segments[m.n].length * m.initial_orientation[m.n].toRotationMatrix().col(0);
+}
+
+}  // namespace
+
+RiserWorkspace makeWorkspace(const RiserModel& m, double stabilisation_rate) {
+  RiserWorkspace ws;
+  const int s = m.segmentCount();
+  ws.pose.resize(s);
+  ws.loads.resize(s);
+  ws.inverse_mass.assign(s, Mat6::Zero());
+  ws.bias.assign(s, Vec6::Zero());
+  ws.acceleration.assign(s, Vec6::Zero());
+  for (auto* v : {&ws.lower, &ws.diag, &ws.upper, &ws.pivot_upper}) v->assign(s + 1, Mat3::Zero());
+  ws.rhs.assign(s + 1, Vec3::Zero());
+  ws.reaction.assign(s + 1, Vec3::Zero());
+  ws.stabilisation_rate = stabilisation_rate;
+  return ws;
+}
+
+int stateSize(const RiserModel& m) { return workOffset(m) + 3; }
+
+std::string stateComponentName(const RiserModel& m, Eigen::Index k) {
+  static const char* axis[] = {"x", "y", "z"};
+  static const char* quat[] = {"w", "x", "y", "z"};
+  if (k < 3) return std::string("top position ") + axis[k];
+  if (k < kHeader) return std::string("top velocity ") + axis[k - 3];
+  if (k >= workOffset(m)) return "work integral " + std::to_string(k - workOffset(m));
+  const int i = m.first_dynamic + static_cast<int>((k - kHeader) / stride(m));
+  const int c = static_cast<int>((k - kHeader) % stride(m));
+  const std::string seg = "segment " + std::to_string(i) + " ";
+  if (m.formulation == Formulation::Joint)
+    return c < 4 ? seg + "orientation quaternion " + quat[c] : seg + "angular velocity " + axis[c - 4];
+  if (c < 3) return seg + "position " + axis[c];
+  if (c < 7) return seg + "orientation quaternion " + quat[c - 3];
+  if (c < 10) return seg + "velocity " + axis[c - 7];
+  return seg + "angular velocity " + axis[c - 10];
+}
+
+Eigen::VectorXd restState(const RiserModel& m, const std::vector<Eigen::Quaterniond>& orientation, const Vec3& top) {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(stateSize(m));
+  y.head<3>() = top;
+  Vec3 r = top;
+  for (int i = 0; i <= m.n; ++i) {
+    if (m.isDynamic(i)) {
+      const int o = segmentOffset(m, i);
+      if (m.formulation == Formulation::Absolute) y.segment<3>(o) = r;
+      const auto& q = orientation[i];
+      y.segment<4>(o + quaternionOffset(m)) << q.w(), q.x(), q.y(), q.z();
+    }
+    r += m.segments[i].length * orientation[i].toRotationMatrix().col(0);
+  }
+  return y;
+}
+
+void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, RiserPose& pose) {
+  const TopKinematics top = m.topAt(t);
+  Vec3 rt = top.position, vt = top.velocity;
+  for (int c = 0; c < 3; ++c)
+    if (topForceKnown(m, c)) rt[c] = y[c], vt[c] = y[3 + c];
+  pose.time = t;
+  const int f = m.first_dynamic, last = m.last_dynamic;
+  const bool joint = m.formulation == Formulation::Joint;
+  Vec3 r = rt, v = vt;
+  if (f == 1) {  // clamped top: segment 0 translates with the top without rotating
+    pose.rotation[0] = m.initial_orientation[0].toRotationMatrix();
+    pose.omega[0].setZero();
+    pose.position[0] = rt;
+    pose.velocity[0] = vt;
+    r += m.segments[0].length * pose.rotation[0].col(0);
+  }
+  for (int i = f; i <= last; ++i) {
+    const int o = segmentOffset(m, i), oq = o + quaternionOffset(m);
+    const Eigen::Quaterniond q(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
+    pose.rotation[i] = q.normalized().toRotationMatrix();
+    Vec3 w = y.segment<3>(joint ? o + 4 : o + 10);
+    if (!m.torsion) w -= w.dot(pose.rotation[i].col(0)) * pose.rotation[i].col(0);
+    pose.omega[i] = w;
+    if (!joint) r = y.segment<3>(o), v = y.segment<3>(o + 7);
+    pose.position[i] = r;
+    pose.velocity[i] = v;
+    const Vec3 d = m.segments[i].length * pose.rotation[i].col(0);
+    r += d;
+    v += w.cross(d);
+  }
+  if (last == m.n - 1) {  // clamped bottom: segment n fixed
+    pose.rotation[m.n] = m.initial_orientation[m.n].toRotationMatrix();
+    pose.omega[m.n].setZero();
+    pose.position[m.n] = joint ? r : bottomHoldPoint(m);
+    pose.velocity[m.n].setZero();
+    pose.end_position = pose.position[m.n] + m.segments[m.n].length * pose.rotation[m.n].col(0);
+    pose.end_velocity.setZero();
+  } else {
+    pose.end_position = r;
+    pose.end_velocity = v;
+  }
+}
+
+void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+  RiserPose& pose = ws.pose;
+  poseFromState(m, t, y, pose);
+  computeLoads(m, pose, 1.0, ws.loads);
+  const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
+  const bool joint = m.formulation == Formulation::Joint;
+  const double alpha = ws.stabilisation_rate;
+
+  // Stage 1: per-segment inverse mass W_i and bias b_i in the global frame.
+  for (int i = f; i <= last; ++i) {
+    const Segment& s = m.segments[i];
+    const Mat3& r = pose.rotation[i];
+    const Mat6& wl = s.inverse_mass_local;
+    Mat6& w = ws.inverse_mass[i];
+    w.topLeftCorner<3, 3>() = r * wl.topLeftCorner<3, 3>() * r.transpose();
+    w.topRightCorner<3, 3>() = r * wl.topRightCorner<3, 3>() * r.transpose();
+    w.bottomLeftCorner<3, 3>() = w.topRightCorner<3, 3>().transpose();
+    w.bottomRightCorner<3, 3>() = r * wl.bottomRightCorner<3, 3>() * r.transpose();
+    const Vec3& om = pose.omega[i];
+    const Vec3 c = 0.5 * s.length * r.col(0);
+    const Mat3 inertia = r * s.mass_local.bottomRightCorner<3, 3>() * r.transpose();
+    ws.bias[i] << ws.loads.force[i] - s.mass * om.cross(om.cross(c)), ws.loads.moment[i] - om.cross(inertia * om);
+  }
+  auto d = [&](int i) -> Vec3 { return m.segments[i].length * pose.rotation[i].col(0); };
+  auto kappa = [&](int i) -> Vec3 { return pose.omega[i].cross(pose.omega[i].cross(d(i))); };
+  // W_i D'_i, the response of segment i to a unit force at its far end (6x3).
+  auto wd = [&](int i) -> Eigen::Matrix<double, 6, 3> {
+    const Mat6& w = ws.inverse_mass[i];
+    return w.leftCols<3>() + w.rightCols<3>() * skew(d(i));
+  };
+  double drift = 0.0;
+
+  // Stage 2: top row (joint A_f): prescribed acceleration, or known force components.
+  const TopKinematics top = m.topAt(t);
+  {
+    const Mat6& w = ws.inverse_mass[f];
+    ws.lower[0].setZero();
+    ws.diag[0] = w.topLeftCorner<3, 3>();
+    ws.upper[0] = -wd(f).topRows<3>();
+    Vec3 target = top.acceleration;
+    if (!joint) {
+      Vec3 hold = top.position, hold_v = top.velocity;
+      if (f == 1) hold += d(0);
+      for (int c = 0; c < 3; ++c) {
+        if (topForceKnown(m, c)) continue;
+        const double phi = pose.position[f][c] - hold[c], phid = pose.velocity[f][c] - hold_v[c];
+        target[c] -= 2 * alpha * phid + alpha * alpha * phi;
+        drift = std::max(drift, std::abs(phi));
+      }
+    }
+    ws.rhs[0] = target - (w * ws.bias[f]).head<3>();
+    for (int c = 0; c < 3; ++c) {
+      if (!topForceKnown(m, c)) continue;
+      ws.diag[0].row(c) = Vec3::Unit(c).transpose();
+      ws.upper[0].row(c).setZero();
+      ws.rhs[0][c] = m.top == TopCondition::Tensioner ? m.top_tension : 0.0;
+    }
+  }
+  // Stage 3: continuity rows for the joints between dynamic segments.
+  for (int k = 1; k < nb - 1; ++k) {
+    const int j = f + k;
+    const auto wd_prev = wd(j - 1);
+    const Vec3 dp = d(j - 1);
+    ws.lower[k] = -wd_prev.topRows<3>().transpose();
+    ws.diag[k] = ws.inverse_mass[j].topLeftCorner<3, 3>() + wd_prev.topRows<3>() - skew(dp) * wd_prev.bottomRows<3>();
+    ws.upper[k] = -wd(j).topRows<3>();
+    Vec3 stab = Vec3::Zero();
+    if (!joint) {
+      const Vec3 phi = pose.position[j - 1] + dp - pose.position[j];
+      const Vec3 phid = pose.velocity[j - 1] + pose.omega[j - 1].cross(dp) - pose.velocity[j];
+      stab = 2 * alpha * phid + alpha * alpha * phi;
+      drift = std::max(drift, phi.lpNorm<Eigen::Infinity>());
+    }
+    ws.rhs[k] = kappa(j - 1) + stab + farEnd(ws.inverse_mass[j - 1] * ws.bias[j - 1], dp) -
+                (ws.inverse_mass[j] * ws.bias[j]).head<3>();
+  }
+  // Stage 4: bottom row: end held (pinned/clamped) or force known (free/spring: F = 0, load already applied).
+  {
+    const int k = nb - 1;
+    ws.upper[k].setZero();
+    if (m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped) {
+      const auto wd_last = wd(last);
+      const Vec3 dl = d(last);
+      const Vec3 phi = pose.position[last] + dl - bottomHoldPoint(m);
+      const Vec3 phid = pose.velocity[last] + pose.omega[last].cross(dl);
+      drift = std::max(drift, phi.lpNorm<Eigen::Infinity>());
+      ws.lower[k] = -wd_last.topRows<3>().transpose();
+      ws.diag[k] = wd_last.topRows<3>() - skew(dl) * wd_last.bottomRows<3>();
+      ws.rhs[k] = farEnd(ws.inverse_mass[last] * ws.bias[last], dl) + kappa(last) + 2 * alpha * phid + alpha * alpha * phi;
+    } else {
+      ws.lower[k].setZero();
+      ws.diag[k].setIdentity();
+      ws.rhs[k].setZero();
+    }
+  }
+  // Stage 5: block-Thomas sweep for the reactions F_f .. F_{last+1}.
+  for (int k = 0; k < nb; ++k) {
+    Mat3 pivot = ws.diag[k];
+    Vec3 r = ws.rhs[k];
+    if (k > 0) {
+      pivot -= ws.lower[k] * ws.pivot_upper[k - 1];
+      r -= ws.lower[k] * ws.reaction[f + k - 1];
+    }
+    const Eigen::PartialPivLU<Mat3> lu(pivot);
+    ws.pivot_upper[k] = lu.solve(ws.upper[k]);
+    ws.reaction[f + k] = lu.solve(r);
+  }
+  for (int k = nb - 2; k >= 0; --k) ws.reaction[f + k] -= ws.pivot_upper[k] * ws.reaction[f + k + 1];
+  ws.constraint_drift = drift;
+
+  // Stage 6: accelerations x_i = W_i (E F_i - D'_i F_{i+1} + b_i) and the state derivative.
+  dy.setZero(y.size());
+  for (int i = f; i <= last; ++i) {
+    Vec6 g = ws.bias[i];
+    g.head<3>() += ws.reaction[i] - ws.reaction[i + 1];
+    g.tail<3>() -= d(i).cross(ws.reaction[i + 1]);
+    ws.acceleration[i] = ws.inverse_mass[i] * g;
+    const int o = segmentOffset(m, i), oq = o + quaternionOffset(m);
+    const Vec3& w = pose.omega[i];
+    const double qw = y[oq];
+    const Vec3 qv = y.segment<3>(oq + 1);
+    dy[oq] = -0.5 * w.dot(qv);
+    dy.segment<3>(oq + 1) = 0.5 * (qw * w + w.cross(qv));
+    if (joint) {
+      dy.segment<3>(o + 4) = ws.acceleration[i].tail<3>();
+    } else {
+      dy.segment<3>(o) = pose.velocity[i];
+      dy.segment<3>(o + 7) = ws.acceleration[i].head<3>();
+      dy.segment<3>(o + 10) = ws.acceleration[i].tail<3>();
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    const bool free_c = topForceKnown(m, c);
+    dy[c] = free_c ? y[3 + c] : top.velocity[c];
+    dy[3 + c] = free_c && joint ? ws.acceleration[f][c] : 0.0;
+  }
+  const int ow = workOffset(m);
+  dy[ow] = ws.loads.power_drag;
+  dy[ow + 1] = ws.loads.power_damping;
+  dy[ow + 2] = ws.reaction[f].dot(pose.velocity[f]) + ws.loads.power_point;
+}
+
+void normaliseState(const RiserModel& m, Eigen::VectorXd& y) {
+  const bool joint = m.formulation == Formulation::Joint;
+  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
+    const int o = segmentOffset(m, i), oq = o + quaternionOffset(m);
+    y.segment<4>(oq).normalize();
+    if (m.torsion) continue;
+    const Eigen::Quaterniond q(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
+    const Vec3 t = q.toRotationMatrix().col(0);
+    auto w = y.segment<3>(joint ? o + 4 : o + 10);
+    w -= w.dot(t) * t;
+  }
+}
+
+double totalEnergy(const RiserModel& m, const RiserPose& pose) {
+  return kineticEnergy(m, pose) + springEnergy(m, pose) + gravityPotential(m, pose) + anchorSpringEnergy(m, pose);
+}
+
+double highestFrequencyEstimate(const RiserModel& m) {
+  const double delta = m.element_length;
+  double tension = m.top == TopCondition::Tensioner ? m.top_tension : 0.0;
+  double mu_min = 1e300;
+  for (const auto& s : m.segments) {
+    tension += std::abs(s.weight_per_length - s.buoyancy_per_length) * s.length;
+    mu_min = std::min(mu_min, s.mass / s.length);
+  }
+  for (const auto& l : m.point_loads) tension += Vec3(l.force_x, l.force_y, l.force_z).norm();
+  double w = 4 * std::sqrt(tension / mu_min) / delta;
+  for (int i = 1; i <= m.n; ++i) {
+    const Segment& s = m.segments[i];
+    const double mu = s.mass / s.length, polar = s.mass_local(3, 3) / s.length;
+    w = std::max(w, 9 * std::sqrt(m.joints[i].stiffness[1] * delta / mu) / (delta * delta));
+    if (m.torsion && polar > 0) w = std::max(w, 2 * std::sqrt(m.joints[i].stiffness[0] * delta / polar) / delta);
+  }
+  if (m.bottom == BottomCondition::Spring) w = std::max(w, 2 * std::sqrt(m.spring_stiffness / m.segments[m.n].mass));
+  // Overdamped spring dampers add a real eigenvalue of about -β ω².
+  return w * std::max(1.0, m.stiffness_damping * w);
+}
+
+}  // namespace maris::riser

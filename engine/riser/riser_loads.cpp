@@ -1,0 +1,166 @@
+#include "riser/riser_loads.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace maris::riser {
+
+void RiserPose::resize(int segment_count) {
+  rotation.assign(segment_count, Mat3::Identity());
+  position.assign(segment_count, Vec3::Zero());
+  omega.assign(segment_count, Vec3::Zero());
+  velocity.assign(segment_count, Vec3::Zero());
+}
+
+void SegmentLoads::resize(int segment_count) {
+  force.assign(segment_count, Vec3::Zero());
+  moment.assign(segment_count, Vec3::Zero());
+  relative_angle.assign(segment_count, Vec3::Zero());
+  spring_moment.assign(segment_count, Vec3::Zero());
+}
+
+Vec3 zyxAngles(const Mat3& r) {
+  return Vec3(std::atan2(r(2, 1), r(2, 2)), -std::asin(std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0)));
+}
+
+Mat3 zyxRateMatrix(const Vec3& a) {
+  const double ct = std::cos(a.y()), st = std::sin(a.y()), cp = std::cos(a.z()), sp = std::sin(a.z());
+  Mat3 g;
+  g << ct * cp, -sp, 0, ct * sp, cp, 0, -st, 0, 1;
+  return g;
+}
+
+void addSpringMoments(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads) {
+  for (int i = 1; i <= m.n; ++i) {
+    const Mat3& ra = pose.rotation[i - 1];
+    const Vec3 angles = zyxAngles(ra.transpose() * pose.rotation[i]);
+    const Mat3 g = zyxRateMatrix(angles);
+    // Relative angle rates from the relative angular velocity seen in frame i-1.
+    const Vec3 rates = g.lu().solve(ra.transpose() * (pose.omega[i] - pose.omega[i - 1]));
+    const Vec3& c = m.joints[i].stiffness;
+    const Vec3& b = m.joints[i].damping;
+    const Vec3 mbar = c.cwiseProduct(angles) + b.cwiseProduct(rates);
+    const Vec3 couple = ra * g.transpose().lu().solve(mbar);
+    loads.moment[i] -= couple;
+    loads.moment[i - 1] += couple;
+    loads.relative_angle[i] = angles;
+    loads.spring_moment[i] = mbar;
+    loads.power_damping -= rates.dot(b.cwiseProduct(rates));
+  }
+}
+
+void addGravityAndBuoyancy(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+  for (int i = 0; i <= m.n; ++i) {
+    const Segment& seg = m.segments[i];
+    const Vec3 t = pose.tangent(i);
+    for (int q = 0; q < 3; ++q) {
+      const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
+      const Vec3 p = pose.position[i] + xi * t;
+      double fz = -seg.weight_per_length;
+      if (p.z() < m.water_level) fz += seg.buoyancy_per_length;
+      const Vec3 f(0, 0, factor * fz * w);
+      loads.force[i] += f;
+      loads.moment[i] += (xi * t).cross(f);
+    }
+  }
+}
+
+void addDrag(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+  for (int i = 0; i <= m.n; ++i) {
+    const Segment& seg = m.segments[i];
+    if (seg.normal_drag == 0.0 && seg.tangential_drag == 0.0) continue;
+    const Mat3& r = pose.rotation[i];
+    const Vec3 t = r.col(0);
+    for (int q = 0; q < 3; ++q) {
+      const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
+      const Vec3 p = pose.position[i] + xi * t;
+      if (p.z() > m.water_level) continue;
+      const Vec3 v = pose.velocity[i] + pose.omega[i].cross(xi * t);
+      const Vec3 local = r.transpose() * (v - m.currentAt(p.z()));
+      const double vn = std::hypot(local.y(), local.z());
+      const Vec3 s_local(-seg.tangential_drag * std::abs(local.x()) * local.x(), -seg.normal_drag * vn * local.y(),
+                         -seg.normal_drag * vn * local.z());
+      const Vec3 f = factor * w * (r * s_local);
+      loads.force[i] += f;
+      loads.moment[i] += (xi * t).cross(f);
+      loads.power_drag += f.dot(v);
+    }
+  }
+}
+
+void addPointLoads(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+  for (const auto& l : m.point_loads) {
+    if (pose.time < l.start_time || pose.time >= l.end_time) continue;
+    const Vec3 f = factor * Vec3(l.force_x, l.force_y, l.force_z);
+    const Vec3 c = factor * Vec3(l.moment_x, l.moment_y, l.moment_z);
+    const int seg = std::min(l.node, m.n);
+    const Vec3 arm = l.node > m.n ? Vec3(m.segments[m.n].length * pose.tangent(m.n)) : Vec3::Zero();
+    loads.force[seg] += f;
+    loads.moment[seg] += arm.cross(f) + c;
+    const Vec3 v = l.node > m.n ? pose.end_velocity : pose.velocity[seg];
+    loads.power_point += f.dot(v) + c.dot(pose.omega[seg]);
+  }
+}
+
+void addBottomSpring(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads) {
+  const Vec3 f = -m.spring_stiffness * (pose.end_position - m.anchor) - m.spring_damping * pose.end_velocity;
+  const Vec3 arm = m.segments[m.n].length * pose.tangent(m.n);
+  loads.force[m.n] += f;
+  loads.moment[m.n] += arm.cross(f);
+  loads.support_force = f;
+  loads.power_damping -= m.spring_damping * pose.end_velocity.squaredNorm();
+}
+
+void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+  for (int i = 0; i <= m.n; ++i) {
+    loads.force[i].setZero();
+    loads.moment[i].setZero();
+  }
+  loads.support_force.setZero();
+  loads.power_drag = loads.power_damping = loads.power_point = 0.0;
+  addSpringMoments(m, pose, loads);
+  if (m.gravity > 0) addGravityAndBuoyancy(m, pose, factor, loads);
+  addDrag(m, pose, factor, loads);
+  if (!m.point_loads.empty()) addPointLoads(m, pose, factor, loads);
+  if (m.bottom == BottomCondition::Spring) addBottomSpring(m, pose, loads);
+}
+
+double springEnergy(const RiserModel& m, const RiserPose& pose) {
+  double e = 0;
+  for (int i = 1; i <= m.n; ++i) {
+    const Vec3 a = zyxAngles(pose.rotation[i - 1].transpose() * pose.rotation[i]);
+    e += 0.5 * a.dot(m.joints[i].stiffness.cwiseProduct(a));
+  }
+  return e;
+}
+
+double gravityPotential(const RiserModel& m, const RiserPose& pose) {
+  double e = 0;
+  for (int i = 0; i <= m.n; ++i) {
+    const Segment& seg = m.segments[i];
+    for (int q = 0; q < 3; ++q) {
+      const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
+      const double z = (pose.position[i] + xi * pose.tangent(i)).z();
+      // Buoyancy potential -ρ_w g A (z - z_w) below the surface, zero above: continuous, gradient = force.
+      e += w * (seg.weight_per_length * z - seg.buoyancy_per_length * std::min(z - m.water_level, 0.0));
+    }
+  }
+  return m.gravity > 0 ? e : 0.0;
+}
+
+double anchorSpringEnergy(const RiserModel& m, const RiserPose& pose) {
+  if (m.bottom != BottomCondition::Spring) return 0.0;
+  return 0.5 * m.spring_stiffness * (pose.end_position - m.anchor).squaredNorm();
+}
+
+double kineticEnergy(const RiserModel& m, const RiserPose& pose) {
+  double e = 0;
+  for (int i = 0; i <= m.n; ++i) {
+    Vec6 v;
+    v << pose.rotation[i].transpose() * pose.velocity[i], pose.rotation[i].transpose() * pose.omega[i];
+    e += 0.5 * v.dot(m.segments[i].mass_local * v);
+  }
+  return e;
+}
+
+}  // namespace maris::riser

@@ -1,0 +1,218 @@
+#include "riser/riser_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace maris::riser {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Section properties at arc length s: the last `sections` row covering s, else the uniform section.
+SectionRow sectionAt(const RiserParameters& p, double s) {
+  SectionRow r{0.0, p.length, p.outer_diameter, p.inner_diameter, p.youngs_modulus, p.shear_modulus, p.density,
+               p.normal_drag_coefficient, p.tangential_drag_coefficient, p.added_mass_coefficient};
+  for (const auto& row : p.sections)
+    if (s >= row.start && s < row.end) r = row;
+  return r;
+}
+
+Mat3 skew(const Vec3& v) {
+  Mat3 m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+// Newton-Euler mass matrix of a uniform straight segment about its origin, in its own frame:
+// [[m I, -m[c]x], [m[c]x, I_A]] with c = (l/2) e1, I_A = diag(ι l, m l²/3 + ι l/2, m l²/3 + ι l/2)
+// (brief §2.3: J = diag(μ l³/3, ι l/2, ι l/2), I' = tr(J) 1 - J).
+Mat6 segmentMass(double mass, double length, double polar_inertia_per_length) {
+  const Vec3 c(length / 2, 0, 0);
+  const double transverse = mass * length * length / 3.0 + polar_inertia_per_length * length / 2.0;
+  Mat6 m = Mat6::Zero();
+  m.topLeftCorner<3, 3>() = mass * Mat3::Identity();
+  m.topRightCorner<3, 3>() = -mass * skew(c);
+  m.bottomLeftCorner<3, 3>() = mass * skew(c);
+  m.bottomRightCorner<3, 3>() = Vec3(polar_inertia_per_length * length, transverse, transverse).asDiagonal();
+  return m;
+}
+
+// Inverse mass; without torsion the spin about x' is not a degree of freedom, so the inverse is
+// taken on the 5-dimensional subspace (a, α_y', α_z') and is zero in the spin direction.
+Mat6 inverseMass(const Mat6& m, bool torsion) {
+  if (torsion) return m.inverse();
+  Eigen::Matrix<double, 6, 5> q = Eigen::Matrix<double, 6, 5>::Zero();
+  const int keep[5] = {0, 1, 2, 4, 5};
+  for (int k = 0; k < 5; ++k) q(keep[k], k) = 1.0;
+  const Eigen::Matrix<double, 5, 5> reduced = q.transpose() * m * q;
+  return q * reduced.inverse() * q.transpose();
+}
+
+// Joint positions of the initial shape: a circular arc of length L from `a` to `b` sagging
+// towards -z (the chord must be shorter than L), sampled at the joints' arc lengths.
+std::vector<Vec3> arcPoints(const Vec3& a, const Vec3& b, double length, const std::vector<double>& s) {
+  const Vec3 chord = b - a;
+  const double c = chord.norm();
+  const Vec3 along = c > 1e-12 * length ? Vec3(chord / c) : Vec3::UnitX();
+  Vec3 bulge = -Vec3::UnitZ() - along * (-along.z());
+  if (bulge.norm() < 1e-6) bulge = Vec3::UnitX() - along * along.x();
+  bulge.normalize();
+  // Half angle φ with sin φ / φ = c/L, by bisection on (0, π].
+  double lo = 1e-12, hi = kPi;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (std::sin(mid) / mid > c / length ? lo : hi) = mid;
+  }
+  const double phi = 0.5 * (lo + hi), radius = length / (2 * phi);
+  const Vec3 middle = 0.5 * (a + b);
+  std::vector<Vec3> out;
+  for (double sk : s) {
+    const double th = sk / radius - phi;
+    out.push_back(middle + radius * std::sin(th) * along + radius * (std::cos(th) - std::cos(phi)) * bulge);
+  }
+  return out;
+}
+
+}  // namespace
+
+Vec3 RiserModel::currentAt(double z) const {
+  if (z > water_level) return Vec3::Zero();
+  const double depth = water_level - seabed_level;
+  const double f = depth > 0 ? std::clamp((water_level - z) / depth, 0.0, 1.0) : 0.0;
+  const double speed = current_surface + f * (current_seabed - current_surface);
+  return speed * Vec3(std::cos(current_direction), std::sin(current_direction), 0.0);
+}
+
+TopKinematics RiserModel::topAt(double t) const {
+  // Quintic smooth step g(τ) = τ³(10 - 15τ + 6τ²) so position, velocity and acceleration start at zero.
+  double g = 1, gd = 0, gdd = 0;
+  if (ramp_time > 0 && t < ramp_time) {
+    const double tau = std::max(t, 0.0) / ramp_time;
+    g = tau * tau * tau * (10 - 15 * tau + 6 * tau * tau);
+    gd = 30 * tau * tau * (1 - tau) * (1 - tau) / ramp_time;
+    gdd = 60 * tau * (1 - tau) * (1 - 2 * tau) / (ramp_time * ramp_time);
+  }
+  TopKinematics k{top_mean, Vec3::Zero(), Vec3::Zero()};
+  for (int a = 0; a < 3; ++a) {
+    const double w = motion_omega, ph = w * t + motion_phase[a], amp = motion_amplitude[a];
+    const double h = amp * (std::sin(ph) - std::sin(motion_phase[a]));  // zero at t = 0
+    const double hd = amp * w * std::cos(ph), hdd = -amp * w * w * std::sin(ph);
+    k.position[a] += g * h;
+    k.velocity[a] = gd * h + g * hd;
+    k.acceleration[a] = gdd * h + 2 * gd * hd + g * hdd;
+  }
+  return k;
+}
+
+std::pair<int, double> RiserModel::locate(double s) const {
+  int i = static_cast<int>(std::floor(s / element_length + 0.5));
+  i = std::clamp(i, 0, n);
+  return {i, std::clamp(s - segments[i].arc_start, 0.0, segments[i].length)};
+}
+
+RiserModel buildRiserModel(const RiserParameters& p) {
+  RiserModel m;
+  m.n = p.segment_count;
+  m.length = p.length;
+  m.element_length = p.length / p.segment_count;
+  const double d = m.element_length;
+  m.formulation = p.formulation == "absolute" ? Formulation::Absolute : Formulation::Joint;
+  m.torsion = p.torsion;
+  m.stiffness_damping = p.stiffness_damping;
+  m.gravity = p.gravity;
+  m.water_level = p.water_level;
+  m.seabed_level = p.seabed_level;
+  // Segments: lengths Δ/2, Δ, ..., Δ/2; each takes the section at its centre.
+  for (int i = 0; i <= m.n; ++i) {
+    Segment g;
+    g.length = (i == 0 || i == m.n) ? d / 2 : d;
+    g.arc_start = i == 0 ? 0.0 : (i - 0.5) * d;
+    const SectionRow sec = sectionAt(p, g.arc_start + g.length / 2);
+    const double a_out = kPi / 4 * sec.outer_diameter * sec.outer_diameter;
+    const double a_inn = kPi / 4 * sec.inner_diameter * sec.inner_diameter;
+    const double wall_mass = sec.density * (a_out - a_inn), contents = p.internal_fluid_density * a_inn;
+    const double mu = wall_mass + contents + p.water_density * sec.added_mass_coefficient * a_out;  // eq (11)
+    const double polar = sec.density * kPi / 32 * (std::pow(sec.outer_diameter, 4) - std::pow(sec.inner_diameter, 4));
+    g.mass = mu * g.length;
+    g.mass_local = segmentMass(g.mass, g.length, polar);
+    g.inverse_mass_local = inverseMass(g.mass_local, m.torsion);
+    g.outer_diameter = sec.outer_diameter;
+    g.weight_per_length = (wall_mass + contents) * p.gravity;
+    g.buoyancy_per_length = p.water_density * p.gravity * a_out;
+    g.normal_drag = 0.5 * p.water_density * sec.outer_diameter * sec.normal_drag_coefficient;
+    g.tangential_drag = 0.5 * p.water_density * sec.outer_diameter * sec.tangential_drag_coefficient;
+    m.segments.push_back(g);
+  }
+  // Joints: stiffness of the primary element they represent, C = (GJ, EI, EI)/Δ (RFEM rule, brief §2.4).
+  m.joints.resize(m.n + 1);
+  for (int i = 1; i <= m.n; ++i) {
+    const SectionRow sec = sectionAt(p, (i - 0.5) * d);
+    const double i4 = std::pow(sec.outer_diameter, 4) - std::pow(sec.inner_diameter, 4);
+    const double second_moment = kPi / 64 * i4;
+    Joint& j = m.joints[i];
+    j.stiffness = Vec3(sec.shear_modulus * 2 * second_moment * (m.torsion ? 1.0 : 0.0),
+                       sec.youngs_modulus * second_moment, sec.youngs_modulus * second_moment) / d;
+    j.damping = p.stiffness_damping * j.stiffness;
+    j.bending_modulus = kPi / 32 * i4 / sec.outer_diameter;
+    j.torsion_modulus = kPi / 16 * i4 / sec.outer_diameter;
+  }
+  // Boundary conditions and loads.
+  const auto& tc = p.top_condition;
+  m.top = tc == "pinned" ? TopCondition::Pinned : tc == "clamped" ? TopCondition::Clamped
+        : tc == "free"   ? TopCondition::Free   : TopCondition::Tensioner;
+  const auto& bc = p.bottom_condition;
+  m.bottom = bc == "pinned" ? BottomCondition::Pinned : bc == "clamped" ? BottomCondition::Clamped
+           : bc == "free"   ? BottomCondition::Free   : BottomCondition::Spring;
+  m.first_dynamic = m.top == TopCondition::Clamped ? 1 : 0;
+  m.last_dynamic = m.bottom == BottomCondition::Clamped ? m.n - 1 : m.n;
+  m.top_tension = p.top_tension;
+  m.anchor = Vec3(p.bottom_x, p.bottom_y, p.bottom_z);
+  m.spring_stiffness = p.bottom_spring_stiffness;
+  m.spring_damping = p.bottom_spring_damping;
+  m.motion_amplitude = Vec3(p.motion_amplitude_x, p.motion_amplitude_y, p.motion_amplitude_z);
+  if (m.top == TopCondition::Tensioner) m.motion_amplitude.z() = 0.0;
+  if (m.top == TopCondition::Free) m.motion_amplitude.setZero();
+  m.motion_phase = Vec3(p.motion_phase_x, p.motion_phase_y, p.motion_phase_z);
+  m.motion_omega = 2 * kPi / p.motion_period;
+  m.ramp_time = p.motion_ramp_time;
+  m.current_surface = p.current_speed_surface;
+  m.current_seabed = p.current_speed_seabed;
+  m.current_direction = p.current_direction;
+  m.point_loads = p.point_loads;
+
+  // Initial shape: joint positions, then frames by parallel transport of the tangents.
+  std::vector<double> s(m.n + 2);
+  for (int i = 0; i <= m.n; ++i) s[i] = m.segments[i].arc_start;
+  s[m.n + 1] = m.length;
+  Vec3 top(p.top_x, p.top_y, p.top_z);
+  const bool fixed_bottom = m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+  std::vector<Vec3> points;
+  if (m.top == TopCondition::Tensioner) {
+    const double h = std::hypot(top.x() - m.anchor.x(), top.y() - m.anchor.y());
+    top.z() = m.anchor.z() + std::sqrt(std::max(p.length * p.length - h * h, 0.0));
+  }
+  if (m.top == TopCondition::Tensioner) {
+    const Vec3 dir = (m.anchor - top).normalized();
+    for (double sk : s) points.push_back(top + sk * dir);
+  } else if (fixed_bottom && m.top != TopCondition::Free && (m.anchor - top).norm() < p.length) {
+    points = arcPoints(top, m.anchor, p.length, s);
+  } else {
+    const Vec3 dir(std::sin(p.initial_inclination) * std::cos(p.initial_azimuth),
+                   std::sin(p.initial_inclination) * std::sin(p.initial_azimuth), -std::cos(p.initial_inclination));
+    for (double sk : s) points.push_back(top + sk * dir);
+  }
+  m.initial_top = top;
+  m.top_mean = top;
+  Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+  Vec3 previous = Vec3::UnitX();
+  for (int i = 0; i <= m.n; ++i) {
+    Vec3 t = points[i + 1] - points[i];
+    t = t.norm() > 0 ? Vec3(t.normalized()) : previous;
+    q = (Eigen::Quaterniond::FromTwoVectors(previous, t) * q).normalized();
+    m.initial_orientation.push_back(q);
+    previous = t;
+  }
+  return m;
+}
+
+}  // namespace maris::riser

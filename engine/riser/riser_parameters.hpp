@@ -1,0 +1,112 @@
+// Parameters of the riser / cable scene (segment method, Adamiec-Wójcik, Brzozowska & Wojciech,
+// Acta Mechanica 231, 2020). One flat struct in SI units; its default member initialisers are the
+// only defaults. Angles are radians. Global frame: z up (see riser_model.hpp for all conventions).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "core/schema_binder.hpp"
+
+namespace maris::riser {
+
+// A stretch of the riser with its own section, [start, end) in arc length from the top.
+// Rows override the uniform `section.*` values; later rows win where rows overlap.
+struct SectionRow {
+  double start = 0.0;                 // [m] arc length from the top where the section begins
+  double end = 1.0e5;                 // [m] arc length from the top where it ends (clipped to L)
+  double outer_diameter = 0.5;        // [m]
+  double inner_diameter = 0.45;       // [m]
+  double youngs_modulus = 2.07e11;    // [Pa]
+  double shear_modulus = 7.96e10;     // [Pa]
+  double density = 7850.0;            // [kg/m^3] pipe wall
+  double normal_drag_coefficient = 1.0;      // [-] D_yz of eq (34)
+  double tangential_drag_coefficient = 0.0;  // [-] D_x of eq (34)
+  double added_mass_coefficient = 1.0;       // [-] C_a = c_M - 1 of eq (11)
+};
+
+// A force and moment applied at a node for t_start <= t < t_end (a box pulse; t_end large = step).
+struct PointLoadRow {
+  int node = 0;             // [-] 0 = top end, k = joint k (between segments k-1 and k), n+1 = bottom end
+  double force_x = 0.0;     // [N] global frame
+  double force_y = 0.0;     // [N]
+  double force_z = 0.0;     // [N]
+  double moment_x = 0.0;    // [N·m]
+  double moment_y = 0.0;    // [N·m]
+  double moment_z = 0.0;    // [N·m]
+  double start_time = 0.0;  // [s]
+  double end_time = 1e9;    // [s]
+};
+
+struct RiserParameters {
+  // geometry
+  double length = 100.0;   // [m] unstretched length L
+  int segment_count = 20;  // [-] n primary elements: n+1 rigid segments (Δ/2, Δ, ..., Δ, Δ/2)
+  // uniform section (overridden by `sections` rows)
+  double outer_diameter = 0.5;               // [m] D_out
+  double inner_diameter = 0.45;              // [m] D_inn (0 for a solid cable)
+  double youngs_modulus = 2.07e11;           // [Pa] E
+  double shear_modulus = 7.96e10;            // [Pa] G
+  double density = 7850.0;                   // [kg/m^3] ρ_r of the wall
+  double normal_drag_coefficient = 1.0;      // [-] D_yz
+  double tangential_drag_coefficient = 0.0;  // [-] D_x
+  double added_mass_coefficient = 1.0;       // [-] C_a (isotropic added mass, as eq 11)
+  std::vector<SectionRow> sections;          // non-uniform stretches
+  // model
+  std::string formulation = "joint";  // "joint" (J) or "absolute" (A)
+  bool torsion = true;                // true: J3/A3; false: J2/A2 (no spin about segment axes)
+  double stiffness_damping = 0.0;     // [s] β: spring damping moments B = β·C (Rayleigh, stiffness-proportional)
+  // environment
+  double gravity = 9.81;             // [m/s^2]
+  double water_density = 1025.0;     // [kg/m^3] ρ_w
+  double water_level = 0.0;          // [m] z of the still-water surface (buoyancy and drag only below it)
+  double seabed_level = -100.0;      // [m] z of the sea bed (drawn only)
+  double internal_fluid_density = 1025.0;  // [kg/m^3] ρ_f of the contents
+  double current_speed_surface = 1.0;      // [m/s] current at the water level
+  double current_speed_seabed = 1.0;       // [m/s] current at the sea bed (linear in between)
+  double current_direction = 0.0;          // [rad] heading of the current in the xy-plane, from +x towards +y
+  // top end
+  std::string top_condition = "tensioner";  // "pinned", "clamped", "tensioner", "free"
+  double top_x = 0.0;                       // [m] mean position of the top end
+  double top_y = 0.0;                       // [m]
+  double top_z = 0.0;                       // [m] (tensioner: set by the geometry, ignored)
+  double top_tension = 2.0e6;               // [N] tensioner: constant upward pull on the top end
+  double motion_amplitude_x = 2.0;          // [m] harmonic top motion per axis
+  double motion_amplitude_y = 1.0;          // [m]
+  double motion_amplitude_z = 0.0;          // [m] (ignored for the tensioner)
+  double motion_period = 12.0;              // [s]
+  double motion_phase_x = 0.0;              // [rad]
+  double motion_phase_y = 1.5707963267948966;  // [rad] x and y a quarter period apart: an ellipse
+  double motion_phase_z = 0.0;              // [rad]
+  double motion_ramp_time = 6.0;            // [s] smooth start of the top motion (0 = none)
+  // bottom end
+  std::string bottom_condition = "pinned";  // "pinned", "clamped", "free", "spring"
+  double bottom_x = 0.0;                    // [m] anchor point
+  double bottom_y = 0.0;                    // [m]
+  double bottom_z = -100.0;                 // [m]
+  double bottom_spring_stiffness = 1.0e5;   // [N/m] "spring": linear spring to the anchor
+  double bottom_spring_damping = 0.0;       // [N·s/m]
+  // initial shape
+  double initial_inclination = 0.0;  // [rad] first direction from the top, from straight down (π/2 = horizontal)
+  double initial_azimuth = 0.0;      // [rad] heading of that direction in the xy-plane
+  bool solve_statics = true;         // start from static equilibrium (top at its mean position, current on)
+  // loads
+  std::vector<PointLoadRow> point_loads;  // forces and moments at nodes
+  // solver
+  double end_time = 24.0;   // [s]
+  double time_step = 0.0;   // [s] RK4 step; 0 = automatic (half the estimated stability limit)
+  // output
+  int frame_count = 60;            // [-] View3D frames and position snapshots
+  double probe_position = 50.0;    // [m] arc length of the probe point whose history is recorded
+  std::vector<double> stress_times = {12.0, 24.0};  // [s] times for the stress-along-the-riser table
+};
+
+// The binder declaring path, unit, range and description of every field.
+const SchemaBinder<RiserParameters>& riserBinder();
+
+// Cross-field checks (D_inn < D_out, section rows inside [0, L], nodes in range, reachable anchor, ...).
+// Paths are relative to "parameters". Returns every problem found.
+std::vector<FieldError> checkRiserParameters(const RiserParameters& p);
+
+}  // namespace maris::riser

@@ -1,0 +1,219 @@
+#include "riser/riser_results.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace maris::riser {
+namespace {
+
+Vec3 probePoint(const RiserModel& m, const RiserPose& pose, double s) {
+  const auto [i, xi] = m.locate(s);
+  return pose.position[i] + xi * pose.tangent(i);
+}
+
+int nearestJoint(const RiserModel& m, double s) {
+  return std::clamp(static_cast<int>(std::lround(s / m.element_length + 0.5)), 1, m.n);
+}
+
+}  // namespace
+
+RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
+  Eigen::VectorXd dy(y.size());
+  evaluateRhs(m, ws, t, y, dy);
+  const RiserPose& pose = ws.pose;
+  const int nodes = m.n + 2;
+  RiserProfile p;
+  p.arc_length.resize(nodes);
+  p.position.resize(nodes);
+  p.tension.assign(nodes, 0.0);
+  p.bending_stress.assign(nodes, 0.0);
+  p.torsional_stress.assign(nodes, 0.0);
+  p.curvature.assign(nodes, 0.0);
+  for (int k = 0; k < nodes; ++k) {
+    p.arc_length[k] = k <= m.n ? m.segments[k].arc_start : m.length;
+    p.position[k] = pose.node(k);
+  }
+  // Tension from the joint reactions F_k (force on segment k from above): T = -F_k · t_k.
+  const int f = m.first_dynamic, last = m.last_dynamic;
+  for (int k = f; k <= last + 1; ++k) p.tension[k] = -ws.reaction[k].dot(pose.tangent(std::min(k, m.n)));
+  if (m.bottom == BottomCondition::Free || m.bottom == BottomCondition::Spring)
+    p.tension[m.n + 1] = ws.loads.support_force.dot(pose.tangent(m.n));
+  if (f == 1) p.tension[0] = p.tension[1];
+  if (last == m.n - 1) p.tension[m.n + 1] = p.tension[m.n];
+  // Stresses from the spring moments M̄ (paper's M', eq 26 and Figs 21-23); curvature from the bend angle.
+  for (int k = 1; k <= m.n; ++k) {
+    const Vec3& mb = ws.loads.spring_moment[k];
+    const Joint& j = m.joints[k];
+    p.bending_stress[k] = std::hypot(mb.y(), mb.z()) / j.bending_modulus;
+    p.torsional_stress[k] = mb.x() / j.torsion_modulus;
+    const Vec3& a = ws.loads.relative_angle[k];
+    p.curvature[k] = std::hypot(a.y(), a.z()) / m.element_length;
+  }
+  return p;
+}
+
+RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& parameters, double stabilisation_rate)
+    : m_(model), p_(parameters), ws_(makeWorkspace(model, stabilisation_rate)) {
+  history_.name = "history";
+  history_.title = "Probe point, end reactions and energies over time";
+  for (const char* c : {"time"}) history_.add(c, "s");
+  for (const char* c : {"probe_dx", "probe_dy", "probe_dz", "top_x", "top_y", "top_z", "end_x", "end_y", "end_z"})
+    history_.add(c, "m");
+  for (const char* c : {"top_force_x", "top_force_y", "top_force_z", "bottom_force_x", "bottom_force_y",
+                        "bottom_force_z"})
+    history_.add(c, "N");
+  for (const char* c : {"kinetic_energy", "spring_energy", "gravity_energy", "total_energy", "work_drag",
+                        "work_damping", "work_boundary", "energy_balance_error"})
+    history_.add(c, "J");
+  history_.add("constraint_drift", "m");
+  history_.add("probe_bending_stress", "Pa");
+  history_.add("probe_torsional_stress", "Pa");
+  nodes_.name = "node_positions";
+  nodes_.title = "Node positions of every stored frame";
+  nodes_.add("time", "s");
+  nodes_.add("node", "-");
+  nodes_.add("arc_length", "m");
+  for (const char* c : {"x", "y", "z"}) nodes_.add(c, "m");
+  r_.view.scalar_name = "bending stress";
+  r_.view.scalar_unit = "Pa";
+  r_.view.water_level_z = m_.water_level;
+  r_.view.seabed_z = m_.seabed_level;
+}
+
+void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name) {
+  const RiserProfile prof = evaluateProfile(m_, ws_, t, y);
+  const RiserPose& pose = ws_.pose;
+  const int nodes = m_.n + 2;
+  if (first_) initial_nodes_ = prof.position;
+  // Energies and the work balance E(t) - E(0) = W_drag + W_damping + W_boundary.
+  const double kin = kineticEnergy(m_, pose), spr = springEnergy(m_, pose);
+  const double grav = gravityPotential(m_, pose) + anchorSpringEnergy(m_, pose);
+  const double total = kin + spr + grav;
+  const Eigen::Index ow = y.size() - 3;
+  const double wd = y[ow], wdamp = y[ow + 1], wb = y[ow + 2];
+  if (first_) energy0_ = total;
+  const double balance = total - energy0_ - (wd + wdamp + wb);
+  energy_scale_ = std::max({energy_scale_, kin + std::abs(spr), std::abs(wd) + std::abs(wdamp) + std::abs(wb),
+                            std::abs(total - energy0_)});
+  balance_max_ = std::max(balance_max_, std::abs(balance));
+  drift_max_ = std::max(drift_max_, ws_.constraint_drift);
+  const Vec3 probe = probePoint(m_, pose, p_.probe_position);
+  if (first_) probe_start_ = probe;
+  const Vec3 dp = probe - probe_start_;
+  probe_max_ = std::max(probe_max_, dp.norm());
+  const int f = m_.first_dynamic, last = m_.last_dynamic;
+  const Vec3 bottom = (m_.bottom == BottomCondition::Free || m_.bottom == BottomCondition::Spring)
+                          ? Vec3(-ws_.loads.support_force) : ws_.reaction[last + 1];
+  const int jp = nearestJoint(m_, p_.probe_position);
+  std::vector<double> row = {t, dp.x(), dp.y(), dp.z(), pose.node(0).x(), pose.node(0).y(), pose.node(0).z(),
+                             pose.end_position.x(), pose.end_position.y(), pose.end_position.z(),
+                             ws_.reaction[f].x(), ws_.reaction[f].y(), ws_.reaction[f].z(),
+                             bottom.x(), bottom.y(), bottom.z(), kin, spr, grav, total, wd, wdamp, wb, balance,
+                             ws_.constraint_drift, prof.bending_stress[jp], prof.torsional_stress[jp]};
+  for (std::size_t c = 0; c < row.size(); ++c) history_.columns[c].values.push_back(row[c]);
+  for (int k = 0; k < nodes; ++k) {
+    max_bending_ = std::max(max_bending_, prof.bending_stress[k]);
+    max_torsion_ = std::max(max_torsion_, std::abs(prof.torsional_stress[k]));
+    max_tension_ = std::max(max_tension_, prof.tension[k]);
+  }
+  if (frame) {
+    Frame3D fr;
+    fr.time = t;
+    Shape3D tube;
+    tube.kind = Shape3D::Kind::Tube;
+    tube.name = "riser";
+    tube.radius = std::max(0.5 * m_.segments[0].outer_diameter, 0.004 * m_.length);
+    tube.points = prof.position;
+    tube.scalars = prof.bending_stress;
+    tube.scalars.front() = tube.scalars[1];
+    tube.scalars.back() = tube.scalars[m_.n];
+    fr.shapes.push_back(std::move(tube));
+    Shape3D top;
+    top.kind = Shape3D::Kind::Sphere;
+    top.name = "top end";
+    top.radius = 2.5 * std::max(0.5 * m_.segments[0].outer_diameter, 0.004 * m_.length);
+    top.points = {prof.position.front()};
+    top.color = Vec3(0.9, 0.5, 0.1);
+    fr.shapes.push_back(std::move(top));
+    r_.view.frames.push_back(std::move(fr));
+    for (int k = 0; k < nodes; ++k) {
+      const double vals[6] = {t, double(k), prof.arc_length[k], prof.position[k].x(), prof.position[k].y(),
+                              prof.position[k].z()};
+      for (int c = 0; c < 6; ++c) nodes_.columns[c].values.push_back(vals[c]);
+    }
+  }
+  if (profile_name) {
+    Table tab;
+    tab.name = *profile_name;
+    tab.title = "Along the riser at t = " + std::to_string(t) + " s";
+    tab.add("arc_length", "m", prof.arc_length);
+    std::vector<double> x, yv, z, dx;
+    for (int k = 0; k < nodes; ++k) {
+      x.push_back(prof.position[k].x());
+      yv.push_back(prof.position[k].y());
+      z.push_back(prof.position[k].z());
+      dx.push_back((prof.position[k] - initial_nodes_[k]).norm());
+    }
+    tab.add("x", "m", x);
+    tab.add("y", "m", yv);
+    tab.add("z", "m", z);
+    tab.add("displacement", "m", dx);
+    tab.add("tension", "N", prof.tension);
+    tab.add("bending_stress", "Pa", prof.bending_stress);
+    tab.add("torsional_stress", "Pa", prof.torsional_stress);
+    tab.add("curvature", "1/m", prof.curvature);
+    r_.tables.push_back(std::move(tab));
+  }
+  first_ = false;
+}
+
+Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, double statics_residual) {
+  Results out = std::move(r_);
+  out.stats = stats;
+  const double scale = std::max(energy_scale_, 1e-300);
+  out.stats.error_estimate = balance_max_;
+  out.stats.error_unit = "J";
+  out.tables.push_back(history_);
+  out.tables.push_back(nodes_);
+  const auto& h = history_;
+  const std::size_t last = h.rows() - 1;
+  out.addScalar("end_x", h.find("end_x")->values[last], "m", "Bottom end position x at the end of the run");
+  out.addScalar("end_y", h.find("end_y")->values[last], "m", "Bottom end position y at the end of the run");
+  out.addScalar("end_z", h.find("end_z")->values[last], "m", "Bottom end position z at the end of the run");
+  out.addScalar("probe_max_displacement", probe_max_, "m", "Largest displacement of the probe point from its start");
+  out.addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress σ_b over joints and samples");
+  out.addScalar("max_torsional_stress", max_torsion_, "Pa", "Largest |σ_t| over joints and samples");
+  out.addScalar("max_tension", max_tension_, "N", "Largest tension over nodes and samples");
+  out.addScalar("top_force_z_final", h.find("top_force_z")->values[last], "N", "Vertical top reaction at the end");
+  out.addScalar("energy_balance_error", balance_max_ / scale, "-",
+                "max |E(t) - E(0) - W_drag - W_damping - W_boundary| relative to the energy scale of the run");
+  out.addScalar("constraint_drift", drift_max_, "m", "Largest constraint violation |Φ| (bottom end; A: all joints)");
+  out.addScalar("statics_iterations", statics_iterations, "-", "Newton iterations of the static solution");
+  out.addScalar("statics_residual", statics_residual, "-", "Final scaled residual of the static solution");
+  out.addScalar("steps", static_cast<double>(stats.steps), "-", "Time steps");
+  // Plots.
+  auto plot = [&](std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
+    PlotSpec p;
+    p.name = std::move(name);
+    p.title = std::move(title);
+    p.table = std::move(table);
+    p.x = std::move(x);
+    p.y = std::move(y);
+    out.plots.push_back(std::move(p));
+  };
+  if (h.rows() > 1) {
+    plot("probe_displacement", "Probe point displacement", "history", "time", {"probe_dx", "probe_dy", "probe_dz"});
+    plot("top_force", "Top reaction", "history", "time", {"top_force_x", "top_force_y", "top_force_z"});
+    plot("energy", "Energy and work", "history", "time",
+         {"kinetic_energy", "spring_energy", "work_drag", "work_boundary", "energy_balance_error"});
+    plot("probe_stress", "Stress at the probe", "history", "time", {"probe_bending_stress", "probe_torsional_stress"});
+  }
+  for (const auto& t : out.tables) {
+    if (t.name.rfind("profile", 0) != 0) continue;
+    plot(t.name + "_stress", t.title + ": stress", t.name, "arc_length", {"bending_stress", "torsional_stress"});
+    plot(t.name + "_shape", t.title + ": shape", t.name, "arc_length", {"x", "y"});
+  }
+  return out;
+}
+
+}  // namespace maris::riser

@@ -1,0 +1,52 @@
+// Turns states of a riser run into Results: history table (probe point, end reactions, energies,
+// work, energy balance, constraint drift), profiles along the riser (positions, tension, bending
+// and torsional stress, curvature) at chosen times, node positions of every frame, View3D frames
+// (riser as a tube coloured by bending stress), plots and key scalars.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/results.hpp"
+#include "riser/riser_dynamics.hpp"
+#include "riser/riser_parameters.hpp"
+
+namespace maris::riser {
+
+// Quantities along the riser at one instant, per joint j = 1..n (index 0 = top end, n+1 = bottom end).
+struct RiserProfile {
+  std::vector<double> arc_length;       // [m] s of node k
+  std::vector<Vec3> position;           // [m] node k
+  std::vector<double> tension;          // [N] -F_k · t_k (node k, reaction of the joint; ends from supports)
+  std::vector<double> bending_stress;   // [Pa] σ_b = √(M'_2² + M'_3²)/w_B (0 at the ends)
+  std::vector<double> torsional_stress; // [Pa] σ_t = M'_1/w_T
+  std::vector<double> curvature;        // [1/m] bend angle / Δ
+};
+
+// Evaluates the profile of state y at time t (runs one right-hand side evaluation in `ws`).
+RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y);
+
+class RiserRecorder {
+ public:
+  RiserRecorder(const RiserModel& model, const RiserParameters& parameters, double stabilisation_rate);
+
+  // Records state y at time t: always a history row; optionally a 3D frame and a profile table.
+  void sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name);
+  // Results with everything recorded, the statics summary and the solver statistics.
+  Results finish(const SolverStats& stats, int statics_iterations, double statics_residual);
+
+ private:
+  const RiserModel& m_;
+  const RiserParameters& p_;
+  RiserWorkspace ws_;
+  Eigen::VectorXd dy_;
+  Results r_;
+  Table history_, nodes_;
+  std::vector<Vec3> initial_nodes_;
+  Vec3 probe_start_ = Vec3::Zero();
+  double energy0_ = 0.0, energy_scale_ = 0.0, balance_max_ = 0.0, drift_max_ = 0.0;
+  double max_bending_ = 0.0, max_torsion_ = 0.0, max_tension_ = 0.0, probe_max_ = 0.0;
+  bool first_ = true;
+};
+
+}  // namespace maris::riser

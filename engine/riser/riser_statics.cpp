@@ -1,0 +1,236 @@
+#include "riser/riser_statics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <Eigen/QR>
+
+#include "core/errors.hpp"
+#include "riser/riser_dynamics.hpp"
+
+namespace maris::riser {
+namespace {
+
+struct Configuration {
+  std::vector<Eigen::Quaterniond> orientation;
+  Vec3 top = Vec3::Zero();
+  Vec3 end_reaction = Vec3::Zero();
+};
+
+bool topFree(const RiserModel& m, int c) {
+  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
+}
+bool bottomHeld(const RiserModel& m) {
+  return m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+}
+
+class StaticProblem {
+ public:
+  explicit StaticProblem(const RiserModel& model) : m_(model), ws_(makeWorkspace(model, 0.0)) {
+    m_.formulation = Formulation::Joint;  // statics always in joint coordinates
+    for (int c = 0; c < 3; ++c)
+      if (topFree(m_, c)) top_free_.push_back(c);
+    rotation_dofs_ = m_.torsion ? 3 : 2;
+    size_ = static_cast<int>(top_free_.size()) + rotation_dofs_ * (m_.last_dynamic - m_.first_dynamic + 1) +
+            (bottomHeld(m_) ? 3 : 0);
+    // Reference force for scaling: weight, tension, point loads, drag and spring stiffness.
+    force_ref_ = m_.top_tension;
+    for (int i = 0; i <= m_.n; ++i) {
+      const Segment& s = m_.segments[i];
+      const double v = std::max(std::abs(m_.current_surface), std::abs(m_.current_seabed));
+      force_ref_ += (s.weight_per_length + s.buoyancy_per_length + s.normal_drag * v * v) * s.length;
+      force_ref_ += m_.joints[i].stiffness.maxCoeff() / m_.length;
+    }
+    for (const auto& l : m_.point_loads)
+      force_ref_ += Vec3(l.force_x, l.force_y, l.force_z).norm() + Vec3(l.moment_x, l.moment_y, l.moment_z).norm() / m_.length;
+    force_ref_ = std::max(force_ref_, 1e-12);
+  }
+
+  int size() const { return size_; }
+  double forceReference() const { return force_ref_; }
+
+  void pose(const Configuration& x, RiserPose& pose) {
+    const Eigen::VectorXd y = restState(m_, x.orientation, x.top);
+    poseFromState(m_, 0.0, y, pose);
+  }
+
+  // Scaled residual at load factor `lambda`.
+  Eigen::VectorXd residual(const Configuration& x, double lambda) {
+    RiserPose& p = ws_.pose;
+    pose(x, p);
+    computeLoads(m_, p, lambda, ws_.loads);
+    const double lref = m_.length, mref = force_ref_ * lref;
+    Eigen::VectorXd r(size_);
+    Vec3 below = bottomHeld(m_) ? Vec3(-x.end_reaction) : Vec3::Zero();
+    int k = static_cast<int>(top_free_.size());
+    for (int i = m_.last_dynamic; i >= m_.first_dynamic; --i) {
+      const Vec3 d = m_.segments[i].length * p.tangent(i);
+      const Vec3 q = ws_.loads.moment[i] + d.cross(below);
+      const int o = k + rotation_dofs_ * (i - m_.first_dynamic);
+      if (m_.torsion) {
+        r.segment<3>(o) = q / mref;
+      } else {
+        r[o] = q.dot(p.rotation[i].col(1)) / mref;
+        r[o + 1] = q.dot(p.rotation[i].col(2)) / mref;
+      }
+      below += ws_.loads.force[i];
+    }
+    for (std::size_t c = 0; c < top_free_.size(); ++c) {
+      const int axis = top_free_[c];
+      const double known = m_.top == TopCondition::Tensioner ? lambda * m_.top_tension : 0.0;
+      r[c] = (below[axis] + known) / force_ref_;
+    }
+    if (bottomHeld(m_)) {
+      Vec3 hold = m_.anchor;
+      if (m_.bottom == BottomCondition::Clamped) hold -= m_.segments[m_.n].length * p.tangent(m_.n);
+      const Vec3 end = m_.bottom == BottomCondition::Clamped ? p.position[m_.n] : p.end_position;
+      r.tail<3>() = (end - hold) / lref;
+    }
+    return r;
+  }
+
+  // The bottom reaction enters the residual linearly; start Newton from its least-squares value for
+  // the current shape (a zero initial reaction sends the first Newton steps far off for cables).
+  void fitEndReaction(Configuration& x, double lambda) {
+    if (!bottomHeld(m_)) return;
+    const Eigen::VectorXd r0 = residual(x, lambda);
+    const int rows = size_ - 3;
+    Eigen::MatrixXd a(rows, 3);
+    for (int k = 0; k < 3; ++k) {
+      Configuration y = x;
+      y.end_reaction[k] += force_ref_;
+      a.col(k) = (residual(y, lambda) - r0).head(rows);
+    }
+    x.end_reaction += force_ref_ * a.colPivHouseholderQr().solve(-r0.head(rows));
+  }
+
+  // x ⊕ du: top coordinates, rotation increments (global rotation vector, or on the two normals), reaction.
+  Configuration update(const Configuration& x, const Eigen::VectorXd& du) const {
+    Configuration y = x;
+    int k = 0;
+    for (int c : top_free_) y.top[c] += du[k++] * m_.length;
+    for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
+      Vec3 rot;
+      if (m_.torsion) {
+        rot = du.segment<3>(k);
+      } else {
+        const Mat3 r = x.orientation[i].toRotationMatrix();
+        rot = du[k] * r.col(1) + du[k + 1] * r.col(2);
+      }
+      k += rotation_dofs_;
+      const double angle = rot.norm();
+      if (angle > 0) y.orientation[i] = (Eigen::Quaterniond(Eigen::AngleAxisd(angle, rot / angle)) * x.orientation[i]).normalized();
+    }
+    if (bottomHeld(m_)) y.end_reaction += du.tail<3>() * force_ref_;
+    return y;
+  }
+
+ private:
+  RiserModel m_;
+  RiserWorkspace ws_;
+  std::vector<int> top_free_;
+  int rotation_dofs_ = 3;
+  int size_ = 0;
+  double force_ref_ = 1.0;
+};
+
+// Newton with line search at one load level. Returns true when converged; x is updated in place.
+bool newton(StaticProblem& problem, Configuration& x, double lambda, int& iterations, double& residual_norm,
+            RunContext& context) {
+  constexpr double kTolerance = 1e-11;  // scaled residual (forces / F_ref, lengths / L)
+  constexpr double kStep = 1e-7;        // forward-difference step of the scaled unknowns
+  const int n = problem.size();
+  problem.fitEndReaction(x, lambda);
+  Eigen::VectorXd r = problem.residual(x, lambda);
+  Eigen::MatrixXd jac(n, n);
+  for (int it = 0; it < 100; ++it) {
+    residual_norm = r.lpNorm<Eigen::Infinity>();
+    if (!std::isfinite(residual_norm)) return false;
+    if (residual_norm < kTolerance) return true;
+    context.throwIfCancelled();
+    ++iterations;
+    for (int k = 0; k < n; ++k) {
+      Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
+      e[k] = kStep;
+      jac.col(k) = (problem.residual(problem.update(x, e), lambda) - r) / kStep;
+    }
+    Eigen::VectorXd du = jac.partialPivLu().solve(-r);
+    if (!du.allFinite() || (jac * du + r).norm() > 1e-6 * r.norm()) du = jac.completeOrthogonalDecomposition().solve(-r);
+    // Limit rotations to 0.5 rad per iteration, then backtrack until the residual decreases.
+    const double biggest = du.lpNorm<Eigen::Infinity>();
+    if (biggest > 0.5) du *= 0.5 / biggest;
+    const double merit = r.norm();
+    bool accepted = false;
+    double accepted_length = 0.0;
+    for (double s = 1.0; s > 1e-3; s *= 0.5) {
+      Configuration trial = problem.update(x, s * du);
+      Eigen::VectorXd rt = problem.residual(trial, lambda);
+      if (rt.allFinite() && rt.norm() < (1 - 1e-4 * s) * merit) {
+        x = std::move(trial);
+        r = std::move(rt);
+        accepted = true;
+        accepted_length = s;
+        break;
+      }
+    }
+    // A failed or heavily shortened Newton step (soft, nearly singular modes of slack cables): try
+    // Levenberg-Marquardt steps (JᵀJ + μI) du = -Jᵀr, which descend for μ large enough, keep the best.
+    if (accepted_length < 0.25) {
+      const Eigen::MatrixXd normal = jac.transpose() * jac;
+      const Eigen::VectorXd gradient = jac.transpose() * r;
+      const double top = normal.diagonal().maxCoeff();
+      for (double mu = 1e-10 * top; mu < 1e6 * top; mu *= 10) {
+        const Eigen::VectorXd step = (normal + mu * Eigen::MatrixXd::Identity(n, n)).ldlt().solve(-gradient);
+        Configuration trial = problem.update(x, step);
+        Eigen::VectorXd rt = problem.residual(trial, lambda);
+        if (rt.allFinite() && rt.norm() < (accepted ? r.norm() : merit)) {
+          x = std::move(trial);
+          r = std::move(rt);
+          accepted = true;
+          break;
+        }
+      }
+    }
+    if (!accepted) {
+      residual_norm = r.lpNorm<Eigen::Infinity>();
+      return residual_norm < 1e3 * kTolerance;
+    }
+  }
+  residual_norm = r.lpNorm<Eigen::Infinity>();
+  return residual_norm < kTolerance;
+}
+
+}  // namespace
+
+StaticSolution solveStatics(const RiserModel& m, RunContext& context) {
+  StaticProblem problem(m);
+  Configuration x{m.initial_orientation, m.initial_top, Vec3::Zero()};
+  StaticSolution out;
+  double done = 0.0, increment = 1.0, residual = 0.0;
+  while (done < 1.0) {
+    const double lambda = std::min(1.0, done + increment);
+    Configuration trial = x;
+    context.progress(0.05 + 0.9 * done, "statics");
+    if (newton(problem, trial, lambda, out.iterations, residual, context)) {
+      x = std::move(trial);
+      done = lambda;
+      ++out.load_steps;
+      increment *= 2;
+    } else {
+      increment *= 0.5;
+      if (increment < 1.0 / 4096)
+        throw SolverError("static equilibrium", 0.0, out.iterations,
+                          "Newton's method found no equilibrium beyond load factor " + std::to_string(done) +
+                              " (scaled residual " + std::to_string(residual) + ")");
+    }
+  }
+  out.orientation = x.orientation;
+  out.top = x.top;
+  out.end_reaction = x.end_reaction;
+  out.residual = residual;
+  return out;
+}
+
+}  // namespace maris::riser

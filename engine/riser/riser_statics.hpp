@@ -1,0 +1,31 @@
+// Static equilibrium of the segment chain (initial shapes: hanging catenary, riser in current,
+// cantilever under tip load). Not in the paper, which starts from given shapes [brief §7.4].
+#pragma once
+
+#include <vector>
+
+#include "core/run_context.hpp"
+#include "riser/riser_model.hpp"
+
+namespace maris::riser {
+
+struct StaticSolution {
+  std::vector<Eigen::Quaterniond> orientation;  // R_GS_i of all n+1 segments at equilibrium
+  Vec3 top = Vec3::Zero();         // [m] top end position
+  Vec3 end_reaction = Vec3::Zero();// [N] force the riser exerts on a pinned/clamped bottom support (F_{n+1})
+  int iterations = 0;              // Newton iterations over all load steps
+  int load_steps = 0;              // accepted load levels (1 when full load converged at once)
+  double residual = 0.0;           // [-] final scaled residual (max norm)
+};
+
+// Newton's method on the generalised forces of joint coordinates: unknowns are a rotation
+// increment per dynamic segment (2 without torsion), the free top coordinates (tensioner: z) and,
+// for a pinned/clamped bottom, the end reaction as Lagrange multiplier. Residuals: for each segment
+// i the moment about A_i of everything from segment i down, n_i + d_i × Σ_{k>i} f_k = 0; the net
+// force on a free top; the bottom position error. Jacobian by forward differences (dense, O(n³):
+// statics runs once); backtracking line search on the scaled residual; if Newton fails at full
+// load, the external loads are applied in steps (halved on failure).
+// Starts from m.initial_orientation. Throws SolverError if no equilibrium is found.
+StaticSolution solveStatics(const RiserModel& m, RunContext& context);
+
+}  // namespace maris::riser

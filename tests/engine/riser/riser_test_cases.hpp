@@ -1,0 +1,51 @@
+// Parameter sets shared by the riser tests, built in code from the parameter struct.
+#pragma once
+
+#include <cmath>
+
+#include "riser/riser_parameters.hpp"
+
+namespace maris::riser::test {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+// A calm, dry set-up: no current, no top motion, no drag, water far below, nothing moving.
+inline RiserParameters calmInAir() {
+  RiserParameters p;
+  p.current_speed_surface = p.current_speed_seabed = 0.0;
+  p.motion_amplitude_x = p.motion_amplitude_y = p.motion_amplitude_z = 0.0;
+  p.motion_ramp_time = 0.0;
+  p.water_level = -1e6;
+  p.seabed_level = -2e6;
+  p.normal_drag_coefficient = p.tangential_drag_coefficient = 0.0;
+  p.top_condition = "pinned";
+  p.bottom_condition = "free";
+  p.end_time = 0.0;
+  p.stress_times.clear();
+  return p;
+}
+
+// Horizontal cantilever of length L clamped at the origin along +x, weightless, with a dead tip force
+// -P e_z. EI of the default steel tube (D 0.1 / 0.08 m).
+inline RiserParameters tipLoadedCantilever(int n, double tip_force, double length = 10.0) {
+  RiserParameters p = calmInAir();
+  p.length = length;
+  p.segment_count = n;
+  p.outer_diameter = 0.1;
+  p.inner_diameter = 0.08;
+  p.gravity = 0.0;
+  p.top_condition = "clamped";
+  p.initial_inclination = kPi / 2;
+  PointLoadRow load;
+  load.node = n + 1;
+  load.force_z = -tip_force;
+  p.point_loads = {load};
+  p.probe_position = length;
+  return p;
+}
+
+inline double bendingStiffness(const RiserParameters& p) {
+  return p.youngs_modulus * kPi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
+}
+
+}  // namespace maris::riser::test

@@ -1,0 +1,182 @@
+// Static equilibria of the segment chain against closed forms (brief riser_segment_method.md §5).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "riser/riser_results.hpp"
+#include "riser/riser_statics.hpp"
+#include "riser_test_cases.hpp"
+
+namespace maris::riser {
+namespace {
+
+using test::kPi;
+
+struct StaticShape {
+  RiserModel model;
+  StaticSolution solution;
+  RiserPose pose;
+  RiserProfile profile;
+};
+
+StaticShape solveShape(const RiserParameters& p) {
+  StaticShape s{buildRiserModel(p), {}, {}, {}};
+  RunContext context;
+  s.solution = solveStatics(s.model, context);
+  const Eigen::VectorXd y = restState(s.model, s.solution.orientation, s.solution.top);
+  RiserWorkspace ws = makeWorkspace(s.model, 0.0);
+  s.profile = evaluateProfile(s.model, ws, 0.0, y);
+  s.pose = ws.pose;
+  return s;
+}
+
+// Point at arc length s of a static shape.
+Vec3 pointAt(const StaticShape& s, double arc) {
+  const auto [i, xi] = s.model.locate(arc);
+  return s.pose.position[i] + xi * s.pose.tangent(i);
+}
+
+// Small tip load: the SM cantilever deflects exactly PL³/(3EI)·(1 - 1/(4n²)) (brief §5.5, linear theory).
+// Tolerance 1e-6 relative: geometric nonlinearity at PL²/EI = 1e-4 is O((δ/L)²) ≈ 1e-9, Newton's residual 1e-11.
+class CantileverTipLoad : public ::testing::TestWithParam<std::tuple<int, bool>> {};
+
+TEST_P(CantileverTipLoad, MatchesDiscreteEulerBernoulli) {
+  const auto [n, torsion] = GetParam();
+  const double length = 10.0;
+  RiserParameters p = test::tipLoadedCantilever(n, 1.0, length);
+  p.torsion = torsion;
+  const double ei = test::bendingStiffness(p);
+  p.point_loads[0].force_z = -1e-4 * ei / (length * length);
+  const double load = -p.point_loads[0].force_z;
+  const StaticShape s = solveShape(p);
+  const double expected = load * std::pow(length, 3) / (3 * ei) * (1 - 1.0 / (4.0 * n * n));
+  EXPECT_NEAR(-s.pose.end_position.z(), expected, 1e-6 * expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(SegmentCounts, CantileverTipLoad,
+                         ::testing::Values(std::make_tuple(2, true), std::make_tuple(5, true),
+                                           std::make_tuple(20, false), std::make_tuple(40, true)));
+
+// Large deflection under a dead vertical tip load (elastica). Reference: tip deflection / L and
+// horizontal shortening / L at PL²/EI = 1, 2, 5 (Bisshopp & Drucker 1945, as quoted in brief §5.6).
+// Tolerance 2e-3 relative at n = 40 (discretisation O(1/n²)); halving n must raise the error ~4x.
+struct ElasticaRow {
+  double load_parameter, deflection, shortening;
+};
+class Elastica : public ::testing::TestWithParam<ElasticaRow> {};
+
+TEST_P(Elastica, MatchesBisshoppDruckerAndConvergesQuadratically) {
+  const ElasticaRow row = GetParam();
+  double errors[2];
+  int k = 0;
+  for (int n : {20, 40}) {
+    RiserParameters p = test::tipLoadedCantilever(n, 1.0, 10.0);
+    p.point_loads[0].force_z = -row.load_parameter * test::bendingStiffness(p) / 100.0;
+    const StaticShape s = solveShape(p);
+    const double deflection = -s.pose.end_position.z() / 10.0, shortening = 1.0 - s.pose.end_position.x() / 10.0;
+    EXPECT_NEAR(shortening, row.shortening, 5e-3 * row.shortening + 2e-3 * row.deflection) << "n = " << n;
+    errors[k++] = std::abs(deflection - row.deflection);
+    if (n == 40) {
+      EXPECT_NEAR(deflection, row.deflection, 2e-3 * row.deflection);
+    }
+  }
+  EXPECT_GT(errors[0] / errors[1], 3.0) << "expected O(1/n²): errors " << errors[0] << ", " << errors[1];
+}
+
+INSTANTIATE_TEST_SUITE_P(LoadParameters, Elastica,
+                         ::testing::Values(ElasticaRow{1.0, 0.30172, 0.05643}, ElasticaRow{2.0, 0.49346, 0.16064},
+                                           ElasticaRow{5.0, 0.71379, 0.38763}));
+
+// Uniformly loaded cantilever (own weight): tip deflection qL⁴/(8EI); the error must fall as 1/n².
+TEST(RiserStatics, CantileverUnderOwnWeightConvergesAtSecondOrder) {
+  double previous_error = 0.0;
+  for (int n : {10, 20, 40}) {
+    RiserParameters p = test::tipLoadedCantilever(n, 0.0);
+    p.point_loads.clear();
+    p.gravity = 9.81;
+    p.density = 10.0;  // light: q L⁴/(8 EI) ≈ 1e-4 L keeps the response linear
+    p.internal_fluid_density = 0.0;
+    const StaticShape s = solveShape(p);
+    const double q = p.density * kPi / 4 * (0.1 * 0.1 - 0.08 * 0.08) * p.gravity;
+    const double expected = q * std::pow(10.0, 4) / (8 * test::bendingStiffness(p));
+    const double error = std::abs(-s.pose.end_position.z() - expected) / expected;
+    EXPECT_LT(error, 2.0 / (n * n)) << "n = " << n;
+    if (previous_error > 0) {
+      EXPECT_NEAR(previous_error / error, 4.0, 0.4) << "n = " << n;
+    }
+    previous_error = error;
+  }
+}
+
+// Inextensible catenary, supports 80 m apart at equal height, S = 100 m, w = 100 N/m:
+// a = 33.8202 m, sag 26.5438 m, H = 3382.02 N, support tension 6036.39 N (brief §5.1).
+// Tolerance 1e-3 relative at n = 50 (chain of straight links: O(1/n²)).
+TEST(RiserStatics, HangingChainMatchesCatenary) {
+  RiserParameters p = test::calmInAir();
+  p.length = 100.0;
+  p.segment_count = 50;
+  p.outer_diameter = 0.1;
+  p.inner_diameter = 0.0;
+  p.youngs_modulus = 1.0;  // EI ≈ 5e-6 N·m²: a chain
+  p.torsion = false;
+  p.density = 100.0 / (9.81 * kPi / 4 * 0.01);
+  p.bottom_condition = "pinned";
+  p.bottom_x = 80.0;
+  p.bottom_z = 0.0;
+  const StaticShape s = solveShape(p);
+  EXPECT_NEAR(-pointAt(s, 50.0).z(), 26.5438, 1e-3 * 26.5438);
+  EXPECT_NEAR(s.profile.tension.front(), 6036.39, 1e-3 * 6036.39);
+  EXPECT_NEAR(s.profile.tension.back(), 6036.39, 1e-3 * 6036.39);
+  // Vertical balance: the two supports carry the whole weight w S (to Newton's tolerance).
+  EXPECT_NEAR(-s.solution.end_reaction.z(), 100.0 * 100.0 / 2, 1e-6 * 5000);
+}
+
+// Static twist of a hanging rod under an end torque: φ = T L/(G J) exactly (n springs GJ/Δ in series).
+TEST(RiserStatics, EndTorqueTwistsByTLOverGJ) {
+  RiserParameters p = test::calmInAir();
+  p.length = 12.0;
+  p.segment_count = 6;
+  p.outer_diameter = 0.1;
+  p.inner_diameter = 0.08;
+  p.gravity = 0.0;
+  p.top_condition = "clamped";
+  const double gj = p.shear_modulus * kPi / 32 * (std::pow(0.1, 4) - std::pow(0.08, 4));
+  const double torque = 0.3 * gj / p.length;  // 0.3 rad of twist
+  PointLoadRow l;
+  l.node = p.segment_count + 1;
+  l.moment_z = torque;
+  p.point_loads = {l};
+  const StaticShape s = solveShape(p);
+  const Mat3 relative = s.pose.rotation[0].transpose() * s.pose.rotation[p.segment_count];
+  // The tangent points down (-z), so a torque about +z twists by -TL/GJ about the tangent.
+  EXPECT_NEAR(zyxAngles(relative).x(), -torque * p.length / gj, 1e-9);
+  EXPECT_NEAR(s.pose.end_position.z(), -p.length, 1e-9);
+}
+
+// Taut string (tensioner T, EI ≈ 0, no gravity) in a uniform current: mid-span deflection qL²/(8T)
+// with q = ½ ρ D C_dn v² (brief §5.12). Tolerance 0.5 %: slope² ≈ 7e-4 nonlinear terms + O(1/n²).
+TEST(RiserStatics, TautStringInCurrentSagsAsParabola) {
+  RiserParameters p = test::calmInAir();
+  p.length = 100.0;
+  p.segment_count = 40;
+  p.outer_diameter = 0.1;
+  p.inner_diameter = 0.08;
+  p.youngs_modulus = 1e3;
+  p.torsion = false;
+  p.gravity = 0.0;
+  p.water_level = 10.0;
+  p.seabed_level = -100.0;
+  p.normal_drag_coefficient = 1.0;
+  p.current_speed_surface = p.current_speed_seabed = 1.0;
+  p.top_condition = "tensioner";
+  p.top_tension = 1e5;
+  p.bottom_condition = "pinned";
+  p.bottom_z = -100.0;
+  const StaticShape s = solveShape(p);
+  const double q = 0.5 * p.water_density * 0.1 * 1.0;
+  const double expected = q * 100.0 * 100.0 / (8 * p.top_tension);
+  EXPECT_NEAR(pointAt(s, 50.0).x(), expected, 5e-3 * expected);
+}
+
+}  // namespace
+}  // namespace maris::riser
