@@ -167,6 +167,40 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   first_ = false;
 }
 
+void RiserRecorder::addModes(const RiserModes& modes) {
+  Table freq;
+  freq.name = "modes";
+  freq.title = "Natural frequencies about the static state";
+  Table shapes;
+  shapes.name = "mode_shapes";
+  shapes.title = "Mode shapes (node displacements, largest = 1)";
+  for (const char* c : {"mode", "node"}) shapes.add(c, "-");
+  shapes.add("arc_length", "m");
+  for (const char* c : {"dx", "dy", "dz"}) shapes.add(c, "-");
+  std::vector<double> index, omega, hertz, period;
+  for (std::size_t k = 0; k < modes.frequencies.size(); ++k) {
+    const double w = modes.frequencies[k];
+    index.push_back(static_cast<double>(k + 1));
+    omega.push_back(w);
+    hertz.push_back(w / (2 * 3.14159265358979323846));
+    period.push_back(2 * 3.14159265358979323846 / w);
+    for (int node = 0; node <= m_.n + 1; ++node) {
+      const Vec3& d = modes.shapes[k][node];
+      const double s = node <= m_.n ? m_.segments[node].arc_start : m_.length;
+      const double row[6] = {double(k + 1), double(node), s, d.x(), d.y(), d.z()};
+      for (int c = 0; c < 6; ++c) shapes.columns[c].values.push_back(row[c]);
+    }
+  }
+  freq.add("mode", "-", index);
+  freq.add("angular_frequency", "rad/s", omega);
+  freq.add("frequency", "Hz", hertz);
+  freq.add("period", "s", period);
+  if (!omega.empty())
+    r_.addScalar("first_natural_frequency", omega.front(), "rad/s", "Lowest natural frequency about the static state");
+  r_.tables.push_back(std::move(freq));
+  r_.tables.push_back(std::move(shapes));
+}
+
 Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, double statics_residual) {
   Results out = std::move(r_);
   out.stats = stats;

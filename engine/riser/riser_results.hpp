@@ -9,6 +9,7 @@
 
 #include "core/results.hpp"
 #include "riser/riser_dynamics.hpp"
+#include "riser/riser_modes.hpp"
 #include "riser/riser_parameters.hpp"
 
 namespace maris::riser {
@@ -32,6 +33,8 @@ class RiserRecorder {
 
   // Records state y at time t: always a history row; optionally a 3D frame and a profile table.
   void sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name);
+  // Natural frequencies and mode shapes about the static state: tables "modes" and "mode_shapes".
+  void addModes(const RiserModes& modes);
   // Results with everything recorded, the statics summary and the solver statistics.
   Results finish(const SolverStats& stats, int statics_iterations, double statics_residual);
 

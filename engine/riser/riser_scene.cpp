@@ -56,6 +56,11 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
 
   RiserRecorder recorder(model, p, stabilisation);
   recorder.sample(0.0, y, true, std::string("profile_static"));
+  // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).
+  if (p.solve_statics && 3 * (model.n + 1) <= 600) {
+    context.progress(0.0, "natural frequencies");
+    recorder.addModes(computeModes(model, statics, 6));
+  }
   SolverStats stats;
   stats.method = "RK4, constant step h = " + std::to_string(h) + " s, " +
                  (model.formulation == Formulation::Joint ? "joint" : "absolute") + " coordinates" +
