@@ -112,8 +112,8 @@ GridKochin::GridKochin(HullGrid grid, bool with_coarse) : fine_(std::move(grid))
   }
 }
 
-double GridKochin::kochinSquared(const HullGrid& g, double k0, double lambda, Eigen::VectorXd& w,
-                                 Eigen::VectorXd& Z) {
+std::complex<double> GridKochin::kochin(const HullGrid& g, double k0, double lambda, Eigen::VectorXd& w,
+                                        Eigen::VectorXd& Z) {
   const double kappa = k0 * lambda, b = kappa * lambda;
   // Depth integral of every station: Z_i = ∫ Y(x_i, z) e^{bz} dz (exact for piecewise linear Y).
   int last = 0;
@@ -124,13 +124,16 @@ double GridKochin::kochinSquared(const HullGrid& g, double k0, double lambda, Ei
   const double half = 0.5 * n * g.dx;
   const std::complex<double> I = filonIntegral(Z, -half, g.dx, kappa);
   const std::complex<double> e_fwd = std::polar(1.0, kappa * half), e_aft = std::conj(e_fwd);
-  const std::complex<double> F = Z[n] * e_fwd - Z[0] * e_aft - std::complex<double>(0.0, kappa) * I;
-  return std::norm(F);
+  return Z[n] * e_fwd - Z[0] * e_aft - std::complex<double>(0.0, kappa) * I;
+}
+
+std::complex<double> GridKochin::amplitude(double k0, double lambda) {
+  return kochin(fine_, k0, lambda, weights_, sections_);
 }
 
 void GridKochin::evaluate(double k0, double lambda, double& fine, double& coarse) {
-  fine = kochinSquared(fine_, k0, lambda, weights_, sections_);
-  coarse = with_coarse_ ? kochinSquared(coarse_, k0, lambda, weights_coarse_, sections_coarse_) : fine;
+  fine = std::norm(kochin(fine_, k0, lambda, weights_, sections_));
+  coarse = with_coarse_ ? std::norm(kochin(coarse_, k0, lambda, weights_coarse_, sections_coarse_)) : fine;
 }
 
 void WigleyKochin::evaluate(double k0, double lambda, double& fine, double& coarse) {

@@ -11,6 +11,7 @@
 // a power-law tail beyond λ_max fitted on the last two octaves.
 #pragma once
 
+#include <complex>
 #include <vector>
 
 #include "core/run_context.hpp"
@@ -40,10 +41,12 @@ class GridKochin : public KochinFunction {
   double length() const override { return (fine_.nx() - 1) * fine_.dx; }
   double depth() const override { return fine_.depth(); }
   const HullGrid& grid() const { return fine_; }
+  // P + iQ [m²] itself, with x measured from the grid's mid-length (for the wave pattern).
+  std::complex<double> amplitude(double k0, double lambda);
 
  private:
-  double kochinSquared(const HullGrid& g, double k0, double lambda, Eigen::VectorXd& weights,
-                       Eigen::VectorXd& sections);
+  std::complex<double> kochin(const HullGrid& g, double k0, double lambda, Eigen::VectorXd& weights,
+                              Eigen::VectorXd& sections);
   HullGrid fine_, coarse_;
   bool with_coarse_;
   Eigen::VectorXd weights_, sections_, weights_coarse_, sections_coarse_;  // workspace, sized once

@@ -69,6 +69,10 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
          "Discard waves shorter than this fraction of Lpp (paper section 3.3); 0 = keep all");
   b.real("corrections.trip_position", &P::trip_position, "-", Range::closed(0, 1),
          "Forced laminar-turbulent transition of the boundary layer, fraction of the waterline from the bow");
+  b.real("full_scale.ship_length", &P::ship_length, "m", Range::nonNegative(1000),
+         "Lpp of the full-scale ship for the extrapolation at equal Fn (0 = model only)");
+  b.real("full_scale.water_temperature", &P::ship_water_temperature, "degC", Range::closed(0, 40),
+         "Sea water temperature of the full-scale ship");
   b.integer("numerics.stations", &P::stations, "-", Range::closed(9, 4001), "Grid stations along the hull (4m+1)");
   b.integer("numerics.waterlines", &P::waterlines, "-", Range::closed(5, 1001), "Grid waterlines (odd)");
   b.real("numerics.relative_tolerance", &P::relative_tolerance, "-", Range::closed(1e-10, 0.1),

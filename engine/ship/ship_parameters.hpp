@@ -43,6 +43,9 @@ struct ShipParameters {
   bool corrected_prefactor = false;    // also use k̂0 in the k0² prefactor of eq 8
   double short_wave_cutoff = 0.0;      // [-] discard waves shorter than this fraction of Lpp (0: off)
   double trip_position = 0.05;         // [-] forced laminar→turbulent transition, fraction of L from the bow
+  // Full-scale extrapolation at equal Fn (ITTC-1978 form-factor method, hull only)
+  double ship_length = 0.0;            // [m] Lpp of the full-scale ship (0: no extrapolation)
+  double ship_water_temperature = 15.0;  // [°C] sea water temperature of the ship
   // Numerics
   int stations = 257;                  // [-] grid stations along the hull (4m + 1)
   int waterlines = 51;                 // [-] grid waterlines (odd)

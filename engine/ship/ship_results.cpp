@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "ship/kelvin_pattern.hpp"
 #include "ship/ship_study.hpp"
 
 namespace maris::ship {
@@ -112,6 +113,23 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   t.add("r_total", "N", rt);
   if (corrected) t.add("r_total_corrected", "N", rtc);
   t.add("r_total_holtrop", "N", rth);
+  // Full scale at equal Fn: C_TS = C_W + (1+k) C_F(Re_S) + C_A in sea water, S_S = S (L_S/L)².
+  const bool full_scale = p.ship_length > 0;
+  if (full_scale) {
+    const double ratio = p.ship_length / m.hull.length_pp;
+    const WaterProperties sea = waterProperties(WaterKind::Sea, p.ship_water_temperature);
+    std::vector<double> us, cfs, cts, rts;
+    for (std::size_t i = 0; i < n; ++i) {
+      us.push_back(c.speed[i] * std::sqrt(ratio));
+      cfs.push_back(ittc57FrictionCoefficient(us.back() * m.particulars.length_wl * ratio / sea.kinematic_viscosity));
+      cts.push_back(cw[i] + m.form_factor * cfs.back() + p.correlation_allowance);
+      rts.push_back(cts.back() * 0.5 * sea.density * us.back() * us.back() * S * ratio * ratio);
+    }
+    t.add("ship_speed", "m/s", us);
+    t.add("c_friction_ship", "-", cfs);
+    t.add("c_total_ship", "-", cts);
+    t.add("r_total_ship", "N", rts);
+  }
   r.tables.push_back(std::move(t));
 
   // Plots.
@@ -140,6 +158,9 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   r.plots.push_back(ct_plot);
   r.plots.push_back(makePlot("friction_coefficient", "ITTC-57 friction coefficient C_F", "resistance_curve", "froude", {"c_friction"}));
   r.plots.push_back(makePlot("total_resistance", "Total resistance R_T", "resistance_curve", "speed", rt_cols));
+  if (full_scale)
+    r.plots.push_back(makePlot("ship_total_resistance", "Full-scale total resistance (uncorrected Michell)",
+                               "resistance_curve", "ship_speed", {"r_total_ship"}));
 
   // Design speed: scalars and the wave-angle spectrum.
   const std::size_t d = designIndex(c, p.design_froude);
@@ -204,6 +225,27 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   Frame3D frame;
   frame.shapes.push_back(hullSurface(m.hull, 1.0));
   frame.shapes.push_back(hullSurface(m.hull, -1.0));
+  {
+    // Far-field Kelvin pattern behind the stern at the design speed (elevation exaggerated ×10 for display).
+    context.progress(0.97, "wave pattern");
+    GridKochin kochin(m.grid, false);
+    const double L = m.hull.length_pp;
+    const WavePattern w = kelvinWavePattern(kochin, c.speed[d], p.gravity, m.grid.x_aft, 2.0 * L, 0.8 * L, 81, 41);
+    Shape3D s;
+    s.kind = Shape3D::Kind::Surface;
+    s.name = "Kelvin wave pattern (far field, elevation x10)";
+    s.grid_u = static_cast<int>(w.y.size());
+    s.grid_v = static_cast<int>(w.x.size());
+    for (Eigen::Index i = 0; i < w.x.size(); ++i)
+      for (Eigen::Index j = 0; j < w.y.size(); ++j) {
+        s.points.emplace_back(w.x[i], w.y[j], 10.0 * w.elevation(i, j));
+        s.scalars.push_back(w.elevation(i, j));
+      }
+    s.color = {0.2, 0.4, 0.8};
+    frame.shapes.push_back(std::move(s));
+    r.view.scalar_name = "wave elevation";
+    r.view.scalar_unit = "m";
+  }
   r.view.frames.push_back(std::move(frame));
   r.view.water_level_z = 0.0;
 
