@@ -38,8 +38,9 @@ void ScenarioDocument::edit(const std::string& path, Json new_value) {
 
 void ScenarioDocument::applyValue(const std::string& path, const Json& value) {
   setAtPath(scenario_.parameters, path, value);
-  revalidate();
+  // Value first, errors second: editors rebuild their cells on the value, then mark the bad ones.
   emit valueChanged(QString::fromStdString(path));
+  revalidate();
 }
 
 QString ScenarioDocument::errorText(const std::string& path) const {

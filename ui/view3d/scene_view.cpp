@@ -45,10 +45,13 @@ SceneView::SceneView(QWidget* parent)
   colors_->SetColorSpaceToDiverging();
   scalar_bar_->SetLookupTable(colors_);
   scalar_bar_->SetNumberOfLabels(5);
-  scalar_bar_->SetMaximumWidthInPixels(90);
-  scalar_bar_->GetPositionCoordinate()->SetValue(0.88, 0.12);
-  scalar_bar_->SetWidth(0.1);
-  scalar_bar_->SetHeight(0.75);
+  // Horizontal along the bottom: long titles ("bending stress [Pa]") fit there.
+  scalar_bar_->SetOrientationToHorizontal();
+  scalar_bar_->GetPositionCoordinate()->SetValue(0.32, 0.02);
+  scalar_bar_->SetWidth(0.6);
+  scalar_bar_->SetHeight(0.11);
+  scalar_bar_->SetMaximumHeightInPixels(80);
+  scalar_bar_->SetTextPositionToPrecedeScalarBar();  // labels below the bar, title above
   scalar_bar_->UnconstrainedFontSizeOn();
   scalar_bar_->SetTextPad(4);
   for (vtkTextProperty* text : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
@@ -62,7 +65,9 @@ SceneView::SceneView(QWidget* parent)
   scalar_bar_->SetLabelFormat("%-#8.3g");
   caption_->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
   caption_->GetTextProperty()->SetFontSize(16);
-  caption_->SetPosition(12, 10);
+  caption_->GetTextProperty()->SetVerticalJustificationToTop();
+  caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  caption_->GetPositionCoordinate()->SetValue(0.015, 0.98);
   renderer->AddViewProp(caption_);
 
   auto axes = vtkSmartPointer<vtkAxesActor>::New();
@@ -243,6 +248,7 @@ void SceneView::resetCamera() {
   camera->SetPosition(eye.x(), eye.y(), eye.z());
   camera->SetViewUp(0, 0, 1);
   gl_->renderer()->ResetCamera();
+  camera->Zoom(0.92);  // a margin around the model for the caption and the colour bar
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
   gl_->update();
