@@ -32,6 +32,7 @@ const char* kUsageText =
     "  show NAME                    print a built-in scenario as JSON, ready to edit\n"
     "  schema SCENE [--json]        the parameter schema of a scene (names, units, defaults, ranges)\n"
     "  scenes                       the scenes compiled in\n"
+    "  default                      the name of the default built-in scenario\n"
     "  run FILE|NAME [--set path=value ...] [--out DIR] [--no-plots]\n"
     "                               run a scenario file or a built-in scenario; writes scenario.json,\n"
     "                               summary.json, one CSV per result table and PNG plots into DIR\n"
@@ -160,6 +161,10 @@ int main(int argc, char** argv) {
   try {
     if (cmd == "list") return cmdList();
     if (cmd == "scenes") return cmdScenes();
+    if (cmd == "default") {
+      std::printf("%s\n", defaultBuiltin().id.c_str());
+      return kOk;
+    }
     if (cmd == "show" && rest.size() == 1) return cmdShow(rest[0]);
     if (cmd == "schema" && !rest.empty())
       return cmdSchema(rest[0], rest.size() > 1 && rest[1] == "--json");

@@ -1,0 +1,56 @@
+#include "cli_runner.hpp"
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace maris::test {
+
+static std::string slurp(const std::string& file) {
+  std::ifstream in(file);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+CliResult runCli(const std::vector<std::string>& args, const std::string& working_dir, double interrupt_after_s) {
+  static int counter = 0;
+  const std::string base = "/tmp/maris_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
+  const std::string out_file = base + ".out", err_file = base + ".err";
+  // A tiny shell wrapper changes directory and redirects, keeping the spawn portable.
+  std::string command = "cd '" + working_dir + "' && exec '" MARIS_CLI_PATH "'";
+  for (const auto& a : args) {
+    std::string quoted;
+    for (char c : a) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+    command += " '" + quoted + "'";
+  }
+  command += " >'" + out_file + "' 2>'" + err_file + "' </dev/null";
+  const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
+  pid_t pid = 0;
+  CliResult result;
+  if (::posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) != 0) return result;
+  if (interrupt_after_s > 0.0) {
+    std::this_thread::sleep_for(std::chrono::duration<double>(interrupt_after_s));
+    ::kill(pid, SIGINT);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  else if (WIFSIGNALED(status)) result.exit_code = 128 + WTERMSIG(status);
+  result.out = slurp(out_file);
+  result.err = slurp(err_file);
+  ::unlink(out_file.c_str());
+  ::unlink(err_file.c_str());
+  return result;
+}
+
+}  // namespace maris::test

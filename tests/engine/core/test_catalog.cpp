@@ -1,0 +1,81 @@
+// Properties every registered scene and built-in scenario must have, whatever the scene:
+// a complete schema (unit, description, default inside its range) and valid examples.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "catalog.hpp"
+
+namespace maris {
+namespace {
+
+void expectSpecComplete(const ParamSpec& f, const std::string& scene) {
+  SCOPED_TRACE(scene + ": " + f.path);
+  EXPECT_FALSE(f.description.empty()) << "every field needs a one-line description";
+  if (f.kind == ParamKind::Real || f.kind == ParamKind::Integer || f.kind == ParamKind::RealList) {
+    EXPECT_FALSE(f.unit.empty()) << "numbers need a unit (\"-\" when dimensionless)";
+  }
+  if (f.kind == ParamKind::Real || f.kind == ParamKind::Integer) {
+    EXPECT_TRUE(f.range.contains(f.default_value.get<double>())) << "default outside " << f.range.str();
+  }
+  if (f.kind == ParamKind::Choice) {
+    EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), f.default_value.get<std::string>()), f.choices.end());
+  }
+  for (const auto& c : f.columns) expectSpecComplete(c, scene);
+}
+
+TEST(Catalog, SceneNamesAreUniqueAndEverySchemaIsComplete) {
+  std::set<std::string> names;
+  for (const auto& s : sceneCatalog()) {
+    EXPECT_TRUE(names.insert(s.name).second) << "duplicate scene " << s.name;
+    EXPECT_FALSE(s.title.empty());
+    EXPECT_TRUE(static_cast<bool>(s.run)) << s.name;
+    std::set<std::string> paths;
+    for (const auto& f : s.schema.fields) {
+      EXPECT_TRUE(paths.insert(f.path).second) << "duplicate path " << f.path;
+      expectSpecComplete(f, s.name);
+    }
+  }
+}
+
+TEST(Catalog, EverySceneDefaultScenarioValidates) {
+  for (const auto& s : sceneCatalog()) {
+    const auto errors = validateParameters(s, defaultScenario(s).parameters);
+    EXPECT_TRUE(errors.empty()) << s.name << ":\n" << describeErrors(errors);
+  }
+}
+
+TEST(Catalog, EveryBuiltInScenarioValidatesAndRoundTrips) {
+  std::set<std::string> ids;
+  for (const auto& b : builtinScenarios()) {
+    EXPECT_TRUE(ids.insert(b.id).second) << "duplicate id " << b.id;
+    EXPECT_FALSE(b.scenario.name.empty()) << b.id;
+    EXPECT_FALSE(b.scenario.description.empty()) << b.id << ": say what the case is and what was assumed";
+    const auto errors = validateParameters(requireScene(b.scenario.scene), b.scenario.parameters);
+    EXPECT_TRUE(errors.empty()) << b.id << ":\n" << describeErrors(errors);
+    EXPECT_EQ(scenarioToJson(scenarioFromText(scenarioToText(b.scenario))), scenarioToJson(b.scenario)) << b.id;
+  }
+}
+
+TEST(Catalog, EverySceneHasAnExampleAndTheDefaultExists) {
+  for (const auto& s : sceneCatalog()) {
+    bool found = false;
+    for (const auto& b : builtinScenarios()) found = found || b.scenario.scene == s.name;
+    EXPECT_TRUE(found) << s.name << " has no built-in scenario";
+  }
+  if (!sceneCatalog().empty()) {
+    EXPECT_NO_THROW(defaultBuiltin());
+  }
+}
+
+TEST(Catalog, UnknownSceneErrorListsKnownScenes) {
+  try {
+    requireScene("spaceship");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a known scene"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace maris

@@ -1,0 +1,56 @@
+// Result containers: CSV with names and units rows that round-trips doubles; summary.json.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/results.hpp"
+
+namespace maris {
+namespace {
+
+TEST(Results, CsvHasNameRowUnitRowAndExactNumbers) {
+  Table t;
+  t.name = "tip";
+  t.add("time", "s", {0.0, 0.1});
+  t.add("tip x, lateral", "m", {1.0 / 3.0, -2e-300});
+  t.add("ratio", "", {1.0, 2.0});
+  const std::string csv = t.toCsv();
+  std::istringstream in(csv);
+  std::string names, units, row1;
+  std::getline(in, names);
+  std::getline(in, units);
+  std::getline(in, row1);
+  EXPECT_EQ(names, "time,\"tip x, lateral\",ratio");
+  EXPECT_EQ(units, "s,m,-");
+  const auto comma = row1.find(',');
+  const double x = std::stod(row1.substr(comma + 1));
+  EXPECT_EQ(x, 1.0 / 3.0);  // 17 significant digits round-trip a double exactly
+}
+
+TEST(Results, SummaryCarriesUnitsAndSolverStatistics) {
+  Results r;
+  r.addScalar("tip_deflection", 0.25, "m", "Tip deflection");
+  r.addScalar("undefined", std::nan(""), "-", "Not computed");
+  r.stats.steps = 10;
+  r.stats.method = "RK4";
+  r.warnings.push_back("note");
+  const Json j = summaryJson(r);
+  EXPECT_EQ(j["results"]["tip_deflection"]["unit"], "m");
+  EXPECT_EQ(j["results"]["tip_deflection"]["value"], 0.25);
+  EXPECT_TRUE(j["results"]["undefined"]["value"].is_null());  // NaN is not valid JSON
+  EXPECT_EQ(j["solver"]["steps"], 10);
+  EXPECT_EQ(j["warnings"][0], "note");
+}
+
+TEST(Results, LookupByName) {
+  Results r;
+  r.tables.push_back(Table{"a", "A", {}});
+  r.addScalar("s", 1.0, "m", "");
+  EXPECT_NE(r.findTable("a"), nullptr);
+  EXPECT_EQ(r.findTable("b"), nullptr);
+  EXPECT_NE(r.findScalar("s"), nullptr);
+}
+
+}  // namespace
+}  // namespace maris
