@@ -1,0 +1,273 @@
+// Implicit generalized-α for M(t,q) q'' = f(t,q,q') with Newton iterations (contract and equations in
+// core/ode_second_order.hpp).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <Eigen/LU>
+
+#include "core/errors.hpp"
+#include "core/ode_internal.hpp"
+#include "core/ode_second_order.hpp"
+
+namespace maris {
+
+GeneralizedAlphaCoefficients generalizedAlphaCoefficients(double rho_inf) {
+  if (!(rho_inf >= 0.0 && rho_inf <= 1.0))
+    throw std::invalid_argument("generalized-alpha: rho_inf must be in [0, 1], got " + std::to_string(rho_inf));
+  GeneralizedAlphaCoefficients c;
+  c.alpha_m = (2.0 * rho_inf - 1.0) / (rho_inf + 1.0);
+  c.alpha_f = rho_inf / (rho_inf + 1.0);
+  c.gamma = 0.5 + c.alpha_f - c.alpha_m;
+  c.beta = 0.25 * (c.gamma + 0.5) * (c.gamma + 0.5);
+  return c;
+}
+
+namespace {
+
+// Newton solver for the acceleration at one time: q = q_base + dq·acc, v = v_base + dv·acc.
+// Holds the work vectors and (for the default path) the LU of the dense iteration matrix.
+class NewtonSolver {
+ public:
+  NewtonSolver(const SecondOrderSystem& sys, const OdeOptions& o, int max_iterations, OdeStats& stats)
+      : sys_(sys), options_(o), max_iterations_(max_iterations), stats_(stats), n_(sys.size),
+        q_(n_), v_(n_), r_(n_), delta_(n_), solution_(n_), r_pert_(n_), acc_pert_(n_), q_pert_(n_), v_pert_(n_), matrix_(n_, n_) {}
+
+  const Eigen::VectorXd& q() const { return q_; }
+  const Eigen::VectorXd& v() const { return v_; }
+  const Eigen::VectorXd& lastCorrection() const { return delta_; }
+  void invalidateMatrix() { have_matrix_ = false; }
+  bool matrixIsFresh() const { return matrix_fresh_; }
+
+  // Solves r(t, q_base + dq·acc, v_base + dv·acc, acc) = 0 for acc, starting from `acc`.
+  // Returns true on convergence; `acc`, q(), v() then hold the solution.
+  bool solve(double t, const Eigen::VectorXd& q_base, const Eigen::VectorXd& v_base, double dq, double dv,
+             Eigen::VectorXd& acc) {
+    const bool coefficients_changed = dq != matrix_dq_ || dv != matrix_dv_;
+    matrix_fresh_ = false;
+    double previous_norm = 0.0;
+    for (int iteration = 0; iteration < max_iterations_; ++iteration) {
+      q_ = q_base + dq * acc;
+      v_ = v_base + dv * acc;
+      sys_.residual(t, q_, v_, acc, r_);
+      ++stats_.rhs_evaluations;
+      if (!r_.allFinite()) return false;
+      // Refresh the iteration matrix at the first iteration if it is stale, or when convergence is slow.
+      const bool refresh = !have_matrix_ || (coefficients_changed && iteration == 0) || slow_;
+      delta_ = -r_;
+      if (!solveLinear(t, acc, dq, dv, refresh)) return false;
+      acc += delta_;
+      const double norm = correctionNorm(dq, dv, q_base, v_base, acc);
+      if (!std::isfinite(norm)) return false;
+      // Converged when the correction is within tolerance, or the contraction rate θ says the
+      // remaining error θ/(1−θ)·|Δ| is.
+      const double theta = iteration > 0 ? norm / std::max(previous_norm, 1e-300) : 0.0;
+      slow_ = theta > 0.5;
+      if (norm <= 1.0 || (iteration > 0 && theta < 1.0 && theta / (1.0 - theta) * norm <= 1.0)) {
+        q_ = q_base + dq * acc;
+        v_ = v_base + dv * acc;
+        return true;
+      }
+      if (iteration > 0 && theta >= 1.0) return false;  // diverging
+      previous_norm = norm;
+    }
+    slow_ = true;
+    return false;
+  }
+
+ private:
+  // delta_ ← S⁻¹ delta_, through the caller's solver or the dense finite-difference LU.
+  bool solveLinear(double t, const Eigen::VectorXd& acc, double dq, double dv, bool refresh) {
+    if (refresh) {
+      ++stats_.jacobian_evaluations;
+      matrix_fresh_ = true;
+      matrix_dq_ = dq;
+      matrix_dv_ = dv;
+      slow_ = false;
+    }
+    if (sys_.solve_iteration_matrix) {
+      have_matrix_ = true;
+      return sys_.solve_iteration_matrix(IterationMatrixRequest{t, q_, v_, acc, dv, dq, refresh}, delta_);
+    }
+    if (refresh) {
+      // Forward differences of the residual along acc (q and v follow), one column per coordinate.
+      const double acc_scale = std::max(acc.size() ? acc.cwiseAbs().maxCoeff() : 0.0, 1.0);
+      for (Eigen::Index j = 0; j < n_; ++j) {
+        const double eps = std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(acc[j]), acc_scale);
+        acc_pert_ = acc;
+        acc_pert_[j] += eps;
+        q_pert_ = q_;
+        q_pert_[j] += dq * eps;
+        v_pert_ = v_;
+        v_pert_[j] += dv * eps;
+        sys_.residual(t, q_pert_, v_pert_, acc_pert_, r_pert_);
+        matrix_.col(j) = (r_pert_ - r_) / eps;
+      }
+      stats_.rhs_evaluations += n_;
+      if (!matrix_.allFinite()) return false;
+      lu_.compute(matrix_);
+      have_matrix_ = true;
+      // A (numerically) singular matrix: PartialPivLU does not detect it, so look at the pivots.
+      const Eigen::VectorXd pivots = lu_.matrixLU().diagonal().cwiseAbs();
+      if (n_ > 0 && !(pivots.minCoeff() > 1e-14 * pivots.maxCoeff())) {
+        have_matrix_ = false;
+        return false;
+      }
+    }
+    solution_.noalias() = lu_.solve(delta_);
+    delta_.swap(solution_);
+    return delta_.allFinite();
+  }
+
+  // Weighted RMS of the corrections to q and v (weights 1/(atol + rtol·|value|)); the larger one.
+  // With dq = dv = 0 (initial acceleration) the acceleration itself is measured.
+  double correctionNorm(double dq, double dv, const Eigen::VectorXd& q_base, const Eigen::VectorXd& v_base,
+                        const Eigen::VectorXd& acc) const {
+    if (n_ == 0) return 0.0;
+    const double atol = options_.atol, rtol = options_.rtol;
+    double sum_q = 0.0, sum_v = 0.0, sum_a = 0.0;
+    for (Eigen::Index i = 0; i < n_; ++i) {
+      const double eq = dq * delta_[i] / (atol + rtol * std::abs(q_base[i] + dq * acc[i]));
+      const double ev = dv * delta_[i] / (atol + rtol * std::abs(v_base[i] + dv * acc[i]));
+      const double ea = delta_[i] / (atol + rtol * std::abs(acc[i]));
+      sum_q += eq * eq;
+      sum_v += ev * ev;
+      sum_a += ea * ea;
+    }
+    const double count = static_cast<double>(n_);
+    if (dq == 0.0 && dv == 0.0) return std::sqrt(sum_a / count);
+    return std::sqrt(std::max(sum_q, sum_v) / count);
+  }
+
+  const SecondOrderSystem& sys_;
+  const OdeOptions& options_;
+  int max_iterations_;
+  OdeStats& stats_;
+  Eigen::Index n_;
+  Eigen::VectorXd q_, v_, r_, delta_, solution_, r_pert_, acc_pert_, q_pert_, v_pert_;
+  Eigen::MatrixXd matrix_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  bool have_matrix_ = false, matrix_fresh_ = false, slow_ = false;
+  double matrix_dq_ = -1.0, matrix_dv_ = -1.0;
+};
+
+std::string newtonFailure(const NewtonSolver& newton, const OdeOptions& o, double h, Eigen::Index* worst) {
+  *worst = 0;
+  if (newton.lastCorrection().size() > 0) newton.lastCorrection().cwiseAbs().maxCoeff(worst);
+  return "has the largest correction when the Newton iteration failed to converge at step h = " +
+         std::to_string(h) + " s (min_step " + std::to_string(o.min_step) + " s)";
+}
+
+}  // namespace
+
+OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::VectorXd& q, Eigen::VectorXd& v,
+                                   const OdeOptions& options, const GeneralizedAlphaOptions& alpha_options,
+                                   RunContext& ctx, const SecondOrderObserver& observer) {
+  using namespace ode_detail;
+  checkOptions(options, "integrateGeneralizedAlpha", true);
+  const GeneralizedAlphaCoefficients c = generalizedAlphaCoefficients(alpha_options.rho_inf);
+  const Eigen::Index n = system.size;
+  if (!system.residual || q.size() != n || v.size() != n)
+    throw std::invalid_argument("integrateGeneralizedAlpha: need a residual and q, v of size " + std::to_string(n));
+  OdeStats stats;
+  NewtonSolver newton(system, options, std::max(1, alpha_options.max_newton_iterations), stats);
+  OutputSchedule schedule(options);
+  ProgressTicker ticker(ctx, options);
+
+  // Initial acceleration from M(t0, q0) q̈0 = f(t0, q0, v0); the pseudo-acceleration starts equal to it.
+  throwIfNotFinite(q, options.t0, 0, options.state_name);
+  throwIfNotFinite(v, options.t0, 0, options.state_name);
+  Eigen::VectorXd acc = Eigen::VectorXd::Zero(n);
+  if (!newton.solve(options.t0, q, v, 0.0, 0.0, acc)) {
+    Eigen::Index worst = 0;
+    newtonFailure(newton, options, 0.0, &worst);
+    throw SolverError(componentName(options, worst), options.t0, 0,
+                      "acceleration could not be found at the initial state (singular mass matrix?)");
+  }
+  if (observer) observer(options.t0, q, v, acc);
+  newton.invalidateMatrix();
+
+  Eigen::VectorXd pseudo = acc, pseudo_known(n), acc_new(n), q_base(n), v_base(n), q_new(n), v_new(n), q_out(n), v_out(n), a_out(n);
+  const double h_nominal = options.step;
+  const int ramp = std::clamp(alpha_options.startup_halvings, 0, 60);
+  double h = std::max(std::ldexp(h_nominal, -ramp), options.min_step), t = options.t0;
+  bool ramping = ramp > 0;
+  int good_steps_since_halving = 0;
+  while (t < options.t1) {
+    ctx.throwIfCancelled();
+    if (stats.steps >= options.max_steps)
+      throw SolverError("time", t, stats.steps,
+                        "needs more than max_steps = " + std::to_string(options.max_steps) + " steps");
+    const bool last = t + h * (1.0 + 1e-9) >= options.t1;
+    const double h_step = last ? options.t1 - t : h;
+    const double t_new = last ? options.t1 : t + h_step;
+
+    // Predictor-independent parts of q_{n+1}, v_{n+1}; the unknown q̈_{n+1} enters with β', γ'.
+    const double w = 1.0 / (1.0 - c.alpha_m);
+    const double dq = c.beta * h_step * h_step * (1.0 - c.alpha_f) * w;
+    const double dv = c.gamma * h_step * (1.0 - c.alpha_f) * w;
+    pseudo_known = (c.alpha_f * acc - c.alpha_m * pseudo) * w;  // a_{n+1} minus its q̈_{n+1} part
+    q_base = q + h_step * v + (h_step * h_step) * ((0.5 - c.beta) * pseudo + c.beta * pseudo_known);
+    v_base = v + h_step * ((1.0 - c.gamma) * pseudo + c.gamma * pseudo_known);
+    acc_new = acc;
+    bool converged = newton.solve(t_new, q_base, v_base, dq, dv, acc_new);
+    if (!converged && !newton.matrixIsFresh()) {
+      newton.invalidateMatrix();  // a stale matrix may be the reason: retry once with a fresh one
+      acc_new = acc;
+      converged = newton.solve(t_new, q_base, v_base, dq, dv, acc_new);
+    }
+    if (!converged) {
+      ++stats.rejected_steps;
+      newton.invalidateMatrix();
+      if (alpha_options.halve_on_failure && 0.5 * h_step >= options.min_step) {
+        h = 0.5 * h_step;
+        good_steps_since_halving = 0;
+        ramping = false;
+        continue;
+      }
+      Eigen::Index worst = 0;
+      const std::string detail = newtonFailure(newton, options, h_step, &worst);
+      throw SolverError(componentName(options, worst), t_new, stats.steps + 1, detail);
+    }
+    q_new = newton.q();
+    v_new = newton.v();
+    if (!q_new.allFinite()) throwIfNotFinite(q_new, t_new, stats.steps + 1, options.state_name);
+    if (!v_new.allFinite()) throwIfNotFinite(v_new, t_new, stats.steps + 1, options.state_name);
+    stats.error_estimate +=
+        relativeLocalError((h_step * h_step * std::abs(c.beta - 1.0 / 6.0)) * (acc_new - acc), q_new, options.atol);
+
+    // Interior outputs: Hermite cubics for q (with v) and v (with q̈), linear q̈.
+    for (double t_out = schedule.next(); t_out <= t_new; t_out = schedule.next()) {
+      const double theta = (t_out - t) / h_step;
+      hermiteCubic(theta, h_step, q, v, q_new, v_new, q_out);
+      hermiteCubic(theta, h_step, v, acc, v_new, acc_new, v_out);
+      a_out = (1.0 - theta) * acc + theta * acc_new;
+      if (observer) observer(t_out, q_out, v_out, a_out);
+      schedule.advance();
+    }
+    // Commit: a_{n+1} = pseudo_known + (1−α_f)/(1−α_m) q̈_{n+1}.
+    pseudo = pseudo_known + (1.0 - c.alpha_f) * w * acc_new;
+    q.swap(q_new);
+    v.swap(v_new);
+    acc.swap(acc_new);
+    t = t_new;
+    ++stats.steps;
+    if (!last || stats.steps == 1) stats.last_step = h_step;
+    if (observer && (schedule.everyStep() || last)) observer(t, q, v, acc);
+    ticker.tick(t);
+
+    // Start-up ramp: double every step; after a halving, grow back once Newton copes again.
+    if (ramping) {
+      h = std::min(2.0 * h, h_nominal);
+      ramping = h < h_nominal;
+    } else if (h < h_nominal && ++good_steps_since_halving >= 4) {
+      h = std::min(2.0 * h, h_nominal);
+      good_steps_since_halving = 0;
+    }
+  }
+  ticker.finish();
+  return stats;
+}
+
+}  // namespace maris

@@ -1,0 +1,194 @@
+#include "wec/wec_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "wec/wec_wamit.hpp"
+
+namespace maris::wec {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+}
+
+WecModel buildWecModel(const WecParameters& p) {
+  WecModel m;
+  m.density = p.density;
+  m.gravity = p.gravity;
+  m.depth = p.depth;
+  m.direction = p.wave_direction == "-x" ? -1.0 : 1.0;
+  std::shared_ptr<const HydroDatabase> imported;
+  if (p.hydro_source == "wamit_files") imported = readWamit(p.wamit_stem, p.density, p.gravity, p.wamit_length_scale);
+  for (const auto& row : p.floats) {
+    FloatModel f;
+    f.arm_length = row.arm_length;
+    f.theta0 = row.arm_angle_deg * kPi / 180.0;
+    f.hinge_x = row.hinge_x;
+    f.hinge_z = -row.arm_length * std::sin(f.theta0);
+    f.radius = row.radius;
+    f.mass = row.mass;
+    f.inertia_cg = row.inertia_cg;
+    f.inertia_hinge = row.inertia_cg + row.mass * row.arm_length * row.arm_length;
+    f.pto_damping = row.pto_damping;
+    f.pto_stiffness = row.pto_stiffness;
+    f.waterplane_area = kPi * row.radius * row.radius;
+    f.x_f0 = row.hinge_x + row.arm_length * std::cos(f.theta0);
+    // Floats of equal radius share one coefficient database (and, below, one set of kernels).
+    if (imported) {
+      f.hydro = imported;
+    } else {
+      for (const auto& other : m.floats)
+        if (other.radius == f.radius) f.hydro = other.hydro;
+      if (!f.hydro) f.hydro = std::make_shared<HemisphereHydro>(row.radius, p.density, p.gravity);
+    }
+    m.floats.push_back(std::move(f));
+  }
+  return m;
+}
+
+void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt) {
+  for (std::size_t i = 0; i < model.floats.size(); ++i) {
+    auto& f = model.floats[i];
+    const FloatModel* twin = nullptr;
+    for (std::size_t j = 0; j < i; ++j)
+      if (model.floats[j].hydro == f.hydro) twin = &model.floats[j];
+    if (twin) {
+      f.surge = twin->surge;
+      f.heave = twin->heave;
+      continue;
+    }
+    const auto& hydro = *f.hydro;
+    const double w_max = hydro.maxFrequency();
+    const double d_omega = std::min(0.01, w_max / 400.0);
+    auto build = [&](ModeRadiation& mode, bool heave) {
+      auto damping = [&](double w) { return heave ? hydro.at(w).heave.damping : hydro.at(w).surge.damping; };
+      auto added = [&](double w) { return heave ? hydro.at(w).heave.added_mass : hydro.at(w).surge.added_mass; };
+      mode.a_inf = heave ? hydro.addedMassInfinityHeave() : hydro.addedMassInfinitySurge();
+      mode.kernel = computeKernel(damping, w_max, d_omega, kernel_duration, kernel_dt);
+      mode.fit = fitModalKernel(mode.kernel);
+      mode.quality = assessFit(mode.fit, damping, added, mode.a_inf, 0.3, std::min(3.0, w_max));
+    };
+    build(f.surge, false);
+    build(f.heave, true);
+  }
+}
+
+FloatExcitation excitationAt(const WecModel& model, const FloatModel& f, double omega) {
+  const FloatHydro h = f.hydro->at(omega);
+  const double s = model.direction;
+  const Complex location = std::polar(1.0, -s * waveNumber(omega, model.gravity) * f.x_f0);
+  return {s * h.surge.excitation * location, h.heave.excitation * location};
+}
+
+double finiteDepthWaveNumber(double omega, double gravity, double depth) {
+  const double w2 = omega * omega / gravity;
+  double k = std::max(w2, omega / std::sqrt(gravity * depth));
+  for (int i = 0; i < 50; ++i) {
+    const double th = std::tanh(k * depth);
+    const double f = k * th - w2, df = th + k * depth * (1.0 - th * th);
+    const double step = f / df;
+    k -= step;
+    if (std::abs(step) < 1e-15 * k) break;
+  }
+  return k;
+}
+
+double groupVelocity(double omega, double gravity, double depth) {
+  const double k = finiteDepthWaveNumber(omega, gravity, depth), kh2 = 2.0 * k * depth;
+  return 0.5 * omega / k * (1.0 + (kh2 > 700.0 ? 0.0 : kh2 / std::sinh(kh2)));
+}
+
+// ---------------------------------------------------------------------------------------------
+double WaveField::ramp(double t) const {
+  if (t >= ramp_duration) return 1.0;
+  if (t <= 0.0) return 0.0;
+  return 0.5 * (1.0 - std::cos(kPi * t / ramp_duration));
+}
+
+double WaveField::elevation(double x, double t) const {
+  double eta = 0.0;
+  for (const auto& c : components)
+    eta += c.amplitude * std::cos(c.omega * t - direction * waveNumber(c.omega, gravity) * x + c.phase);
+  return ramp(t) * eta;
+}
+
+WaveField makeRegularWave(double height, double omega, double ramp, double direction, double gravity) {
+  WaveField w;
+  w.components.push_back({omega, 0.5 * height, 0.0});
+  w.ramp_duration = ramp;
+  w.direction = direction;
+  w.gravity = gravity;
+  return w;
+}
+
+std::vector<double> spectrumDensity(const std::string& kind, double hs, double tp, double gamma,
+                                    const std::vector<double>& omega) {
+  const double wp = 2.0 * kPi / tp;
+  auto shape = [&](double w) {
+    if (w <= 0.0) return 0.0;
+    const double pm = std::pow(w, -5.0) * std::exp(-1.25 * std::pow(wp / w, 4.0));
+    if (kind != "jonswap") return pm;
+    const double sigma = w <= wp ? 0.07 : 0.09;
+    return pm * std::pow(gamma, std::exp(-std::pow(w - wp, 2) / (2.0 * sigma * sigma * wp * wp)));
+  };
+  // Normalise so that 4√m0 = Hs, m0 integrated on a fine grid over [0.2, 6]·ω_p.
+  const int n = 4000;
+  double m0 = 0.0;
+  const double lo = 0.2 * wp, hi = 6.0 * wp, h = (hi - lo) / n;
+  for (int i = 0; i <= n; ++i) m0 += (i == 0 || i == n ? 0.5 : 1.0) * h * shape(lo + h * i);
+  const double scale = hs * hs / 16.0 / m0;
+  std::vector<double> s(omega.size());
+  for (std::size_t i = 0; i < omega.size(); ++i) s[i] = scale * shape(omega[i]);
+  return s;
+}
+
+WaveField makeIrregularWave(const WecParameters& p, double direction) {
+  WaveField w;
+  w.ramp_duration = p.ramp_duration;
+  w.direction = direction;
+  w.gravity = p.gravity;
+  const double wp = 2.0 * kPi / p.peak_period;
+  const int n = p.component_count;
+  const double lo = 0.3 * wp, hi = 3.5 * wp, dw = (hi - lo) / n;
+  std::vector<double> omega(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) omega[static_cast<std::size_t>(i)] = lo + dw * (i + 0.5);
+  const auto s = spectrumDensity(p.spectrum, p.significant_height, p.peak_period, p.peak_enhancement, omega);
+  std::mt19937_64 rng(static_cast<std::uint64_t>(p.seed));
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * kPi);
+  double m0 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    w.components.push_back({omega[k], std::sqrt(2.0 * s[k] * dw), phase(rng)});
+    m0 += s[k] * dw;
+  }
+  // The band holds 99.7 % of m0; rescale so that the generated sea has exactly 4√m0 = Hs.
+  const double scale = m0 > 0.0 ? p.significant_height / (4.0 * std::sqrt(m0)) : 0.0;
+  for (auto& c : w.components) c.amplitude *= scale;
+  return w;
+}
+
+ExcitationSeries makeExcitation(const WecModel& model, const FloatModel& f, const WaveField& waves) {
+  ExcitationSeries e;
+  for (const auto& c : waves.components) {
+    const FloatExcitation x = excitationAt(model, f, c.omega);
+    const Complex a = std::polar(c.amplitude, c.phase);
+    e.omega.push_back(c.omega);
+    e.surge.push_back(x.surge * a);
+    e.heave.push_back(x.heave * a);
+  }
+  return e;
+}
+
+void ExcitationSeries::evaluate(double t, double ramp, double& f_surge, double& f_heave) const {
+  double fx = 0.0, fz = 0.0;
+  for (std::size_t i = 0; i < omega.size(); ++i) {
+    const Complex e(std::cos(omega[i] * t), std::sin(omega[i] * t));
+    fx += (surge[i] * e).real();
+    fz += (heave[i] * e).real();
+  }
+  f_surge = ramp * fx;
+  f_heave = ramp * fz;
+}
+
+}  // namespace maris::wec

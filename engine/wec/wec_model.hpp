@@ -1,0 +1,110 @@
+// Hinged-float WEC: derived model (built once from validated parameters).
+//
+// Conventions of the wec scene:
+//   * planar x–z frame, z up, origin on the still-water plane; waves travel along +x (or −x);
+//   * θ is the arm angle from +x towards +z; the float centre is r_f = r_h + L(cos θ, sin θ) and lies
+//     on the still-water plane at the equilibrium angle θ0, so the hinge height is z_h = −L sin θ0;
+//   * moments about the hinge are positive when they increase θ: M = r_x F_z − r_z F_x (paper eq 9);
+//   * the hinge reaction (F_h,x, F_h,z) is the force the arm's pin exerts ON THE STRUCTURE:
+//     F_h = Q_hydro − m ü_f (paper eqs 14–15), Q_hydro = excitation + radiation + hydrostatic; the PTO acts
+//     as a torque between arm and structure and is reported separately (M_PTO = −B θ̇ − k(θ − θ0), on the arm);
+//   * complex amplitudes: e^{+iωt}, η(x, t) = Re{a e^{i(ωt − kx)}} (see wec_hydro.hpp);
+//   * weight and still-water buoyancy cancel (water-ballasted float), hydrostatics are linear:
+//     F_z,hs = −ρ g A_w u_z with u_z = z_f (paper eq 7);
+//   * hydrodynamics are deep-water and without float–float interaction (each float sees the incident
+//     wave at its own position). Depth only raises a flag where kh < π.
+#pragma once
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "wec/wec_hydro.hpp"
+#include "wec/wec_parameters.hpp"
+#include "wec/wec_radiation.hpp"
+
+namespace maris::wec {
+
+// Radiation memory of one mode: kernel, its modal fit and the fit's quality.
+struct ModeRadiation {
+  double a_inf = 0.0;        // [kg] A∞
+  RadiationKernel kernel;    // K(t) on the kernel grid
+  ModalKernel fit;           // state-space (Prony) approximation
+  FitQuality quality;        // frequency-domain reconstruction error of the fit
+};
+
+struct FloatModel {
+  double hinge_x = 0.0, hinge_z = 0.0;  // [m] r_h
+  double arm_length = 0.0;              // [m] L
+  double theta0 = 0.0;                  // [rad] equilibrium angle
+  double radius = 0.0;                  // [m]
+  double mass = 0.0;                    // [kg] m
+  double inertia_cg = 0.0;              // [kg·m²]
+  double inertia_hinge = 0.0;           // [kg·m²] I = I_cg + m L²
+  double pto_damping = 0.0;             // [N·m·s/rad]
+  double pto_stiffness = 0.0;           // [N·m/rad]
+  double waterplane_area = 0.0;         // [m²] πa²
+  double x_f0 = 0.0;                    // [m] float centre x at equilibrium
+  std::shared_ptr<const HydroDatabase> hydro;
+  ModeRadiation surge, heave;           // filled by buildRadiation
+};
+
+struct WecModel {
+  double density = 0.0, gravity = 0.0, depth = 0.0;
+  double direction = 1.0;  // +1: waves travel along +x, −1: along −x
+  std::vector<FloatModel> floats;
+};
+
+// Derived geometry and hydrodynamics; radiation kernels are computed by buildRadiation (costly).
+// Throws InputError if the WAMIT files cannot be read.
+WecModel buildWecModel(const WecParameters& p);
+// Kernels K(t) from B(ω) on [0, hydro max frequency], A∞ from the database, modal fits.
+void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt);
+
+// Deep-water wave number k = ω²/g [1/m].
+inline double waveNumber(double omega, double gravity) { return omega * omega / gravity; }
+// Finite-depth wave number: root of ω² = g k tanh(k h) (Newton from the deep-water value) [1/m],
+// and group velocity C_g = ½ (ω/k)(1 + 2kh / sinh 2kh) [m/s]. Used for the depth flag and checks.
+double finiteDepthWaveNumber(double omega, double gravity, double depth);
+double groupVelocity(double omega, double gravity, double depth);
+
+// Excitation per unit amplitude on float `f` at its equilibrium position for waves along `direction`:
+// the surge force of waves travelling along −x is the mirror image (sign flip), and the location phase
+// is e^{−i k s x_f}, s = direction.
+struct FloatExcitation {
+  Complex surge, heave;  // [N/m]
+};
+FloatExcitation excitationAt(const WecModel& model, const FloatModel& f, double omega);
+
+// Incident wave field: a sum of components with a half-cosine ramp r(t) = ½(1 − cos(π t/T_r)) for t < T_r.
+struct WaveComponent {
+  double omega = 0.0;      // [rad/s]
+  double amplitude = 0.0;  // [m]
+  double phase = 0.0;      // [rad] phase at x = 0, t = 0
+};
+struct WaveField {
+  std::vector<WaveComponent> components;
+  double ramp_duration = 0.0;  // [s]
+  double direction = 1.0;
+  double gravity = 9.81;
+  double ramp(double t) const;
+  double elevation(double x, double t) const;  // [m] η(x, t), ramped
+};
+WaveField makeRegularWave(double height, double omega, double ramp, double direction, double gravity);
+// Irregular sea: equally spaced components on [0.3, 3.5]·ω_p (99.7 % of the variance), amplitudes √(2 S Δω)
+// rescaled so that the components' 4√m0 = Hs exactly, phases uniform from std::mt19937_64(seed).
+WaveField makeIrregularWave(const WecParameters& p, double direction);
+// One-sided spectrum S(ω) [m²·s/rad] (JONSWAP with σ = 0.07/0.09, or Pierson–Moskowitz), normalised to Hs.
+std::vector<double> spectrumDensity(const std::string& kind, double hs, double tp, double gamma,
+                                    const std::vector<double>& omega);
+
+// Excitation force time history on one float for a wave field: precomputed complex coefficients.
+struct ExcitationSeries {
+  std::vector<double> omega;
+  std::vector<Complex> surge, heave;  // [N] per component, X̂·a·e^{iφ}
+  void evaluate(double t, double ramp, double& f_surge, double& f_heave) const;
+};
+ExcitationSeries makeExcitation(const WecModel& model, const FloatModel& f, const WaveField& waves);
+
+}  // namespace maris::wec

@@ -1,0 +1,239 @@
+// Registry entry of the hinged-float WEC scene: parameters → model → frequency domain, radiation memory,
+// time-domain check points, main time-domain run(s) → Results.
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/scene.hpp"
+#include "wec/wec_frequency.hpp"
+#include "wec/wec_parameters.hpp"
+#include "wec/wec_response.hpp"
+#include "wec/wec_results.hpp"
+#include "wec/wec_time.hpp"
+
+namespace maris {
+
+namespace {
+
+using namespace maris::wec;
+
+std::string fmt(const char* format, double a, double b = 0.0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, format, a, b);
+  return buf;
+}
+
+// Frequency sweep, flags where the deep-water coefficients are approximate.
+void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& res, RunContext& ctx) {
+  std::vector<double> omega;
+  for (int i = 0; i < p.frequency_count; ++i)
+    omega.push_back(p.omega_min + (p.omega_max - p.omega_min) * i / (p.frequency_count - 1));
+  std::vector<std::vector<FrequencyResponse>> resp(model.floats.size());
+  for (std::size_t f = 0; f < model.floats.size(); ++f)
+    for (double w : omega) resp[f].push_back(solveFrequency(model, model.floats[f], w));
+  Table t = frequencyTable(omega, resp);
+  const double omega_deep = std::sqrt(std::numbers::pi * p.gravity / p.depth);  // kh = π
+  std::vector<double> flag;
+  for (double w : omega) flag.push_back(w >= omega_deep ? 1.0 : 0.0);
+  t.add("deep_water", "-", flag);
+  res.tables.push_back(std::move(t));
+  res.tables.push_back(hydroTable(model, omega));
+  if (p.omega_min < omega_deep && p.hydro_source == "hemisphere_hulme")
+    ctx.warn(fmt("below %.3g rad/s kh < pi at %.3g m depth: the deep-water Hulme coefficients are approximate there "
+                 "(finite depth lowers heave damping by several %%); see column deep_water",
+                 omega_deep, p.depth));
+  for (std::size_t f = 0; f < model.floats.size(); ++f) {
+    const std::string n = std::to_string(f + 1);
+    const double wn = naturalFrequency(model, model.floats[f]);
+    res.addScalar("natural_frequency_" + n, wn, "rad/s", "Undamped pitch natural frequency, root of K = w^2 J(w)");
+    double cw_ratio = 0.0;
+    for (const auto& r : resp[f]) cw_ratio = std::max(cw_ratio, r.capture_width / r.capture_width_bound);
+    res.addScalar("max_capture_width_ratio_" + n, cw_ratio, "-", "max over the sweep of capture width / (3 lambda / 2 pi)");
+  }
+  // Power matrix (total over floats) for irregular seas from the frequency domain.
+  if (!p.power_hs.empty()) {
+    Table pm;
+    pm.name = "power_matrix";
+    pm.title = "Mean PTO power of all floats in irregular seas (" + p.spectrum + ")";
+    pm.add("peak_period", "s", p.power_tp);
+    PlotSpec plot;
+    plot.name = "power_matrix";
+    plot.title = pm.title;
+    plot.table = "power_matrix";
+    plot.x = "peak_period";
+    for (double hs : p.power_hs) {
+      std::vector<double> row;
+      for (double tp : p.power_tp) {
+        double total = 0.0;
+        for (const auto& f : model.floats) total += irregularMeanPower(model, f, p.spectrum, hs, tp, p.peak_enhancement);
+        row.push_back(total);
+      }
+      std::string name = fmt("power_hs_%gm", hs);
+      for (auto& c : name) if (c == '.') c = 'p';
+      pm.add(name, "W", row);
+      plot.y.push_back(name);
+    }
+    res.tables.push_back(std::move(pm));
+    res.plots.push_back(std::move(plot));
+  }
+}
+
+// Radiation kernel fit quality and the Ogilvie check of A∞ for float 1.
+void addRadiationScalars(const WecModel& model, Results& res, RunContext& ctx) {
+  const auto& f = model.floats.front();
+  for (auto [name, mode] : {std::pair{"surge", &f.surge}, std::pair{"heave", &f.heave}}) {
+    const std::string s = name;
+    res.addScalar("kernel_fit_order_" + s, mode->fit.order, "-", "States of the modal (Prony) fit of K(t)");
+    res.addScalar("kernel_fit_r2_" + s, mode->fit.r_squared, "-", "Coefficient of determination of the K(t) fit");
+    res.addScalar("kernel_fit_damping_error_" + s, mode->quality.damping_error, "-",
+                  "max |B_fit - B| / max B on 0.3-3 rad/s");
+    res.addScalar("kernel_fit_added_mass_error_" + s, mode->quality.added_mass_error, "-",
+                  "max |w (A_fit - A)| / max B on 0.3-3 rad/s");
+    res.addScalar("kernel_fit_min_real_part_" + s, mode->quality.min_real_part, "-",
+                  "min Re K_fit(iw) / max B on 0.3-3 rad/s (passivity: >= 0)");
+    if (!mode->fit.stable()) ctx.warn(s + " kernel fit has an unstable pole");
+    if (mode->quality.min_real_part < -0.01) ctx.warn(s + " kernel fit is not passive on 0.3-3 rad/s");
+    const double w = 1.0;
+    const FloatHydro h = f.hydro->at(w);
+    const double a = ogilvieAddedMassInfinity(mode->kernel, w, s == "heave" ? h.heave.added_mass : h.surge.added_mass);
+    res.addScalar("added_mass_inf_ogilvie_ratio_" + s, a / mode->a_inf, "-",
+                  "A_inf recovered by Ogilvie at 1 rad/s over the database A_inf");
+  }
+}
+
+void addTimeDomainChecks(const WecParameters& p, const WecModel& model, const TimeDomainOptions& base, Results& res,
+                         RunContext& ctx) {
+  if (p.check_frequencies.empty()) return;
+  std::vector<SteadyResponse> points;
+  double err_amp = 0.0, err_phase = 0.0;
+  for (std::size_t k = 0; k < p.check_frequencies.size(); ++k) {
+    ctx.progress(0.3 + 0.3 * k / p.check_frequencies.size(), "time-domain RAO points");
+    const double w = p.check_frequencies[k];
+    points.push_back(steadyResponse(model, w, p.check_wave_height, p.ramp_duration, base, 10, &ctx));
+    for (std::size_t f = 0; f < model.floats.size(); ++f) {
+      const Complex fd = solveFrequency(model, model.floats[f], w).pitch, td = points.back().pitch[f];
+      err_amp = std::max(err_amp, std::abs(std::abs(td) / std::abs(fd) - 1.0));
+      err_phase = std::max(err_phase, std::abs(std::arg(td / fd)) * 180.0 / std::numbers::pi);
+    }
+  }
+  res.tables.push_back(timeDomainRaoTable(points, model.floats.size()));
+  res.addScalar("td_fd_rao_amplitude_error", err_amp, "-", "max relative |RAO| difference, time vs frequency domain");
+  res.addScalar("td_fd_rao_phase_error", err_phase, "deg", "max RAO phase difference, time vs frequency domain");
+}
+
+Results solveWec(const WecParameters& p, RunContext& ctx) {
+  Results res;
+  ctx.throwIfCancelled();
+  ctx.progress(0.0, "radiation kernels");
+  WecModel model = buildWecModel(p);
+  buildRadiation(model, p.kernel_duration, p.time_step);
+  addRadiationScalars(model, res, ctx);
+  ctx.throwIfCancelled();
+  ctx.progress(0.1, "frequency domain");
+  addFrequencyDomain(p, model, res, ctx);
+
+  TimeDomainOptions base;
+  base.state_space = p.radiation == "state_space";
+  base.projection = p.constraint_control == "projection";
+  base.baumgarte_rate = p.baumgarte_rate;
+  base.time_step = p.time_step;
+  base.duration = p.duration;
+  base.initial_offset = p.initial_offset_deg * std::numbers::pi / 180.0;
+  base.augmented = p.formulation == "augmented";
+  const double h_lim = rk4StabilityStep(model, base);
+  res.addScalar("rk4_stability_step", h_lim, "s", "Estimated RK4 stability limit of the fastest mode");
+  if (p.time_step > 0.8 * h_lim)
+    ctx.warn(fmt("time step %.3g s is close to or above the RK4 stability limit %.3g s", p.time_step, h_lim));
+  addTimeDomainChecks(p, model, base, res, ctx);
+
+  // Main run(s).
+  WaveField waves;
+  if (p.wave_type == "regular")
+    waves = makeRegularWave(p.wave_height, p.wave_frequency, p.ramp_duration, model.direction, p.gravity);
+  else if (p.wave_type == "irregular")
+    waves = makeIrregularWave(p, model.direction);
+  else
+    waves.ramp_duration = p.ramp_duration;
+  base.output_stride = std::max(1, static_cast<int>(std::lround(p.duration / p.time_step)) / 4000);
+  std::vector<double> theta0;
+  for (const auto& f : model.floats) theta0.push_back(f.theta0);
+  ctx.progress(0.6, "time integration");
+  const TimeDomainResult main = simulateTimeDomain(model, waves, base, &ctx);
+  Table hist;
+  hist.name = "time_history";
+  hist.title = "Time histories (" + main.method + ")";
+  appendHistory(hist, main, theta0, "", true);
+  const bool both = p.formulation == "both";
+  res.stats.method = main.method;
+  res.stats.steps = main.steps;
+  res.stats.rhs_evaluations = main.rhs_evaluations;
+  if (both) {
+    TimeDomainOptions aug = base;
+    aug.augmented = true;
+    const TimeDomainResult second = simulateTimeDomain(model, waves, aug, &ctx);
+    appendHistory(hist, second, theta0, "_aug", false);
+    double d_theta = 0.0, amp = 0.0, d_f = 0.0, amp_f = 0.0;
+    for (std::size_t i = 0; i < model.floats.size(); ++i)
+      for (std::size_t k = 0; k < main.time.size(); ++k) {
+        d_theta = std::max(d_theta, std::abs(main.floats[i].theta[k] - second.floats[i].theta[k]));
+        amp = std::max(amp, std::abs(main.floats[i].theta[k] - theta0[i]));
+        d_f = std::max({d_f, std::abs(main.floats[i].hinge_fx[k] - second.floats[i].hinge_fx[k]),
+                        std::abs(main.floats[i].hinge_fz[k] - second.floats[i].hinge_fz[k])});
+        amp_f = std::max({amp_f, std::abs(main.floats[i].hinge_fz[k]), std::abs(main.floats[i].hinge_fx[k])});
+      }
+    res.addScalar("classical_augmented_pitch_difference", amp > 0 ? d_theta / amp : d_theta, "-",
+                  "max |theta_classical - theta_augmented| / max |theta - theta0|");
+    res.addScalar("classical_augmented_force_difference", amp_f > 0 ? d_f / amp_f : d_f, "-",
+                  "max hinge-force difference / max hinge force");
+    res.addScalar("constraint_drift_max", second.max_position_drift, "m", "max |C| of the augmented run before projection");
+    res.stats.method += "; " + second.method;
+    res.stats.steps += second.steps;
+    res.stats.rhs_evaluations += second.rhs_evaluations;
+    res.stats.error_estimate = d_theta;
+    res.stats.error_unit = "rad (classical vs augmented)";
+  }
+  res.tables.push_back(std::move(hist));
+  for (std::size_t i = 0; i < model.floats.size(); ++i) {
+    const auto& h = main.floats[i];
+    const std::string n = std::to_string(i + 1);
+    double amp = 0.0, fx = 0.0, fz = 0.0;
+    for (std::size_t k = 0; k < h.theta.size(); ++k) {
+      amp = std::max(amp, std::abs(h.theta[k] - theta0[i]));
+      fx = std::max(fx, std::abs(h.hinge_fx[k]));
+      fz = std::max(fz, std::abs(h.hinge_fz[k]));
+    }
+    res.addScalar("max_pitch_" + n, amp * 180.0 / std::numbers::pi, "deg", "max |theta - theta0|");
+    res.addScalar("max_hinge_fx_" + n, fx, "N", "max |horizontal hinge reaction|");
+    res.addScalar("max_hinge_fz_" + n, fz, "N", "max |vertical hinge reaction|");
+    res.addScalar("pto_energy_" + n, h.pto_energy.back(), "J", "PTO energy absorbed over the run");
+    const double t_mean = std::max(0.0, main.time.back() - p.ramp_duration);
+    if (t_mean > 0.0) {
+      std::size_t k0 = 0;
+      while (main.time[k0] < p.ramp_duration) ++k0;
+      res.addScalar("mean_pto_power_" + n, (h.pto_energy.back() - h.pto_energy[k0]) / (main.time.back() - main.time[k0]),
+                    "W", "Mean PTO power after the ramp");
+    }
+  }
+  res.tables.push_back(kernelTable(model.floats.front()));
+  auto plots = wecPlots(model.floats.size(), !p.check_frequencies.empty(), both);
+  res.plots.insert(res.plots.begin(), plots.begin(), plots.end());
+  ctx.progress(0.95, "3D view");
+  res.view = wecView(model, waves, main, p.animation_frames);
+  ctx.progress(1.0, "done");
+  return res;
+}
+
+}  // namespace
+
+SceneDefinition makeWecScene() {
+  return makeScene<WecParameters>(
+      "wec", "Hinged-float wave energy converter",
+      "Hemispherical floats on rigid arms hinged to a fixed jacket, pitching about the hinge with a linear "
+      "PTO damper (Heo & Koo, Wavestar-type). Hulme hemisphere coefficients (deep water) or WAMIT files, "
+      "Haskind excitation, Cummins radiation memory (state-space fit or direct convolution), classical and "
+      "augmented (Lagrange-multiplier) time-domain formulations, frequency-domain RAOs, hinge reactions, "
+      "PTO power and capture width.",
+      wecBinder(), checkWecParameters, solveWec);
+}
+
+}  // namespace maris
