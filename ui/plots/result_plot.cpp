@@ -1,5 +1,8 @@
 #include "plots/result_plot.hpp"
 
+#include <filesystem>
+
+#include <QDir>
 #include <QFileInfo>
 #include <QSvgGenerator>
 #include <qcustomplot.h>
@@ -25,15 +28,56 @@ QColor seriesColor(int i) {
   return colors[i % 8];
 }
 
+Qt::PenStyle runPenStyle(int run) {
+  static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine,
+                                        Qt::DashDotDotLine};
+  return styles[run % 5];
+}
+
+void setLogScale(QCPAxis* axis) {
+  axis->setScaleType(QCPAxis::stLogarithmic);
+  axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+}
+
+// Graphs of one source's y columns. With one y column the runs differ by colour, with several by
+// line style (colour then names the column).
+void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const PlotSource& source, int run,
+                     bool several_sources, const Table& table, const Column& x, const PlotSpec& spec) {
+  int series = 0;
+  for (const auto& name : spec.y) {
+    const Column* y = table.find(name);
+    if (!y) continue;
+    QCPGraph* g = plot.addGraph(x_axis, y_axis);
+    QString graph_name = axisLabel(y->name, y->unit);
+    if (several_sources) graph_name = source.label + ": " + graph_name;
+    g->setName(graph_name);
+    const int color_index = spec.y.size() == 1 ? run : series;
+    QPen pen(seriesColor(color_index), run == 0 ? 1.8 : 1.4);
+    pen.setStyle(spec.y.size() == 1 ? Qt::SolidLine : runPenStyle(run));
+    g->setPen(pen);
+    g->setData(toQVector(x.values), toQVector(y->values), true);
+    ++series;
+  }
+}
+
 }  // namespace
 
 bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec) {
+  return fillPlot(plot, std::vector<PlotSource>{{QString(), &results}}, spec);
+}
+
+bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const PlotSpec& spec) {
   plot.clearGraphs();
   plot.clearPlottables();
-  const Table* table = results.findTable(spec.table);
+  plot.clearItems();
+  if (sources.empty() || !sources.front().results) return false;
+  const Results& primary = *sources.front().results;
+  const Table* table = primary.findTable(spec.table);
   if (!table) return false;
   const Column* x = table->find(spec.x);
   if (!x) return false;
+  for (const auto& name : spec.y)
+    if (!table->find(name)) return false;
   plot.plotLayout()->clear();
   auto* rect = new QCPAxisRect(&plot);
   plot.plotLayout()->addElement(0, 0, rect);
@@ -41,72 +85,91 @@ bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec) {
     plot.plotLayout()->insertRow(0);
     plot.plotLayout()->addElement(0, 0, new QCPTextElement(&plot, QString::fromStdString(spec.title)));
   }
-  QCPAxis* xAxis = rect->axis(QCPAxis::atBottom);
-  QCPAxis* yAxis = rect->axis(QCPAxis::atLeft);
-  xAxis->setLabel(axisLabel(x->name, x->unit));
-  std::string y_unit;
-  int series = 0;
-  for (const auto& name : spec.y) {
-    const Column* y = table->find(name);
-    if (!y) return false;
-    y_unit = y->unit;
-    QCPGraph* g = plot.addGraph(xAxis, yAxis);
-    g->setName(axisLabel(y->name, y->unit));
-    g->setPen(QPen(seriesColor(series++), 1.6));
-    g->setData(toQVector(x->values), toQVector(y->values), true);
-  }
+  QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
+  QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
+  x_axis->setLabel(axisLabel(x->name, x->unit));
+  const std::string y_unit = table->find(spec.y.front())->unit;
   if (spec.y.size() == 1)
-    yAxis->setLabel(axisLabel(table->find(spec.y[0])->name, y_unit));
+    y_axis->setLabel(axisLabel(spec.y.front(), y_unit));
   else
-    yAxis->setLabel(y_unit.empty() || y_unit == "-" ? QString() : QStringLiteral("[%1]").arg(QString::fromStdString(y_unit)));
-  if (const Table* ref = results.findTable(spec.reference_table)) {
+    y_axis->setLabel(y_unit.empty() || y_unit == "-" ? QString() : QStringLiteral("[%1]").arg(QString::fromStdString(y_unit)));
+
+  const bool several = sources.size() > 1;
+  for (int run = 0; run < static_cast<int>(sources.size()); ++run) {
+    const Results* results = sources[run].results;
+    const Table* t = results ? results->findTable(spec.table) : nullptr;
+    const Column* tx = t ? t->find(spec.x) : nullptr;
+    if (tx) addSourceGraphs(plot, x_axis, y_axis, sources[run], run, several, *t, *tx, spec);
+  }
+  int markers = 0;
+  if (const Table* ref = primary.findTable(spec.reference_table)) {
     const Column* rx = ref->find(spec.x);
     for (const auto& name : spec.reference_y) {
       const Column* ry = ref->find(name);
       if (!rx || !ry) continue;
-      QCPGraph* g = plot.addGraph(xAxis, yAxis);
+      QCPGraph* g = plot.addGraph(x_axis, y_axis);
       g->setName(QString::fromStdString(ref->title.empty() ? ref->name : ref->title) + ": " + axisLabel(ry->name, ""));
       g->setLineStyle(QCPGraph::lsNone);
-      g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, seriesColor(series++), 6));
+      g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.2),
+                                         QBrush(seriesColor(3 + markers++)), 7));
       g->setData(toQVector(rx->values), toQVector(ry->values));
     }
   }
-  if (spec.log_x) {
-    xAxis->setScaleType(QCPAxis::stLogarithmic);
-    xAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-  }
-  if (spec.log_y) {
-    yAxis->setScaleType(QCPAxis::stLogarithmic);
-    yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-  }
+  if (spec.log_x) setLogScale(x_axis);
+  if (spec.log_y) setLogScale(y_axis);
   if (plot.graphCount() > 1) {
     auto* legend = new QCPLegend;
     rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
     legend->setLayer(QLatin1String("legend"));
     for (int i = 0; i < plot.graphCount(); ++i) plot.graph(i)->addToLegend(legend);
-    legend->setBrush(QColor(255, 255, 255, 200));
+    legend->setBrush(QColor(255, 255, 255, 210));
   }
   plot.rescaleAxes();
   return true;
+}
+
+int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec) {
+  int points = 0;
+  const int graphs = std::min<int>(plot.graphCount(), static_cast<int>(spec.y.size()));
+  for (int i = 0; i < graphs; ++i) points += plot.graph(i)->dataCount();
+  return points;
+}
+
+bool savePlotWidget(QCustomPlot& plot, const QString& file, int width_px, int height_px) {
+  const QFileInfo info(file);
+  const QString suffix = info.suffix().toLower();
+  // Written beside the target under a temporary name, then renamed: never a torn file.
+  const QString partial = info.dir().filePath(QStringLiteral(".%1.partial.%2").arg(info.completeBaseName(), suffix));
+  bool ok = false;
+  if (suffix == QLatin1String("png")) {
+    ok = plot.savePng(partial, width_px, height_px);
+  } else if (suffix == QLatin1String("pdf")) {
+    ok = plot.savePdf(partial, width_px, height_px);
+  } else if (suffix == QLatin1String("svg")) {
+    QSvgGenerator generator;
+    generator.setFileName(partial);
+    generator.setSize(QSize(width_px, height_px));
+    generator.setViewBox(QRect(0, 0, width_px, height_px));
+    generator.setTitle(QStringLiteral("Maris plot"));
+    QCPPainter painter;
+    if (painter.begin(&generator)) {
+      plot.toPainter(&painter, width_px, height_px);
+      ok = painter.end();
+    }
+  } else {
+    return false;
+  }
+  std::error_code ec;
+  if (ok) std::filesystem::rename(partial.toStdString(), file.toStdString(), ec);
+  if (!ok || ec) std::filesystem::remove(partial.toStdString(), ec);
+  return ok && !ec;
 }
 
 bool savePlotImage(const Results& results, const PlotSpec& spec, const QString& file, int width_px, int height_px) {
   QCustomPlot plot;
   plot.resize(width_px, height_px);
   if (!fillPlot(plot, results, spec)) return false;
-  const QString suffix = QFileInfo(file).suffix().toLower();
-  if (suffix == QLatin1String("pdf")) return plot.savePdf(file, width_px, height_px);
-  if (suffix == QLatin1String("svg")) {
-    QSvgGenerator generator;
-    generator.setFileName(file);
-    generator.setSize(QSize(width_px, height_px));
-    generator.setViewBox(QRect(0, 0, width_px, height_px));
-    QCPPainter painter;
-    if (!painter.begin(&generator)) return false;
-    plot.toPainter(&painter, width_px, height_px);
-    return painter.end();
-  }
-  return plot.savePng(file, width_px, height_px);
+  return savePlotWidget(plot, file, width_px, height_px);
 }
 
 }  // namespace maris::ui

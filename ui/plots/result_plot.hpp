@@ -1,6 +1,9 @@
 // Builds a QCustomPlot from a run's results and a PlotSpec: axis labels with units, a legend,
-// reference points as markers. Shared by the GUI's plot tabs and the CLI's PNG export.
+// reference points as markers, and optionally the same columns of other runs overlaid. Shared by
+// the GUI's plot tabs and the CLI's PNG export.
 #pragma once
+
+#include <vector>
 
 #include <QString>
 
@@ -13,9 +16,25 @@ namespace maris::ui {
 // Axis label "name [unit]".
 QString axisLabel(const std::string& name, const std::string& unit);
 
+// One run's results drawn in a plot; `label` prefixes its legend entries when several are shown.
+struct PlotSource {
+  QString label;
+  const Results* results = nullptr;
+};
+
 // Clears `plot` and draws `spec` from `results` (one graph per y column, plus reference markers).
 // Returns false (and draws nothing) if the spec names a table or column that does not exist.
 bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec);
+// As above, the first source drawn solid, each further one (an overlaid run) dashed. Sources that
+// lack the table are skipped; false if the first one lacks it.
+bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const PlotSpec& spec);
+
+// Number of data points of the graphs drawn from the first source's y columns.
+int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec);
+
+// Writes a drawn plot to a PNG/PDF/SVG file chosen by the suffix, atomically (temporary file in the
+// same folder, then rename). False if the suffix is unknown or writing failed.
+bool savePlotWidget(QCustomPlot& plot, const QString& file, int width_px, int height_px);
 
 // Renders one plot off-screen to a PNG/PDF/SVG file chosen by the file suffix.
 bool savePlotImage(const Results& results, const PlotSpec& spec, const QString& file, int width_px, int height_px);

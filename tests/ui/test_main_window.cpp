@@ -1,0 +1,247 @@
+// The main window driven as a user would: open scenarios, edit through the parameter editor with
+// undo/redo shortcuts, run, cancel with Esc, see a failing run's message, overlay runs, save and
+// reopen, drop a file, write a report. Runs under xvfb-run (the 3D view needs OpenGL).
+#include <QCheckBox>
+#include <QDir>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMimeData>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QSignalSpy>
+#include <QToolButton>
+#include <qcustomplot.h>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+#include "document/scenario_document.hpp"
+#include "editor/parameter_editor.hpp"
+#include "main_window.hpp"
+#include "plots/plot_panel.hpp"
+#include "run/run_controller.hpp"
+#include "run/run_panel.hpp"
+#include "test_scene.hpp"
+#include "ui_test_support.hpp"
+#include "view3d/scene_view.hpp"
+
+using namespace maris;
+using namespace maris::ui;
+
+class MainWindowTest : public QObject {
+  Q_OBJECT
+
+ private:
+  std::unique_ptr<MainWindow> window_;
+
+  QLineEdit* lineEdit(const std::string& path) {
+    return qobject_cast<QLineEdit*>(window_->editor()->fieldWidget(path));
+  }
+  void typeInto(const std::string& path, const QString& text) {
+    QLineEdit* edit = lineEdit(path);
+    QVERIFY(edit);
+    edit->setFocus();
+    edit->selectAll();
+    QTest::keyClicks(edit, text);
+    QTest::keyClick(edit, Qt::Key_Return);
+  }
+  bool runToCompletion() {
+    QSignalSpy finished(window_.get(), &MainWindow::runFinished);
+    if (!window_->startRun()) return false;
+    return finished.wait(20000);
+  }
+
+ private slots:
+  void initTestCase() { test::isolateSettings(); }
+
+  void init() {
+    window_ = std::make_unique<MainWindow>(test::rodLibrary());
+    window_->setUnsavedPrompt([] { return QMessageBox::Discard; });
+    window_->resize(1400, 900);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    window_->activateWindow();
+  }
+
+  void cleanup() { window_.reset(); }
+
+  void opensTheDefaultExampleOnStart() {
+    QCOMPARE(window_->document()->scenario().name, std::string("Rod, default"));
+    QVERIFY(window_->document()->isValid());
+    QVERIFY(window_->runAction()->isEnabled());
+    QVERIFY(!window_->cancelAction()->isEnabled());
+  }
+
+  void editorHasAFieldForEverySchemaEntry() {
+    for (const auto& spec : window_->document()->scene()->schema.fields)
+      QVERIFY2(window_->editor()->fieldWidget(spec.path), spec.path.c_str());
+  }
+
+  void editThroughEditorIsUndoableWithShortcuts() {
+    typeInto("geometry.length", QStringLiteral("120"));
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 120.0);
+    QVERIFY(window_->isWindowModified());
+    QVERIFY(window_->windowTitle().contains(QStringLiteral("[*]")));
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+    QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 100.0);
+    QCOMPARE(lineEdit("geometry.length")->text(), QStringLiteral("100.0"));
+    QVERIFY(!window_->isWindowModified());
+    QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 120.0);
+    QCOMPARE(window_->document()->undoStack()->undoText(), QStringLiteral("Set length to 120.0 m"));
+  }
+
+  void invalidValueIsExplainedAndDisablesRun() {
+    typeInto("geometry.length", QStringLiteral("-5"));
+    QLabel* error = window_->editor()->errorLabel("geometry.length");
+    QVERIFY(error->isVisibleTo(window_.get()));
+    QVERIFY2(error->text().contains(QStringLiteral("(0, 1000]")), qPrintable(error->text()));
+    QVERIFY(!window_->runAction()->isEnabled());
+    QVERIFY(!window_->startRun());
+    // A word in a number field is explained too, not silently refused.
+    typeInto("discretisation.point_count", QStringLiteral("many"));
+    QVERIFY(window_->editor()->errorLabel("discretisation.point_count")->text().contains(QStringLiteral("integer")));
+    // Reset to default repairs the field.
+    window_->editor()->resetButton("geometry.length")->click();
+    window_->editor()->resetButton("discretisation.point_count")->click();
+    QVERIFY(!error->isVisibleTo(window_.get()));
+    QVERIFY(window_->runAction()->isEnabled());
+  }
+
+  void crossFieldErrorIsShownAtItsField() {
+    typeInto("geometry.length", QStringLiteral("12"));
+    typeInto("geometry.radius", QStringLiteral("8"));
+    QVERIFY(window_->editor()->errorLabel("geometry.radius")->text().contains(QStringLiteral("half the length")));
+    QVERIFY(!window_->runAction()->isEnabled());
+  }
+
+  void runFillsPlotsViewAndSummary() {
+    QVERIFY(runToCompletion());
+    PlotPanel* plots = window_->plots();
+    QCOMPARE(plots->count(), 2);
+    // Expected points from the scenario: point_count along the rod; 2 columns × frame_count × 10 in time.
+    QCOMPARE(plots->view(0)->pointCount(), 50);
+    QCOMPARE(plots->view(1)->pointCount(), 2 * 10 * 10);
+    QCOMPARE(window_->sceneView()->frameCount(), 10);
+    QVERIFY(window_->sceneView()->modelActorCount() >= 2);
+    QCOMPARE(window_->runPanel()->progressBar()->value(), window_->runPanel()->progressBar()->maximum());
+  }
+
+  void escapeCancelsARunWithin100ms() {
+    QVERIFY(window_->openExample(QStringLiteral("rod_slow")));
+    QSignalSpy cancelled(window_.get(), &MainWindow::runCancelled);
+    QSignalSpy progress(window_->runController(), &RunController::progressed);
+    QVERIFY(window_->startRun());
+    QVERIFY(progress.wait(2000));
+    QVERIFY(window_->runController()->isRunning());
+    QVERIFY(window_->cancelAction()->isEnabled());
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+    QTest::keyClick(window_.get(), Qt::Key_Escape);
+    QVERIFY(cancelled.wait(2000));
+    const double latency = window_->runController()->lastCancelLatency();
+    qInfo("cancel latency: solver stopped after %.1f ms, GUI heard after %.1f ms", latency * 1e3,
+          window_->runController()->lastCancelAcknowledgeLatency() * 1e3);
+    QVERIFY(latency >= 0.0 && latency < 0.1);
+    QVERIFY(!window_->runController()->isRunning());
+    QVERIFY(window_->history().runs().empty());
+  }
+
+  void failingRunShowsTheMessageAndKeepsPreviousResults() {
+    QVERIFY(runToCompletion());
+    const quint64 good = window_->history().latest()->id;
+    QCheckBox* fail = qobject_cast<QCheckBox*>(window_->editor()->fieldWidget("run.fail"));
+    QVERIFY(fail);
+    fail->click();
+    QSignalSpy failed(window_.get(), &MainWindow::runFailed);
+    QVERIFY(window_->startRun());
+    QVERIFY(failed.wait(10000));
+    const QString message = failed.takeFirst().at(0).toString();
+    QVERIFY2(message.contains(QStringLiteral("node 3 displacement")), qPrintable(message));
+    QVERIFY(window_->runPanel()->logView()->toPlainText().contains(QStringLiteral("node 3 displacement")));
+    QCOMPARE(window_->history().runs().size(), std::size_t(1));
+    QCOMPARE(window_->history().latest()->id, good);
+    QCOMPARE(window_->plots()->view(0)->pointCount(), 50);
+    QVERIFY(window_->runAction()->isEnabled());
+  }
+
+  void secondRunIsLabelledByItsDifferenceAndCanBeOverlaid() {
+    QVERIFY(runToCompletion());
+    typeInto("discretisation.point_count", QStringLiteral("20"));
+    QVERIFY(runToCompletion());
+    const RunRecord* latest = window_->history().latest();
+    QVERIFY2(latest->label.contains(QStringLiteral("point count = 20")), qPrintable(latest->label));
+    const quint64 first = window_->history().runs().front().id;
+    window_->plots()->setOverlay(first, true);
+    // The overlaid run adds its own graph (50 points) next to the shown one (20 points).
+    QCustomPlot* plot = window_->plots()->view(0)->plot();
+    QCOMPARE(window_->plots()->view(0)->pointCount(), 20);
+    int total = 0;
+    for (int i = 0; i < plot->graphCount(); ++i) total += plot->graph(i)->dataCount();
+    QCOMPARE(total, 20 + 50 + 3);  // shown run, overlaid run, reference points
+  }
+
+  void saveAndReopenRoundTrips() {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("rod.json"));
+    typeInto("geometry.length", QStringLiteral("150"));
+    QVERIFY(window_->saveAs(file));
+    QVERIFY(!window_->isWindowModified());
+    QVERIFY(window_->recentFiles().contains(QFileInfo(file).absoluteFilePath()));
+    QVERIFY(window_->openExample(QStringLiteral("rod_default")));
+    QVERIFY(window_->openFile(file));
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 150.0);
+    QVERIFY(!QFileInfo::exists(file + ".tmp"));
+  }
+
+  void unsavedEditsAskBeforeBeingLost() {
+    typeInto("geometry.length", QStringLiteral("130"));
+    int asked = 0;
+    window_->setUnsavedPrompt([&] {
+      ++asked;
+      return QMessageBox::Cancel;
+    });
+    QVERIFY(!window_->openExample(QStringLiteral("rod_slow")));
+    QCOMPARE(asked, 1);
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 130.0);
+  }
+
+  void droppingAScenarioFileOpensIt() {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("dropped.json"));
+    Scenario s = test::rodLibrary()->examples.front().scenario;
+    s.name = "Dropped rod";
+    saveScenarioFile(s, file.toStdString());
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(file)});
+    QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &drop);
+    QCOMPARE(window_->document()->scenario().name, std::string("Dropped rod"));
+  }
+
+  void reportFolderHoldsPlotsTablesScenarioAndSummary() {
+    QVERIFY(runToCompletion());
+    QTemporaryDir dir;
+    QVERIFY(window_->writeReport(dir.path()));
+    for (const char* name : {"scenario.json", "summary.json", "summary.md", "profile.csv", "history.csv",
+                             "deflection.png", "deflection.pdf", "tip_motion.png", "view_3d.png"})
+      QVERIFY2(QFileInfo::exists(dir.filePath(QString::fromLatin1(name))), name);
+    QImage view(dir.filePath(QStringLiteral("view_3d.png")));
+    QCOMPARE(view.size(), QSize(1600, 1000));
+    QVERIFY(test::saturatedFraction(view) > 0.001);
+  }
+
+  void screenshotShowsResults() {
+    QVERIFY(runToCompletion());
+    QTest::qWait(200);
+    const QImage shot = window_->grab().toImage();
+    test::keepScreenshot(shot, QStringLiteral("main_window"));
+    QVERIFY(test::distinctColours(shot) >= 32);
+  }
+};
+
+QTEST_MAIN(MainWindowTest)
+#include "test_main_window.moc"

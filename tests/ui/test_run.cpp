@@ -1,0 +1,228 @@
+// The run controller (worker thread, progress, partial results, cancel, failure) and the plots
+// and exports fed by its results, on Qt's offscreen platform.
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <fstream>
+
+#include "plots/plot_export.hpp"
+#include "plots/plot_panel.hpp"
+#include "plots/plot_view.hpp"
+#include "run/run_controller.hpp"
+#include "run/run_history.hpp"
+#include "test_scene.hpp"
+#include "ui_test_support.hpp"
+
+using namespace maris;
+using namespace maris::ui;
+
+namespace {
+
+Scenario rodScenario(double delay, bool fail = false) {
+  Scenario s = defaultScenario(test::makeRodScene());
+  s.parameters["run"]["delay"] = delay;
+  s.parameters["run"]["fail"] = fail;
+  return s;
+}
+
+std::vector<std::vector<std::string>> readCsv(const QString& file) {
+  std::ifstream in(file.toStdString());
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+}  // namespace
+
+class RunTest : public QObject {
+  Q_OBJECT
+
+  SceneDefinition scene_ = test::makeRodScene();
+
+  // Runs to completion and returns the record.
+  RunRecord finishedRun(const Scenario& scenario) {
+    RunController controller;
+    QSignalSpy finished(&controller, &RunController::finished);
+    controller.start(scene_, scenario);
+    if (!finished.wait(20000)) return {};
+    return finished.takeFirst().at(0).value<RunRecord>();
+  }
+
+ private slots:
+  void initTestCase() { test::isolateSettings(); }
+
+  void finishedRunDeliversResultsAndProgress() {
+    RunController controller;
+    QSignalSpy finished(&controller, &RunController::finished);
+    QSignalSpy progress(&controller, &RunController::progressed);
+    QSignalSpy partial(&controller, &RunController::partialResults);
+    controller.setPartialInterval(0.05);
+    QVERIFY(controller.start(scene_, rodScenario(0.6)) != 0);
+    QVERIFY(controller.isRunning());
+    // A second start while running is refused.
+    QCOMPARE(controller.start(scene_, rodScenario(0.0)), quint64(0));
+    QVERIFY(finished.wait(10000));
+    QVERIFY(!controller.isRunning());
+    const auto record = finished.takeFirst().at(0).value<RunRecord>();
+    QVERIFY(record.results);
+    QCOMPARE(record.results->findTable("profile")->rows(), std::size_t(50));
+    QVERIFY(progress.count() >= 3);
+    QCOMPARE(progress.last().at(0).toDouble(), 1.0);
+    // Partial results stream while the run goes (0.6 s at >= 0.05 s intervals).
+    QVERIFY2(partial.count() >= 2, qPrintable(QString::number(partial.count())));
+  }
+
+  void cancelStopsTheSolverWithin100ms() {
+    RunController controller;
+    QSignalSpy cancelled(&controller, &RunController::cancelled);
+    QSignalSpy progress(&controller, &RunController::progressed);
+    controller.start(scene_, rodScenario(5.0));
+    QVERIFY(progress.wait(2000));
+    controller.cancel();
+    QVERIFY(cancelled.wait(2000));
+    qInfo("cancel: solver stopped after %.2f ms, GUI thread heard after %.2f ms", controller.lastCancelLatency() * 1e3,
+          controller.lastCancelAcknowledgeLatency() * 1e3);
+    QVERIFY(controller.lastCancelLatency() >= 0.0);
+    QVERIFY(controller.lastCancelLatency() < 0.1);
+    QVERIFY(controller.lastCancelAcknowledgeLatency() < 0.1);
+    QVERIFY(!controller.isRunning());
+  }
+
+  void failedRunReportsTheSolversWords() {
+    RunController controller;
+    QSignalSpy failed(&controller, &RunController::failed);
+    controller.start(scene_, rodScenario(0.0, true));
+    QVERIFY(failed.wait(10000));
+    const QString message = failed.takeFirst().at(0).toString();
+    QVERIFY2(message.contains(QStringLiteral("node 3 displacement")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("0.5")), qPrintable(message));
+  }
+
+  void invalidScenarioIsReportedNotRun() {
+    RunController controller;
+    QSignalSpy failed(&controller, &RunController::failed);
+    Scenario bad = rodScenario(0.0);
+    bad.parameters["geometry"]["length"] = -3.0;
+    controller.start(scene_, bad);
+    QVERIFY(failed.wait(10000));
+    QVERIFY(failed.takeFirst().at(0).toString().contains(QStringLiteral("parameters.geometry.length")));
+  }
+
+  void destroyingTheControllerMidRunCancelsIt() {
+    QElapsedTimer clock;
+    {
+      RunController controller;
+      QSignalSpy progress(&controller, &RunController::progressed);
+      controller.start(scene_, rodScenario(30.0));
+      QVERIFY(progress.wait(2000));
+      clock.start();
+    }
+    QVERIFY(clock.elapsed() < 500);
+  }
+
+  void historyLabelsRunsByWhatChanged() {
+    RunHistory history(2);
+    RunRecord a;
+    a.id = 1;
+    a.scenario = rodScenario(0.0);
+    RunRecord b = a;
+    b.id = 2;
+    b.scenario.parameters["discretisation"]["point_count"] = 100;
+    RunRecord c = b;
+    c.id = 3;
+    history.add(a);
+    QCOMPARE(history.add(b).label, QStringLiteral("run 2 (point count = 100)"));
+    QCOMPARE(history.add(c).label, QStringLiteral("run 3"));
+    QCOMPARE(history.runs().size(), std::size_t(2));
+    QVERIFY(!history.find(1));
+  }
+
+  void plotsHoldTheExpectedPoints() {
+    const RunRecord record = finishedRun(rodScenario(0.0));
+    QVERIFY(record.results);
+    PlotPanel panel;
+    panel.resize(800, 600);
+    panel.showResults(record.results, record.label);
+    QCOMPARE(panel.count(), 2);
+    QCOMPARE(panel.view(0)->pointCount(), 50);       // point_count
+    QCOMPARE(panel.view(1)->pointCount(), 2 * 100);  // two columns × frame_count × 10 rows
+    QCustomPlot* plot = panel.view(0)->plot();
+    QCOMPARE(plot->xAxis->label(), QStringLiteral("arc length [m]"));
+    QCOMPARE(plot->yAxis->label(), QStringLiteral("deflection [m]"));
+    QCOMPARE(plot->graphCount(), 2);  // the curve and the reference points
+    panel.view(0)->setLogY(true);
+    QCOMPARE(plot->yAxis->scaleType(), QCPAxis::stLogarithmic);
+  }
+
+  void hoverShowsTheNearestValue() {
+    const RunRecord record = finishedRun(rodScenario(0.0));
+    PlotView view(record.results->plots.front());
+    view.resize(800, 600);
+    view.show();
+    view.setSources({{record.label, record.results}});
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.plot()->replot();
+    QCPGraph* graph = view.plot()->graph(0);
+    const double key = graph->data()->at(10)->key, value = graph->data()->at(10)->value;
+    const QPoint at(static_cast<int>(graph->keyAxis()->coordToPixel(key)),
+                    static_cast<int>(graph->valueAxis()->coordToPixel(value)));
+    QMouseEvent move(QEvent::MouseMove, at, view.plot()->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(view.plot(), &move);
+    QVERIFY2(view.readout().contains(QStringLiteral("arc length [m] = %1").arg(key, 0, 'g', 6)), qPrintable(view.readout()));
+  }
+
+  void everyExportFormatWritesAValidFile() {
+    const RunRecord record = finishedRun(rodScenario(0.0));
+    PlotView view(record.results->plots.front());
+    view.resize(800, 600);
+    view.setSources({{record.label, record.results}});
+    QTemporaryDir dir;
+    const QString png = dir.filePath(QStringLiteral("p.png")), pdf = dir.filePath(QStringLiteral("p.pdf")),
+                  svg = dir.filePath(QStringLiteral("p.svg")), csv = dir.filePath(QStringLiteral("p.csv"));
+    for (const QString& f : {png, pdf, svg, csv}) view.exportTo(f, 900, 600);
+    const QImage image(png);
+    QCOMPARE(image.size(), QSize(900, 600));
+    QVERIFY(test::distinctColours(image) >= 8);
+    QVERIFY(test::saturatedFraction(image) > 0.001);  // the blue curve is there
+    QFile pdf_file(pdf);
+    QVERIFY(pdf_file.open(QIODevice::ReadOnly));
+    QCOMPARE(pdf_file.read(4), QByteArray("%PDF"));
+    QFile svg_file(svg);
+    QVERIFY(svg_file.open(QIODevice::ReadOnly));
+    QVERIFY(svg_file.readAll().contains("<svg"));
+    const auto rows = readCsv(csv);
+    QCOMPARE(rows.size(), std::size_t(2 + 50));
+    QCOMPARE(rows[0], (std::vector<std::string>{"arc_length", "deflection"}));
+    QCOMPARE(rows[1], (std::vector<std::string>{"m", "m"}));
+    QCOMPARE(std::stod(rows.back()[0]), 100.0);
+    // No temporary files are left behind.
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 4);
+    QVERIFY_THROWS_EXCEPTION(std::runtime_error, view.exportTo(dir.filePath(QStringLiteral("p.xyz"))));
+  }
+
+  void reportFolderHasEveryFile() {
+    const RunRecord record = finishedRun(rodScenario(0.0));
+    QTemporaryDir dir;
+    const auto files = writeReportFolder(dir.path().toStdString(), record.scenario, *record.results);
+    for (const char* name : {"scenario.json", "summary.json", "summary.md", "profile.csv", "history.csv",
+                             "reference.csv", "deflection.png", "deflection.pdf", "tip_motion.png", "tip_motion.pdf"})
+      QVERIFY2(QFileInfo::exists(dir.filePath(QString::fromLatin1(name))), name);
+    QCOMPARE(files.size(), std::size_t(10));
+    QFile md(dir.filePath(QStringLiteral("summary.md")));
+    QVERIFY(md.open(QIODevice::ReadOnly));
+    QVERIFY(md.readAll().contains("| max_deflection |"));
+  }
+};
+
+QTEST_MAIN(RunTest)
+#include "test_run.moc"

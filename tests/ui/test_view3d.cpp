@@ -1,0 +1,158 @@
+// The VTK 3D view inside Qt: it renders a non-empty picture, the model's coloured pixels are where
+// the model is (a vertical tube in the middle, blue at the low-scalar top, red at the high-scalar
+// bottom), every Shape3D kind becomes an actor, frames animate, and export renders any size.
+// Needs an X server with OpenGL (run under xvfb-run).
+#include <QSlider>
+#include <QtTest>
+
+#include "test_scene.hpp"
+#include "ui_test_support.hpp"
+#include "view3d/scene_view.hpp"
+#include "view3d/vtk_gl_widget.hpp"
+
+using namespace maris;
+using namespace maris::ui;
+
+namespace {
+
+struct ColourSums {
+  double red = 0, blue = 0;
+  int pixels = 0;
+};
+
+// Sums of red and blue over the saturated pixels of a band of rows.
+ColourSums saturatedColours(const QImage& image, int top, int bottom) {
+  ColourSums sums;
+  for (int y = top; y < bottom; ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      if (c.hsvSaturationF() < 0.45 || c.valueF() < 0.2) continue;
+      sums.red += c.redF();
+      sums.blue += c.blueF();
+      ++sums.pixels;
+    }
+  return sums;
+}
+
+Results everyShapeKind() {
+  Results r;
+  Frame3D frame;
+  auto add = [&](Shape3D::Kind kind, std::vector<Eigen::Vector3d> points) {
+    Shape3D s;
+    s.kind = kind;
+    s.points = std::move(points);
+    s.radius = 1.0;
+    frame.shapes.push_back(s);
+    return &frame.shapes.back();
+  };
+  add(Shape3D::Kind::Tube, {{0, 0, 0}, {0, 0, -10}});
+  add(Shape3D::Kind::Polyline, {{5, 0, 0}, {5, 0, -10}});
+  add(Shape3D::Kind::Sphere, {{10, 0, 0}});
+  add(Shape3D::Kind::Hemisphere, {{15, 0, 0}});
+  add(Shape3D::Kind::Box, {{20, 0, 0}});
+  add(Shape3D::Kind::Points, {{25, 0, 0}, {25, 0, -5}});
+  Shape3D* surface = add(Shape3D::Kind::Surface, {{0, 5, 0}, {10, 5, 0}, {0, 10, 0}, {10, 10, 0}});
+  surface->grid_u = 2;
+  surface->grid_v = 2;
+  // A malformed surface (grid does not match the points) is skipped, not a crash.
+  Shape3D* bad = add(Shape3D::Kind::Surface, {{0, 0, 0}});
+  bad->grid_u = 3;
+  bad->grid_v = 3;
+  r.view.frames.push_back(frame);
+  r.view.water_level_z = 0.0;
+  r.view.seabed_z = -20.0;
+  return r;
+}
+
+}  // namespace
+
+class View3dTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { test::isolateSettings(); }
+
+  void tubeIsDrawnWhereItIsWithItsColours() {
+    SceneView view;
+    view.resize(600, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.showResults(std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5)));
+    QTest::qWait(100);
+    const QImage image = view.glWidget()->grabFramebuffer();
+    test::keepScreenshot(image, QStringLiteral("view3d_tube"));
+    QVERIFY(!image.isNull());
+    const int w = image.width(), h = image.height();
+    // Rows clear of the caption (top), the axes triad and the colour bar (bottom).
+    const int top = h * 8 / 100, bottom = h * 70 / 100;
+    const double middle = test::saturatedFraction(image, QRect(w * 2 / 5, top, w / 5, bottom - top));
+    const double left = test::saturatedFraction(image, QRect(0, top, w / 4, bottom - top));
+    const double right = test::saturatedFraction(image, QRect(w * 3 / 4, top, w / 4, bottom - top));
+    qInfo("saturated pixels: middle %.3f, left %.3f, right %.3f", middle, left, right);
+    QVERIFY(middle > 0.02);
+    QCOMPARE(left, 0.0);
+    QCOMPARE(right, 0.0);
+    // Scalars grow downwards: the upper part of the tube is blue, the lower part red.
+    const ColourSums upper = saturatedColours(image, top, (top + bottom) / 2);
+    const ColourSums lower = saturatedColours(image, (top + bottom) / 2, bottom);
+    QVERIFY(upper.pixels > 0 && lower.pixels > 0);
+    QVERIFY(upper.blue > upper.red);
+    QVERIFY(lower.red > lower.blue);
+  }
+
+  void everyShapeKindBecomesAnActor() {
+    SceneView view;
+    view.resize(500, 400);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.showResults(std::make_shared<Results>(everyShapeKind()));
+    QCOMPARE(view.modelActorCount(), 7);
+    QTest::qWait(50);
+    const QImage image = view.glWidget()->grabFramebuffer();
+    test::keepScreenshot(image, QStringLiteral("view3d_shapes"));
+    QVERIFY(test::distinctColours(image) >= 16);
+  }
+
+  void framesAnimateAndTheSliderFollows() {
+    SceneView view;
+    view.resize(400, 400);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    auto scene = test::makeRodScene();
+    RunContext context;
+    auto results = std::make_shared<Results>(runScenario(scene, defaultScenario(scene), context));
+    view.showResults(results);
+    QCOMPARE(view.frameCount(), 10);
+    view.setFrame(5);
+    QCOMPARE(view.currentFrame(), 5);
+    QCOMPARE(view.findChild<QSlider*>()->value(), 5);
+    view.setPlaying(true);
+    QVERIFY(view.isPlaying());
+    QTRY_VERIFY_WITH_TIMEOUT(view.currentFrame() != 5, 3000);
+    view.setPlaying(false);
+    QVERIFY(!view.isPlaying());
+  }
+
+  void exportRendersAtTheChosenSize() {
+    SceneView view;
+    view.resize(400, 300);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.showResults(std::make_shared<Results>(test::verticalTubeResults(50.0, 1.0)));
+    const QImage big = view.renderImage(1280, 720);
+    QCOMPARE(big.size(), QSize(1280, 720));
+    QVERIFY(test::saturatedFraction(big) > 0.001);
+    // The widget still draws at its own size afterwards.
+    QCOMPARE(view.glWidget()->grabFramebuffer().size(), view.glWidget()->size() * view.devicePixelRatioF());
+  }
+
+  void emptyResultsShowThePlaceholder() {
+    SceneView view;
+    view.showResults(std::make_shared<Results>());
+    QCOMPARE(view.frameCount(), 0);
+    QVERIFY(view.renderImage(100, 100).isNull() || view.modelActorCount() == 0);
+  }
+};
+
+QTEST_MAIN(View3dTest)
+#include "test_view3d.moc"

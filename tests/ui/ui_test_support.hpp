@@ -1,0 +1,48 @@
+// Small helpers shared by the UI tests.
+#pragma once
+
+#include <QCoreApplication>
+#include <QImage>
+#include <QStandardPaths>
+#include <QtTest>
+
+namespace maris::test {
+
+// Keeps QSettings (recent files, layout) of tests away from the user's own.
+inline void isolateSettings() {
+  QStandardPaths::setTestModeEnabled(true);
+  QCoreApplication::setOrganizationName(QStringLiteral("MarisTests"));
+  QCoreApplication::setApplicationName(QStringLiteral("maris-ui-test"));
+}
+
+// Fraction of pixels whose colour is saturated (not a grey or near-white background).
+inline double saturatedFraction(const QImage& image, QRect area = {}) {
+  if (area.isNull()) area = image.rect();
+  long saturated = 0, total = 0;
+  for (int y = area.top(); y <= area.bottom(); ++y)
+    for (int x = area.left(); x <= area.right(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      ++total;
+      if (c.hsvSaturationF() > 0.45 && c.valueF() > 0.2) ++saturated;
+    }
+  return total ? static_cast<double>(saturated) / total : 0.0;
+}
+
+// Number of distinct colours (a blank image has one).
+inline int distinctColours(const QImage& image, int limit = 64) {
+  QSet<QRgb> colours;
+  for (int y = 0; y < image.height(); y += 2)
+    for (int x = 0; x < image.width(); x += 2) {
+      colours.insert(image.pixel(x, y));
+      if (colours.size() >= limit) return limit;
+    }
+  return static_cast<int>(colours.size());
+}
+
+// Saves `image` under $MARIS_UI_SCREENSHOT_DIR (if set) for people to look at.
+inline void keepScreenshot(const QImage& image, const QString& name) {
+  const QByteArray dir = qgetenv("MARIS_UI_SCREENSHOT_DIR");
+  if (!dir.isEmpty()) image.save(QString::fromLocal8Bit(dir) + "/" + name + ".png");
+}
+
+}  // namespace maris::test

@@ -1,0 +1,77 @@
+#include "document/scenario_document.hpp"
+
+#include "document/set_parameter_command.hpp"
+
+namespace maris::ui {
+
+ScenarioDocument::ScenarioDocument(QObject* parent) : QObject(parent) {
+  connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+}
+
+void ScenarioDocument::reset(const SceneDefinition* scene, Scenario scenario, QString file_path) {
+  scene_ = scene;
+  scenario_ = std::move(scenario);
+  undo_.clear();
+  undo_.setClean();
+  setFilePath(std::move(file_path));
+  revalidate();
+  emit scenarioReset();
+  emit modifiedChanged(false);
+}
+
+void ScenarioDocument::setFilePath(QString path) {
+  if (path == file_path_) return;
+  file_path_ = std::move(path);
+  emit filePathChanged(file_path_);
+}
+
+Json ScenarioDocument::value(const std::string& path) const {
+  const Json* found = findAtPath(scenario_.parameters, path);
+  return found ? *found : Json();
+}
+
+void ScenarioDocument::edit(const std::string& path, Json new_value) {
+  Json old_value = value(path);
+  if (old_value == new_value) return;
+  undo_.push(new SetParameterCommand(this, path, std::move(old_value), std::move(new_value)));
+}
+
+void ScenarioDocument::applyValue(const std::string& path, const Json& value) {
+  setAtPath(scenario_.parameters, path, value);
+  // Value first, errors second: editors rebuild their cells on the value, then mark the bad ones.
+  emit valueChanged(QString::fromStdString(path));
+  revalidate();
+}
+
+QString ScenarioDocument::errorText(const std::string& path) const {
+  const std::string full = "parameters." + path;
+  QStringList lines;
+  for (const auto& e : errors_) {
+    const bool same = e.path == full;
+    const bool inside = e.path.size() > full.size() && e.path.compare(0, full.size(), full) == 0 &&
+                        (e.path[full.size()] == '.' || e.path[full.size()] == '[');
+    if (!same && !inside) continue;
+    QString line = QString::fromStdString(e.message);
+    if (inside) line = QString::fromStdString(e.path.substr(full.size())) + ": " + line;
+    lines << line;
+  }
+  return lines.join('\n');
+}
+
+void ScenarioDocument::revalidate() {
+  errors_ = scene_ ? validateParameters(*scene_, scenario_.parameters) : std::vector<FieldError>{};
+  emit errorsChanged();
+}
+
+QString fieldLabel(const ParamSpec& spec) {
+  QString key = QString::fromStdString(spec.key());
+  key.replace('_', ' ');
+  return key;
+}
+
+QString displayValue(const Json& value) {
+  if (value.is_string()) return QString::fromStdString(value.get<std::string>());
+  return QString::fromStdString(value.dump());
+}
+
+}  // namespace maris::ui

@@ -1,0 +1,239 @@
+#include "editor/parameter_editor.hpp"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QStyle>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include "document/scenario_document.hpp"
+#include "editor/field_text.hpp"
+#include "editor/table_editor.hpp"
+
+namespace maris::ui {
+
+namespace {
+
+const char* kInvalidStyle = "border: 1px solid #d62728; background: rgba(214, 39, 40, 40);";
+
+QString groupTitle(const std::string& group) {
+  QString title = QString::fromStdString(group);
+  title.replace('_', ' ');
+  if (!title.isEmpty()) title[0] = title[0].toUpper();
+  return title;
+}
+
+}  // namespace
+
+ParameterEditor::ParameterEditor(ScenarioDocument* document, QWidget* parent)
+    : QWidget(parent), document_(document), title_(new QLabel(this)), description_(new QLabel(this)),
+      problems_(new QLabel(this)) {
+  title_->setObjectName(QStringLiteral("scenarioTitle"));
+  title_->setWordWrap(true);
+  QFont bold = title_->font();
+  bold.setBold(true);
+  bold.setPointSizeF(bold.pointSizeF() * 1.15);
+  title_->setFont(bold);
+  description_->setWordWrap(true);
+  description_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  problems_->setWordWrap(true);
+  problems_->setStyleSheet(QStringLiteral("color: #d62728;"));
+
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  fields_host_ = new QWidget(scroll);
+  fields_layout_ = new QVBoxLayout(fields_host_);
+  scroll->setWidget(fields_host_);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(title_);
+  layout->addWidget(description_);
+  layout->addWidget(problems_);
+  layout->addWidget(scroll, 1);
+
+  connect(document_, &ScenarioDocument::scenarioReset, this, &ParameterEditor::rebuild);
+  connect(document_, &ScenarioDocument::valueChanged, this,
+          [this](const QString& path) { refreshValue(path.toStdString()); });
+  connect(document_, &ScenarioDocument::errorsChanged, this, &ParameterEditor::refreshErrors);
+  rebuild();
+}
+
+QWidget* ParameterEditor::fieldWidget(const std::string& path) const {
+  const auto it = rows_.find(path);
+  return it == rows_.end() ? nullptr : it->second.editor;
+}
+
+QLabel* ParameterEditor::errorLabel(const std::string& path) const {
+  const auto it = rows_.find(path);
+  return it == rows_.end() ? nullptr : it->second.error;
+}
+
+QToolButton* ParameterEditor::resetButton(const std::string& path) const {
+  const auto it = rows_.find(path);
+  return it == rows_.end() ? nullptr : it->second.reset;
+}
+
+void ParameterEditor::rebuild() {
+  // Old editors must not commit their text (focus-out) into the new scenario while they go.
+  for (auto& [path, row] : rows_) row.editor->blockSignals(true);
+  rows_.clear();
+  while (QLayoutItem* item = fields_layout_->takeAt(0)) {
+    delete item->widget();
+    delete item;
+  }
+  const SceneDefinition* scene = document_->scene();
+  if (!scene) {
+    title_->setText(tr("No scenario open"));
+    description_->clear();
+    problems_->clear();
+    return;
+  }
+  const Scenario& scenario = document_->scenario();
+  title_->setText(QStringLiteral("%1 — %2").arg(QString::fromStdString(scenario.name),
+                                               QString::fromStdString(scene->title)));
+  description_->setText(QString::fromStdString(scenario.description.empty() ? scene->description
+                                                                            : scenario.description));
+  // Groups in order of first appearance in the schema.
+  std::map<std::string, QGridLayout*> groups;
+  for (const ParamSpec& spec : scene->schema.fields) {
+    QGridLayout*& grid = groups[spec.group()];
+    if (!grid) {
+      auto* box = new QGroupBox(groupTitle(spec.group()), fields_host_);
+      grid = new QGridLayout(box);
+      grid->setColumnStretch(1, 1);
+      fields_layout_->addWidget(box);
+    }
+    Row row;
+    row.spec = &spec;
+    row.editor = makeEditor(spec);
+    row.editor->setObjectName(QString::fromStdString("field:" + spec.path));
+    row.editor->setToolTip(fieldTooltip(spec));
+    auto* label = new QLabel(fieldLabel(spec), fields_host_);
+    label->setToolTip(fieldTooltip(spec));
+    label->setBuddy(row.editor);
+    auto* unit = new QLabel(spec.unit == "-" ? QString() : QString::fromStdString(spec.unit), fields_host_);
+    row.reset = new QToolButton(fields_host_);
+    row.reset->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
+    row.reset->setToolTip(tr("Reset to default (%1)").arg(fieldText(spec.default_value, spec.kind)));
+    row.reset->setAutoRaise(true);
+    row.error = new QLabel(fields_host_);
+    row.error->setWordWrap(true);
+    row.error->setStyleSheet(QStringLiteral("color: #d62728;"));
+    row.error->hide();
+    connect(row.reset, &QToolButton::clicked, this,
+            [this, &spec] { document_->edit(spec.path, spec.default_value); });
+
+    const int r = grid->rowCount();
+    if (spec.kind == ParamKind::Table) {
+      grid->addWidget(label, r, 0, 1, 2);
+      grid->addWidget(row.reset, r, 3);
+      grid->addWidget(row.editor, r + 1, 0, 1, 4);
+      grid->addWidget(row.error, r + 2, 0, 1, 4);
+    } else {
+      grid->addWidget(label, r, 0);
+      grid->addWidget(row.editor, r, 1);
+      grid->addWidget(unit, r, 2);
+      grid->addWidget(row.reset, r, 3);
+      grid->addWidget(row.error, r + 1, 0, 1, 4);
+    }
+    rows_[spec.path] = row;
+    refreshValue(spec.path);
+  }
+  fields_layout_->addStretch(1);
+  refreshErrors();
+}
+
+QWidget* ParameterEditor::makeEditor(const ParamSpec& spec) {
+  switch (spec.kind) {
+    case ParamKind::Boolean: {
+      auto* box = new QCheckBox(fields_host_);
+      connect(box, &QCheckBox::toggled, this, [this, &spec](bool on) { document_->edit(spec.path, Json(on)); });
+      return box;
+    }
+    case ParamKind::Choice: {
+      auto* combo = new QComboBox(fields_host_);
+      for (const auto& choice : spec.choices) combo->addItem(QString::fromStdString(choice));
+      connect(combo, &QComboBox::activated, this,
+              [this, &spec, combo](int) { document_->edit(spec.path, Json(combo->currentText().toStdString())); });
+      return combo;
+    }
+    case ParamKind::Table: {
+      auto* table = new TableEditor(spec, fields_host_);
+      connect(table, &TableEditor::edited, this, [this, &spec](const Json& rows) { document_->edit(spec.path, rows); });
+      return table;
+    }
+    case ParamKind::Real:
+    case ParamKind::Integer:
+    case ParamKind::Text:
+    case ParamKind::RealList:
+      break;
+  }
+  auto* line = new QLineEdit(fields_host_);
+  if (spec.kind == ParamKind::RealList) line->setPlaceholderText(tr("comma-separated numbers"));
+  connect(line, &QLineEdit::editingFinished, this, [this, &spec, line] { commitText(spec, line->text()); });
+  return line;
+}
+
+void ParameterEditor::commitText(const ParamSpec& spec, const QString& text) {
+  document_->edit(spec.path, parseFieldText(text, spec.kind));
+}
+
+void ParameterEditor::refreshValue(const std::string& path) {
+  const auto it = rows_.find(path);
+  if (it == rows_.end()) return;
+  const Row& row = it->second;
+  const Json value = document_->value(path);
+  if (auto* line = qobject_cast<QLineEdit*>(row.editor)) {
+    const QString text = fieldText(value, row.spec->kind);
+    if (line->text() != text) line->setText(text);
+  } else if (auto* box = qobject_cast<QCheckBox*>(row.editor)) {
+    const QSignalBlocker blocker(box);
+    box->setChecked(value.is_boolean() && value.get<bool>());
+  } else if (auto* combo = qobject_cast<QComboBox*>(row.editor)) {
+    const QSignalBlocker blocker(combo);
+    combo->setCurrentText(value.is_string() ? QString::fromStdString(value.get<std::string>()) : QString());
+  } else if (auto* table = qobject_cast<TableEditor*>(row.editor)) {
+    table->setValue(value);
+  }
+  row.reset->setEnabled(value != row.spec->default_value);
+}
+
+void ParameterEditor::refreshErrors() {
+  const auto& errors = document_->errors();
+  for (auto& [path, row] : rows_) {
+    const QString message = document_->errorText(path);
+    row.error->setText(message);
+    row.error->setVisible(!message.isEmpty());
+    if (auto* table = qobject_cast<TableEditor*>(row.editor))
+      table->markErrors(errors, "parameters." + path);
+    else
+      row.editor->setStyleSheet(message.isEmpty() ? QString() : QString::fromLatin1(kInvalidStyle));
+  }
+  // Problems no field shows (unknown fields, whole-scenario checks) are listed at the top.
+  QStringList loose;
+  for (const auto& e : errors) {
+    bool shown = false;
+    for (const auto& [path, row] : rows_) {
+      const std::string full = "parameters." + path;
+      if (e.path.compare(0, full.size(), full) == 0 &&
+          (e.path.size() == full.size() || e.path[full.size()] == '.' || e.path[full.size()] == '['))
+        shown = true;
+    }
+    if (!shown) loose << QString::fromStdString(e.str());
+  }
+  QString text;
+  if (!errors.empty())
+    text = tr("%n invalid value(s): Run is disabled until they are fixed.", nullptr, static_cast<int>(errors.size()));
+  if (!loose.isEmpty()) text += QStringLiteral("\n") + loose.join('\n');
+  problems_->setText(text);
+  problems_->setVisible(!text.isEmpty());
+}
+
+}  // namespace maris::ui

@@ -1,0 +1,58 @@
+// The parameter editor dock, built from the scene's schema and nothing else: one group box per
+// schema group, one row per field with its editor, unit, reset-to-default button and, when the
+// value is invalid, the validation message in words under it. Edits go to the document as
+// undoable commands; the editor only mirrors the document (scenarioReset / valueChanged /
+// errorsChanged), so undo and redo update it like any other change.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <QWidget>
+
+#include "core/schema.hpp"
+
+class QLabel;
+class QToolButton;
+class QVBoxLayout;
+
+namespace maris::ui {
+
+class ScenarioDocument;
+class TableEditor;
+
+class ParameterEditor : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ParameterEditor(ScenarioDocument* document, QWidget* parent = nullptr);
+
+  // The editing widget of a field (QLineEdit, QCheckBox, QComboBox or TableEditor), or nullptr.
+  QWidget* fieldWidget(const std::string& path) const;
+  QLabel* errorLabel(const std::string& path) const;
+  QToolButton* resetButton(const std::string& path) const;
+  QLabel* problemsLabel() const { return problems_; }
+
+ private:
+  struct Row {
+    const ParamSpec* spec = nullptr;
+    QWidget* editor = nullptr;
+    QLabel* error = nullptr;
+    QToolButton* reset = nullptr;
+  };
+
+  void rebuild();
+  QWidget* makeEditor(const ParamSpec& spec);
+  void refreshValue(const std::string& path);
+  void refreshErrors();
+  void commitText(const ParamSpec& spec, const QString& text);
+
+  ScenarioDocument* document_;
+  QLabel* title_;
+  QLabel* description_;
+  QLabel* problems_;
+  QWidget* fields_host_ = nullptr;
+  QVBoxLayout* fields_layout_;
+  std::map<std::string, Row> rows_;
+};
+
+}  // namespace maris::ui

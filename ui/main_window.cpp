@@ -1,0 +1,260 @@
+#include "main_window.hpp"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+#include <QUndoStack>
+
+#include "browser/scenario_browser.hpp"
+#include "document/scenario_document.hpp"
+#include "editor/parameter_editor.hpp"
+#include "plots/plot_panel.hpp"
+#include "run/results_summary.hpp"
+#include "run/run_panel.hpp"
+#include "scene_library.hpp"
+#include "view3d/scene_view.hpp"
+
+namespace maris::ui {
+
+namespace {
+constexpr int kMaxRecentFiles = 8;
+}
+
+MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* parent)
+    : QMainWindow(parent), library_(std::move(library)), document_(new ScenarioDocument(this)),
+      runs_(new RunController(this)) {
+  setObjectName(QStringLiteral("MarisMainWindow"));
+  setAcceptDrops(true);
+  setDockNestingEnabled(true);
+  unsaved_prompt_ = [this] {
+    return QMessageBox::question(this, tr("Unsaved changes"),
+                                 tr("The scenario has unsaved changes. Save them first?"),
+                                 QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  };
+
+  view_ = new SceneView(this);
+  plots_ = new PlotPanel(this);
+  central_ = new QSplitter(Qt::Horizontal, this);
+  central_->setObjectName(QStringLiteral("centralSplitter"));
+  central_->addWidget(view_);
+  central_->addWidget(plots_);
+  central_->setStretchFactor(0, 1);
+  central_->setStretchFactor(1, 1);
+  setCentralWidget(central_);
+
+  createActions();
+  createDocks();
+  validity_ = new QLabel(this);
+  statusBar()->addPermanentWidget(validity_);
+
+  connect(document_, &ScenarioDocument::errorsChanged, this, &MainWindow::updateRunEnabled);
+  connect(document_, &ScenarioDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(document_, &ScenarioDocument::filePathChanged, this, &MainWindow::updateTitle);
+  connect(document_, &ScenarioDocument::scenarioReset, this, &MainWindow::updateTitle);
+  connect(runs_, &RunController::runningChanged, this, &MainWindow::updateRunEnabled);
+  connect(runs_, &RunController::finished, this, &MainWindow::onRunFinished);
+  connect(runs_, &RunController::failed, this, &MainWindow::onRunFailed);
+  connect(runs_, &RunController::cancelled, this, &MainWindow::onRunCancelled);
+  connect(runs_, &RunController::partialResults, this, [this](ResultsPtr partial) {
+    plots_->showResults(partial, tr("running"));
+    // Redrawing the 3D view costs far more than the plots (a software renderer needs ~0.2 s), so
+    // during a run it follows at most once a second; the finished run redraws it anyway.
+    if (!partial_view_clock_.isValid() || partial_view_clock_.elapsed() > 1000) {
+      view_->showResults(partial);
+      partial_view_clock_.start();
+    }
+  });
+  connect(plots_, &PlotPanel::message, this, [this](const QString& text) { status(text); });
+  connect(view_, &SceneView::message, this, [this](const QString& text) { status(text); });
+  connect(browser_, &ScenarioBrowser::exampleActivated, this, &MainWindow::openExample);
+  connect(browser_, &ScenarioBrowser::fileActivated, this, &MainWindow::openFile);
+  connect(browser_, &ScenarioBrowser::openFileRequested, this, &MainWindow::openFileDialog);
+
+  resize(1600, 1000);
+  restoreSettings();
+  if (const BuiltinScenario* first = library_->defaultExample())
+    openExample(QString::fromStdString(first->id));
+  updateTitle();
+  updateRunEnabled();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&New…"), QKeySequence::New, this, &MainWindow::newScenarioDialog);
+  file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openFileDialog);
+  save_action_ = file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(); });
+  file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, &MainWindow::saveAsDialog);
+  file->addSeparator();
+  report_action_ = file->addAction(tr("Export &Report Folder…"), QKeySequence(Qt::CTRL | Qt::Key_E), this,
+                                   &MainWindow::reportDialog);
+  file->addSeparator();
+  file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+  edit->addAction(undo);
+  edit->addAction(redo);
+
+  QMenu* run = menuBar()->addMenu(tr("&Run"));
+  run_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Run"), QKeySequence(Qt::CTRL | Qt::Key_R),
+                               this, [this] { startRun(); });
+  run_action_->setToolTip(tr("Run the scenario (Ctrl+R)"));
+  cancel_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaStop), tr("&Cancel"),
+                                  QKeySequence(Qt::Key_Escape), this, &MainWindow::cancelRun);
+  cancel_action_->setToolTip(tr("Cancel the running scenario (Esc)"));
+  cancel_action_->setShortcutContext(Qt::WindowShortcut);
+
+  QToolBar* tools = addToolBar(tr("Main"));
+  tools->setObjectName(QStringLiteral("mainToolBar"));
+  tools->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  tools->addAction(run_action_);
+  tools->addAction(cancel_action_);
+  tools->addSeparator();
+  tools->addAction(undo);
+  tools->addAction(redo);
+}
+
+void MainWindow::createDocks() {
+  auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
+    auto* d = new QDockWidget(title, this);
+    d->setObjectName(name);
+    d->setWidget(content);
+    addDockWidget(area, d);
+    return d;
+  };
+  browser_ = new ScenarioBrowser(library_, this);
+  editor_ = new ParameterEditor(document_, this);
+  run_panel_ = new RunPanel(runs_, run_action_, cancel_action_, this);
+  summary_ = new ResultsSummary(this);
+  QDockWidget* scenarios = dock(tr("Scenarios"), QStringLiteral("scenarioDock"), browser_, Qt::LeftDockWidgetArea);
+  QDockWidget* parameters = dock(tr("Parameters"), QStringLiteral("parameterDock"), editor_, Qt::LeftDockWidgetArea);
+  QDockWidget* run = dock(tr("Run"), QStringLiteral("runDock"), run_panel_, Qt::BottomDockWidgetArea);
+  QDockWidget* results = dock(tr("Results"), QStringLiteral("resultsDock"), summary_, Qt::BottomDockWidgetArea);
+  splitDockWidget(scenarios, parameters, Qt::Vertical);
+  splitDockWidget(run, results, Qt::Horizontal);
+  resizeDocks({scenarios, parameters}, {220, 560}, Qt::Vertical);
+  resizeDocks({scenarios}, {400}, Qt::Horizontal);
+  resizeDocks({run}, {230}, Qt::Vertical);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  for (QDockWidget* d : {scenarios, parameters, run, results}) view->addAction(d->toggleViewAction());
+  view->addSeparator();
+  view->addAction(tr("Reset 3D &Camera"), this, [this] { view_->resetCamera(); });
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&About Maris"), this, [this] {
+    QMessageBox::about(this, tr("About Maris"),
+                       tr("<b>Maris</b> %1<br>Ocean-engineering workbench: scenes, solvers, plots and 3D views over one "
+                          "engine.").arg(QApplication::applicationVersion()));
+  });
+}
+
+void MainWindow::restoreSettings() {
+  QSettings settings;
+  if (settings.contains(QStringLiteral("window/geometry")))
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+  if (settings.contains(QStringLiteral("window/state")))
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+  if (settings.contains(QStringLiteral("window/splitter")))
+    central_->restoreState(settings.value(QStringLiteral("window/splitter")).toByteArray());
+  recent_files_ = settings.value(QStringLiteral("recentFiles")).toStringList();
+  browser_->setRecentFiles(recent_files_);
+}
+
+void MainWindow::saveSettings() const {
+  QSettings settings;
+  settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+  settings.setValue(QStringLiteral("window/state"), saveState());
+  settings.setValue(QStringLiteral("window/splitter"), central_->saveState());
+  settings.setValue(QStringLiteral("recentFiles"), recent_files_);
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  recent_files_.removeAll(absolute);
+  recent_files_.prepend(absolute);
+  while (recent_files_.size() > kMaxRecentFiles) recent_files_.removeLast();
+  browser_->setRecentFiles(recent_files_);
+  QSettings().setValue(QStringLiteral("recentFiles"), recent_files_);
+}
+
+void MainWindow::updateTitle() {
+  QString title = tr("Maris");
+  if (!document_->isEmpty()) {
+    const QString where = document_->filePath().isEmpty() ? (example_id_.isEmpty() ? tr("unsaved") : tr("built-in %1").arg(example_id_))
+                                                          : QFileInfo(document_->filePath()).fileName();
+    title = QStringLiteral("%1[*] — %2 — Maris").arg(QString::fromStdString(document_->scenario().name), where);
+  }
+  setWindowTitle(title);
+  setWindowModified(document_->isModified());
+}
+
+void MainWindow::updateRunEnabled() {
+  const bool running = runs_->isRunning();
+  const bool valid = document_->isValid();
+  run_action_->setEnabled(valid && !running);
+  cancel_action_->setEnabled(running);
+  const int problems = static_cast<int>(document_->errors().size());
+  if (document_->isEmpty())
+    validity_->setText(tr("No scenario"));
+  else if (valid)
+    validity_->setText(running ? tr("Running…") : tr("Ready"));
+  else
+    validity_->setText(tr("%n invalid value(s)", nullptr, problems));
+  validity_->setStyleSheet(valid || document_->isEmpty() ? QString() : QStringLiteral("color: #d62728;"));
+}
+
+void MainWindow::status(const QString& text, int timeout_ms) { statusBar()->showMessage(text, timeout_ms); }
+
+bool MainWindow::confirmDiscard() {
+  if (!document_->isModified()) return true;
+  switch (unsaved_prompt_()) {
+    case QMessageBox::Save: return save();
+    case QMessageBox::Discard: return true;
+    default: return false;
+  }
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!confirmDiscard()) {
+    event->ignore();
+    return;
+  }
+  runs_->cancel();
+  saveSettings();
+  event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  for (const QUrl& url : event->mimeData()->urls())
+    if (url.isLocalFile() && url.toLocalFile().endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) {
+      event->acceptProposedAction();
+      return;
+    }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  for (const QUrl& url : event->mimeData()->urls())
+    if (url.isLocalFile()) {
+      event->acceptProposedAction();
+      openFile(url.toLocalFile());
+      return;
+    }
+}
+
+}  // namespace maris::ui

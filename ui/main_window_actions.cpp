@@ -1,0 +1,244 @@
+// MainWindow: opening and saving scenarios, and runs with their results.
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QRegularExpression>
+#include <QStandardPaths>
+
+#include "browser/scenario_browser.hpp"
+#include "document/scenario_document.hpp"
+#include "main_window.hpp"
+#include "plots/plot_export.hpp"
+#include "plots/plot_panel.hpp"
+#include "run/results_summary.hpp"
+#include "run/run_panel.hpp"
+#include "scene_library.hpp"
+#include "view3d/scene_view.hpp"
+
+namespace maris::ui {
+
+bool MainWindow::loadScenario(const Scenario& scenario, const QString& path, const QString& example_id) {
+  const SceneDefinition* scene = library_->findScene(scenario.scene);
+  if (!scene) {
+    QStringList known;
+    for (const auto& s : library_->scenes) known << QString::fromStdString(s.name);
+    last_error_ = tr("The scenario's scene \"%1\" is not built into this program (known: %2).")
+                      .arg(QString::fromStdString(scenario.scene), known.join(QStringLiteral(", ")));
+    run_panel_->log(RunPanel::Level::Error, last_error_);
+    status(last_error_);
+    return false;
+  }
+  // Results of another scene make no sense next to this scenario.
+  if (document_->scene() != scene) {
+    plots_->clear();
+    view_->clear();
+    summary_->clear();
+    shown_run_ = 0;
+  }
+  example_id_ = example_id;
+  document_->reset(scene, scenario, path);
+  browser_->setCurrent(example_id, path);
+  updateTitle();
+  updateRunEnabled();
+  const QString what = path.isEmpty() ? example_id : path;
+  if (!document_->isValid())
+    run_panel_->log(RunPanel::Level::Warning, tr("Opened %1 with %n invalid value(s); see the parameter editor.", nullptr,
+                                                 static_cast<int>(document_->errors().size())).arg(what));
+  status(tr("Opened %1").arg(what));
+  return true;
+}
+
+bool MainWindow::openExample(const QString& id) {
+  const BuiltinScenario* example = library_->findExample(id.toStdString());
+  if (!example) {
+    last_error_ = tr("There is no built-in scenario \"%1\".").arg(id);
+    status(last_error_);
+    return false;
+  }
+  if (!confirmDiscard()) return false;
+  return loadScenario(example->scenario, QString(), id);
+}
+
+bool MainWindow::openFile(const QString& path) {
+  if (!confirmDiscard()) return false;
+  Scenario scenario;
+  try {
+    scenario = loadScenarioFile(path.toStdString());
+  } catch (const std::exception& e) {
+    last_error_ = tr("Could not open %1: %2").arg(path, QString::fromUtf8(e.what()));
+    run_panel_->log(RunPanel::Level::Error, last_error_);
+    status(last_error_);
+    return false;
+  }
+  if (!loadScenario(scenario, QFileInfo(path).absoluteFilePath(), QString())) return false;
+  addRecentFile(path);
+  return true;
+}
+
+bool MainWindow::newScenario(const QString& scene_name) {
+  const SceneDefinition* scene = library_->findScene(scene_name.toStdString());
+  if (!scene || !confirmDiscard()) return false;
+  return loadScenario(defaultScenario(*scene), QString(), QString());
+}
+
+bool MainWindow::save() {
+  if (document_->isEmpty()) return false;
+  if (document_->filePath().isEmpty()) {
+    saveAsDialog();
+    return !document_->isModified() && !document_->filePath().isEmpty();
+  }
+  return saveAs(document_->filePath());
+}
+
+bool MainWindow::saveAs(const QString& path) {
+  if (document_->isEmpty() || path.isEmpty()) return false;
+  try {
+    saveScenarioFile(document_->scenario(), path.toStdString());  // atomic: temp file + rename
+  } catch (const std::exception& e) {
+    last_error_ = tr("Could not save %1: %2").arg(path, QString::fromUtf8(e.what()));
+    run_panel_->log(RunPanel::Level::Error, last_error_);
+    status(last_error_);
+    return false;
+  }
+  document_->setFilePath(QFileInfo(path).absoluteFilePath());
+  document_->markSaved();
+  example_id_.clear();
+  browser_->setCurrent(QString(), document_->filePath());
+  addRecentFile(path);
+  updateTitle();
+  status(tr("Saved %1").arg(path));
+  return true;
+}
+
+bool MainWindow::writeReport(const QString& dir) {
+  const RunRecord* record = history_.find(shown_run_);
+  if (!record) {
+    status(tr("No finished run to report: run the scenario first."));
+    return false;
+  }
+  try {
+    const QImage image = view_->renderImage(1600, 1000);
+    const auto files = writeReportFolder(dir.toStdString(), record->scenario, *record->results, image);
+    run_panel_->log(RunPanel::Level::Info, tr("Report of %1 written to %2 (%n file(s))", nullptr,
+                                              static_cast<int>(files.size())).arg(record->label, dir));
+    status(tr("Report written to %1").arg(dir));
+    return true;
+  } catch (const std::exception& e) {
+    last_error_ = tr("Could not write the report: %1").arg(QString::fromUtf8(e.what()));
+    run_panel_->log(RunPanel::Level::Error, last_error_);
+    status(last_error_);
+    return false;
+  }
+}
+
+bool MainWindow::startRun() {
+  if (runs_->isRunning() || !document_->isValid()) {
+    if (!document_->isValid()) status(tr("Fix the invalid values first (marked red in the parameter editor)."));
+    return false;
+  }
+  const quint64 id = runs_->start(*document_->scene(), document_->scenario());
+  run_panel_->log(RunPanel::Level::Info,
+                  tr("Run %1 started: %2").arg(id).arg(QString::fromStdString(document_->scenario().name)));
+  status(tr("Running…"), 0);
+  return id != 0;
+}
+
+void MainWindow::cancelRun() {
+  if (!runs_->isRunning()) return;
+  runs_->cancel();
+  status(tr("Cancelling…"), 0);
+}
+
+void MainWindow::showRecord(const RunRecord& record) {
+  shown_run_ = record.id;
+  plots_->showResults(record.results, record.label);
+  std::vector<RunRecord> same_scene;
+  for (const auto& r : history_.runs())
+    if (r.scenario.scene == record.scenario.scene) same_scene.push_back(r);
+  plots_->setAvailableRuns(same_scene, record.id);
+  view_->showResults(record.results);
+  summary_->showRun(record);
+}
+
+// After a failed or cancelled run the plots may hold partial results: show the last finished run.
+void MainWindow::restoreShownRun() {
+  if (const RunRecord* shown = history_.find(shown_run_)) {
+    showRecord(*shown);
+  } else {
+    plots_->clear();
+    view_->clear();
+  }
+}
+
+void MainWindow::onRunFinished(const RunRecord& finished) {
+  const RunRecord& record = history_.add(finished);
+  showRecord(record);
+  for (const auto& w : record.results->warnings) run_panel_->log(RunPanel::Level::Warning, QString::fromStdString(w));
+  run_panel_->log(RunPanel::Level::Info,
+                  tr("Finished %1 in %2").arg(record.label, formatDuration(record.wall_time_s)));
+  status(tr("Finished %1 in %2").arg(record.label, formatDuration(record.wall_time_s)));
+  emit runFinished(record.id);
+}
+
+void MainWindow::onRunFailed(const QString& message) {
+  last_error_ = message;
+  run_panel_->log(RunPanel::Level::Error, message);
+  status(message.section(QLatin1Char('\n'), 0, 0), 15000);
+  restoreShownRun();
+  emit runFailed(message);
+}
+
+void MainWindow::onRunCancelled() {
+  const double latency_ms = runs_->lastCancelLatency() * 1e3;
+  run_panel_->log(RunPanel::Level::Info, tr("Run cancelled: the solver stopped %1 ms after the request")
+                                             .arg(latency_ms, 0, 'f', 1));
+  status(tr("Run cancelled"));
+  restoreShownRun();
+  emit runCancelled();
+}
+
+void MainWindow::openFileDialog() {
+  const QString dir = recent_files_.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
+                                              : QFileInfo(recent_files_.front()).absolutePath();
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open scenario"), dir, tr("Maris scenario (*.json)"));
+  if (!path.isEmpty()) openFile(path);
+}
+
+void MainWindow::saveAsDialog() {
+  if (document_->isEmpty()) return;
+  QString suggested = document_->filePath();
+  if (suggested.isEmpty())
+    suggested = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) + "/" +
+                (example_id_.isEmpty() ? QStringLiteral("scenario") : example_id_) + ".json";
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save scenario as"), suggested, tr("Maris scenario (*.json)"));
+  if (!path.isEmpty()) saveAs(path.endsWith(QLatin1String(".json")) ? path : path + ".json");
+}
+
+void MainWindow::newScenarioDialog() {
+  QStringList titles;
+  for (const auto& s : library_->scenes) titles << QString::fromStdString(s.title);
+  if (titles.isEmpty()) return;
+  int index = 0;
+  if (titles.size() > 1) {
+    bool ok = false;
+    const QString title = QInputDialog::getItem(this, tr("New scenario"), tr("Scene"), titles, 0, false, &ok);
+    if (!ok) return;
+    index = static_cast<int>(titles.indexOf(title));
+  }
+  newScenario(QString::fromStdString(library_->scenes[index].name));
+}
+
+void MainWindow::reportDialog() {
+  const QString dir = QFileDialog::getExistingDirectory(this, tr("Report folder"),
+                                                        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+  if (dir.isEmpty()) return;
+  // Each report goes into its own folder named after the scenario and the run.
+  const RunRecord* record = history_.find(shown_run_);
+  QString name = record ? QString::fromStdString(record->scenario.name) + QStringLiteral(" run %1").arg(record->id)
+                        : QStringLiteral("report");
+  name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9._-]+")), QStringLiteral("_"));
+  writeReport(QDir(dir).filePath(name));
+}
+
+}  // namespace maris::ui

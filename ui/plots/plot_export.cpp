@@ -1,0 +1,95 @@
+#include "plots/plot_export.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/run_output.hpp"
+#include "plots/result_plot.hpp"
+
+namespace maris::ui {
+
+Table plotDataTable(const Results& results, const PlotSpec& spec) {
+  Table out;
+  out.name = spec.name;
+  out.title = spec.title;
+  const Table* table = results.findTable(spec.table);
+  if (!table) return out;
+  const Column* x = table->find(spec.x);
+  if (!x) return out;
+  out.columns.push_back(*x);
+  for (const auto& name : spec.y)
+    if (const Column* y = table->find(name)) out.columns.push_back(*y);
+  return out;
+}
+
+void writePlotCsv(const std::filesystem::path& file, const Results& results, const PlotSpec& spec) {
+  const Table table = plotDataTable(results, spec);
+  if (table.columns.empty())
+    throw std::runtime_error("plot '" + spec.name + "' has no data table '" + spec.table + "' in these results");
+  writeFileAtomic(file, table.toCsv());
+}
+
+namespace {
+
+std::string formatNumber(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
+  return buffer;
+}
+
+}  // namespace
+
+std::string summaryMarkdown(const Scenario& scenario, const Results& results,
+                            const std::vector<std::filesystem::path>& files) {
+  std::string md = "# " + scenario.name + "\n\nScene: `" + scenario.scene + "`\n\n";
+  if (!scenario.description.empty()) md += scenario.description + "\n\n";
+  md += "## Results\n\n| quantity | value | unit | meaning |\n|---|---:|---|---|\n";
+  for (const auto& s : results.scalars)
+    md += "| " + s.name + " | " + formatNumber(s.value) + " | " + s.unit + " | " + s.description + " |\n";
+  const auto& st = results.stats;
+  md += "\n## Solver\n\n- method: " + (st.method.empty() ? std::string("-") : st.method) +
+        "\n- steps: " + std::to_string(st.steps) + " (rejected " + std::to_string(st.rejected_steps) +
+        ")\n- right-hand-side evaluations: " + std::to_string(st.rhs_evaluations) +
+        "\n- error estimate: " + formatNumber(st.error_estimate) + " " + st.error_unit +
+        "\n- wall time: " + formatNumber(st.wall_time_s) + " s\n";
+  if (!results.warnings.empty()) {
+    md += "\n## Warnings\n\n";
+    for (const auto& w : results.warnings) md += "- " + w + "\n";
+  }
+  md += "\n## Files\n\n";
+  for (const auto& f : files) {
+    const std::string name = f.filename().string();
+    if (f.extension() == ".png")
+      md += "![" + name + "](" + name + ")\n\n";
+    else
+      md += "- [" + name + "](" + name + ")\n";
+  }
+  return md;
+}
+
+std::vector<std::filesystem::path> writeReportFolder(const std::filesystem::path& dir, const Scenario& scenario,
+                                                     const Results& results, const QImage& view3d) {
+  auto files = writeRunFolder(dir, scenario, results);
+  for (const auto& spec : results.plots) {
+    for (const char* suffix : {".png", ".pdf"}) {
+      const auto file = dir / (spec.name + suffix);
+      if (!savePlotImage(results, spec, QString::fromStdString(file.string()), 1200, 800))
+        throw std::runtime_error("could not write plot " + file.string());
+      files.push_back(file);
+    }
+  }
+  if (!view3d.isNull()) {
+    const auto file = dir / "view_3d.png";
+    const auto partial = dir / ".view_3d.partial.png";
+    if (!view3d.save(QString::fromStdString(partial.string()), "PNG"))
+      throw std::runtime_error("could not write " + file.string());
+    std::filesystem::rename(partial, file);
+    files.push_back(file);
+  }
+  const auto summary = dir / "summary.md";
+  writeFileAtomic(summary, summaryMarkdown(scenario, results, files));
+  files.push_back(summary);
+  return files;
+}
+
+}  // namespace maris::ui

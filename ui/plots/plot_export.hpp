@@ -1,0 +1,32 @@
+// Exports of plot data and whole runs: the CSV behind one plot (names row, units row, data) and
+// the one-click report folder (every table as CSV, scenario.json, summary.json from
+// core/run_output.hpp, plus every plot as PNG and PDF, the 3D view, and a readable summary.md).
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include <QImage>
+#include <QString>
+
+#include "core/results.hpp"
+#include "core/scenario.hpp"
+
+namespace maris::ui {
+
+// The columns a plot shows (x, then each y) as a table; empty if the spec does not match.
+Table plotDataTable(const Results& results, const PlotSpec& spec);
+
+// Writes plotDataTable as CSV, atomically. Throws std::runtime_error on failure.
+void writePlotCsv(const std::filesystem::path& file, const Results& results, const PlotSpec& spec);
+
+// A summary for people: scalars with units and descriptions, solver statistics, warnings, files.
+std::string summaryMarkdown(const Scenario& scenario, const Results& results,
+                            const std::vector<std::filesystem::path>& files);
+
+// Writes the report folder; `view3d` (if not null) is saved as view_3d.png. Returns every file
+// written. Throws std::runtime_error when a file cannot be written.
+std::vector<std::filesystem::path> writeReportFolder(const std::filesystem::path& dir, const Scenario& scenario,
+                                                     const Results& results, const QImage& view3d = {});
+
+}  // namespace maris::ui

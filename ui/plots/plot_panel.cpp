@@ -1,0 +1,166 @@
+#include "plots/plot_panel.hpp"
+
+#include <QAction>
+#include <QDir>
+#include <QFileDialog>
+#include <QMenu>
+#include <QTabWidget>
+#include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace maris::ui {
+
+PlotPanel::PlotPanel(QWidget* parent)
+    : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new QTabWidget(this)),
+      overlay_menu_(new QMenu(tr("Overlay runs"), this)) {
+  toolbar_->setIconSize(QSize(16, 16));
+  toolbar_->setToolButtonStyle(Qt::ToolButtonTextOnly);
+  log_x_ = toolbar_->addAction(tr("Log x"));
+  log_x_->setCheckable(true);
+  log_y_ = toolbar_->addAction(tr("Log y"));
+  log_y_->setCheckable(true);
+  toolbar_->addAction(tr("Fit"), this, [this] {
+    if (auto* v = currentView()) v->resetZoom();
+  })->setToolTip(tr("Fit the axes to the data (or double-click the plot)"));
+  auto* overlay_button = new QToolButton(toolbar_);
+  overlay_button->setText(tr("Overlay runs"));
+  overlay_button->setMenu(overlay_menu_);
+  overlay_button->setPopupMode(QToolButton::InstantPopup);
+  overlay_button->setToolTip(tr("Draw earlier runs of this scene on the same axes"));
+  toolbar_->addWidget(overlay_button);
+  auto* export_menu = new QMenu(tr("Export"), this);
+  export_menu->addAction(tr("Plot as PNG…"), this, [this] { exportCurrent(QStringLiteral("png")); });
+  export_menu->addAction(tr("Plot as PDF…"), this, [this] { exportCurrent(QStringLiteral("pdf")); });
+  export_menu->addAction(tr("Plot as SVG…"), this, [this] { exportCurrent(QStringLiteral("svg")); });
+  export_menu->addAction(tr("Data as CSV…"), this, [this] { exportCurrent(QStringLiteral("csv")); });
+  auto* export_button = new QToolButton(toolbar_);
+  export_button->setText(tr("Export"));
+  export_button->setMenu(export_menu);
+  export_button->setPopupMode(QToolButton::InstantPopup);
+  toolbar_->addWidget(export_button);
+  tabs_->setDocumentMode(true);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(0);
+  layout->addWidget(toolbar_);
+  layout->addWidget(tabs_, 1);
+
+  connect(log_x_, &QAction::toggled, this, [this](bool on) {
+    if (auto* v = currentView()) v->setLogX(on);
+  });
+  connect(log_y_, &QAction::toggled, this, [this](bool on) {
+    if (auto* v = currentView()) v->setLogY(on);
+  });
+  connect(tabs_, &QTabWidget::currentChanged, this, &PlotPanel::syncToolbar);
+  syncToolbar();
+}
+
+PlotView* PlotPanel::currentView() const {
+  const int i = tabs_->currentIndex();
+  return i >= 0 && i < count() ? views_[i] : nullptr;
+}
+
+void PlotPanel::clear() {
+  shown_.reset();
+  runs_.clear();
+  overlaid_.clear();
+  overlay_menu_->clear();
+  tabs_->clear();
+  qDeleteAll(views_);
+  views_.clear();
+  syncToolbar();
+}
+
+void PlotPanel::showResults(std::shared_ptr<const Results> results, const QString& label) {
+  shown_ = std::move(results);
+  shown_label_ = label;
+  if (!shown_) return;
+  rebuildTabs(*shown_);
+  redrawAll();
+}
+
+void PlotPanel::rebuildTabs(const Results& results) {
+  bool same = static_cast<int>(results.plots.size()) == count();
+  for (int i = 0; same && i < count(); ++i) same = views_[i]->spec().name == results.plots[i].name;
+  if (same) return;
+  const int current = tabs_->currentIndex();
+  tabs_->clear();
+  qDeleteAll(views_);
+  views_.clear();
+  for (const auto& spec : results.plots) {
+    auto* view = new PlotView(spec, tabs_);
+    view->setObjectName(QString::fromStdString("plot:" + spec.name));
+    views_.push_back(view);
+    tabs_->addTab(view, QString::fromStdString(spec.title.empty() ? spec.name : spec.title));
+  }
+  if (current >= 0 && current < count()) tabs_->setCurrentIndex(current);
+  syncToolbar();
+}
+
+void PlotPanel::setAvailableRuns(const std::vector<RunRecord>& runs, quint64 shown_run) {
+  runs_.clear();
+  overlay_menu_->clear();
+  for (const auto& r : runs) {
+    if (r.id == shown_run) continue;
+    runs_.push_back(r);
+    QAction* a = overlay_menu_->addAction(r.label);
+    a->setCheckable(true);
+    a->setChecked(overlaid_.count(r.id) > 0);
+    const quint64 id = r.id;
+    connect(a, &QAction::toggled, this, [this, id](bool on) { setOverlay(id, on); });
+  }
+  if (runs_.empty()) overlay_menu_->addAction(tr("(no other finished runs)"))->setEnabled(false);
+  // Forget overlays of runs that are gone.
+  std::set<quint64> still;
+  for (const auto& r : runs_)
+    if (overlaid_.count(r.id)) still.insert(r.id);
+  overlaid_ = std::move(still);
+  redrawAll();
+}
+
+void PlotPanel::setOverlay(quint64 run, bool on) {
+  if (on)
+    overlaid_.insert(run);
+  else
+    overlaid_.erase(run);
+  redrawAll();
+}
+
+void PlotPanel::redrawAll() {
+  if (!shown_) return;
+  std::vector<PlotView::Source> sources{{shown_label_, shown_}};
+  for (const auto& r : runs_)
+    if (overlaid_.count(r.id)) sources.push_back({r.label, r.results});
+  for (auto* view : views_) view->setSources(sources);
+}
+
+void PlotPanel::syncToolbar() {
+  PlotView* v = currentView();
+  const QSignalBlocker bx(log_x_), by(log_y_);
+  log_x_->setEnabled(v);
+  log_y_->setEnabled(v);
+  log_x_->setChecked(v && v->logX());
+  log_y_->setChecked(v && v->logY());
+}
+
+void PlotPanel::exportCurrent(const QString& suffix) {
+  PlotView* v = currentView();
+  if (!v || !v->hasData()) {
+    emit message(tr("Nothing to export: run the scenario first."));
+    return;
+  }
+  const QString suggested = QDir::home().filePath(QString::fromStdString(v->spec().name) + "." + suffix);
+  const QString file = QFileDialog::getSaveFileName(this, tr("Export plot"), suggested,
+                                                    QStringLiteral("*.%1").arg(suffix));
+  if (file.isEmpty()) return;
+  try {
+    v->exportTo(file);
+    emit message(tr("Exported %1").arg(file));
+  } catch (const std::exception& e) {
+    emit message(tr("Export failed: %1").arg(QString::fromUtf8(e.what())));
+  }
+}
+
+}  // namespace maris::ui

@@ -1,0 +1,60 @@
+// The plot tabs: one PlotView per PlotSpec of the shown run, a toolbar acting on the current tab
+// (log axes, fit, export as PNG/PDF/SVG/CSV) and an "Overlay runs" menu listing earlier runs of
+// the same scene, whose curves are drawn dashed or in other colours on every tab.
+#pragma once
+
+#include <set>
+#include <vector>
+
+#include <QWidget>
+
+#include "plots/plot_view.hpp"
+#include "run/run_controller.hpp"
+
+class QAction;
+class QMenu;
+class QTabWidget;
+class QToolBar;
+
+namespace maris::ui {
+
+class PlotPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit PlotPanel(QWidget* parent = nullptr);
+
+  // Shows `results` (labelled `label`); tabs are rebuilt only when the set of plots changes, so
+  // live partial results keep the user's current tab.
+  void showResults(std::shared_ptr<const Results> results, const QString& label);
+  // Runs offered for overlay (the shown one is skipped by id).
+  void setAvailableRuns(const std::vector<RunRecord>& runs, quint64 shown_run);
+  void setOverlay(quint64 run, bool on);
+  void clear();
+
+  int count() const { return static_cast<int>(views_.size()); }
+  PlotView* view(int i) const { return views_.at(i); }
+  PlotView* currentView() const;
+  QTabWidget* tabs() const { return tabs_; }
+
+ signals:
+  void message(const QString& text);  // export results and errors, for the status bar / log
+
+ private:
+  void rebuildTabs(const Results& results);
+  void redrawAll();
+  void syncToolbar();
+  void exportCurrent(const QString& suffix);
+
+  QToolBar* toolbar_;
+  QTabWidget* tabs_;
+  QAction* log_x_;
+  QAction* log_y_;
+  QMenu* overlay_menu_;
+  std::vector<PlotView*> views_;
+  std::shared_ptr<const Results> shown_;
+  QString shown_label_;
+  std::vector<RunRecord> runs_;
+  std::set<quint64> overlaid_;
+};
+
+}  // namespace maris::ui

@@ -1,0 +1,145 @@
+#include "plots/plot_view.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <QFileInfo>
+#include <QLabel>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include "plots/plot_export.hpp"
+#include "plots/result_plot.hpp"
+
+namespace maris::ui {
+
+PlotView::PlotView(PlotSpec spec, QWidget* parent)
+    : QWidget(parent), spec_(std::move(spec)), plot_(new QCustomPlot(this)), readout_(new QLabel(this)),
+      empty_(new QLabel(tr("No data yet: run the scenario."), this)), log_x_(spec_.log_x), log_y_(spec_.log_y) {
+  plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+  plot_->setMinimumSize(200, 150);
+  readout_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  readout_->setMinimumHeight(readout_->fontMetrics().height());
+  empty_->setAlignment(Qt::AlignCenter);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->addWidget(empty_);
+  layout->addWidget(plot_, 1);
+  layout->addWidget(readout_);
+  plot_->hide();
+  connect(plot_, &QCustomPlot::mouseMove, this, &PlotView::onMouseMove);
+  connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { resetZoom(); });
+}
+
+void PlotView::setSources(std::vector<Source> sources) {
+  sources_ = std::move(sources);
+  redraw();
+}
+
+void PlotView::redraw() {
+  std::vector<PlotSource> drawn;
+  for (const auto& s : sources_) drawn.push_back({s.label, s.results.get()});
+  tracer_ = nullptr;
+  has_data_ = !drawn.empty() && fillPlot(*plot_, drawn, spec_);
+  if (has_data_) {
+    for (auto* axis : plot_->axisRect()->axes()) axis->grid()->setSubGridVisible(false);
+    applyAxisScales();
+    tracer_ = new QCPItemTracer(plot_);
+    tracer_->setStyle(QCPItemTracer::tsCircle);
+    tracer_->setSize(8);
+    tracer_->setPen(QPen(Qt::black));
+    tracer_->setVisible(false);
+    plot_->axisRect()->setRangeDrag(Qt::Horizontal | Qt::Vertical);
+    plot_->axisRect()->setRangeZoom(Qt::Horizontal | Qt::Vertical);
+  }
+  plot_->setVisible(has_data_);
+  empty_->setVisible(!has_data_);
+  readout_->clear();
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+int PlotView::pointCount() const { return has_data_ ? primaryPointCount(*plot_, spec_) : 0; }
+
+void PlotView::applyAxisScales() {
+  QCPAxisRect* rect = plot_->axisRect();
+  auto apply = [](QCPAxis* axis, bool log) {
+    axis->setScaleType(log ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
+    if (log)
+      axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+    else
+      axis->setTicker(QSharedPointer<QCPAxisTicker>(new QCPAxisTicker));
+  };
+  apply(rect->axis(QCPAxis::atBottom), log_x_);
+  apply(rect->axis(QCPAxis::atLeft), log_y_);
+  plot_->rescaleAxes();
+}
+
+void PlotView::setLogX(bool on) {
+  log_x_ = on;
+  if (has_data_) applyAxisScales();
+  plot_->replot();
+}
+
+void PlotView::setLogY(bool on) {
+  log_y_ = on;
+  if (has_data_) applyAxisScales();
+  plot_->replot();
+}
+
+void PlotView::resetZoom() {
+  plot_->rescaleAxes();
+  plot_->replot();
+}
+
+void PlotView::exportTo(const QString& file, int width_px, int height_px) {
+  if (!has_data_ || sources_.empty()) throw std::runtime_error("the plot has no data to export");
+  if (QFileInfo(file).suffix().toLower() == QLatin1String("csv")) {
+    writePlotCsv(file.toStdString(), *sources_.front().results, spec_);
+    return;
+  }
+  if (tracer_) tracer_->setVisible(false);
+  if (!savePlotWidget(*plot_, file, width_px, height_px))
+    throw std::runtime_error("could not write " + file.toStdString() + " (use .png, .pdf, .svg or .csv)");
+}
+
+QString PlotView::readout() const { return readout_->text(); }
+
+void PlotView::onMouseMove(QMouseEvent* event) {
+  if (!has_data_ || !tracer_) return;
+  // The nearest data point on screen over all graphs.
+  QCPGraph* best = nullptr;
+  double best_key = 0.0, best_value = 0.0, best_distance = std::numeric_limits<double>::infinity();
+  const QPointF mouse = event->position();
+  for (int i = 0; i < plot_->graphCount(); ++i) {
+    QCPGraph* g = plot_->graph(i);
+    if (g->dataCount() == 0) continue;
+    const double key = g->keyAxis()->pixelToCoord(mouse.x());
+    auto it = g->data()->findBegin(key);
+    for (int step = 0; step < 2 && it != g->data()->constEnd(); ++step, ++it) {
+      const double px = g->keyAxis()->coordToPixel(it->key);
+      const double py = g->valueAxis()->coordToPixel(it->value);
+      const double d = std::hypot(px - mouse.x(), py - mouse.y());
+      if (d < best_distance) {
+        best_distance = d;
+        best = g;
+        best_key = it->key;
+        best_value = it->value;
+      }
+    }
+  }
+  const bool near = best && best_distance < 40.0;
+  tracer_->setVisible(near);
+  if (near) {
+    tracer_->setGraph(best);
+    tracer_->setGraphKey(best_key);
+    readout_->setText(QStringLiteral("%1 = %2    %3 = %4")
+                          .arg(best->keyAxis()->label())
+                          .arg(best_key, 0, 'g', 6)
+                          .arg(best->name())
+                          .arg(best_value, 0, 'g', 6));
+  }
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+}  // namespace maris::ui

@@ -1,0 +1,64 @@
+// One plot tab: a QCustomPlot drawn from a PlotSpec and one or more runs, with zoom (wheel), pan
+// (drag), double-click to fit, log-axis toggles, a hover read-out of the nearest data point, and
+// export of the picture (PNG/PDF/SVG) and of the data behind it (CSV with a units row).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <QWidget>
+
+#include "core/results.hpp"
+
+class QCustomPlot;
+class QCPItemTracer;
+class QLabel;
+class QMouseEvent;
+
+namespace maris::ui {
+
+class PlotView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit PlotView(PlotSpec spec, QWidget* parent = nullptr);
+
+  struct Source {
+    QString label;
+    std::shared_ptr<const Results> results;
+  };
+  // First source solid, the others overlaid. Keeps the results alive while shown.
+  void setSources(std::vector<Source> sources);
+
+  const PlotSpec& spec() const { return spec_; }
+  QCustomPlot* plot() const { return plot_; }
+  bool hasData() const { return has_data_; }
+  // Points drawn for the first source's y columns (what the test of "expected points" reads).
+  int pointCount() const;
+
+  void setLogX(bool on);
+  void setLogY(bool on);
+  bool logX() const { return log_x_; }
+  bool logY() const { return log_y_; }
+  void resetZoom();
+
+  // PNG/PDF/SVG by suffix, or CSV of the first source's data. Throws std::runtime_error on failure.
+  void exportTo(const QString& file, int width_px = 1200, int height_px = 800);
+  QString readout() const;
+
+ private:
+  void redraw();
+  void applyAxisScales();
+  void onMouseMove(QMouseEvent* event);
+
+  PlotSpec spec_;
+  std::vector<Source> sources_;
+  QCustomPlot* plot_;
+  QLabel* readout_;
+  QLabel* empty_;
+  QCPItemTracer* tracer_ = nullptr;
+  bool has_data_ = false;
+  bool log_x_;
+  bool log_y_;
+};
+
+}  // namespace maris::ui

@@ -1,0 +1,62 @@
+#include "run/run_history.hpp"
+
+#include <QStringList>
+
+#include "document/scenario_document.hpp"
+
+namespace maris::ui {
+
+namespace {
+
+void collectDifferences(const Json& before, const Json& after, const std::string& path, QStringList& out) {
+  if (before.is_object() && after.is_object()) {
+    for (auto it = after.begin(); it != after.end(); ++it) {
+      const std::string child = path.empty() ? it.key() : path + "." + it.key();
+      collectDifferences(before.contains(it.key()) ? before[it.key()] : Json(), it.value(), child, out);
+    }
+    return;
+  }
+  if (before == after) return;
+  QString key = QString::fromStdString(path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1));
+  key.replace('_', ' ');
+  const QString value = after.is_array() ? QObject::tr("edited") : displayValue(after);
+  out << QStringLiteral("%1 = %2").arg(key, value);
+}
+
+}  // namespace
+
+const RunRecord& RunHistory::add(RunRecord record) {
+  const RunRecord* previous = nullptr;
+  for (auto it = runs_.rbegin(); it != runs_.rend(); ++it)
+    if (it->scenario.scene == record.scenario.scene) {
+      previous = &*it;
+      break;
+    }
+  QString label = QObject::tr("run %1").arg(record.id);
+  if (previous) {
+    const QString diff = parameterDifference(previous->scenario.parameters, record.scenario.parameters);
+    if (!diff.isEmpty()) label += QStringLiteral(" (%1)").arg(diff);
+  }
+  record.label = label;
+  runs_.push_back(std::move(record));
+  while (runs_.size() > capacity_) runs_.pop_front();
+  return runs_.back();
+}
+
+const RunRecord* RunHistory::find(quint64 id) const {
+  for (const auto& r : runs_)
+    if (r.id == id) return &r;
+  return nullptr;
+}
+
+QString parameterDifference(const Json& before, const Json& after, int max_items) {
+  QStringList items;
+  collectDifferences(before, after, "", items);
+  if (items.size() > max_items) {
+    items = items.mid(0, max_items);
+    items << QStringLiteral("…");
+  }
+  return items.join(QStringLiteral(", "));
+}
+
+}  // namespace maris::ui

@@ -1,0 +1,31 @@
+// The finished runs of this session, newest last, kept so plots can overlay them (e.g. 20 vs 100
+// segments). Each run's label says what differs from the run before it of the same scene.
+#pragma once
+
+#include <deque>
+
+#include "run/run_controller.hpp"
+
+namespace maris::ui {
+
+class RunHistory {
+ public:
+  explicit RunHistory(std::size_t capacity = 8) : capacity_(capacity) {}
+
+  // Adds a run, labels it and drops the oldest beyond capacity. Returns the stored record.
+  const RunRecord& add(RunRecord record);
+  const std::deque<RunRecord>& runs() const { return runs_; }
+  const RunRecord* latest() const { return runs_.empty() ? nullptr : &runs_.back(); }
+  const RunRecord* find(quint64 id) const;
+  void clear() { runs_.clear(); }
+
+ private:
+  std::size_t capacity_;
+  std::deque<RunRecord> runs_;
+};
+
+// "segment count = 100, method = absolute" for the leaf values that differ between two
+// parameter objects (at most `max_items`, then "…").
+QString parameterDifference(const Json& before, const Json& after, int max_items = 3);
+
+}  // namespace maris::ui

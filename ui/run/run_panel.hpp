@@ -1,0 +1,40 @@
+// The run panel dock: Run / Cancel buttons (the main window's actions), a progress bar with the
+// solver's stage, elapsed and estimated remaining time, and a log of runs, warnings and errors.
+#pragma once
+
+#include <QWidget>
+
+class QAction;
+class QLabel;
+class QPlainTextEdit;
+class QProgressBar;
+
+namespace maris::ui {
+
+class RunController;
+
+class RunPanel : public QWidget {
+  Q_OBJECT
+ public:
+  RunPanel(RunController* controller, QAction* run_action, QAction* cancel_action, QWidget* parent = nullptr);
+
+  enum class Level { Info, Warning, Error };
+  void log(Level level, const QString& text);
+
+  QProgressBar* progressBar() const { return progress_; }
+  QPlainTextEdit* logView() const { return log_; }
+  QLabel* timeLabel() const { return time_; }
+
+ private:
+  void onProgress(double fraction, const QString& stage, double elapsed_s, double remaining_s);
+
+  QProgressBar* progress_;
+  QLabel* stage_;
+  QLabel* time_;
+  QPlainTextEdit* log_;
+};
+
+// "3.2 s", "2 min 05 s".
+QString formatDuration(double seconds);
+
+}  // namespace maris::ui

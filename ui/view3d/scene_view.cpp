@@ -1,0 +1,282 @@
+#include "view3d/scene_view.hpp"
+
+#include <cmath>
+
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QLabel>
+#include <QSlider>
+#include <QStyle>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <vtkActor.h>
+#include <vtkAxesActor.h>
+#include <vtkCamera.h>
+#include <vtkColorTransferFunction.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkOrientationMarkerWidget.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include "plots/result_plot.hpp"
+#include "view3d/shape_actors.hpp"
+#include "view3d/vtk_gl_widget.hpp"
+
+namespace maris::ui {
+
+SceneView::SceneView(QWidget* parent)
+    : QWidget(parent), gl_(new VtkGlWidget(this)), slider_(new QSlider(Qt::Horizontal, this)),
+      play_(new QToolButton(this)), time_(new QLabel(this)),
+      empty_(new QLabel(tr("No 3D view yet: run the scenario."), this)), timer_(new QTimer(this)),
+      colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
+      scalar_bar_(vtkSmartPointer<vtkScalarBarActor>::New()), caption_(vtkSmartPointer<vtkTextActor>::New()),
+      triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
+  vtkRenderer* renderer = gl_->renderer();
+  renderer->GradientBackgroundOn();
+  renderer->SetBackground(0.97, 0.98, 0.99);
+  renderer->SetBackground2(0.80, 0.85, 0.90);
+
+  // Cool-to-warm diverging map (Moreland 2009): readable, and equal steps look equal.
+  colors_->SetColorSpaceToDiverging();
+  scalar_bar_->SetLookupTable(colors_);
+  scalar_bar_->SetNumberOfLabels(5);
+  // Horizontal along the bottom: long titles ("bending stress [Pa]") fit there.
+  scalar_bar_->SetOrientationToHorizontal();
+  scalar_bar_->GetPositionCoordinate()->SetValue(0.32, 0.02);
+  scalar_bar_->SetWidth(0.6);
+  scalar_bar_->SetHeight(0.11);
+  scalar_bar_->SetMaximumHeightInPixels(80);
+  scalar_bar_->SetTextPositionToPrecedeScalarBar();  // labels below the bar, title above
+  scalar_bar_->UnconstrainedFontSizeOn();
+  scalar_bar_->SetTextPad(4);
+  for (vtkTextProperty* text : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
+    text->SetColor(0.1, 0.1, 0.1);
+    text->ShadowOff();
+    text->ItalicOff();
+    text->SetFontSize(13);
+  }
+  scalar_bar_->GetTitleTextProperty()->SetFontSize(14);
+  scalar_bar_->GetLabelTextProperty()->BoldOff();
+  scalar_bar_->SetLabelFormat("%-#8.3g");
+  caption_->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+  caption_->GetTextProperty()->SetFontSize(16);
+  caption_->GetTextProperty()->SetVerticalJustificationToTop();
+  caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  caption_->GetPositionCoordinate()->SetValue(0.015, 0.98);
+  renderer->AddViewProp(caption_);
+
+  auto axes = vtkSmartPointer<vtkAxesActor>::New();
+  triad_->SetOrientationMarker(axes);
+  triad_->SetInteractor(gl_->interactor());
+  triad_->SetViewport(0.0, 0.0, 0.16, 0.22);
+  triad_->SetEnabled(1);
+  triad_->InteractiveOff();
+
+  play_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+  play_->setToolTip(tr("Play / pause the animation"));
+  play_->setCheckable(true);
+  auto* reset = new QToolButton(this);
+  reset->setText(tr("Reset camera"));
+  reset->setToolTip(tr("Show the whole model from the default direction (or double-click the view)"));
+  auto* save = new QToolButton(this);
+  save->setText(tr("Export PNG…"));
+  slider_->setEnabled(false);
+  time_->setMinimumWidth(time_->fontMetrics().horizontalAdvance(QStringLiteral("t = -0000.000 s (000/000)")));
+  empty_->setAlignment(Qt::AlignCenter);
+
+  auto* controls = new QHBoxLayout;
+  controls->addWidget(play_);
+  controls->addWidget(slider_, 1);
+  controls->addWidget(time_);
+  controls->addWidget(reset);
+  controls->addWidget(save);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->addWidget(empty_);
+  layout->addWidget(gl_, 1);
+  layout->addLayout(controls);
+  gl_->hide();
+
+  timer_->setInterval(50);
+  connect(timer_, &QTimer::timeout, this, [this] {
+    if (frameCount() > 1) setFrame((frame_ + 1) % frameCount());
+  });
+  connect(play_, &QToolButton::toggled, this, &SceneView::setPlaying);
+  connect(slider_, &QSlider::valueChanged, this, &SceneView::setFrame);
+  connect(reset, &QToolButton::clicked, this, &SceneView::resetCamera);
+  connect(save, &QToolButton::clicked, this, &SceneView::exportPngInteractive);
+}
+
+SceneView::~SceneView() {
+  timer_->stop();
+  triad_->SetEnabled(0);
+}
+
+int SceneView::frameCount() const { return results_ ? static_cast<int>(results_->view.frames.size()) : 0; }
+
+void SceneView::clear() {
+  setPlaying(false);
+  results_.reset();
+  vtkRenderer* renderer = gl_->renderer();
+  for (auto& a : frame_actors_) renderer->RemoveActor(a);
+  for (auto& a : static_actors_) renderer->RemoveActor(a);
+  frame_actors_.clear();
+  static_actors_.clear();
+  renderer->RemoveViewProp(scalar_bar_);
+  camera_placed_ = false;
+  gl_->hide();
+  empty_->show();
+  slider_->setEnabled(false);
+  time_->clear();
+}
+
+void SceneView::showResults(std::shared_ptr<const Results> results) {
+  if (!results || results->view.empty()) {
+    if (!results_) clear();
+    return;
+  }
+  results_ = std::move(results);
+  empty_->hide();
+  gl_->show();
+  rebuildStatic();
+  const QSignalBlocker blocker(slider_);
+  slider_->setRange(0, frameCount() - 1);
+  slider_->setEnabled(frameCount() > 1);
+  play_->setEnabled(frameCount() > 1);
+  frame_ = std::min(frame_, frameCount() - 1);
+  slider_->setValue(frame_);
+  drawFrame();
+  if (!camera_placed_) resetCamera();
+}
+
+void SceneView::rebuildStatic() {
+  vtkRenderer* renderer = gl_->renderer();
+  for (auto& a : static_actors_) renderer->RemoveActor(a);
+  static_actors_.clear();
+  const View3D& view = results_->view;
+  const Bounds3D bounds = viewBounds(view);
+  // Thin members (a 0.5 m riser in a 1 km scene) are drawn at least 0.4 % of the scene size thick.
+  min_tube_radius_ = 0.004 * bounds.diagonal();
+  double lo = 0.0, hi = 1.0;
+  have_scalars_ = scalarRange(view, lo, hi);
+  if (hi <= lo) hi = lo + (lo == 0.0 ? 1.0 : std::abs(lo) * 1e-6);
+  colors_->RemoveAllPoints();
+  colors_->AddRGBPoint(lo, 0.230, 0.299, 0.754);
+  colors_->AddRGBPoint(hi, 0.706, 0.016, 0.150);
+  colors_->Build();
+  renderer->RemoveViewProp(scalar_bar_);
+  if (have_scalars_) {
+    scalar_bar_->SetTitle(axisLabel(view.scalar_name, view.scalar_unit).toStdString().c_str());
+    renderer->AddViewProp(scalar_bar_);
+  }
+  Bounds3D ground = bounds;
+  if (view.water_level_z) {
+    auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.28);
+    renderer->AddActor(water);
+    static_actors_.push_back(water);
+  }
+  if (view.seabed_z) {
+    auto seabed = makeHorizontalPlane(ground, *view.seabed_z, 0.25, {0.62, 0.52, 0.38}, 0.9);
+    renderer->AddActor(seabed);
+    static_actors_.push_back(seabed);
+  }
+}
+
+void SceneView::drawFrame() {
+  vtkRenderer* renderer = gl_->renderer();
+  for (auto& a : frame_actors_) renderer->RemoveActor(a);
+  frame_actors_.clear();
+  if (!results_ || frame_ < 0 || frame_ >= frameCount()) return;
+  ShapeStyle style;
+  style.colors = have_scalars_ ? colors_.Get() : nullptr;
+  style.min_tube_radius = min_tube_radius_;
+  for (const Shape3D& shape : results_->view.frames[frame_].shapes) {
+    if (auto actor = makeShapeActor(shape, style)) {
+      renderer->AddActor(actor);
+      frame_actors_.push_back(actor);
+    }
+  }
+  renderer->ResetCameraClippingRange();
+  updateTimeLabel();
+  gl_->update();
+}
+
+void SceneView::updateTimeLabel() {
+  if (!results_ || frameCount() == 0) return;
+  const double t = results_->view.frames[frame_].time;
+  const QString text = QStringLiteral("t = %1 s").arg(t, 0, 'g', 6);
+  time_->setText(frameCount() > 1 ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : text);
+  caption_->SetInput(text.toStdString().c_str());
+}
+
+void SceneView::setFrame(int index) {
+  if (!results_ || index < 0 || index >= frameCount()) return;
+  frame_ = index;
+  if (slider_->value() != index) {
+    const QSignalBlocker blocker(slider_);
+    slider_->setValue(index);
+  }
+  drawFrame();
+}
+
+void SceneView::setPlaying(bool playing) {
+  if (playing && frameCount() > 1)
+    timer_->start();
+  else
+    timer_->stop();
+  const QSignalBlocker blocker(play_);
+  play_->setChecked(timer_->isActive());
+  play_->setIcon(style()->standardIcon(timer_->isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+}
+
+bool SceneView::isPlaying() const { return timer_->isActive(); }
+
+void SceneView::resetCamera() {
+  if (!results_) return;
+  const Bounds3D bounds = viewBounds(results_->view);
+  const Eigen::Vector3d c = bounds.centre();
+  // An oblique view from the front-right and slightly above, z up.
+  const Eigen::Vector3d from = Eigen::Vector3d(0.55, -1.0, 0.35).normalized();
+  vtkCamera* camera = gl_->renderer()->GetActiveCamera();
+  camera->SetFocalPoint(c.x(), c.y(), c.z());
+  const Eigen::Vector3d eye = c + from * bounds.diagonal() * 2.0;
+  camera->SetPosition(eye.x(), eye.y(), eye.z());
+  camera->SetViewUp(0, 0, 1);
+  gl_->renderer()->ResetCamera();
+  camera->Zoom(0.92);  // a margin around the model for the caption and the colour bar
+  gl_->renderer()->ResetCameraClippingRange();
+  camera_placed_ = true;
+  gl_->update();
+}
+
+QImage SceneView::renderImage(int width_px, int height_px) { return gl_->renderImage(width_px, height_px); }
+
+void SceneView::exportPngInteractive() {
+  if (!results_) {
+    emit message(tr("Nothing to export: run the scenario first."));
+    return;
+  }
+  const QSize here = gl_->size() * gl_->devicePixelRatioF();
+  const QStringList sizes{QStringLiteral("%1 × %2 (as shown)").arg(here.width()).arg(here.height()),
+                          QStringLiteral("1920 × 1080"), QStringLiteral("2560 × 1440"), QStringLiteral("3840 × 2160")};
+  bool ok = false;
+  const QString choice = QInputDialog::getItem(this, tr("Export 3D view"), tr("Resolution"), sizes, 1, false, &ok);
+  if (!ok) return;
+  const QStringList parts = choice.section(QLatin1Char(' '), 0, 2).split(QStringLiteral(" × "));
+  const int w = parts.value(0).toInt(), h = parts.value(1).toInt();
+  const QString file = QFileDialog::getSaveFileName(this, tr("Export 3D view"), QStringLiteral("view_3d.png"),
+                                                    QStringLiteral("PNG image (*.png)"));
+  if (file.isEmpty()) return;
+  const QImage image = renderImage(w, h);
+  if (!image.isNull() && image.save(file, "PNG"))
+    emit message(tr("Exported %1 (%2 × %3)").arg(file).arg(w).arg(h));
+  else
+    emit message(tr("Could not export the 3D view to %1").arg(file));
+}
+
+}  // namespace maris::ui

@@ -1,0 +1,83 @@
+// The 3D tab: draws a run's View3D (shapes per animation frame, colour map with a colour bar,
+// still-water and sea-bed planes), an axes triad, a time slider with play/pause, reset camera and
+// PNG export at a chosen resolution. The first results reset the camera; later results (new runs,
+// live partial results) keep the user's view.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <QImage>
+#include <QWidget>
+
+#include <vtkSmartPointer.h>
+
+#include "core/results.hpp"
+
+class QLabel;
+class QSlider;
+class QTimer;
+class QToolButton;
+class vtkActor;
+class vtkColorTransferFunction;
+class vtkOrientationMarkerWidget;
+class vtkScalarBarActor;
+class vtkTextActor;
+
+namespace maris::ui {
+
+class VtkGlWidget;
+
+class SceneView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit SceneView(QWidget* parent = nullptr);
+  ~SceneView() override;
+
+  void showResults(std::shared_ptr<const Results> results);
+  void clear();
+
+  int frameCount() const;
+  int currentFrame() const { return frame_; }
+  void setFrame(int index);
+  void setPlaying(bool playing);
+  bool isPlaying() const;
+  void resetCamera();
+
+  // The current view rendered at width × height pixels.
+  QImage renderImage(int width_px, int height_px);
+  // Asks for a resolution and a file, then saves a PNG.
+  void exportPngInteractive();
+
+  VtkGlWidget* glWidget() const { return gl_; }
+  // Number of model actors in the current frame (planes, colour bar and triad not counted).
+  int modelActorCount() const { return static_cast<int>(frame_actors_.size()); }
+
+ signals:
+  void message(const QString& text);
+
+ private:
+  void rebuildStatic();
+  void drawFrame();
+  void updateTimeLabel();
+
+  VtkGlWidget* gl_;
+  QSlider* slider_;
+  QToolButton* play_;
+  QLabel* time_;
+  QLabel* empty_;
+  QTimer* timer_;
+  std::shared_ptr<const Results> results_;
+  int frame_ = 0;
+  bool camera_placed_ = false;
+  vtkSmartPointer<vtkColorTransferFunction> colors_;
+  vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
+  vtkSmartPointer<vtkTextActor> caption_;
+  vtkSmartPointer<vtkOrientationMarkerWidget> triad_;
+  std::vector<vtkSmartPointer<vtkActor>> static_actors_;
+  std::vector<vtkSmartPointer<vtkActor>> frame_actors_;
+  double min_tube_radius_ = 0.0;
+  bool have_scalars_ = false;
+};
+
+}  // namespace maris::ui
