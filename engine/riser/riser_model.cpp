@@ -85,9 +85,10 @@ Vec3 RiserModel::currentAt(double z) const {
 
 TopKinematics TopMotionSpline::at(double t) const {
   const std::size_t last = time.size() - 1;
-  if (t <= time.front()) return {value.front(), Vec3::Zero(), Vec3::Zero()};
-  if (t >= time[last]) return {value[last], Vec3::Zero(), Vec3::Zero()};
-  const std::size_t k = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), t) - time.begin()) - 1;
+  if (t < time.front()) return {value.front(), Vec3::Zero(), Vec3::Zero()};
+  if (t > time[last]) return {value[last], Vec3::Zero(), Vec3::Zero()};
+  const std::size_t above = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), t) - time.begin());
+  const std::size_t k = std::min(above, last) - 1;  // interval [t_k, t_k+1] containing t (t = t_last: the last one)
   const double h = time[k + 1] - time[k], a = (time[k + 1] - t) / h, b = (t - time[k]) / h;
   const Vec3 &m0 = curvature[k], &m1 = curvature[k + 1];
   TopKinematics out;
