@@ -27,6 +27,8 @@ RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, 
   p.position.resize(nodes);
   p.tension.assign(nodes, 0.0);
   p.bending_stress.assign(nodes, 0.0);
+  p.stress_xy.assign(nodes, 0.0);
+  p.stress_xz.assign(nodes, 0.0);
   p.torsional_stress.assign(nodes, 0.0);
   p.curvature.assign(nodes, 0.0);
   for (int k = 0; k < nodes; ++k) {
@@ -45,6 +47,8 @@ RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, 
     const Vec3& mb = ws.loads.spring_moment[k];
     const Joint& j = m.joints[k];
     p.bending_stress[k] = std::hypot(mb.y(), mb.z()) / j.bending_modulus;
+    p.stress_xy[k] = mb.z() / j.bending_modulus;
+    p.stress_xz[k] = mb.y() / j.bending_modulus;
     p.torsional_stress[k] = mb.x() / j.torsion_modulus;
     const Vec3& a = ws.loads.relative_angle[k];
     p.curvature[k] = std::hypot(a.y(), a.z()) / m.element_length;
@@ -161,6 +165,8 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     tab.add("displacement", "m", dx);
     tab.add("tension", "N", prof.tension);
     tab.add("bending_stress", "Pa", prof.bending_stress);
+    tab.add("stress_xy", "Pa", prof.stress_xy);
+    tab.add("stress_xz", "Pa", prof.stress_xz);
     tab.add("torsional_stress", "Pa", prof.torsional_stress);
     tab.add("curvature", "1/m", prof.curvature);
     r_.tables.push_back(std::move(tab));

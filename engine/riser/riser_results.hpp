@@ -20,6 +20,8 @@ struct RiserProfile {
   std::vector<Vec3> position;           // [m] node k
   std::vector<double> tension;          // [N] -F_k · t_k (node k, reaction of the joint; ends from supports)
   std::vector<double> bending_stress;   // [Pa] σ_b = √(M'_2² + M'_3²)/w_B (0 at the ends)
+  std::vector<double> stress_xy;        // [Pa] σ_xy = M'_3/w_B (bending about the segment's z' axis)
+  std::vector<double> stress_xz;        // [Pa] σ_xz = M'_2/w_B (bending about y')
   std::vector<double> torsional_stress; // [Pa] σ_t = M'_1/w_T
   std::vector<double> curvature;        // [1/m] bend angle / Δ
 };

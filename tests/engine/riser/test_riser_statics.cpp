@@ -180,3 +180,51 @@ TEST(RiserStatics, TautStringInCurrentSagsAsParabola) {
 
 }  // namespace
 }  // namespace maris::riser
+
+namespace maris::riser {
+namespace {
+
+// Reactions and stresses of a horizontal cantilever under a small tip load P: the bending moment at joint
+// k (s_k = (k − ½)Δ) is P (L − s_k) by statics of the part below, so σ_b = P (L − s_k)/w_B with
+// w_B = π(D_out⁴ − D_inn⁴)/(32 D_out); it bends in the vertical plane, so σ_b = |σ_xz| or |σ_xy| and the
+// other is zero. Tolerance 1e-6 relative: M̄ is the moment conjugate to relative Euler angles, equal to
+// the physical moment up to O(angle²) = 1e-8 at PL²/EI = 1e-4.
+TEST(RiserStatics, CantileverStressesFollowTheBendingMomentOfTheTipLoad) {
+  const int n = 10;
+  RiserParameters p = test::tipLoadedCantilever(n, 0.0);
+  const double ei = test::bendingStiffness(p), tip = 1e-4 * ei / (p.length * p.length);
+  p = test::tipLoadedCantilever(n, tip);
+  const StaticShape s = solveShape(p);
+  const double wb = kPi * (std::pow(0.1, 4) - std::pow(0.08, 4)) / (32 * 0.1);
+  for (int k = 1; k <= n; ++k) {
+    const double expected = tip * (p.length - s.profile.arc_length[k]) / wb;
+    EXPECT_NEAR(s.profile.bending_stress[k], expected, 1e-6 * expected) << "joint " << k;
+    const double in_plane = std::max(std::abs(s.profile.stress_xy[k]), std::abs(s.profile.stress_xz[k]));
+    const double out_of_plane = std::min(std::abs(s.profile.stress_xy[k]), std::abs(s.profile.stress_xz[k]));
+    EXPECT_NEAR(in_plane, expected, 1e-6 * expected);
+    EXPECT_LT(out_of_plane, 1e-9 * expected);
+  }
+}
+
+// A chain hanging straight down from a pin (free bottom, in air): the tension at joint k carries the weight
+// of everything below, w (L − s_k), and the top reaction is the whole weight wL upward (joint reactions of
+// eq 53 from the block-tridiagonal solve at rest). Round-off tolerance 1e-9 relative.
+TEST(RiserStatics, HangingChainTensionIsTheWeightBelow) {
+  RiserParameters p = test::calmInAir();
+  p.length = 50.0;
+  p.segment_count = 12;
+  p.outer_diameter = 0.05;
+  p.inner_diameter = 0.0;
+  p.torsion = false;
+  const StaticShape s = solveShape(p);
+  const double w = s.model.segments[1].weight_per_length;
+  for (int k = 1; k <= p.segment_count; ++k) {
+    const double expected = w * (p.length - s.profile.arc_length[k]);
+    EXPECT_NEAR(s.profile.tension[k], expected, 1e-9 * w * p.length) << "joint " << k;
+  }
+  EXPECT_NEAR(s.profile.tension[0], w * p.length, 1e-9 * w * p.length);
+  EXPECT_NEAR(s.profile.tension[p.segment_count + 1], 0.0, 1e-9 * w * p.length);
+}
+
+}  // namespace
+}  // namespace maris::riser
