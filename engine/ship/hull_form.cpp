@@ -30,6 +30,7 @@ HullGrid HullGrid::coarsened() const {
   c.x_aft = x_aft;
   c.dx = 2.0 * dx;
   c.dz = 2.0 * dz;
+  c.convergence_order = convergence_order;
   c.half_breadth.resize((nx() + 1) / 2, (nz() + 1) / 2);
   for (int i = 0; i < c.nx(); ++i)
     for (int j = 0; j < c.nz(); ++j) c.half_breadth(i, j) = half_breadth(2 * i, 2 * j);
@@ -68,6 +69,7 @@ HullGrid sampleHull(const HullForm& hull, int nx, int nz) {
   assert(nx >= 3 && nz >= 3 && nx % 2 == 1 && nz % 2 == 1);
   HullGrid g;
   g.half_breadth.resize(nx, nz);
+  g.convergence_order = hull.kind == HullForm::Kind::Parametric ? 2.0 : 1.0;
   if (hull.kind == HullForm::Kind::Parametric) {
     const double L = hull.length_pp;
     g.x_aft = 0.0;

@@ -3,9 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -14,27 +11,14 @@
 #include "core/resources.hpp"
 #include "ship/hull_form.hpp"
 #include "ship/hull_offsets.hpp"
+#include "shared_hulls.hpp"
 
 using namespace maris;
 using namespace maris::ship;
 
 namespace {
 
-// shared/data/hulls: MARIS_SHARED_DIR (<source>/../shared) in the main checkout; a helper work tree sits one
-// level deeper (<work>/wt/<name>), so its shared folder is <source>/../../shared.
-std::string hullsDir() {
-  for (const std::string& dir : {std::string(MARIS_SHARED_DIR), std::string(MARIS_SOURCE_DIR) + "/../../shared"})
-    if (std::filesystem::exists(dir + "/data/hulls")) return dir + "/data/hulls/";
-  ADD_FAILURE() << "shared/data/hulls not found next to " << MARIS_SOURCE_DIR;
-  return {};
-}
-
-std::string readShared(const std::string& relative) {
-  std::ifstream in(hullsDir() + relative);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string readShared(const std::string& relative) { return test_data::readSharedHullFile(relative); }
 
 nlohmann::json particularsJson(const std::string& hull) { return nlohmann::json::parse(readShared(hull + "/particulars.json")); }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fstream>
 
@@ -91,4 +92,23 @@ TEST(ShipScene, BadOffsetsFileIsNamed) {
     EXPECT_NE(all.find("hull.offsets_file"), std::string::npos) << all;
     EXPECT_NE(all.find("numerics.stations"), std::string::npos) << all;
   }
+}
+
+TEST(ShipScene, CancellationStopsTheSweep) {
+  // The cancel flag is raised at the first progress report of the Michell sweep; the run must end with
+  // RunCancelled instead of finishing the 251 speeds (the sweep polls every 1500 Kochin evaluations).
+  const BuiltinScenario* b = findBuiltin("ship_default");
+  ASSERT_NE(b, nullptr);
+  Scenario s = b->scenario;
+  applyOverride(s, "numerics.stations=129");
+  applyOverride(s, "numerics.waterlines=25");
+  std::atomic<bool> cancel{false};
+  RunContext ctx(
+      [&](double, const std::string& stage) {
+        if (stage.find("Michell") != std::string::npos) cancel = true;
+      },
+      &cancel);
+  ctx.setProgressInterval(0.0);
+  EXPECT_THROW(runScenario(requireScene("ship"), s, ctx), RunCancelled);
+  EXPECT_TRUE(cancel.load());
 }
