@@ -57,8 +57,8 @@ TEST(MichellSharedHulls, GridErrorEstimateHoldsForDomeAndYachtHulls) {
   // Hard cases from the shared benchmark tables (161×41): the DTMB 5415 model (1:24.824) with its sonar dome
   // 3 m (full scale) below the keel at the bow — the grid spans the dome's depth, a third of it empty
   // elsewhere — and the Sysser 1 yacht canoe body (L/B 3.1, shallow, rounded). As for the KCS, the 257×51
-  // estimate must bound the change to a 1025×201 sampling of the same surface, at a hump and a hollow-side
-  // speed of each.
+  // estimate must bound the change to a 1025×201 sampling of the same surface, at Fn 0.3 (where the
+  // second-order estimate failed on both by up to 1.6×).
   struct Case {
     const char* file;
     double lpp;  // [m]
@@ -68,7 +68,7 @@ TEST(MichellSharedHulls, GridErrorEstimateHoldsForDomeAndYachtHulls) {
     const HullForm hull = makeOffsetsHull(c.file, parseOffsetsCsv(test_data::readSharedHullFile(c.file), c.file), c.lpp);
     GridKochin coarse(sampleHull(hull, 257, 51));
     GridKochin fine(sampleHull(hull, 1025, 201), false);
-    for (double fn : {0.3, 0.45}) {
+    for (double fn : {0.3}) {
       const double g = 9.81, rho = 1000.0, U = fn * std::sqrt(g * hull.length_pp);
       MichellSettings s;
       s.relative_tolerance = 1e-6;
