@@ -98,6 +98,10 @@ void addRadiationScalars(const WecModel& model, Results& res, RunContext& ctx) {
     const double a = ogilvieAddedMassInfinity(mode->kernel, w, s == "heave" ? h.heave.added_mass : h.surge.added_mass);
     res.addScalar("added_mass_inf_ogilvie_ratio_" + s, a / mode->a_inf, "-",
                   "A_inf recovered by Ogilvie at 1 rad/s over the database A_inf");
+    const double a_err = s == "heave" ? model.a_inf_error_heave : model.a_inf_error_surge;
+    if (a_err > 0.0)
+      res.addScalar("added_mass_inf_error_" + s, a_err, "kg",
+                    "Error bar of the imported A_inf recovered by Ogilvie (spread over the band + half the tail term)");
   }
 }
 
