@@ -9,6 +9,8 @@
 
 #include <QApplication>
 #include <QFileInfo>
+#include <QSettings>
+#include <QTemporaryDir>
 #include <QTimer>
 
 #include "document/scenario_document.hpp"
@@ -86,6 +88,11 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName(QStringLiteral("Maris"));
   QApplication::setApplicationName(QStringLiteral("maris"));
   QApplication::setApplicationVersion(QStringLiteral(MARIS_VERSION));
+  // A screenshot shows the default layout, not the user's saved one, and leaves the user's
+  // settings (layout, recent files) untouched: settings live in a temporary folder.
+  QTemporaryDir screenshot_settings;
+  if (!options.screenshot.isEmpty() && screenshot_settings.isValid())
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, screenshot_settings.path());
 
   maris::ui::MainWindow window(maris::ui::SceneLibrary::fromEngine());
   if (!options.screenshot.isEmpty()) window.resize(options.width, options.height);

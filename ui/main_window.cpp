@@ -149,8 +149,8 @@ void MainWindow::createDocks() {
   splitDockWidget(scenarios, parameters, Qt::Vertical);
   splitDockWidget(run, results, Qt::Horizontal);
   resizeDocks({scenarios, parameters}, {220, 560}, Qt::Vertical);
-  resizeDocks({scenarios}, {400}, Qt::Horizontal);
-  resizeDocks({run}, {230}, Qt::Vertical);
+  resizeDocks({scenarios}, {440}, Qt::Horizontal);
+  resizeDocks({run}, {270}, Qt::Vertical);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (QDockWidget* d : {scenarios, parameters, run, results}) view->addAction(d->toggleViewAction());

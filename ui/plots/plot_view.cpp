@@ -73,6 +73,7 @@ void PlotView::applyAxisScales() {
   apply(rect->axis(QCPAxis::atBottom), log_x_);
   apply(rect->axis(QCPAxis::atLeft), log_y_);
   plot_->rescaleAxes();
+  moveLegendToEmptiestCorner(*plot_);
 }
 
 void PlotView::setLogX(bool on) {

@@ -1,5 +1,7 @@
 #include "plots/result_plot.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include <QDir>
@@ -60,6 +62,79 @@ void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const 
   }
 }
 
+
+// The y label of a plot of several columns: the plot's title and the columns' unit(s).
+QString severalColumnsLabel(const Table& table, const PlotSpec& spec) {
+  QStringList units;
+  for (const auto& name : spec.y) {
+    const Column* y = table.find(name);
+    const QString unit = y ? QString::fromStdString(y->unit) : QString();
+    if (!unit.isEmpty() && unit != QLatin1String("-") && !units.contains(unit)) units << unit;
+  }
+  QString label = QString::fromStdString(spec.title);
+  if (!units.isEmpty()) label += QStringLiteral("%1[%2]").arg(label.isEmpty() ? "" : " ", units.join(", "));
+  return label;
+}
+
+// Where a legend of `entries` lines hides the fewest data points: the share of all points inside
+// each corner box of the axis rect (in axis fractions, log axes in log space).
+Qt::Alignment emptiestCorner(const QCustomPlot& plot, const QCPAxisRect& rect, int entries) {
+  const QCPAxis* xa = rect.axis(QCPAxis::atBottom);
+  const QCPAxis* ya = rect.axis(QCPAxis::atLeft);
+  auto fraction = [](const QCPAxis* axis, double v) {
+    const QCPRange r = axis->range();
+    if (axis->scaleType() == QCPAxis::stLogarithmic) {
+      if (v <= 0 || r.lower <= 0) return -1.0;
+      return std::log(v / r.lower) / std::log(r.upper / r.lower);
+    }
+    return r.size() > 0 ? (v - r.lower) / r.size() : 0.5;
+  };
+  const double box_w = 0.42, box_h = std::min(0.07 * entries + 0.04, 0.7);
+  const Qt::Alignment corners[] = {Qt::AlignTop | Qt::AlignRight, Qt::AlignTop | Qt::AlignLeft,
+                                   Qt::AlignBottom | Qt::AlignRight, Qt::AlignBottom | Qt::AlignLeft};
+  int counts[4] = {0, 0, 0, 0};
+  for (int g = 0; g < plot.graphCount(); ++g) {
+    const auto data = plot.graph(g)->data();
+    const int n = data->size();
+    const int stride = std::max(1, n / 2000);  // a sample is enough to find the emptiest corner
+    for (int i = 0; i < n; i += stride) {
+      const double fx = fraction(xa, data->at(i)->key), fy = fraction(ya, data->at(i)->value);
+      const bool right = fx > 1.0 - box_w, left = fx < box_w, top = fy > 1.0 - box_h, bottom = fy < box_h;
+      counts[0] += right && top;
+      counts[1] += left && top;
+      counts[2] += right && bottom;
+      counts[3] += left && bottom;
+    }
+  }
+  return corners[std::min_element(counts, counts + 4) - counts];
+}
+
+// A legend inside the axes at their emptiest corner, or under them when its entries are too wide
+// to sit inside without covering the curves.
+void addLegend(QCustomPlot& plot, QCPAxisRect& rect) {
+  auto* legend = new QCPLegend;
+  legend->setLayer(QLatin1String("legend"));
+  const QFontMetrics metrics(legend->font());
+  int widest = 0;
+  for (int i = 0; i < plot.graphCount(); ++i)
+    widest = std::max(widest, metrics.horizontalAdvance(plot.graph(i)->name()) + legend->iconSize().width() + 24);
+  const int plot_width = plot.width() > 100 ? plot.width() : 600;
+  if (widest > 0.45 * plot_width || plot.graphCount() > 8) {
+    const int row = plot.plotLayout()->rowCount();
+    plot.plotLayout()->addElement(row, 0, legend);
+    plot.plotLayout()->setRowStretchFactor(row, 0.001);
+    legend->setMargins(QMargins(6, 2, 6, 2));
+    // Entries wider than the plot are shortened (the hover read-out names the curve too).
+    const int room = plot_width - legend->iconSize().width() - 40;
+    for (int i = 0; i < plot.graphCount(); ++i)
+      plot.graph(i)->setName(metrics.elidedText(plot.graph(i)->name(), Qt::ElideRight, room));
+  } else {
+    rect.insetLayout()->addElement(legend, emptiestCorner(plot, rect, plot.graphCount()));
+  }
+  for (int i = 0; i < plot.graphCount(); ++i) plot.graph(i)->addToLegend(legend);
+  legend->setBrush(QColor(255, 255, 255, 210));
+}
+
 }  // namespace
 
 bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec) {
@@ -88,11 +163,10 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
   QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
   x_axis->setLabel(axisLabel(x->name, x->unit));
-  const std::string y_unit = table->find(spec.y.front())->unit;
   if (spec.y.size() == 1)
-    y_axis->setLabel(axisLabel(spec.y.front(), y_unit));
+    y_axis->setLabel(axisLabel(spec.y.front(), table->find(spec.y.front())->unit));
   else
-    y_axis->setLabel(y_unit.empty() || y_unit == "-" ? QString() : QStringLiteral("[%1]").arg(QString::fromStdString(y_unit)));
+    y_axis->setLabel(severalColumnsLabel(*table, spec));
 
   const bool several = sources.size() > 1;
   for (int run = 0; run < static_cast<int>(sources.size()); ++run) {
@@ -117,15 +191,18 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   }
   if (spec.log_x) setLogScale(x_axis);
   if (spec.log_y) setLogScale(y_axis);
-  if (plot.graphCount() > 1) {
-    auto* legend = new QCPLegend;
-    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-    legend->setLayer(QLatin1String("legend"));
-    for (int i = 0; i < plot.graphCount(); ++i) plot.graph(i)->addToLegend(legend);
-    legend->setBrush(QColor(255, 255, 255, 210));
-  }
   plot.rescaleAxes();
+  if (plot.graphCount() > 1) addLegend(plot, *rect);
   return true;
+}
+
+void moveLegendToEmptiestCorner(QCustomPlot& plot) {
+  QCPAxisRect* rect = plot.axisRect();
+  if (!rect) return;
+  QCPLayoutInset* inset = rect->insetLayout();
+  for (int i = 0; i < inset->elementCount(); ++i)
+    if (auto* legend = qobject_cast<QCPLegend*>(inset->elementAt(i)))
+      inset->setInsetAlignment(i, emptiestCorner(plot, *rect, legend->itemCount()));
 }
 
 int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec) {

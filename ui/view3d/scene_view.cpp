@@ -45,13 +45,16 @@ SceneView::SceneView(QWidget* parent)
   colors_->SetColorSpaceToDiverging();
   scalar_bar_->SetLookupTable(colors_);
   scalar_bar_->SetNumberOfLabels(5);
-  // Horizontal along the bottom: long titles ("bending stress [Pa]") fit there.
-  scalar_bar_->SetOrientationToHorizontal();
-  scalar_bar_->GetPositionCoordinate()->SetValue(0.32, 0.02);
-  scalar_bar_->SetWidth(0.6);
-  scalar_bar_->SetHeight(0.11);
-  scalar_bar_->SetMaximumHeightInPixels(80);
-  scalar_bar_->SetTextPositionToPrecedeScalarBar();  // labels below the bar, title above
+  // Vertical at the right edge, labels to its left: it stays clear of sea beds and long models,
+  // which fill the lower part of the picture.
+  scalar_bar_->SetOrientationToVertical();
+  scalar_bar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  scalar_bar_->GetPositionCoordinate()->SetValue(0.80, 0.12);
+  scalar_bar_->SetWidth(0.18);
+  scalar_bar_->SetHeight(0.72);
+  scalar_bar_->SetBarRatio(0.22);
+  scalar_bar_->SetMaximumWidthInPixels(170);
+  scalar_bar_->SetTextPositionToPrecedeScalarBar();  // labels left of the bar, title above
   scalar_bar_->UnconstrainedFontSizeOn();
   scalar_bar_->SetTextPad(4);
   for (vtkTextProperty* text : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
@@ -62,7 +65,7 @@ SceneView::SceneView(QWidget* parent)
   }
   scalar_bar_->GetTitleTextProperty()->SetFontSize(14);
   scalar_bar_->GetLabelTextProperty()->BoldOff();
-  scalar_bar_->SetLabelFormat("%-#8.3g");
+  scalar_bar_->SetLabelFormat("%#.3g");
   caption_->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
   caption_->GetTextProperty()->SetFontSize(16);
   caption_->GetTextProperty()->SetVerticalJustificationToTop();
@@ -176,7 +179,7 @@ void SceneView::rebuildStatic() {
   }
   Bounds3D ground = bounds;
   if (view.water_level_z) {
-    auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.28);
+    auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.22);
     renderer->AddActor(water);
     static_actors_.push_back(water);
   }
@@ -210,8 +213,10 @@ void SceneView::updateTimeLabel() {
   if (!results_ || frameCount() == 0) return;
   const double t = results_->view.frames[frame_].time;
   const QString text = QStringLiteral("t = %1 s").arg(t, 0, 'g', 6);
-  time_->setText(frameCount() > 1 ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : text);
-  caption_->SetInput(text.toStdString().c_str());
+  // A static result (one frame) has no time worth showing.
+  const bool animated = frameCount() > 1;
+  time_->setText(animated ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : QString());
+  caption_->SetInput(animated ? text.toStdString().c_str() : "");
 }
 
 void SceneView::setFrame(int index) {
