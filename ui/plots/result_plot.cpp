@@ -9,6 +9,8 @@
 #include <QSvgGenerator>
 #include <qcustomplot.h>
 
+#include "theme.hpp"
+
 namespace maris::ui {
 
 QString axisLabel(const std::string& name, const std::string& unit) {
@@ -21,14 +23,6 @@ QString axisLabel(const std::string& name, const std::string& unit) {
 namespace {
 
 QVector<double> toQVector(const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); }
-
-// A qualitative palette readable on light and dark backgrounds.
-QColor seriesColor(int i) {
-  static const QColor colors[] = {QColor(31, 119, 180), QColor(214, 39, 40),  QColor(44, 160, 44),
-                                  QColor(255, 127, 14), QColor(148, 103, 189), QColor(140, 86, 75),
-                                  QColor(227, 119, 194), QColor(23, 190, 207)};
-  return colors[i % 8];
-}
 
 Qt::PenStyle runPenStyle(int run) {
   static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine,
@@ -54,7 +48,7 @@ void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const 
     if (several_sources) graph_name = source.label + ": " + graph_name;
     g->setName(graph_name);
     const int color_index = spec.y.size() == 1 ? run : series;
-    QPen pen(seriesColor(color_index), run == 0 ? 1.8 : 1.4);
+    QPen pen(seriesColor(color_index, plot.palette()), run == 0 ? 1.8 : 1.4);
     pen.setStyle(spec.y.size() == 1 ? Qt::SolidLine : runPenStyle(run));
     g->setPen(pen);
     g->setData(toQVector(x.values), toQVector(y->values), true);
@@ -113,7 +107,6 @@ Qt::Alignment emptiestCorner(const QCustomPlot& plot, const QCPAxisRect& rect, i
 // to sit inside without covering the curves.
 void addLegend(QCustomPlot& plot, QCPAxisRect& rect) {
   auto* legend = new QCPLegend;
-  legend->setLayer(QLatin1String("legend"));
   const QFontMetrics metrics(legend->font());
   int widest = 0;
   for (int i = 0; i < plot.graphCount(); ++i)
@@ -131,8 +124,12 @@ void addLegend(QCustomPlot& plot, QCPAxisRect& rect) {
   } else {
     rect.insetLayout()->addElement(legend, emptiestCorner(plot, rect, plot.graphCount()));
   }
+  legend->setLayer(QLatin1String("legend"));
   for (int i = 0; i < plot.graphCount(); ++i) plot.graph(i)->addToLegend(legend);
-  legend->setBrush(QColor(255, 255, 255, 210));
+  const DrawingColors colors = drawingColors(plot.palette());
+  legend->setBrush(colors.legend_background);
+  legend->setBorderPen(QPen(colors.foreground, 0.8));
+  legend->setTextColor(colors.foreground);
 }
 
 }  // namespace
@@ -184,8 +181,8 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
       QCPGraph* g = plot.addGraph(x_axis, y_axis);
       g->setName(QString::fromStdString(ref->title.empty() ? ref->name : ref->title) + ": " + axisLabel(ry->name, ""));
       g->setLineStyle(QCPGraph::lsNone);
-      g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.2),
-                                         QBrush(seriesColor(3 + markers++)), 7));
+      g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(drawingColors(plot.palette()).foreground, 1.2),
+                                         QBrush(seriesColor(3 + markers++, plot.palette())), 7));
       g->setData(toQVector(rx->values), toQVector(ry->values));
     }
   }
@@ -193,7 +190,27 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   if (spec.log_y) setLogScale(y_axis);
   plot.rescaleAxes();
   if (plot.graphCount() > 1) addLegend(plot, *rect);
+  applyPlotColors(plot);
   return true;
+}
+
+void applyPlotColors(QCustomPlot& plot) {
+  const DrawingColors c = drawingColors(plot.palette());
+  plot.setBackground(c.background);
+  for (int e = 0; e < plot.plotLayout()->elementCount(); ++e)
+    if (auto* title = qobject_cast<QCPTextElement*>(plot.plotLayout()->elementAt(e))) title->setTextColor(c.foreground);
+  for (QCPAxisRect* rect : plot.axisRects()) {
+    rect->setBackground(c.background);
+    for (QCPAxis* axis : rect->axes()) {
+      axis->setBasePen(QPen(c.foreground, 1));
+      axis->setTickPen(QPen(c.foreground, 1));
+      axis->setSubTickPen(QPen(c.foreground, 1));
+      axis->setTickLabelColor(c.foreground);
+      axis->setLabelColor(c.foreground);
+      axis->grid()->setPen(QPen(c.grid, 1, Qt::DotLine));
+      axis->grid()->setZeroLinePen(QPen(c.grid, 1));
+    }
+  }
 }
 
 void moveLegendToEmptiestCorner(QCustomPlot& plot) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QInputDialog>
@@ -24,6 +25,7 @@
 #include <vtkTextProperty.h>
 
 #include "plots/result_plot.hpp"
+#include "theme.hpp"
 #include "view3d/shape_actors.hpp"
 #include "view3d/vtk_gl_widget.hpp"
 
@@ -38,27 +40,24 @@ SceneView::SceneView(QWidget* parent)
       triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
   vtkRenderer* renderer = gl_->renderer();
   renderer->GradientBackgroundOn();
-  renderer->SetBackground(0.97, 0.98, 0.99);
-  renderer->SetBackground2(0.80, 0.85, 0.90);
 
   // Cool-to-warm diverging map (Moreland 2009): readable, and equal steps look equal.
   colors_->SetColorSpaceToDiverging();
   scalar_bar_->SetLookupTable(colors_);
   scalar_bar_->SetNumberOfLabels(5);
-  // Vertical at the right edge, labels to its left: it stays clear of sea beds and long models,
-  // which fill the lower part of the picture.
+  // Vertical at the right edge, labels to its right: it stays clear of sea beds and long
+  // models, which fill the lower part of the picture.
   scalar_bar_->SetOrientationToVertical();
   scalar_bar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  scalar_bar_->GetPositionCoordinate()->SetValue(0.80, 0.12);
-  scalar_bar_->SetWidth(0.18);
+  scalar_bar_->GetPositionCoordinate()->SetValue(0.84, 0.12);
+  scalar_bar_->SetWidth(0.15);
   scalar_bar_->SetHeight(0.72);
-  scalar_bar_->SetBarRatio(0.22);
-  scalar_bar_->SetMaximumWidthInPixels(170);
-  scalar_bar_->SetTextPositionToPrecedeScalarBar();  // labels left of the bar, title above
+  scalar_bar_->SetBarRatio(0.25);
+  scalar_bar_->SetMaximumWidthInPixels(150);
+  scalar_bar_->SetTextPositionToSucceedScalarBar();
   scalar_bar_->UnconstrainedFontSizeOn();
   scalar_bar_->SetTextPad(4);
   for (vtkTextProperty* text : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
-    text->SetColor(0.1, 0.1, 0.1);
     text->ShadowOff();
     text->ItalicOff();
     text->SetFontSize(13);
@@ -66,7 +65,6 @@ SceneView::SceneView(QWidget* parent)
   scalar_bar_->GetTitleTextProperty()->SetFontSize(14);
   scalar_bar_->GetLabelTextProperty()->BoldOff();
   scalar_bar_->SetLabelFormat("%#.3g");
-  caption_->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
   caption_->GetTextProperty()->SetFontSize(16);
   caption_->GetTextProperty()->SetVerticalJustificationToTop();
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
@@ -113,6 +111,25 @@ SceneView::SceneView(QWidget* parent)
   connect(slider_, &QSlider::valueChanged, this, &SceneView::setFrame);
   connect(reset, &QToolButton::clicked, this, &SceneView::resetCamera);
   connect(save, &QToolButton::clicked, this, &SceneView::exportPngInteractive);
+  applyPaletteColors();
+}
+
+void SceneView::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::PaletteChange) applyPaletteColors();
+}
+
+void SceneView::applyPaletteColors() {
+  const DrawingColors c = drawingColors(palette());
+  vtkRenderer* renderer = gl_->renderer();
+  renderer->SetBackground(c.view_bottom.redF(), c.view_bottom.greenF(), c.view_bottom.blueF());
+  renderer->SetBackground2(c.view_top.redF(), c.view_top.greenF(), c.view_top.blueF());
+  // Text on a light background is near-black, on a dark one the palette's text colour.
+  const QColor text = isDark(palette()) ? c.foreground : QColor::fromRgbF(0.1f, 0.1f, 0.1f);
+  for (vtkTextProperty* p : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty(),
+                             caption_->GetTextProperty()})
+    p->SetColor(text.redF(), text.greenF(), text.blueF());
+  gl_->update();
 }
 
 SceneView::~SceneView() {
