@@ -104,6 +104,25 @@ class View3dTest : public QObject {
     QVERIFY(lower.red > lower.blue);
   }
 
+  // A scene "in air" puts its water 10 km below a 100 m model: the far planes are left out and the
+  // camera frames the model, which must still fill the middle of the picture.
+  void farWaterPlanesDoNotShrinkTheModel() {
+    SceneView view;
+    view.resize(400, 400);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    Results r = test::verticalTubeResults(100.0, 1.5);
+    r.view.water_level_z = -10000.0;
+    r.view.seabed_z = -10001.0;
+    view.showResults(std::make_shared<Results>(r));
+    QTest::qWait(50);
+    const QImage image = view.glWidget()->grabFramebuffer();
+    const int w = image.width(), h = image.height();
+    const double middle = test::saturatedFraction(image, QRect(w * 2 / 5, h / 10, w / 5, h * 6 / 10));
+    qInfo("saturated pixels in the middle: %.3f", middle);
+    QVERIFY(middle > 0.02);
+  }
+
   // The dark theme darkens the 3D background (both gradient ends) and lightens its text.
   void backgroundFollowsTheTheme() {
     SceneView view;

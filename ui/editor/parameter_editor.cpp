@@ -205,7 +205,10 @@ void ParameterEditor::refreshValue(const std::string& path) {
   const Json value = document_->value(path);
   if (auto* line = qobject_cast<QLineEdit*>(row.editor)) {
     const QString text = fieldText(value, row.spec->kind);
-    if (line->text() != text) line->setText(text);
+    if (line->text() != text) {
+      line->setText(text);
+      line->setCursorPosition(0);  // long values show their first digits, not their last
+    }
   } else if (auto* box = qobject_cast<QCheckBox*>(row.editor)) {
     const QSignalBlocker blocker(box);
     box->setChecked(value.is_boolean() && value.get<bool>());

@@ -31,6 +31,18 @@
 
 namespace maris::ui {
 
+namespace {
+
+// A water or sea-bed plane more than one model size away from the model is not drawn: a scene
+// "in air" may put its water level kilometres below, which would shrink the model to a dot.
+bool nearModel(double z, const Bounds3D& model) {
+  if (model.empty()) return true;
+  const double reach = model.diagonal();
+  return z >= model.b[4] - reach && z <= model.b[5] + reach;
+}
+
+}  // namespace
+
 SceneView::SceneView(QWidget* parent)
     : QWidget(parent), gl_(new VtkGlWidget(this)), slider_(new QSlider(Qt::Horizontal, this)),
       play_(new QToolButton(this)), time_(new QLabel(this)),
@@ -49,7 +61,7 @@ SceneView::SceneView(QWidget* parent)
   // models, which fill the lower part of the picture.
   scalar_bar_->SetOrientationToVertical();
   scalar_bar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  scalar_bar_->GetPositionCoordinate()->SetValue(0.84, 0.12);
+  scalar_bar_->GetPositionCoordinate()->SetValue(0.80, 0.12);
   scalar_bar_->SetWidth(0.15);
   scalar_bar_->SetHeight(0.72);
   scalar_bar_->SetBarRatio(0.25);
@@ -195,12 +207,12 @@ void SceneView::rebuildStatic() {
     renderer->AddViewProp(scalar_bar_);
   }
   Bounds3D ground = bounds;
-  if (view.water_level_z) {
+  if (view.water_level_z && nearModel(*view.water_level_z, bounds)) {
     auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.22);
     renderer->AddActor(water);
     static_actors_.push_back(water);
   }
-  if (view.seabed_z) {
+  if (view.seabed_z && nearModel(*view.seabed_z, bounds)) {
     auto seabed = makeHorizontalPlane(ground, *view.seabed_z, 0.25, {0.62, 0.52, 0.38}, 0.9);
     renderer->AddActor(seabed);
     static_actors_.push_back(seabed);
@@ -260,7 +272,11 @@ bool SceneView::isPlaying() const { return timer_->isActive(); }
 
 void SceneView::resetCamera() {
   if (!results_) return;
-  const Bounds3D bounds = viewBounds(results_->view);
+  Bounds3D bounds = viewBounds(results_->view);
+  // The still-water and sea-bed planes belong in the picture when they are drawn.
+  const Bounds3D model = bounds;
+  for (const auto& z : {results_->view.water_level_z, results_->view.seabed_z})
+    if (z && nearModel(*z, model)) bounds.add(Eigen::Vector3d(model.centre().x(), model.centre().y(), *z));
   const Eigen::Vector3d c = bounds.centre();
   // An oblique view from the front-right and slightly above, z up.
   const Eigen::Vector3d from = Eigen::Vector3d(0.55, -1.0, 0.35).normalized();
@@ -269,8 +285,11 @@ void SceneView::resetCamera() {
   const Eigen::Vector3d eye = c + from * bounds.diagonal() * 2.0;
   camera->SetPosition(eye.x(), eye.y(), eye.z());
   camera->SetViewUp(0, 0, 1);
-  gl_->renderer()->ResetCamera();
-  camera->Zoom(0.92);  // a margin around the model for the caption and the colour bar
+  gl_->renderer()->ResetCamera(bounds.b.data());
+  // A margin around the model for the caption; with a colour bar (the right ~18 % of the view)
+  // the model moves left and shrinks a little so that the bar does not cover it.
+  camera->SetWindowCenter(have_scalars_ ? 0.14 : 0.0, 0.0);
+  camera->Zoom(have_scalars_ ? 0.85 : 0.92);
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
   gl_->update();
