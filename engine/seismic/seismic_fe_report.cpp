@@ -44,15 +44,13 @@ std::vector<double> fourierAmplitude(const std::vector<double>& a, double dt, st
   return out;
 }
 
-struct Ratios {
-  std::vector<double> ux, uy, vx, vy, ax, ay;  // R per station
-};
+}  // namespace
 
-Ratios amplification(const FeCase& c) {
+PeakRatios amplificationRatios(const FeCase& c) {
   const double dt = c.time_step;
   const auto v0 = rate(c.incident, dt), a0 = rate(v0, dt);
   const double ru = 2.0 * peak(c.incident), rv = 2.0 * peak(v0), ra = 2.0 * peak(a0);
-  Ratios r;
+  PeakRatios r;
   for (std::size_t s = 0; s < c.ux.size(); ++s) {
     const auto vx = rate(c.ux[s], dt), vy = rate(c.uy[s], dt);
     r.ux.push_back(peak(c.ux[s]) / ru);
@@ -64,8 +62,6 @@ Ratios amplification(const FeCase& c) {
   }
   return r;
 }
-
-}  // namespace
 
 void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry, const std::vector<FeCase>& sweep,
                   Results& results) {
@@ -79,7 +75,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   results.stats.method = "explicit central difference, lumped mass, dt = " + std::to_string(dt) + " s";
 
   // Amplification along the reef flat (paper eq 29).
-  const Ratios r = amplification(c);
+  const PeakRatios r = amplificationRatios(c);
   Table amp{"amplification", reef ? "Peak ratios along the reef flat" : "Peak ratios along the seabed", {}};
   amp.add("x", "m", c.station_x);
   std::vector<double> x_over_l;
@@ -98,7 +94,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   std::vector<std::string> amp_y{"R_ax", "R_ay", "R_vx", "R_vy"};
   if (dry) {
     // Seawater deviation δ = (R_sloping platform − R_reef–seawater)/R_reef–seawater (paper eq 31).
-    const Ratios d = amplification(*dry);
+    const PeakRatios d = amplificationRatios(*dry);
     std::vector<double> dx, dy;
     for (std::size_t s = 0; s < r.ax.size(); ++s) {
       dx.push_back((d.ax[s] - r.ax[s]) / r.ax[s]);
@@ -203,7 +199,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
     for (const auto& k : sweep) all.push_back(&k);
     std::sort(all.begin(), all.end(), [](auto* a, auto* b) { return a->angle_deg < b->angle_deg; });
     for (const FeCase* k : all) {
-      const Ratios q = amplification(*k);
+      const PeakRatios q = amplificationRatios(*k);
       ang.push_back(k->angle_deg);
       mx.push_back(peak(q.ax));
       my.push_back(peak(q.ay));
@@ -239,6 +235,20 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
     if (c.water) results.view.water_level_z = p.water_depth;
     results.view.seabed_z = 0.0;
   }
+}
+
+void addDiscretisationEstimate(const FeCase& main, const FeCase& coarse, Results& results) {
+  const PeakRatios fine = amplificationRatios(main), rough = amplificationRatios(coarse);
+  const double change_x = std::abs(peak(rough.ax) / peak(fine.ax) - 1.0);
+  const double change_y = std::abs(peak(rough.ay) / peak(fine.ay) - 1.0);
+  results.addScalar("coarse_element_size", coarse.element_size, "m", "Cell side of the error-estimate companion mesh");
+  results.addScalar("mesh_change_max_R_ax", change_x, "-",
+                    "Relative change of the largest R_a,x on the flat, main vs companion mesh");
+  results.addScalar("mesh_change_max_R_ay", change_y, "-",
+                    "Relative change of the largest R_a,y on the flat, main vs companion mesh");
+  results.stats.error_estimate = std::max(change_x, change_y);
+  results.stats.error_unit = "relative change of the largest R_a on the flat between Δ = " +
+                             std::to_string(main.element_size) + " m and " + std::to_string(coarse.element_size) + " m";
 }
 
 }  // namespace maris::seismic

@@ -18,6 +18,7 @@ struct Job {
   double angle_deg;
   bool water;
   bool snapshots;
+  double cutoff_frequency;  // [Hz] sets the mesh (the error-estimate companion uses half the scene's)
   FeCase result;
   std::atomic<double> progress{0.0};
   std::atomic<bool> done{false};
@@ -32,17 +33,21 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
 
   // Independent FE runs.
   std::vector<std::unique_ptr<Job>> jobs;
-  auto add = [&](double angle, bool water, bool snapshots) {
+  auto add = [&](double angle, bool water, bool snapshots, double cutoff) {
     auto j = std::make_unique<Job>();
     j->angle_deg = angle;
     j->water = water;
     j->snapshots = snapshots;
+    j->cutoff_frequency = cutoff;
     jobs.push_back(std::move(j));
   };
-  add(p.angle_deg, p.include_water, true);
-  const bool compare = p.model == "reef" && p.include_water && p.compare_without_water;
-  if (compare) add(p.angle_deg, false, false);
-  for (double a : p.sweep_angles_deg) add(a, p.include_water, false);
+  add(p.angle_deg, p.include_water, true, p.cutoff_frequency);
+  // Discretisation-error companion: the main case on a mesh about twice as coarse (1/8 of the work).
+  const bool reef = p.model == "reef";
+  if (reef) add(p.angle_deg, p.include_water, false, 0.5 * p.cutoff_frequency);
+  const bool compare = reef && p.include_water && p.compare_without_water;
+  if (compare) add(p.angle_deg, false, false, p.cutoff_frequency);
+  for (double a : p.sweep_angles_deg) add(a, p.include_water, false, p.cutoff_frequency);
 
   // Each worker has its own RunContext whose cancel flag the calling thread raises on request.
   std::atomic<bool> cancel{false};
@@ -54,7 +59,9 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
       Job& job = *jobs[k];
       RunContext local([&job](double f, const std::string&) { job.progress = f; }, &cancel);
       try {
-        job.result = runFeCase(p, job.angle_deg, job.water, job.snapshots, local);
+        SeismicParameters q = p;
+        q.cutoff_frequency = job.cutoff_frequency;
+        job.result = runFeCase(q, job.angle_deg, job.water, job.snapshots, local);
       } catch (...) {
         std::lock_guard lock(error_mutex);
         if (!first_error) first_error = std::current_exception();
@@ -83,9 +90,11 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
   if (first_error) std::rethrow_exception(first_error);
   ctx.throwIfCancelled();
 
+  const std::size_t dry_job = reef ? 2 : 1, first_sweep = dry_job + (compare ? 1 : 0);
   std::vector<FeCase> sweep;
-  for (std::size_t k = compare ? 2 : 1; k < jobs.size(); ++k) sweep.push_back(std::move(jobs[k]->result));
-  addFeResults(p, jobs[0]->result, compare ? &jobs[1]->result : nullptr, sweep, results);
+  for (std::size_t k = first_sweep; k < jobs.size(); ++k) sweep.push_back(std::move(jobs[k]->result));
+  addFeResults(p, jobs[0]->result, compare ? &jobs[dry_job]->result : nullptr, sweep, results);
+  if (reef) addDiscretisationEstimate(jobs[0]->result, jobs[1]->result, results);
   ctx.progress(1.0, "done");
   return results;
 }
