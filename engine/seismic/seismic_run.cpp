@@ -95,6 +95,7 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
   for (std::size_t k = first_sweep; k < jobs.size(); ++k) sweep.push_back(std::move(jobs[k]->result));
   addFeResults(p, jobs[0]->result, compare ? &jobs[dry_job]->result : nullptr, sweep, results);
   if (reef) addDiscretisationEstimate(jobs[0]->result, jobs[1]->result, results);
+  if (reef && p.mode_count > 0) addModalResults(p, results, ctx);
   ctx.progress(1.0, "done");
   return results;
 }

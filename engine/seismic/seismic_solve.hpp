@@ -66,6 +66,10 @@ void addFeResults(const SeismicParameters& p, const FeCase& main, const FeCase* 
 // main mesh's. Written to SolverStats and as scalars.
 void addDiscretisationEstimate(const FeCase& main, const FeCase& coarse, Results& results);
 
+// Lowest natural modes of the solid reef + seabed on the scene's mesh (modes.count, modes.base): a
+// "modes" table and the global-mode scalars. Throws SolverError, RunCancelled.
+void addModalResults(const SeismicParameters& p, Results& results, RunContext& ctx);
+
 // The whole run: free field, then the finite-element model(s) and their post-processing.
 Results solveSeismic(const SeismicParameters& p, RunContext& ctx);
 
