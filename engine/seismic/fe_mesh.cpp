@@ -38,7 +38,7 @@ int layerAt(const SeismicParameters& p, double y) {
 
 }  // namespace
 
-FeMesh buildMesh(const SeismicParameters& p, bool with_water) {
+FeMesh buildMesh(const SeismicParameters& p, bool with_water, bool coarse_companion) {
   SeismicParameters q = p;
   q.include_water = with_water;
   const ModelExtent box = modelExtent(q);
@@ -72,6 +72,17 @@ FeMesh buildMesh(const SeismicParameters& p, bool with_water) {
       n_align = n;
       break;
     }
+  if (coarse_companion) {
+    // About twice as coarse, aligned if a grid between 1/3 and 1/2 of the cells allows it.
+    const int half = std::max(1, n_align / 2);
+    int n_coarse = half;
+    for (int n = half; n >= std::max(1, n_align / 3); --n)
+      if (aligned(n)) {
+        n_coarse = n;
+        break;
+      }
+    n_align = n_coarse;
+  }
   m.layers_aligned = aligned(n_align);
   m.delta = align / n_align;
   const int n_below = std::max(2, static_cast<int>(std::lround(box.seabed_depth / m.delta)));

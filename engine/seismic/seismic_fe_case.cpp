@@ -21,10 +21,11 @@ int topSolidNode(const FeModel& model, int i) {
 
 }  // namespace
 
-FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx) {
+FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx,
+                 bool coarse_companion) {
   SeismicParameters q = p;
   q.include_water = water;
-  const FeModel model = buildFeModel(buildMesh(q, water));
+  const FeModel model = buildFeModel(buildMesh(q, water, coarse_companion));
   const FeMesh& m = model.mesh;
   const FreeField field(seabedMaterial(q), waterLayer(q), waveType(q), angle_deg * std::numbers::pi / 180.0);
 

@@ -190,11 +190,8 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   // Angle sweep (main angle included).
   if (!sweep.empty()) {
     Table s{"angle_sweep", "Reef-flat amplification against incidence angle", {}};
-    auto& ang = s.add("angle", "deg").values;
-    auto& mx = s.add("max_R_ax", "-").values;
-    auto& my = s.add("max_R_ay", "-").values;
-    auto& ax = s.add("mean_R_ax", "-").values;
-    auto& ay = s.add("mean_R_ay", "-").values;
+    // Columns are filled first and added last: Table::add may reallocate, so no references are kept.
+    std::vector<double> ang, mx, my, ax, ay, ux, uy;
     std::vector<const FeCase*> all{&c};
     for (const auto& k : sweep) all.push_back(&k);
     std::sort(all.begin(), all.end(), [](auto* a, auto* b) { return a->angle_deg < b->angle_deg; });
@@ -205,7 +202,16 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
       my.push_back(peak(q.ay));
       ax.push_back(mean(q.ax));
       ay.push_back(mean(q.ay));
+      ux.push_back(peak(q.ux));
+      uy.push_back(peak(q.uy));
     }
+    s.add("angle", "deg", ang);
+    s.add("max_R_ax", "-", mx);
+    s.add("max_R_ay", "-", my);
+    s.add("mean_R_ax", "-", ax);
+    s.add("mean_R_ay", "-", ay);
+    s.add("max_R_ux", "-", ux);
+    s.add("max_R_uy", "-", uy);
     results.tables.push_back(std::move(s));
     results.plots.push_back({"angle_sweep", "Amplification vs incidence angle", "angle_sweep", "angle",
                              {"max_R_ax", "max_R_ay", "mean_R_ax", "mean_R_ay"}, false, false, "", {}});

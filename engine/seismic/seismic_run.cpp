@@ -18,7 +18,7 @@ struct Job {
   double angle_deg;
   bool water;
   bool snapshots;
-  double cutoff_frequency;  // [Hz] sets the mesh (the error-estimate companion uses half the scene's)
+  bool coarse_companion;  // on the mesh about twice as coarse (discretisation-error estimate)
   FeCase result;
   std::atomic<double> progress{0.0};
   std::atomic<bool> done{false};
@@ -33,21 +33,21 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
 
   // Independent FE runs.
   std::vector<std::unique_ptr<Job>> jobs;
-  auto add = [&](double angle, bool water, bool snapshots, double cutoff) {
+  auto add = [&](double angle, bool water, bool snapshots, bool coarse) {
     auto j = std::make_unique<Job>();
     j->angle_deg = angle;
     j->water = water;
     j->snapshots = snapshots;
-    j->cutoff_frequency = cutoff;
+    j->coarse_companion = coarse;
     jobs.push_back(std::move(j));
   };
-  add(p.angle_deg, p.include_water, true, p.cutoff_frequency);
+  add(p.angle_deg, p.include_water, true, false);
   // Discretisation-error companion: the main case on a mesh about twice as coarse (1/8 of the work).
   const bool reef = p.model == "reef";
-  if (reef) add(p.angle_deg, p.include_water, false, 0.5 * p.cutoff_frequency);
+  if (reef) add(p.angle_deg, p.include_water, false, true);
   const bool compare = reef && p.include_water && p.compare_without_water;
-  if (compare) add(p.angle_deg, false, false, p.cutoff_frequency);
-  for (double a : p.sweep_angles_deg) add(a, p.include_water, false, p.cutoff_frequency);
+  if (compare) add(p.angle_deg, false, false, false);
+  for (double a : p.sweep_angles_deg) add(a, p.include_water, false, false);
 
   // Each worker has its own RunContext whose cancel flag the calling thread raises on request.
   std::atomic<bool> cancel{false};
@@ -59,9 +59,7 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
       Job& job = *jobs[k];
       RunContext local([&job](double f, const std::string&) { job.progress = f; }, &cancel);
       try {
-        SeismicParameters q = p;
-        q.cutoff_frequency = job.cutoff_frequency;
-        job.result = runFeCase(q, job.angle_deg, job.water, job.snapshots, local);
+        job.result = runFeCase(p, job.angle_deg, job.water, job.snapshots, local, job.coarse_companion);
       } catch (...) {
         std::lock_guard lock(error_mutex);
         if (!first_error) first_error = std::current_exception();

@@ -46,7 +46,9 @@ struct FeCase {
 };
 
 // Runs one case (throws SolverError, RunCancelled, InputError).
-FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx);
+// `coarse_companion`: on the mesh about twice as coarse used for the discretisation-error estimate.
+FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx,
+                 bool coarse_companion = false);
 
 // Peak ratios along the stations (paper eq 29): peak |u|, |v|, |a| over twice the incident peak (the
 // surface of a homogeneous half-space under the same wave at vertical incidence); v and a by central

@@ -4,6 +4,8 @@
 
 #include "catalog.hpp"
 #include "core/errors.hpp"
+#include "core/results.hpp"
+#include "core/run_context.hpp"
 
 namespace maris {
 namespace {
@@ -38,6 +40,39 @@ TEST(SeismicScene, TooFineMeshIsAFieldError) {
   const auto errors = validateParameters(requireScene("seismic"), s.parameters);
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].path, "parameters.solver.cutoff_frequency");
+}
+
+}  // namespace
+}  // namespace maris
+
+namespace maris {
+namespace {
+
+TEST(SeismicScene, SweepAndTransferTablesAreFilled) {
+  // Regression: columns were filled through references that a later Table::add invalidated, leaving
+  // the angle-sweep and free-field transfer tables empty. A small, coarse reef sweep (f_cut 0.8 Hz).
+  auto s = findBuiltin("seismic_default")->scenario;
+  auto& prm = s.parameters;
+  prm["model"]["compare_without_water"] = false;
+  prm["incidence"]["sweep_angles_deg"] = nlohmann::json::array({15.0});
+  prm["input"]["ricker_peak_frequency"] = 0.3;
+  prm["solver"]["cutoff_frequency"] = 0.8;
+  prm["solver"]["duration"] = 3.0;
+  prm["output"]["snapshot_count"] = 0;
+  prm["modes"]["count"] = 2;
+  const auto& scene = requireScene("seismic");
+  ASSERT_TRUE(validateParameters(scene, prm).empty());
+  RunContext ctx;
+  const Results r = scene.run(prm, ctx);
+  auto rows = [&](const std::string& name) {
+    for (const auto& t : r.tables)
+      if (t.name == name) return t.rows();
+    return std::size_t{0};
+  };
+  EXPECT_EQ(rows("angle_sweep"), 2u);
+  EXPECT_EQ(rows("free_field_transfer"), 400u);
+  EXPECT_EQ(rows("modes"), 2u);
+  EXPECT_GT(r.stats.error_estimate, 0.0);  // the coarse-companion estimate is present
 }
 
 }  // namespace
