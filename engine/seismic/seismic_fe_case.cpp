@@ -67,7 +67,7 @@ FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool 
   const double arrival = arrivalAtOrigin(q, field);
   const auto incident = incidentFunction(q, arrival);
   ctx.progress(0.0, "free field on the boundary");
-  BoundaryDrive drive(model, field, incident, out.time_step, out.steps);
+  BoundaryDrive drive(model, field, incident, out.time_step, out.steps, &ctx);
   const FeRunResult run = runExplicit(model, &drive, FeState::zero(m.nodeCount()), settings, ctx);
 
   for (int k = 0; k < p.station_count; ++k) {

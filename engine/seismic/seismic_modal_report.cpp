@@ -2,6 +2,7 @@
 // scene's own mesh, with the diagnostics that tell a global mode (large effective mass) from a partial
 // mode of the upper layers (motion concentrated in layer 1).
 #include <algorithm>
+#include <string>
 
 #include "seismic/fe_mesh.hpp"
 #include "seismic/fe_modes.hpp"
@@ -10,7 +11,14 @@
 namespace maris::seismic {
 
 void addModalResults(const SeismicParameters& p, Results& results, RunContext& ctx) {
-  const FeModel model = buildFeModel(buildMesh(p, p.include_water));
+  FeModel model = buildFeModel(buildMesh(p, p.include_water));
+  // The sparse factorisation of a very fine mesh needs gigabytes: use the coarse companion mesh then.
+  constexpr std::size_t kMaxModalCells = 150000;
+  if (model.solid_cells.size() > kMaxModalCells) {
+    model = buildFeModel(buildMesh(p, p.include_water, true));
+    ctx.warn("modal analysis on the coarse mesh (Δ = " + std::to_string(model.mesh.delta) + " m): the main mesh has over " +
+             std::to_string(kMaxModalCells) + " solid cells");
+  }
   const ModalResult r = computeSolidModes(model, p.mode_count, p.modal_base == "fixed", ctx);
   if (r.modes.empty()) return;
 

@@ -1,5 +1,9 @@
 // The seismic scene through the catalog: built-in scenarios validate, bad input is a field error,
 // the default scenario runs and reports the free-field checks.
+#include <atomic>
+#include <chrono>
+#include <thread>
+
 #include <gtest/gtest.h>
 
 #include "catalog.hpp"
@@ -73,6 +77,34 @@ TEST(SeismicScene, SweepAndTransferTablesAreFilled) {
   EXPECT_EQ(rows("free_field_transfer"), 400u);
   EXPECT_EQ(rows("modes"), 2u);
   EXPECT_GT(r.stats.error_estimate, 0.0);  // the coarse-companion estimate is present
+}
+
+}  // namespace
+}  // namespace maris
+
+namespace maris {
+namespace {
+
+TEST(SeismicScene, CancellationStopsTheRunDuringTheTimeStepping) {
+  // A cancel request 100 ms into the default scenario (seconds of FE work on three threads) must end
+  // the run with RunCancelled before the stage after the FE runs (modal analysis) starts: the
+  // workers check the flag every step. No wall-time bound (the test machine is shared).
+  const auto& scene = requireScene("seismic");
+  const auto prm = findBuiltin("seismic_default")->scenario.parameters;
+  std::atomic<bool> cancel{false};
+  std::atomic<bool> reached_modes{false};
+  RunContext ctx(
+      [&](double, const std::string& stage) {
+        if (stage.rfind("modal", 0) == 0) reached_modes = true;
+      },
+      &cancel);
+  std::thread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    cancel = true;
+  });
+  EXPECT_THROW(scene.run(prm, ctx), RunCancelled);
+  stopper.join();
+  EXPECT_FALSE(reached_modes);
 }
 
 }  // namespace
