@@ -161,6 +161,40 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   results.plots.push_back({"spectral_ratio", "Acceleration spectral ratios", "spectral_ratio", "frequency",
                            {"Hax_left", "Hax_centre", "Hax_right", "Hay_centre"}, false, false, "", {}});
 
+  // H_a along the flat: per station the largest ratio and its frequency, over the band where the input
+  // spectrum exceeds 5 % of its peak (outside it the ratio divides by almost nothing).
+  {
+    std::vector<double> xl, hx_max, hx_f, hy_max, hy_f;
+    for (std::size_t st = 0; st < c.ux.size(); ++st) {
+      const auto sx = fourierAmplitude(rate(rate(c.ux[st], dt), dt), dt, n_fft);
+      const auto sy = fourierAmplitude(rate(rate(c.uy[st], dt), dt), dt, n_fft);
+      double bx = 0.0, fx = 0.0, by = 0.0, fy = 0.0;
+      for (std::size_t k = 1; k < a0.size(); ++k) {
+        const double f = k / (n_fft * dt);
+        if (f > p.cutoff_frequency) break;
+        if (a0[k] < 0.05 * a0_max) continue;
+        if (sx[k] / (2.0 * a0[k]) > bx) bx = sx[k] / (2.0 * a0[k]), fx = f;
+        if (sy[k] / (2.0 * a0[k]) > by) by = sy[k] / (2.0 * a0[k]), fy = f;
+      }
+      xl.push_back(c.station_x[st] / (reef ? p.flat_width : 1.0));
+      hx_max.push_back(bx);
+      hx_f.push_back(fx);
+      hy_max.push_back(by);
+      hy_f.push_back(fy);
+    }
+    Table along{"spectral_ratio_along_flat", "Largest H_a per station and its frequency", {}};
+    along.add("x_over_L", "-", xl);
+    along.add("Hax_max", "-", hx_max);
+    along.add("Hax_peak_frequency", "Hz", hx_f);
+    along.add("Hay_max", "-", hy_max);
+    along.add("Hay_peak_frequency", "Hz", hy_f);
+    results.addScalar("max_H_ax", peak(hx_max), "-", "Largest horizontal spectral ratio H_a,x along the flat");
+    results.addScalar("max_H_ay", peak(hy_max), "-", "Largest vertical spectral ratio H_a,y along the flat");
+    results.tables.push_back(std::move(along));
+    results.plots.push_back({"spectral_ratio_along_flat", "Largest spectral ratio along the flat",
+                             "spectral_ratio_along_flat", "x_over_L", {"Hax_max", "Hay_max"}, false, false, "", {}});
+  }
+
   // Box: FE against the analytic free field at B (seabed) and A (water surface).
   if (!c.probe_fe_uy.empty()) {
     Table v{"verification", "FE vs analytic free field at B (seabed) and A (water surface)", {}};
