@@ -9,6 +9,8 @@
 
 #include <QApplication>
 #include <QFileInfo>
+#include <QSettings>
+#include <QTemporaryDir>
 #include <QTimer>
 
 #include "document/scenario_document.hpp"
@@ -19,7 +21,7 @@ namespace {
 
 const char* kHelp =
     "usage: maris [SCENARIO]\n"
-    "       maris --screenshot FILE [--scenario SCENARIO] [--size WxH]\n"
+    "       maris --screenshot FILE [--scenario SCENARIO] [--size WxH] [--theme light|dark]\n"
     "\n"
     "The Maris desktop application: pick a scenario, edit its parameters, run it, and see the\n"
     "results as plots and in 3D.\n"
@@ -29,11 +31,13 @@ const char* kHelp =
     "                         save a PNG of the main window with its results, and exit\n"
     "                         (exit code 0 on success, 3 if the run failed, 1 on other errors)\n"
     "  --size WxH             window size for --screenshot (default 1600x1000)\n"
+    "  --theme NAME           light, dark or system (the platform's palette); remembered\n"
     "  --help                 this text\n";
 
 struct Options {
   QString scenario;
   QString screenshot;
+  QString theme;
   int width = 1600, height = 1000;
 };
 
@@ -49,6 +53,10 @@ bool parse(int argc, char** argv, Options& options) {
       if (!next(options.screenshot)) return false;
     } else if (arg == "--scenario") {
       if (!next(options.scenario)) return false;
+    } else if (arg == "--theme") {
+      QString theme;
+      if (!next(theme) || (theme != "light" && theme != "dark" && theme != "system")) return false;
+      options.theme = theme;
     } else if (arg == "--size") {
       QString size;
       if (!next(size) || std::sscanf(size.toLatin1().constData(), "%dx%d", &options.width, &options.height) != 2)
@@ -86,8 +94,14 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName(QStringLiteral("Maris"));
   QApplication::setApplicationName(QStringLiteral("maris"));
   QApplication::setApplicationVersion(QStringLiteral(MARIS_VERSION));
+  // A screenshot shows the default layout, not the user's saved one, and leaves the user's
+  // settings (layout, recent files) untouched: settings live in a temporary folder.
+  QTemporaryDir screenshot_settings;
+  if (!options.screenshot.isEmpty() && screenshot_settings.isValid())
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, screenshot_settings.path());
 
   maris::ui::MainWindow window(maris::ui::SceneLibrary::fromEngine());
+  if (!options.theme.isEmpty()) window.setTheme(maris::ui::themeFromKey(options.theme));
   if (!options.screenshot.isEmpty()) window.resize(options.width, options.height);
   window.show();
   if (!openScenario(window, options.scenario)) {

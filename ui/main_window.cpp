@@ -1,6 +1,7 @@
 #include "main_window.hpp"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -153,13 +154,25 @@ void MainWindow::createDocks() {
   splitDockWidget(scenarios, parameters, Qt::Vertical);
   splitDockWidget(run, results, Qt::Horizontal);
   resizeDocks({scenarios, parameters}, {220, 560}, Qt::Vertical);
-  resizeDocks({scenarios}, {400}, Qt::Horizontal);
-  resizeDocks({run}, {230}, Qt::Vertical);
+  resizeDocks({scenarios}, {440}, Qt::Horizontal);
+  resizeDocks({run}, {270}, Qt::Vertical);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (QDockWidget* d : {scenarios, parameters, run, results}) view->addAction(d->toggleViewAction());
   view->addSeparator();
   view->addAction(tr("Reset 3D &Camera"), this, [this] { view_->resetCamera(); });
+  view->addSeparator();
+  theme_menu_ = view->addMenu(tr("&Theme"));
+  auto* themes = new QActionGroup(this);
+  const std::pair<Theme, QString> choices[] = {
+      {Theme::System, tr("&System")}, {Theme::Light, tr("&Light")}, {Theme::Dark, tr("&Dark")}};
+  for (const auto& [theme, title] : choices) {
+    QAction* a = theme_menu_->addAction(title, this, [this, theme = theme] { setTheme(theme); });
+    a->setCheckable(true);
+    a->setData(themeKey(theme));
+    a->setChecked(theme == theme_);
+    themes->addAction(a);
+  }
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Maris"), this, [this] {
     QMessageBox::about(this, tr("About Maris"),
@@ -177,6 +190,8 @@ void MainWindow::restoreSettings() {
   if (settings.contains(QStringLiteral("window/splitter")))
     central_->restoreState(settings.value(QStringLiteral("window/splitter")).toByteArray());
   recent_files_ = settings.value(QStringLiteral("recentFiles")).toStringList();
+  const Theme saved = themeFromKey(settings.value(QStringLiteral("theme")).toString());
+  if (saved != Theme::System) setTheme(saved);
   browser_->setRecentFiles(recent_files_);
 }
 
@@ -186,6 +201,13 @@ void MainWindow::saveSettings() const {
   settings.setValue(QStringLiteral("window/state"), saveState());
   settings.setValue(QStringLiteral("window/splitter"), central_->saveState());
   settings.setValue(QStringLiteral("recentFiles"), recent_files_);
+}
+
+void MainWindow::setTheme(Theme theme) {
+  theme_ = theme;
+  applyTheme(theme);
+  for (QAction* a : theme_menu_->actions()) a->setChecked(a->data().toString() == themeKey(theme));
+  QSettings().setValue(QStringLiteral("theme"), themeKey(theme));
 }
 
 void MainWindow::addRecentFile(const QString& path) {

@@ -13,8 +13,10 @@
 #include <QMessageBox>
 
 #include "run/run_history.hpp"
+#include "theme.hpp"
 
 class QAction;
+class QMenu;
 class QLabel;
 class QSplitter;
 
@@ -48,6 +50,10 @@ class MainWindow : public QMainWindow {
 
   bool startRun();
   void cancelRun();
+
+  // Light, dark or the platform's palette for the whole application; kept in QSettings.
+  void setTheme(Theme theme);
+  Theme theme() const { return theme_; }
 
   // How the window asks before discarding unsaved edits (tests replace the dialog).
   using UnsavedPrompt = std::function<QMessageBox::StandardButton()>;
@@ -108,6 +114,8 @@ class MainWindow : public QMainWindow {
   QStringList recent_files_;
   UnsavedPrompt unsaved_prompt_;
   QElapsedTimer partial_view_clock_;
+  Theme theme_ = Theme::System;
+  QMenu* theme_menu_ = nullptr;
 
   ScenarioBrowser* browser_ = nullptr;
   ParameterEditor* editor_ = nullptr;

@@ -174,6 +174,8 @@ void MainWindow::restoreShownRun() {
 void MainWindow::onRunFinished(const RunRecord& finished) {
   const RunRecord& record = history_.add(finished);
   showRecord(record);
+  // A finished run opens on its final state (the end of the time history, the last load step).
+  if (!view_->isPlaying()) view_->setFrame(view_->frameCount() - 1);
   for (const auto& w : record.results->warnings) run_panel_->log(RunPanel::Level::Warning, QString::fromStdString(w));
   run_panel_->log(RunPanel::Level::Info,
                   tr("Finished %1 in %2").arg(record.label, formatDuration(record.wall_time_s)));

@@ -5,7 +5,8 @@
 namespace maris::seismic {
 
 BoundaryDrive::BoundaryDrive(const FeModel& model, const FreeField& field,
-                             const std::function<double(double)>& incident, double dt, long steps)
+                             const std::function<double(double)>& incident, double dt, long steps,
+                             const RunContext* ctx)
     : model_(model), dt_(dt), p_(field.horizontalSlowness()) {
   const FeMesh& m = model.mesh;
   // Row histories must cover t − p·x for every node: from −|p|·W/2 to T + |p|·W/2.
@@ -27,6 +28,7 @@ BoundaryDrive::BoundaryDrive(const FeModel& model, const FreeField& field,
   solid_rows_.resize(m.ny + 1);
   water_rows_.resize(m.ny + 1);
   for (int j = 0; j <= m.ny; ++j) {
+    if (ctx) ctx->throwIfCancelled();
     const double y = m.nodeY(j);
     if (row_solid[j]) {
       solid_rows_[j] = synthesis.solid(std::min(y, 0.0));

@@ -11,6 +11,7 @@
 #include <functional>
 #include <vector>
 
+#include "core/run_context.hpp"
 #include "seismic/fe_model.hpp"
 #include "seismic/free_field_synthesis.hpp"
 
@@ -19,9 +20,10 @@ namespace maris::seismic {
 class BoundaryDrive {
  public:
   // `incident(t)`: incident displacement at the origin [m] at time t [s]; the FE clock starts at 0 and
-  // runs `steps` steps of `dt`. Histories are synthesised once here.
+  // runs `steps` steps of `dt`. Histories are synthesised once here (one per grid row); with a
+  // context, cancellation is checked per row (throws RunCancelled).
   BoundaryDrive(const FeModel& model, const FreeField& field, const std::function<double(double)>& incident,
-                double dt, long steps);
+                double dt, long steps, const RunContext* ctx = nullptr);
 
   // Adds the equivalent nodal forces at step n (time n·dt) into per-node arrays (b nodes only).
   void addForces(long step, std::vector<double>& fx, std::vector<double>& fy, std::vector<double>& fphi);

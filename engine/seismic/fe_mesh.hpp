@@ -27,6 +27,7 @@ struct FeMesh {
   std::vector<ElasticMaterial> solids;   // 0 = seabed, 1.. = reef layers from the top down
   WaterLayer water;                      // depth = y of the water surface; 0 = no water
   double reef_height = 0.0;              // [m] top of the reef flat above y = 0 (0: box)
+  bool layers_aligned = true;            // every reef-layer interface lies on a grid line
   bool periodic_x = false;               // true: the last cell column connects to node column 0 and there are
                                          // no lateral boundaries (1D column tests); node column nx is unused
 
@@ -42,9 +43,11 @@ struct FeMesh {
 };
 
 // Builds the grid for the scene's parameters: Δ = v_min/(10 f_cut) (paper eq 28), shrunk so that the
-// water depth (or the reef height without water) is a whole number of cells; H_s and the width are
-// rounded to whole cells. `with_water` false removes the water (the paper's sloping platform).
-FeMesh buildMesh(const SeismicParameters& p, bool with_water);
+// water depth (or the reef height without water) is a whole number of cells, and further (by ≤ 25 % or 6 cells)
+// when that also puts every layer interface on a grid line; H_s and the width are rounded to whole cells. `with_water` false removes the water (the paper's sloping platform).
+// `coarse_companion`: a grid about twice as coarse (for the discretisation-error estimate), aligned
+// to the layers when a grid with 1/3 to 1/2 of the cells per direction allows it.
+FeMesh buildMesh(const SeismicParameters& p, bool with_water, bool coarse_companion = false);
 
 // Half-width [m] of the reef at height y ∈ [0, reef_height] (layers stacked horizontally, each with
 // its own flank slope); negative outside that range.

@@ -9,19 +9,6 @@ namespace maris::seismic {
 
 namespace {
 
-// Corner nodes of cell c in counter-clockwise order.
-inline void cellNodes(const FeMesh& m, int c, int (&n)[4]) {
-  const int i = c % m.nx, j = c / m.nx;
-  n[0] = j * (m.nx + 1) + i;
-  n[1] = n[0] + 1;
-  n[2] = n[0] + m.nx + 2;
-  n[3] = n[0] + m.nx + 1;
-  if (m.periodic_x && i == m.nx - 1) {
-    n[1] -= m.nx;
-    n[2] -= m.nx;
-  }
-}
-
 // 2×2 Gauss integration of the bilinear square: K_λ = ∫Bᵀ m mᵀ B, K_μ = ∫Bᵀ diag(2,2,1) B,
 // K_φ = ∫∇N·∇N. All three are independent of the side Δ in 2D.
 void squareElementMatrices(double delta, ElementMatrix8& k_lambda, ElementMatrix8& k_mu, Eigen::Matrix4d& k_scalar) {

@@ -53,6 +53,20 @@ inline constexpr double kAlphaTangential = 0.5;
 
 FeModel buildFeModel(const FeMesh& mesh);
 
+// Corner nodes of cell c, counter-clockwise from the lower left (the periodic column wraps its last
+// cell column onto node column 0).
+inline void cellNodes(const FeMesh& m, int c, int (&n)[4]) {
+  const int i = c % m.nx, j = c / m.nx;
+  n[0] = j * (m.nx + 1) + i;
+  n[1] = n[0] + 1;
+  n[2] = n[0] + m.nx + 2;
+  n[3] = n[0] + m.nx + 1;
+  if (m.periodic_x && i == m.nx - 1) {
+    n[1] -= m.nx;
+    n[2] -= m.nx;
+  }
+}
+
 // Internal force contributions −K u of the listed solid cells, added into (fx, fy); −K_f φ of water
 // cells into fphi. Arrays are per node.
 void addSolidInternalForces(const FeModel& model, const std::vector<int>& cells, const std::vector<double>& ux,

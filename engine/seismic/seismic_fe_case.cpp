@@ -21,10 +21,11 @@ int topSolidNode(const FeModel& model, int i) {
 
 }  // namespace
 
-FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx) {
+FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx,
+                 bool coarse_companion) {
   SeismicParameters q = p;
   q.include_water = water;
-  const FeModel model = buildFeModel(buildMesh(q, water));
+  const FeModel model = buildFeModel(buildMesh(q, water, coarse_companion));
   const FeMesh& m = model.mesh;
   const FreeField field(seabedMaterial(q), waterLayer(q), waveType(q), angle_deg * std::numbers::pi / 180.0);
 
@@ -66,7 +67,7 @@ FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool 
   const double arrival = arrivalAtOrigin(q, field);
   const auto incident = incidentFunction(q, arrival);
   ctx.progress(0.0, "free field on the boundary");
-  BoundaryDrive drive(model, field, incident, out.time_step, out.steps);
+  BoundaryDrive drive(model, field, incident, out.time_step, out.steps, &ctx);
   const FeRunResult run = runExplicit(model, &drive, FeState::zero(m.nodeCount()), settings, ctx);
 
   for (int k = 0; k < p.station_count; ++k) {

@@ -44,15 +44,13 @@ std::vector<double> fourierAmplitude(const std::vector<double>& a, double dt, st
   return out;
 }
 
-struct Ratios {
-  std::vector<double> ux, uy, vx, vy, ax, ay;  // R per station
-};
+}  // namespace
 
-Ratios amplification(const FeCase& c) {
+PeakRatios amplificationRatios(const FeCase& c) {
   const double dt = c.time_step;
   const auto v0 = rate(c.incident, dt), a0 = rate(v0, dt);
   const double ru = 2.0 * peak(c.incident), rv = 2.0 * peak(v0), ra = 2.0 * peak(a0);
-  Ratios r;
+  PeakRatios r;
   for (std::size_t s = 0; s < c.ux.size(); ++s) {
     const auto vx = rate(c.ux[s], dt), vy = rate(c.uy[s], dt);
     r.ux.push_back(peak(c.ux[s]) / ru);
@@ -64,8 +62,6 @@ Ratios amplification(const FeCase& c) {
   }
   return r;
 }
-
-}  // namespace
 
 void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry, const std::vector<FeCase>& sweep,
                   Results& results) {
@@ -79,7 +75,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   results.stats.method = "explicit central difference, lumped mass, dt = " + std::to_string(dt) + " s";
 
   // Amplification along the reef flat (paper eq 29).
-  const Ratios r = amplification(c);
+  const PeakRatios r = amplificationRatios(c);
   Table amp{"amplification", reef ? "Peak ratios along the reef flat" : "Peak ratios along the seabed", {}};
   amp.add("x", "m", c.station_x);
   std::vector<double> x_over_l;
@@ -98,7 +94,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   std::vector<std::string> amp_y{"R_ax", "R_ay", "R_vx", "R_vy"};
   if (dry) {
     // Seawater deviation δ = (R_sloping platform − R_reef–seawater)/R_reef–seawater (paper eq 31).
-    const Ratios d = amplification(*dry);
+    const PeakRatios d = amplificationRatios(*dry);
     std::vector<double> dx, dy;
     for (std::size_t s = 0; s < r.ax.size(); ++s) {
       dx.push_back((d.ax[s] - r.ax[s]) / r.ax[s]);
@@ -165,6 +161,40 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   results.plots.push_back({"spectral_ratio", "Acceleration spectral ratios", "spectral_ratio", "frequency",
                            {"Hax_left", "Hax_centre", "Hax_right", "Hay_centre"}, false, false, "", {}});
 
+  // H_a along the flat: per station the largest ratio and its frequency, over the band where the input
+  // spectrum exceeds 5 % of its peak (outside it the ratio divides by almost nothing).
+  {
+    std::vector<double> xl, hx_max, hx_f, hy_max, hy_f;
+    for (std::size_t st = 0; st < c.ux.size(); ++st) {
+      const auto sx = fourierAmplitude(rate(rate(c.ux[st], dt), dt), dt, n_fft);
+      const auto sy = fourierAmplitude(rate(rate(c.uy[st], dt), dt), dt, n_fft);
+      double bx = 0.0, fx = 0.0, by = 0.0, fy = 0.0;
+      for (std::size_t k = 1; k < a0.size(); ++k) {
+        const double f = k / (n_fft * dt);
+        if (f > p.cutoff_frequency) break;
+        if (a0[k] < 0.05 * a0_max) continue;
+        if (sx[k] / (2.0 * a0[k]) > bx) bx = sx[k] / (2.0 * a0[k]), fx = f;
+        if (sy[k] / (2.0 * a0[k]) > by) by = sy[k] / (2.0 * a0[k]), fy = f;
+      }
+      xl.push_back(c.station_x[st] / (reef ? p.flat_width : 1.0));
+      hx_max.push_back(bx);
+      hx_f.push_back(fx);
+      hy_max.push_back(by);
+      hy_f.push_back(fy);
+    }
+    Table along{"spectral_ratio_along_flat", "Largest H_a per station and its frequency", {}};
+    along.add("x_over_L", "-", xl);
+    along.add("Hax_max", "-", hx_max);
+    along.add("Hax_peak_frequency", "Hz", hx_f);
+    along.add("Hay_max", "-", hy_max);
+    along.add("Hay_peak_frequency", "Hz", hy_f);
+    results.addScalar("max_H_ax", peak(hx_max), "-", "Largest horizontal spectral ratio H_a,x along the flat");
+    results.addScalar("max_H_ay", peak(hy_max), "-", "Largest vertical spectral ratio H_a,y along the flat");
+    results.tables.push_back(std::move(along));
+    results.plots.push_back({"spectral_ratio_along_flat", "Largest spectral ratio along the flat",
+                             "spectral_ratio_along_flat", "x_over_L", {"Hax_max", "Hay_max"}, false, false, "", {}});
+  }
+
   // Box: FE against the analytic free field at B (seabed) and A (water surface).
   if (!c.probe_fe_uy.empty()) {
     Table v{"verification", "FE vs analytic free field at B (seabed) and A (water surface)", {}};
@@ -194,22 +224,28 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   // Angle sweep (main angle included).
   if (!sweep.empty()) {
     Table s{"angle_sweep", "Reef-flat amplification against incidence angle", {}};
-    auto& ang = s.add("angle", "deg").values;
-    auto& mx = s.add("max_R_ax", "-").values;
-    auto& my = s.add("max_R_ay", "-").values;
-    auto& ax = s.add("mean_R_ax", "-").values;
-    auto& ay = s.add("mean_R_ay", "-").values;
+    // Columns are filled first and added last: Table::add may reallocate, so no references are kept.
+    std::vector<double> ang, mx, my, ax, ay, ux, uy;
     std::vector<const FeCase*> all{&c};
     for (const auto& k : sweep) all.push_back(&k);
     std::sort(all.begin(), all.end(), [](auto* a, auto* b) { return a->angle_deg < b->angle_deg; });
     for (const FeCase* k : all) {
-      const Ratios q = amplification(*k);
+      const PeakRatios q = amplificationRatios(*k);
       ang.push_back(k->angle_deg);
       mx.push_back(peak(q.ax));
       my.push_back(peak(q.ay));
       ax.push_back(mean(q.ax));
       ay.push_back(mean(q.ay));
+      ux.push_back(peak(q.ux));
+      uy.push_back(peak(q.uy));
     }
+    s.add("angle", "deg", ang);
+    s.add("max_R_ax", "-", mx);
+    s.add("max_R_ay", "-", my);
+    s.add("mean_R_ax", "-", ax);
+    s.add("mean_R_ay", "-", ay);
+    s.add("max_R_ux", "-", ux);
+    s.add("max_R_uy", "-", uy);
     results.tables.push_back(std::move(s));
     results.plots.push_back({"angle_sweep", "Amplification vs incidence angle", "angle_sweep", "angle",
                              {"max_R_ax", "max_R_ay", "mean_R_ax", "mean_R_ay"}, false, false, "", {}});
@@ -239,6 +275,20 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
     if (c.water) results.view.water_level_z = p.water_depth;
     results.view.seabed_z = 0.0;
   }
+}
+
+void addDiscretisationEstimate(const FeCase& main, const FeCase& coarse, Results& results) {
+  const PeakRatios fine = amplificationRatios(main), rough = amplificationRatios(coarse);
+  const double change_x = std::abs(peak(rough.ax) / peak(fine.ax) - 1.0);
+  const double change_y = std::abs(peak(rough.ay) / peak(fine.ay) - 1.0);
+  results.addScalar("coarse_element_size", coarse.element_size, "m", "Cell side of the error-estimate companion mesh");
+  results.addScalar("mesh_change_max_R_ax", change_x, "-",
+                    "Relative change of the largest R_a,x on the flat, main vs companion mesh");
+  results.addScalar("mesh_change_max_R_ay", change_y, "-",
+                    "Relative change of the largest R_a,y on the flat, main vs companion mesh");
+  results.stats.error_estimate = std::max(change_x, change_y);
+  results.stats.error_unit = "relative change of the largest R_a on the flat between Δ = " +
+                             std::to_string(main.element_size) + " m and " + std::to_string(coarse.element_size) + " m";
 }
 
 }  // namespace maris::seismic

@@ -61,10 +61,7 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
 
   // Transfer functions per unit incident displacement, 0–2 f_cut.
   Table transfer{"free_field_transfer", "Free-field amplitude per unit incident displacement", {}};
-  auto& f_col = transfer.add("frequency", "Hz").values;
-  auto& bx = transfer.add("seabed_ux", "m/m").values;
-  auto& by = transfer.add("seabed_uy", "m/m").values;
-  auto& ay = transfer.add("surface_uy", "m/m").values;
+  std::vector<double> f_col, bx, by, ay;  // added to the table at the end (Table::add may reallocate)
   double worst_energy = 0.0;
   const int count = 400;
   for (int i = 1; i <= count; ++i) {
@@ -78,6 +75,10 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
     ay.push_back(h > 0.0 ? std::abs(field.waterAt(a, w, 0.0, h).uy) : std::abs(b.uy));
     worst_energy = std::max(worst_energy, std::abs(field.energyResidual(a)));
   }
+  transfer.add("frequency", "Hz", f_col);
+  transfer.add("seabed_ux", "m/m", bx);
+  transfer.add("seabed_uy", "m/m", by);
+  transfer.add("surface_uy", "m/m", ay);
   results.addScalar("free_field_energy_residual", worst_energy, "-",
                     "Largest |reflected/incident energy flux − 1| over the transfer-function frequencies");
   results.tables.push_back(std::move(transfer));

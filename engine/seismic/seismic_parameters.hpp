@@ -62,6 +62,10 @@ struct SeismicParameters {
   double courant_fraction = 0.8;  // [-] time step / stable step; > 1 is refused
   int snapshot_count = 16;        // [-] wave-field frames in the 3D view
   int station_count = 41;         // [-] stations along the reef flat
+
+  // Modal analysis of the solid reef + seabed (water not included), reef model only
+  int mode_count = 10;              // [-] lowest modes reported; 0 skips the analysis
+  std::string modal_base = "fixed"; // "fixed": bottom clamped, or "springs": boundary springs only
 };
 
 SchemaBinder<SeismicParameters> seismicBinder();

@@ -18,6 +18,7 @@ struct Job {
   double angle_deg;
   bool water;
   bool snapshots;
+  bool coarse_companion;  // on the mesh about twice as coarse (discretisation-error estimate)
   FeCase result;
   std::atomic<double> progress{0.0};
   std::atomic<bool> done{false};
@@ -32,17 +33,21 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
 
   // Independent FE runs.
   std::vector<std::unique_ptr<Job>> jobs;
-  auto add = [&](double angle, bool water, bool snapshots) {
+  auto add = [&](double angle, bool water, bool snapshots, bool coarse) {
     auto j = std::make_unique<Job>();
     j->angle_deg = angle;
     j->water = water;
     j->snapshots = snapshots;
+    j->coarse_companion = coarse;
     jobs.push_back(std::move(j));
   };
-  add(p.angle_deg, p.include_water, true);
-  const bool compare = p.model == "reef" && p.include_water && p.compare_without_water;
-  if (compare) add(p.angle_deg, false, false);
-  for (double a : p.sweep_angles_deg) add(a, p.include_water, false);
+  add(p.angle_deg, p.include_water, true, false);
+  // Discretisation-error companion: the main case on a mesh about twice as coarse (1/8 of the work).
+  const bool reef = p.model == "reef";
+  if (reef) add(p.angle_deg, p.include_water, false, true);
+  const bool compare = reef && p.include_water && p.compare_without_water;
+  if (compare) add(p.angle_deg, false, false, false);
+  for (double a : p.sweep_angles_deg) add(a, p.include_water, false, false);
 
   // Each worker has its own RunContext whose cancel flag the calling thread raises on request.
   std::atomic<bool> cancel{false};
@@ -54,7 +59,7 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
       Job& job = *jobs[k];
       RunContext local([&job](double f, const std::string&) { job.progress = f; }, &cancel);
       try {
-        job.result = runFeCase(p, job.angle_deg, job.water, job.snapshots, local);
+        job.result = runFeCase(p, job.angle_deg, job.water, job.snapshots, local, job.coarse_companion);
       } catch (...) {
         std::lock_guard lock(error_mutex);
         if (!first_error) first_error = std::current_exception();
@@ -83,9 +88,12 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
   if (first_error) std::rethrow_exception(first_error);
   ctx.throwIfCancelled();
 
+  const std::size_t dry_job = reef ? 2 : 1, first_sweep = dry_job + (compare ? 1 : 0);
   std::vector<FeCase> sweep;
-  for (std::size_t k = compare ? 2 : 1; k < jobs.size(); ++k) sweep.push_back(std::move(jobs[k]->result));
-  addFeResults(p, jobs[0]->result, compare ? &jobs[1]->result : nullptr, sweep, results);
+  for (std::size_t k = first_sweep; k < jobs.size(); ++k) sweep.push_back(std::move(jobs[k]->result));
+  addFeResults(p, jobs[0]->result, compare ? &jobs[dry_job]->result : nullptr, sweep, results);
+  if (reef) addDiscretisationEstimate(jobs[0]->result, jobs[1]->result, results);
+  if (reef && p.mode_count > 0) addModalResults(p, results, ctx);
   ctx.progress(1.0, "done");
   return results;
 }

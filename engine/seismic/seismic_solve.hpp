@@ -46,11 +46,31 @@ struct FeCase {
 };
 
 // Runs one case (throws SolverError, RunCancelled, InputError).
-FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx);
+// `coarse_companion`: on the mesh about twice as coarse used for the discretisation-error estimate.
+FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx,
+                 bool coarse_companion = false);
+
+// Peak ratios along the stations (paper eq 29): peak |u|, |v|, |a| over twice the incident peak (the
+// surface of a homogeneous half-space under the same wave at vertical incidence); v and a by central
+// differences of the histories.
+struct PeakRatios {
+  std::vector<double> ux, uy, vx, vy, ax, ay;  // [-] per station
+};
+PeakRatios amplificationRatios(const FeCase& c);
 
 // Amplification, spectral ratios, histories, the water's effect, snapshots and the angle sweep.
 void addFeResults(const SeismicParameters& p, const FeCase& main, const FeCase* dry, const std::vector<FeCase>& sweep,
                   Results& results);
+
+// Discretisation-error estimate of the reef amplification: the relative change of the largest R_a
+// (x and y) along the flat between the main mesh and a companion about twice as coarse. For a
+// first-order error (the staircase flanks) this bounds the coarse mesh's error and over-estimates the
+// main mesh's. Written to SolverStats and as scalars.
+void addDiscretisationEstimate(const FeCase& main, const FeCase& coarse, Results& results);
+
+// Lowest natural modes of the solid reef + seabed on the scene's mesh (modes.count, modes.base): a
+// "modes" table and the global-mode scalars. Throws SolverError, RunCancelled.
+void addModalResults(const SeismicParameters& p, Results& results, RunContext& ctx);
 
 // The whole run: free field, then the finite-element model(s) and their post-processing.
 Results solveSeismic(const SeismicParameters& p, RunContext& ctx);

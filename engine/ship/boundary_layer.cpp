@@ -111,12 +111,17 @@ BoundaryLayerProfile solveBoundaryLayer(const std::vector<double>& s, const std:
   }
   for (std::size_t k = 0; k < n; ++k) p.displacement_thickness[k] = p.shape_factor[k] * p.momentum_thickness[k];
   // Separated: δ* continues along the separating streamline's direction (slope at separation, limited).
+  // The separation point is interpolated to H = 2.4 inside its interval, so that δ* downstream varies
+  // continuously with speed instead of jumping when separation passes a node.
   if (p.separation_index > 0) {
     const std::size_t k0 = static_cast<std::size_t>(p.separation_index);
-    const double slope = std::clamp((p.displacement_thickness[k0] - p.displacement_thickness[k0 - 1]) / (s[k0] - s[k0 - 1]),
-                                    0.0, kMaxWakeSlope);
-    for (std::size_t k = k0 + 1; k < n; ++k) {
-      p.displacement_thickness[k] = p.displacement_thickness[k0] + slope * (s[k] - s[k0]);
+    const double h0 = p.shape_factor[k0 - 1], h1 = p.shape_factor[k0];
+    const double t = h1 > h0 ? std::clamp((kSeparationShapeFactor - h0) / (h1 - h0), 0.0, 1.0) : 1.0;
+    const double d0 = p.displacement_thickness[k0 - 1], d1 = p.displacement_thickness[k0];
+    const double s_sep = s[k0 - 1] + t * (s[k0] - s[k0 - 1]), d_sep = d0 + t * (d1 - d0);
+    const double slope = std::clamp((d1 - d0) / (s[k0] - s[k0 - 1]), 0.0, kMaxWakeSlope);
+    for (std::size_t k = k0; k < n; ++k) {
+      p.displacement_thickness[k] = d_sep + slope * (s[k] - s_sep);
       p.shape_factor[k] = kSeparationShapeFactor;
       p.momentum_thickness[k] = p.displacement_thickness[k] / kSeparationShapeFactor;
     }

@@ -107,4 +107,48 @@ double irregularMeanPower(const WecModel& model, const FloatModel& f, const std:
   return p;
 }
 
+ResponseSpectra responseSpectra(const WecModel& model, const FloatModel& f, const std::string& spectrum, double hs,
+                                double tp, double gamma, const std::vector<double>& omega) {
+  ResponseSpectra r;
+  r.omega = omega;
+  r.wave = spectrumDensity(spectrum, hs, tp, gamma, omega);
+  const std::size_t n = omega.size();
+  for (auto* v : {&r.pitch, &r.hinge_fx, &r.hinge_fz, &r.moment_y}) v->resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const FrequencyResponse h = solveFrequency(model, f, omega[k]);
+    r.pitch[k] = std::norm(h.pitch) * r.wave[k];
+    r.hinge_fx[k] = std::norm(h.hinge_fx) * r.wave[k];
+    r.hinge_fz[k] = std::norm(h.hinge_fz) * r.wave[k];
+    r.moment_y[k] = std::norm(h.moment_y) * r.wave[k];
+  }
+  // m0 by the trapezoid rule on the (possibly uneven) grid.
+  auto sd = [&](const std::vector<double>& s) {
+    double m0 = 0.0;
+    for (std::size_t k = 1; k < n; ++k) m0 += 0.5 * (omega[k] - omega[k - 1]) * (s[k] + s[k - 1]);
+    return std::sqrt(m0);
+  };
+  r.sd_pitch = sd(r.pitch);
+  r.sd_fx = sd(r.hinge_fx);
+  r.sd_fz = sd(r.hinge_fz);
+  r.sd_moment = sd(r.moment_y);
+  return r;
+}
+
+ResponseDeviations discreteResponseDeviations(const WecModel& model, const FloatModel& f, const WaveField& waves) {
+  ResponseDeviations d;
+  for (const auto& c : waves.components) {
+    const FrequencyResponse h = solveFrequency(model, f, c.omega);
+    const double a2 = 0.5 * c.amplitude * c.amplitude;
+    d.pitch += a2 * std::norm(h.pitch);
+    d.fx += a2 * std::norm(h.hinge_fx);
+    d.fz += a2 * std::norm(h.hinge_fz);
+    d.moment += a2 * std::norm(h.moment_y);
+  }
+  d.pitch = std::sqrt(d.pitch);
+  d.fx = std::sqrt(d.fx);
+  d.fz = std::sqrt(d.fz);
+  d.moment = std::sqrt(d.moment);
+  return d;
+}
+
 }  // namespace maris::wec

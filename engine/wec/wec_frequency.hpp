@@ -13,6 +13,9 @@
 // moving in combined surge and heave (Newman 1976; Falnes, Ocean Waves and Oscillating Systems §6).
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "wec/wec_model.hpp"
 
 namespace maris::wec {
@@ -45,6 +48,28 @@ double naturalFrequency(const WecModel& model, const FloatModel& f);
 // with K̂(s) continued off the imaginary axis through the modal fit of K(t) (Newton from s = iω_n).
 // On s = iω this is exactly the impedance above. Requires buildRadiation. Returns 0 if Newton fails.
 Complex freeDecayEigenvalue(const WecModel& model, const FloatModel& f);
+
+// Linear response of a float in an irregular sea: spectral densities S_q(ω) = |H_q(ω)|² S_η(ω) of the pitch,
+// the hinge reactions (on the structure) and the hinge moment on the grid `omega`, and their standard deviations
+// σ_q = √m0,q (trapezoid over the grid; significant amplitude 2σ). Cross terms between floats are absent (no
+// hydrodynamic interaction), so each float is independent.
+struct ResponseSpectra {
+  std::vector<double> omega;               // [rad/s] grid (input)
+  std::vector<double> wave;                // [m²·s/rad] S_η
+  std::vector<double> pitch;               // [rad²·s/rad]
+  std::vector<double> hinge_fx, hinge_fz;  // [N²·s/rad]
+  std::vector<double> moment_y;            // [(N·m)²·s/rad]
+  double sd_pitch = 0.0, sd_fx = 0.0, sd_fz = 0.0, sd_moment = 0.0;  // [rad], [N], [N], [N·m]
+};
+ResponseSpectra responseSpectra(const WecModel& model, const FloatModel& f, const std::string& spectrum, double hs,
+                                double tp, double gamma, const std::vector<double>& omega);
+
+// Standard deviations of the same quantities for a discrete sea of components a_j at ω_j: σ² = Σ ½|H(ω_j)|² a_j²
+// (exact for the time-domain wave field over a whole repeat period 2π/Δω, in the linear limit).
+struct ResponseDeviations {
+  double pitch = 0.0, fx = 0.0, fz = 0.0, moment = 0.0;  // [rad], [N], [N], [N·m]
+};
+ResponseDeviations discreteResponseDeviations(const WecModel& model, const FloatModel& f, const WaveField& waves);
 
 // Mean PTO power in an irregular sea [W]: ∫ B_PTO ω² |Θ(ω)|² S(ω) dω on [0.2, 6]·ω_p (2000 points).
 double irregularMeanPower(const WecModel& model, const FloatModel& f, const std::string& spectrum, double hs,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "wec/wec_nemoh.hpp"
 #include "wec/wec_wamit.hpp"
 
 namespace maris::wec {
@@ -20,6 +21,12 @@ WecModel buildWecModel(const WecParameters& p) {
   m.direction = p.wave_direction == "-x" ? -1.0 : 1.0;
   std::shared_ptr<const HydroDatabase> imported;
   if (p.hydro_source == "wamit_files") imported = readWamit(p.wamit_stem, p.density, p.gravity, p.wamit_length_scale);
+  if (p.hydro_source == "nemoh_files") {
+    const NemohImport nemoh = readNemoh(p.nemoh_directory);
+    imported = nemoh.hydro;
+    m.a_inf_error_surge = nemoh.a_inf_spread_surge;
+    m.a_inf_error_heave = nemoh.a_inf_spread_heave;
+  }
   for (const auto& row : p.floats) {
     FloatModel f;
     f.arm_length = row.arm_length;

@@ -53,6 +53,8 @@ struct FloatModel {
 struct WecModel {
   double density = 0.0, gravity = 0.0, depth = 0.0;
   double direction = 1.0;  // +1: waves travel along +x, −1: along −x
+  // [kg] error bar of A∞ when it was recovered by Ogilvie from an imported table (Nemoh), 0 otherwise.
+  double a_inf_error_surge = 0.0, a_inf_error_heave = 0.0;
   std::vector<FloatModel> floats;
 };
 

@@ -30,10 +30,12 @@ SchemaBinder<WecParameters> wecBinder() {
   b.real("water.density", &P::density, "kg/m^3", Range::closed(900.0, 1100.0), "Water density");
   b.real("water.gravity", &P::gravity, "m/s^2", Range::closed(9.0, 10.5), "Gravitational acceleration");
   b.real("water.depth", &P::depth, "m", Range::positive(1e4), "Water depth (coefficients are deep-water; flagged where kh < pi)");
-  b.choice("hydro.source", &P::hydro_source, {"hemisphere_hulme", "wamit_files"},
-           "Hydrodynamic coefficients: Hulme's floating hemisphere or WAMIT .1/.3 files");
+  b.choice("hydro.source", &P::hydro_source, {"hemisphere_hulme", "wamit_files", "nemoh_files"},
+           "Hydrodynamic coefficients: Hulme's floating hemisphere, WAMIT .1/.3 files or Nemoh/Capytaine .tec files");
   b.text("hydro.wamit_stem", &P::wamit_stem, "WAMIT files without extension (reads <stem>.1 and <stem>.3)");
   b.real("hydro.wamit_length_scale", &P::wamit_length_scale, "m", Range::positive(1e4), "WAMIT ULEN");
+  b.text("hydro.nemoh_directory", &P::nemoh_directory,
+         "Folder with Nemoh (or Capytaine legacy-export) RadiationCoefficients.tec and ExcitationForce.tec");
   b.table("floats", &P::floats, floatRowBinder(), 1, 8, "Floats, each on its own arm and hinge");
   b.choice("waves.type", &P::wave_type, {"none", "regular", "irregular"}, "Incident waves");
   b.choice("waves.direction", &P::wave_direction, {"+x", "-x"}, "Direction of wave travel");
@@ -98,6 +100,8 @@ std::vector<FieldError> checkWecParameters(const WecParameters& p) {
     errors.push_back({"frequency.omega_max", num(p.omega_max), "must exceed frequency.omega_min = " + num(p.omega_min)});
   if (p.hydro_source == "wamit_files" && p.wamit_stem.empty())
     errors.push_back({"hydro.wamit_stem", "\"\"", "must name the WAMIT files when hydro.source = wamit_files"});
+  if (p.hydro_source == "nemoh_files" && p.nemoh_directory.empty())
+    errors.push_back({"hydro.nemoh_directory", "\"\"", "must name the Nemoh results folder when hydro.source = nemoh_files"});
   if (p.power_hs.empty() != p.power_tp.empty())
     errors.push_back({"power_matrix.tp", "", "power_matrix.hs and power_matrix.tp must be both empty or both given"});
   return errors;

@@ -28,9 +28,10 @@ struct WecParameters {
   double gravity = 9.81;    // [m/s²] g
   double depth = 20.0;      // [m] water depth (hydrodynamics are deep-water; depth flags where kh < π)
   // hydrodynamic coefficients
-  std::string hydro_source = "hemisphere_hulme";  // hemisphere_hulme | wamit_files
+  std::string hydro_source = "hemisphere_hulme";  // hemisphere_hulme | wamit_files | nemoh_files
   std::string wamit_stem;                          // path without extension of WAMIT .1/.3 files
   double wamit_length_scale = 1.0;                 // [m] ULEN used to nondimensionalise the WAMIT files
+  std::string nemoh_directory;                     // folder with Nemoh/Capytaine RadiationCoefficients.tec, ExcitationForce.tec
   // floats
   std::vector<FloatRow> floats = {FloatRow{}};
   // waves

@@ -33,6 +33,17 @@ RadiationKernel computeKernel(const std::function<double(double)>& damping, doub
 // for K piecewise linear.
 double ogilvieAddedMassInfinity(const RadiationKernel& kernel, double omega, double added_mass);
 
+// A∞ from tabulated A(ω), B(ω) alone (no A∞ in the source, e.g. Nemoh): the kernel from B on [0, omega_max]
+// (B = 0 beyond), Ogilvie's value at each of `points` frequencies spread evenly over [omega_lo, omega_hi], then
+// their mean; the spread (max − min) is the estimate's error bar (it grows when B is cut off too early).
+struct OgilvieEstimate {
+  double a_inf = 0.0;   // [kg]
+  double spread = 0.0;  // [kg]
+};
+OgilvieEstimate ogilvieAddedMassInfinityOverBand(const std::function<double(double)>& damping,
+                                                 const std::function<double(double)>& added_mass, double omega_max,
+                                                 double omega_lo, double omega_hi, int points = 20);
+
 // K(t) ≈ Σ_i Re-part-paired r_i e^{p_i t}: real poles carry real residues; a complex pair is stored
 // once (Im p > 0) and contributes 2 Re(r e^{pt}).
 struct ModalKernel {

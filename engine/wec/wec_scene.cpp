@@ -98,6 +98,10 @@ void addRadiationScalars(const WecModel& model, Results& res, RunContext& ctx) {
     const double a = ogilvieAddedMassInfinity(mode->kernel, w, s == "heave" ? h.heave.added_mass : h.surge.added_mass);
     res.addScalar("added_mass_inf_ogilvie_ratio_" + s, a / mode->a_inf, "-",
                   "A_inf recovered by Ogilvie at 1 rad/s over the database A_inf");
+    const double a_err = s == "heave" ? model.a_inf_error_heave : model.a_inf_error_surge;
+    if (a_err > 0.0)
+      res.addScalar("added_mass_inf_error_" + s, a_err, "kg",
+                    "Error bar of the imported A_inf recovered by Ogilvie (spread over the band + half the tail term)");
   }
 }
 
@@ -119,6 +123,56 @@ void addTimeDomainChecks(const WecParameters& p, const WecModel& model, const Ti
   res.tables.push_back(timeDomainRaoTable(points, model.floats.size()));
   res.addScalar("td_fd_rao_amplitude_error", err_amp, "-", "max relative |RAO| difference, time vs frequency domain");
   res.addScalar("td_fd_rao_phase_error", err_phase, "deg", "max RAO phase difference, time vs frequency domain");
+}
+
+// Irregular sea: frequency-domain response spectra of pitch, hinge reactions and moment (S_q = |H_q|² S_η), their
+// standard deviations, and the same deviations measured in the time-domain run after ramp and settling.
+void addIrregularStatistics(const WecParameters& p, const WecModel& model, const TimeDomainResult& td, Results& res) {
+  const double wp = 2.0 * std::numbers::pi / p.peak_period;
+  std::vector<double> omega;
+  for (int i = 0; i <= 600; ++i) omega.push_back(wp * (0.2 + 3.8 * i / 600.0));
+  Table t;
+  t.name = "response_spectra";
+  t.title = "Response spectra in the irregular sea (" + p.spectrum + ", frequency domain)";
+  t.add("omega", "rad/s", omega);
+  PlotSpec plot;
+  plot.name = "hinge_reaction_spectra";
+  plot.title = "Hinge reaction spectra S_F = |F_h/a|^2 S_eta";
+  plot.table = t.name;
+  plot.x = "omega";
+  const double settle = p.ramp_duration + settlingTime(model);
+  std::size_t k0 = 0;
+  while (k0 + 1 < td.time.size() && td.time[k0] < settle) ++k0;
+  auto deviation = [&](const std::vector<double>& s) {
+    const double n = static_cast<double>(s.size() - k0);
+    double mean = 0.0, sq = 0.0;
+    for (std::size_t k = k0; k < s.size(); ++k) mean += s[k] / n;
+    for (std::size_t k = k0; k < s.size(); ++k) sq += (s[k] - mean) * (s[k] - mean) / n;
+    return std::sqrt(sq);
+  };
+  for (std::size_t i = 0; i < model.floats.size(); ++i) {
+    const std::string n = std::to_string(i + 1);
+    const ResponseSpectra s = responseSpectra(model, model.floats[i], p.spectrum, p.significant_height,
+                                              p.peak_period, p.peak_enhancement, omega);
+    if (i == 0) t.add("wave_spectrum", "m^2*s/rad", s.wave);
+    t.add("pitch_spectrum_" + n, "rad^2*s/rad", s.pitch);
+    t.add("hinge_fx_spectrum_" + n, "N^2*s/rad", s.hinge_fx);
+    t.add("hinge_fz_spectrum_" + n, "N^2*s/rad", s.hinge_fz);
+    t.add("moment_spectrum_" + n, "N^2*m^2*s/rad", s.moment_y);
+    plot.y.push_back("hinge_fx_spectrum_" + n);
+    plot.y.push_back("hinge_fz_spectrum_" + n);
+    res.addScalar("sd_pitch_fd_" + n, s.sd_pitch * 180.0 / std::numbers::pi, "deg", "Std of pitch, frequency domain");
+    res.addScalar("sd_hinge_fx_fd_" + n, s.sd_fx, "N", "Std of the horizontal hinge reaction, frequency domain");
+    res.addScalar("sd_hinge_fz_fd_" + n, s.sd_fz, "N", "Std of the vertical hinge reaction, frequency domain");
+    if (td.time.size() - k0 < 100) continue;  // run too short after settling for statistics
+    const auto& h = td.floats[i];
+    res.addScalar("sd_pitch_td_" + n, deviation(h.theta) * 180.0 / std::numbers::pi, "deg",
+                  "Std of pitch in the time-domain run after ramp and settling (sampling error ~1/sqrt(cycles))");
+    res.addScalar("sd_hinge_fx_td_" + n, deviation(h.hinge_fx), "N", "Std of the horizontal hinge reaction, time domain");
+    res.addScalar("sd_hinge_fz_td_" + n, deviation(h.hinge_fz), "N", "Std of the vertical hinge reaction, time domain");
+  }
+  res.tables.push_back(std::move(t));
+  res.plots.push_back(std::move(plot));
 }
 
 Results solveWec(const WecParameters& p, RunContext& ctx) {
@@ -216,6 +270,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
                     "W", "Mean PTO power after the ramp");
     }
   }
+  if (p.wave_type == "irregular") addIrregularStatistics(p, model, main, res);
   res.tables.push_back(kernelTable(model.floats.front()));
   auto plots = wecPlots(model.floats.size(), !p.check_frequencies.empty(), both);
   res.plots.insert(res.plots.begin(), plots.begin(), plots.end());

@@ -52,6 +52,24 @@ class DocumentTest : public QObject {
     QCOMPARE(QString::fromStdString(parseFieldText(text, static_cast<ParamKind>(kind)).dump()), json);
   }
 
+  // Very large and small reals show in scientific notation (a 2.07e11 Pa modulus fits its field)
+  // and read back to the same double; ordinary ones keep their JSON form.
+  void realsShowCompactlyAndReadBackExactly_data() {
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("shown");
+    QTest::newRow("Young's modulus") << 2.07e11 << "2.07e+11";
+    QTest::newRow("small") << 3e-5 << "3e-05";
+    QTest::newRow("ordinary") << 100.0 << "100.0";
+    QTest::newRow("fraction") << 0.45 << "0.45";
+    QTest::newRow("negative large") << -1.234567890123e7 << "-1.234567890123e+07";
+  }
+  void realsShowCompactlyAndReadBackExactly() {
+    QFETCH(double, value);
+    QFETCH(QString, shown);
+    QCOMPARE(fieldText(Json(value), ParamKind::Real), shown);
+    QCOMPARE(parseFieldText(shown, ParamKind::Real).get<double>(), value);
+  }
+
   void editIsUndoneAndRedone() {
     ScenarioDocument doc;
     openDefault(doc);

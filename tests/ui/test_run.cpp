@@ -12,8 +12,10 @@
 #include "plots/plot_panel.hpp"
 #include "plots/plot_view.hpp"
 #include "run/run_controller.hpp"
+#include "plots/result_plot.hpp"
 #include "run/run_history.hpp"
 #include "test_scene.hpp"
+#include "theme.hpp"
 #include "ui_test_support.hpp"
 
 using namespace maris;
@@ -162,6 +164,57 @@ class RunTest : public QObject {
     QCOMPARE(plot->graphCount(), 2);  // the curve and the reference points
     panel.view(0)->setLogY(true);
     QCOMPARE(plot->yAxis->scaleType(), QCPAxis::stLogarithmic);
+  }
+
+  // Two rising diagonals fill the bottom-left and top-right corners: the legend must take the top
+  // left, where it covers no data point; the y label of several columns names the plot and unit.
+  void legendGoesWhereItHidesNoData() {
+    Results r;
+    Table& t = r.tables.emplace_back();
+    t.name = "lines";
+    std::vector<double> x, y1, y2;
+    for (int i = 0; i <= 100; ++i) {
+      x.push_back(i);
+      y1.push_back(i);
+      y2.push_back(i + 5.0);
+    }
+    t.add("x", "m", x);
+    t.add("low", "N", y1);
+    t.add("high", "N", y2);
+    PlotSpec spec;
+    spec.name = spec.table = "lines";
+    spec.title = "Two lines";
+    spec.x = "x";
+    spec.y = {"low", "high"};
+    QCustomPlot plot;
+    plot.resize(800, 600);
+    QVERIFY(fillPlot(plot, r, spec));
+    QCOMPARE(plot.yAxis->label(), QStringLiteral("Two lines [N]"));
+    QCPLayoutInset* inset = plot.axisRect()->insetLayout();
+    QCOMPARE(inset->elementCount(), 1);
+    QVERIFY(qobject_cast<QCPLegend*>(inset->elementAt(0)));
+    QCOMPARE(inset->insetAlignment(0), Qt::AlignTop | Qt::AlignLeft);
+  }
+
+  // The dark theme redraws the plots on a dark background with light text, the light one on white.
+  void plotsFollowTheTheme() {
+    const RunRecord record = finishedRun(rodScenario(0.0));
+    PlotView view(record.results->plots.front());
+    view.resize(600, 400);
+    view.setSources({{record.label, record.results}});
+    applyTheme(Theme::Dark);
+    QTRY_VERIFY(view.plot()->axisRect()->backgroundBrush().color().lightnessF() < 0.3);
+    QVERIFY(view.plot()->xAxis->labelColor().lightnessF() > 0.7);
+    const QImage dark = view.plot()->toPixmap(600, 400).toImage();
+    applyTheme(Theme::Light);
+    QTRY_COMPARE(view.plot()->axisRect()->backgroundBrush().color(), QColor(Qt::white));
+    QVERIFY(view.plot()->xAxis->labelColor().lightnessF() < 0.3);
+    applyTheme(Theme::System);
+    // The picture itself: mostly dark pixels in the dark theme.
+    long darkPixels = 0;
+    for (int y = 0; y < dark.height(); y += 4)
+      for (int x = 0; x < dark.width(); x += 4) darkPixels += dark.pixelColor(x, y).lightnessF() < 0.3;
+    QVERIFY(darkPixels > 0.8 * (dark.width() / 4) * (dark.height() / 4));
   }
 
   void hoverShowsTheNearestValue() {

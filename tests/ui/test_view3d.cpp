@@ -5,7 +5,10 @@
 #include <QSlider>
 #include <QtTest>
 
+#include <vtkRenderer.h>
+
 #include "test_scene.hpp"
+#include "theme.hpp"
 #include "ui_test_support.hpp"
 #include "view3d/scene_view.hpp"
 #include "view3d/vtk_gl_widget.hpp"
@@ -83,21 +86,59 @@ class View3dTest : public QObject {
     test::keepScreenshot(image, QStringLiteral("view3d_tube"));
     QVERIFY(!image.isNull());
     const int w = image.width(), h = image.height();
-    // Rows clear of the caption (top), the axes triad and the colour bar (bottom).
+    // Rows clear of the caption (top) and the axes triad (bottom); columns left of the colour bar
+    // (the right 22 %).
     const int top = h * 8 / 100, bottom = h * 70 / 100;
     const double middle = test::saturatedFraction(image, QRect(w * 2 / 5, top, w / 5, bottom - top));
     const double left = test::saturatedFraction(image, QRect(0, top, w / 4, bottom - top));
-    const double right = test::saturatedFraction(image, QRect(w * 3 / 4, top, w / 4, bottom - top));
+    const double right = test::saturatedFraction(image, QRect(w * 3 / 5, top, w * 17 / 100, bottom - top));
     qInfo("saturated pixels: middle %.3f, left %.3f, right %.3f", middle, left, right);
     QVERIFY(middle > 0.02);
     QCOMPARE(left, 0.0);
     QCOMPARE(right, 0.0);
     // Scalars grow downwards: the upper part of the tube is blue, the lower part red.
-    const ColourSums upper = saturatedColours(image, top, (top + bottom) / 2);
-    const ColourSums lower = saturatedColours(image, (top + bottom) / 2, bottom);
+    const ColourSums upper = saturatedColours(image.copy(0, 0, w * 3 / 4, h), top, (top + bottom) / 2);
+    const ColourSums lower = saturatedColours(image.copy(0, 0, w * 3 / 4, h), (top + bottom) / 2, bottom);
     QVERIFY(upper.pixels > 0 && lower.pixels > 0);
     QVERIFY(upper.blue > upper.red);
     QVERIFY(lower.red > lower.blue);
+  }
+
+  // A scene "in air" puts its water 10 km below a 100 m model: the far planes are left out and the
+  // camera frames the model, which must still fill the middle of the picture.
+  void farWaterPlanesDoNotShrinkTheModel() {
+    SceneView view;
+    view.resize(400, 400);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    Results r = test::verticalTubeResults(100.0, 1.5);
+    r.view.water_level_z = -10000.0;
+    r.view.seabed_z = -10001.0;
+    view.showResults(std::make_shared<Results>(r));
+    QTest::qWait(50);
+    const QImage image = view.glWidget()->grabFramebuffer();
+    const int w = image.width(), h = image.height();
+    const double middle = test::saturatedFraction(image, QRect(w * 2 / 5, h / 10, w / 5, h * 6 / 10));
+    qInfo("saturated pixels in the middle: %.3f", middle);
+    QVERIFY(middle > 0.02);
+  }
+
+  // The dark theme darkens the 3D background (both gradient ends) and lightens its text.
+  void backgroundFollowsTheTheme() {
+    SceneView view;
+    view.resize(300, 200);
+    applyTheme(Theme::Dark);
+    QTest::qWait(20);  // palette changes may arrive as posted events
+    double bottom[3], top[3];
+    view.glWidget()->renderer()->GetBackground(bottom);
+    view.glWidget()->renderer()->GetBackground2(top);
+    QVERIFY(QColor::fromRgbF(bottom[0], bottom[1], bottom[2]).lightnessF() < 0.3);
+    QVERIFY(QColor::fromRgbF(top[0], top[1], top[2]).lightnessF() < 0.3);
+    applyTheme(Theme::Light);
+    QTest::qWait(20);
+    view.glWidget()->renderer()->GetBackground(bottom);
+    QVERIFY(QColor::fromRgbF(bottom[0], bottom[1], bottom[2]).lightnessF() > 0.8);
+    applyTheme(Theme::System);
   }
 
   void everyShapeKindBecomesAnActor() {

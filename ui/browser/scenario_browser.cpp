@@ -79,6 +79,11 @@ void ScenarioBrowser::refreshBold() {
       QFont font = item->font(0);
       font.setBold(current);
       item->setFont(0, font);
+      // The open scenario is selected and scrolled into view (it may be far down the list).
+      if (current) {
+        tree_->setCurrentItem(item);
+        tree_->scrollToItem(item, QAbstractItemView::PositionAtCenter);
+      }
     }
   }
 }

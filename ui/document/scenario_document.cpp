@@ -1,5 +1,8 @@
 #include "document/scenario_document.hpp"
 
+#include <charconv>
+#include <cmath>
+
 #include "document/set_parameter_command.hpp"
 
 namespace maris::ui {
@@ -71,6 +74,17 @@ QString fieldLabel(const ParamSpec& spec) {
 
 QString displayValue(const Json& value) {
   if (value.is_string()) return QString::fromStdString(value.get<std::string>());
+  // Very large and very small reals in scientific notation ("2.1e+11 Pa", not "210000000000.0"),
+  // shortest text that reads back to the same double.
+  if (value.is_number_float()) {
+    const double x = value.get<double>();
+    const double magnitude = std::abs(x);
+    if (std::isfinite(x) && x != 0.0 && (magnitude >= 1e6 || magnitude < 1e-3)) {
+      char text[32];
+      const auto end = std::to_chars(text, text + sizeof text, x, std::chars_format::scientific).ptr;
+      return QString::fromLatin1(text, static_cast<int>(end - text));
+    }
+  }
   return QString::fromStdString(value.dump());
 }
 

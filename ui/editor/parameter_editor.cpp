@@ -1,5 +1,8 @@
 #include "editor/parameter_editor.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QGridLayout>
@@ -102,6 +105,7 @@ void ParameterEditor::rebuild() {
                                                                             : scenario.description));
   // Groups in order of first appearance in the schema.
   std::map<std::string, QGridLayout*> groups;
+  std::vector<QLabel*> labels, units;
   for (const ParamSpec& spec : scene->schema.fields) {
     QGridLayout*& grid = groups[spec.group()];
     if (!grid) {
@@ -119,6 +123,8 @@ void ParameterEditor::rebuild() {
     label->setToolTip(fieldTooltip(spec));
     label->setBuddy(row.editor);
     auto* unit = new QLabel(spec.unit == "-" ? QString() : QString::fromStdString(spec.unit), fields_host_);
+    if (spec.kind != ParamKind::Table) labels.push_back(label);
+    units.push_back(unit);
     row.reset = new QToolButton(fields_host_);
     row.reset->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
     row.reset->setToolTip(tr("Reset to default (%1)").arg(fieldText(spec.default_value, spec.kind)));
@@ -147,6 +153,12 @@ void ParameterEditor::rebuild() {
     refreshValue(spec.path);
   }
   fields_layout_->addStretch(1);
+  // Every group box has its own grid: equal label and unit columns line the editors up across them.
+  int label_width = 0, unit_width = 0;
+  for (QLabel* l : labels) label_width = std::max(label_width, l->sizeHint().width());
+  for (QLabel* u : units) unit_width = std::max(unit_width, u->sizeHint().width());
+  for (QLabel* l : labels) l->setMinimumWidth(label_width);
+  for (QLabel* u : units) u->setMinimumWidth(unit_width);
   refreshErrors();
 }
 
@@ -177,6 +189,7 @@ QWidget* ParameterEditor::makeEditor(const ParamSpec& spec) {
   }
   auto* line = new QLineEdit(fields_host_);
   if (spec.kind == ParamKind::RealList) line->setPlaceholderText(tr("comma-separated numbers"));
+  line->setMinimumWidth(line->fontMetrics().horizontalAdvance(QStringLiteral("-1.2345e+100")));
   connect(line, &QLineEdit::editingFinished, this, [this, &spec, line] { commitText(spec, line->text()); });
   return line;
 }
@@ -192,7 +205,10 @@ void ParameterEditor::refreshValue(const std::string& path) {
   const Json value = document_->value(path);
   if (auto* line = qobject_cast<QLineEdit*>(row.editor)) {
     const QString text = fieldText(value, row.spec->kind);
-    if (line->text() != text) line->setText(text);
+    if (line->text() != text) {
+      line->setText(text);
+      line->setCursorPosition(0);  // long values show their first digits, not their last
+    }
   } else if (auto* box = qobject_cast<QCheckBox*>(row.editor)) {
     const QSignalBlocker blocker(box);
     box->setChecked(value.is_boolean() && value.get<bool>());

@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include <QEvent>
 #include <QFileInfo>
 #include <QLabel>
 #include <QVBoxLayout>
@@ -59,6 +60,17 @@ void PlotView::redraw() {
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
+void PlotView::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  // Queued: this widget hears of a new palette before its child plot has it.
+  if (event->type() == QEvent::PaletteChange)
+    QMetaObject::invokeMethod(this, [this] {
+      if (has_data_) redraw();
+      applyPlotColors(*plot_);
+      plot_->replot(QCustomPlot::rpQueuedReplot);
+    }, Qt::QueuedConnection);
+}
+
 int PlotView::pointCount() const { return has_data_ ? primaryPointCount(*plot_, spec_) : 0; }
 
 void PlotView::applyAxisScales() {
@@ -73,6 +85,7 @@ void PlotView::applyAxisScales() {
   apply(rect->axis(QCPAxis::atBottom), log_x_);
   apply(rect->axis(QCPAxis::atLeft), log_y_);
   plot_->rescaleAxes();
+  moveLegendToEmptiestCorner(*plot_);
 }
 
 void PlotView::setLogX(bool on) {

@@ -45,6 +45,9 @@ class PlotView : public QWidget {
   void exportTo(const QString& file, int width_px = 1200, int height_px = 800);
   QString readout() const;
 
+ protected:
+  void changeEvent(QEvent* event) override;  // a new palette (theme) redraws in its colours
+
  private:
   void redraw();
   void applyAxisScales();

@@ -1,11 +1,15 @@
 #include "plots/result_plot.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include <QDir>
 #include <QFileInfo>
 #include <QSvgGenerator>
 #include <qcustomplot.h>
+
+#include "theme.hpp"
 
 namespace maris::ui {
 
@@ -19,14 +23,6 @@ QString axisLabel(const std::string& name, const std::string& unit) {
 namespace {
 
 QVector<double> toQVector(const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); }
-
-// A qualitative palette readable on light and dark backgrounds.
-QColor seriesColor(int i) {
-  static const QColor colors[] = {QColor(31, 119, 180), QColor(214, 39, 40),  QColor(44, 160, 44),
-                                  QColor(255, 127, 14), QColor(148, 103, 189), QColor(140, 86, 75),
-                                  QColor(227, 119, 194), QColor(23, 190, 207)};
-  return colors[i % 8];
-}
 
 Qt::PenStyle runPenStyle(int run) {
   static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine,
@@ -52,12 +48,88 @@ void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const 
     if (several_sources) graph_name = source.label + ": " + graph_name;
     g->setName(graph_name);
     const int color_index = spec.y.size() == 1 ? run : series;
-    QPen pen(seriesColor(color_index), run == 0 ? 1.8 : 1.4);
+    QPen pen(seriesColor(color_index, plot.palette()), run == 0 ? 1.8 : 1.4);
     pen.setStyle(spec.y.size() == 1 ? Qt::SolidLine : runPenStyle(run));
     g->setPen(pen);
     g->setData(toQVector(x.values), toQVector(y->values), true);
     ++series;
   }
+}
+
+
+// The y label of a plot of several columns: the plot's title and the columns' unit(s).
+QString severalColumnsLabel(const Table& table, const PlotSpec& spec) {
+  QStringList units;
+  for (const auto& name : spec.y) {
+    const Column* y = table.find(name);
+    const QString unit = y ? QString::fromStdString(y->unit) : QString();
+    if (!unit.isEmpty() && unit != QLatin1String("-") && !units.contains(unit)) units << unit;
+  }
+  QString label = QString::fromStdString(spec.title);
+  if (!units.isEmpty()) label += QStringLiteral("%1[%2]").arg(label.isEmpty() ? "" : " ", units.join(", "));
+  return label;
+}
+
+// Where a legend of `entries` lines hides the fewest data points: the share of all points inside
+// each corner box of the axis rect (in axis fractions, log axes in log space).
+Qt::Alignment emptiestCorner(const QCustomPlot& plot, const QCPAxisRect& rect, int entries) {
+  const QCPAxis* xa = rect.axis(QCPAxis::atBottom);
+  const QCPAxis* ya = rect.axis(QCPAxis::atLeft);
+  auto fraction = [](const QCPAxis* axis, double v) {
+    const QCPRange r = axis->range();
+    if (axis->scaleType() == QCPAxis::stLogarithmic) {
+      if (v <= 0 || r.lower <= 0) return -1.0;
+      return std::log(v / r.lower) / std::log(r.upper / r.lower);
+    }
+    return r.size() > 0 ? (v - r.lower) / r.size() : 0.5;
+  };
+  const double box_w = 0.42, box_h = std::min(0.07 * entries + 0.04, 0.7);
+  const Qt::Alignment corners[] = {Qt::AlignTop | Qt::AlignRight, Qt::AlignTop | Qt::AlignLeft,
+                                   Qt::AlignBottom | Qt::AlignRight, Qt::AlignBottom | Qt::AlignLeft};
+  int counts[4] = {0, 0, 0, 0};
+  for (int g = 0; g < plot.graphCount(); ++g) {
+    const auto data = plot.graph(g)->data();
+    const int n = data->size();
+    const int stride = std::max(1, n / 2000);  // a sample is enough to find the emptiest corner
+    for (int i = 0; i < n; i += stride) {
+      const double fx = fraction(xa, data->at(i)->key), fy = fraction(ya, data->at(i)->value);
+      const bool right = fx > 1.0 - box_w, left = fx < box_w, top = fy > 1.0 - box_h, bottom = fy < box_h;
+      counts[0] += right && top;
+      counts[1] += left && top;
+      counts[2] += right && bottom;
+      counts[3] += left && bottom;
+    }
+  }
+  return corners[std::min_element(counts, counts + 4) - counts];
+}
+
+// A legend inside the axes at their emptiest corner, or under them when its entries are too wide
+// to sit inside without covering the curves.
+void addLegend(QCustomPlot& plot, QCPAxisRect& rect) {
+  auto* legend = new QCPLegend;
+  const QFontMetrics metrics(legend->font());
+  int widest = 0;
+  for (int i = 0; i < plot.graphCount(); ++i)
+    widest = std::max(widest, metrics.horizontalAdvance(plot.graph(i)->name()) + legend->iconSize().width() + 24);
+  const int plot_width = plot.width() > 100 ? plot.width() : 600;
+  if (widest > 0.45 * plot_width || plot.graphCount() > 8) {
+    const int row = plot.plotLayout()->rowCount();
+    plot.plotLayout()->addElement(row, 0, legend);
+    plot.plotLayout()->setRowStretchFactor(row, 0.001);
+    legend->setMargins(QMargins(6, 2, 6, 2));
+    // Entries wider than the plot are shortened (the hover read-out names the curve too).
+    const int room = plot_width - legend->iconSize().width() - 40;
+    for (int i = 0; i < plot.graphCount(); ++i)
+      plot.graph(i)->setName(metrics.elidedText(plot.graph(i)->name(), Qt::ElideRight, room));
+  } else {
+    rect.insetLayout()->addElement(legend, emptiestCorner(plot, rect, plot.graphCount()));
+  }
+  legend->setLayer(QLatin1String("legend"));
+  for (int i = 0; i < plot.graphCount(); ++i) plot.graph(i)->addToLegend(legend);
+  const DrawingColors colors = drawingColors(plot.palette());
+  legend->setBrush(colors.legend_background);
+  legend->setBorderPen(QPen(colors.foreground, 0.8));
+  legend->setTextColor(colors.foreground);
 }
 
 }  // namespace
@@ -88,11 +160,10 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
   QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
   x_axis->setLabel(axisLabel(x->name, x->unit));
-  const std::string y_unit = table->find(spec.y.front())->unit;
   if (spec.y.size() == 1)
-    y_axis->setLabel(axisLabel(spec.y.front(), y_unit));
+    y_axis->setLabel(axisLabel(spec.y.front(), table->find(spec.y.front())->unit));
   else
-    y_axis->setLabel(y_unit.empty() || y_unit == "-" ? QString() : QStringLiteral("[%1]").arg(QString::fromStdString(y_unit)));
+    y_axis->setLabel(severalColumnsLabel(*table, spec));
 
   const bool several = sources.size() > 1;
   for (int run = 0; run < static_cast<int>(sources.size()); ++run) {
@@ -110,22 +181,45 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
       QCPGraph* g = plot.addGraph(x_axis, y_axis);
       g->setName(QString::fromStdString(ref->title.empty() ? ref->name : ref->title) + ": " + axisLabel(ry->name, ""));
       g->setLineStyle(QCPGraph::lsNone);
-      g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.2),
-                                         QBrush(seriesColor(3 + markers++)), 7));
+      g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(drawingColors(plot.palette()).foreground, 1.2),
+                                         QBrush(seriesColor(3 + markers++, plot.palette())), 7));
       g->setData(toQVector(rx->values), toQVector(ry->values));
     }
   }
   if (spec.log_x) setLogScale(x_axis);
   if (spec.log_y) setLogScale(y_axis);
-  if (plot.graphCount() > 1) {
-    auto* legend = new QCPLegend;
-    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-    legend->setLayer(QLatin1String("legend"));
-    for (int i = 0; i < plot.graphCount(); ++i) plot.graph(i)->addToLegend(legend);
-    legend->setBrush(QColor(255, 255, 255, 210));
-  }
   plot.rescaleAxes();
+  if (plot.graphCount() > 1) addLegend(plot, *rect);
+  applyPlotColors(plot);
   return true;
+}
+
+void applyPlotColors(QCustomPlot& plot) {
+  const DrawingColors c = drawingColors(plot.palette());
+  plot.setBackground(c.background);
+  for (int e = 0; e < plot.plotLayout()->elementCount(); ++e)
+    if (auto* title = qobject_cast<QCPTextElement*>(plot.plotLayout()->elementAt(e))) title->setTextColor(c.foreground);
+  for (QCPAxisRect* rect : plot.axisRects()) {
+    rect->setBackground(c.background);
+    for (QCPAxis* axis : rect->axes()) {
+      axis->setBasePen(QPen(c.foreground, 1));
+      axis->setTickPen(QPen(c.foreground, 1));
+      axis->setSubTickPen(QPen(c.foreground, 1));
+      axis->setTickLabelColor(c.foreground);
+      axis->setLabelColor(c.foreground);
+      axis->grid()->setPen(QPen(c.grid, 1, Qt::DotLine));
+      axis->grid()->setZeroLinePen(QPen(c.grid, 1));
+    }
+  }
+}
+
+void moveLegendToEmptiestCorner(QCustomPlot& plot) {
+  QCPAxisRect* rect = plot.axisRect();
+  if (!rect) return;
+  QCPLayoutInset* inset = rect->insetLayout();
+  for (int i = 0; i < inset->elementCount(); ++i)
+    if (auto* legend = qobject_cast<QCPLegend*>(inset->elementAt(i)))
+      inset->setInsetAlignment(i, emptiestCorner(plot, *rect, legend->itemCount()));
 }
 
 int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec) {

@@ -29,6 +29,13 @@ bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec);
 // lack the table are skipped; false if the first one lacks it.
 bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const PlotSpec& spec);
 
+// Background, axes, grid and text in the colours of the plot's palette (light or dark theme).
+void applyPlotColors(QCustomPlot& plot);
+
+// After the axes changed (log scale, rescale): moves a legend that sits inside the axes to the
+// corner where it hides the fewest data points.
+void moveLegendToEmptiestCorner(QCustomPlot& plot);
+
 // Number of data points of the graphs drawn from the first source's y columns.
 int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec);
 

@@ -1,5 +1,6 @@
 #include "run/results_summary.hpp"
 
+#include <QColor>
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -10,7 +11,8 @@ namespace maris::ui {
 ResultsSummary::ResultsSummary(QWidget* parent)
     : QWidget(parent), heading_(new QLabel(this)), table_(new QTableWidget(0, 4, this)), stats_(new QLabel(this)) {
   table_->setHorizontalHeaderLabels({tr("Quantity"), tr("Value"), tr("Unit"), tr("Meaning")});
-  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // Sized to the scalars once per run (warning rows span the table and must not widen column 0).
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -35,7 +37,10 @@ void ResultsSummary::showRun(const RunRecord& record) {
   const Results& r = *record.results;
   heading_->setText(tr("<b>%1</b> — %2").arg(record.label.toHtmlEscaped(),
                                              QString::fromStdString(record.scenario.name).toHtmlEscaped()));
-  table_->setRowCount(static_cast<int>(r.scalars.size()));
+  const int scalars = static_cast<int>(r.scalars.size());
+  table_->clearContents();
+  table_->clearSpans();
+  table_->setRowCount(scalars + static_cast<int>(r.warnings.size()));
   for (int i = 0; i < static_cast<int>(r.scalars.size()); ++i) {
     const Scalar& s = r.scalars[i];
     QString name = QString::fromStdString(s.name);
@@ -47,6 +52,7 @@ void ResultsSummary::showRun(const RunRecord& record) {
     table_->setItem(i, 2, new QTableWidgetItem(QString::fromStdString(s.unit)));
     table_->setItem(i, 3, new QTableWidgetItem(QString::fromStdString(s.description)));
   }
+  table_->resizeColumnsToContents();
   const SolverStats& st = r.stats;
   QString text = tr("Method: %1 · steps %2 (rejected %3) · rhs evaluations %4 · wall time %5 s")
                      .arg(st.method.empty() ? QStringLiteral("-") : QString::fromStdString(st.method))
@@ -56,8 +62,15 @@ void ResultsSummary::showRun(const RunRecord& record) {
                      .arg(st.wall_time_s, 0, 'g', 3);
   if (st.error_estimate > 0.0)
     text += tr(" · error estimate %1 %2").arg(st.error_estimate, 0, 'g', 3).arg(QString::fromStdString(st.error_unit));
-  for (const auto& w : r.warnings) text += QStringLiteral("\n⚠ ") + QString::fromStdString(w);
   stats_->setText(text);
+  // Warnings follow the scalars as full-width rows, so the statistics line stays short.
+  for (int i = 0; i < static_cast<int>(r.warnings.size()); ++i) {
+    auto* item = new QTableWidgetItem(QStringLiteral("⚠ ") + QString::fromStdString(r.warnings[i]));
+    item->setForeground(QColor(0xd0, 0x80, 0x00));
+    item->setToolTip(QString::fromStdString(r.warnings[i]));
+    table_->setItem(scalars + i, 0, item);
+    table_->setSpan(scalars + i, 0, 1, 4);
+  }
 }
 
 }  // namespace maris::ui

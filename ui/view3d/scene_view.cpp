@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QInputDialog>
@@ -24,10 +25,23 @@
 #include <vtkTextProperty.h>
 
 #include "plots/result_plot.hpp"
+#include "theme.hpp"
 #include "view3d/shape_actors.hpp"
 #include "view3d/vtk_gl_widget.hpp"
 
 namespace maris::ui {
+
+namespace {
+
+// A water or sea-bed plane more than one model size away from the model is not drawn: a scene
+// "in air" may put its water level kilometres below, which would shrink the model to a dot.
+bool nearModel(double z, const Bounds3D& model) {
+  if (model.empty()) return true;
+  const double reach = model.diagonal();
+  return z >= model.b[4] - reach && z <= model.b[5] + reach;
+}
+
+}  // namespace
 
 SceneView::SceneView(QWidget* parent)
     : QWidget(parent), gl_(new VtkGlWidget(this)), slider_(new QSlider(Qt::Horizontal, this)),
@@ -38,32 +52,31 @@ SceneView::SceneView(QWidget* parent)
       triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
   vtkRenderer* renderer = gl_->renderer();
   renderer->GradientBackgroundOn();
-  renderer->SetBackground(0.97, 0.98, 0.99);
-  renderer->SetBackground2(0.80, 0.85, 0.90);
 
   // Cool-to-warm diverging map (Moreland 2009): readable, and equal steps look equal.
   colors_->SetColorSpaceToDiverging();
   scalar_bar_->SetLookupTable(colors_);
   scalar_bar_->SetNumberOfLabels(5);
-  // Horizontal along the bottom: long titles ("bending stress [Pa]") fit there.
-  scalar_bar_->SetOrientationToHorizontal();
-  scalar_bar_->GetPositionCoordinate()->SetValue(0.32, 0.02);
-  scalar_bar_->SetWidth(0.6);
-  scalar_bar_->SetHeight(0.11);
-  scalar_bar_->SetMaximumHeightInPixels(80);
-  scalar_bar_->SetTextPositionToPrecedeScalarBar();  // labels below the bar, title above
+  // Vertical at the right edge, labels to its right: it stays clear of sea beds and long
+  // models, which fill the lower part of the picture.
+  scalar_bar_->SetOrientationToVertical();
+  scalar_bar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  scalar_bar_->GetPositionCoordinate()->SetValue(0.80, 0.12);
+  scalar_bar_->SetWidth(0.15);
+  scalar_bar_->SetHeight(0.72);
+  scalar_bar_->SetBarRatio(0.25);
+  scalar_bar_->SetMaximumWidthInPixels(150);
+  scalar_bar_->SetTextPositionToSucceedScalarBar();
   scalar_bar_->UnconstrainedFontSizeOn();
   scalar_bar_->SetTextPad(4);
   for (vtkTextProperty* text : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
-    text->SetColor(0.1, 0.1, 0.1);
     text->ShadowOff();
     text->ItalicOff();
     text->SetFontSize(13);
   }
   scalar_bar_->GetTitleTextProperty()->SetFontSize(14);
   scalar_bar_->GetLabelTextProperty()->BoldOff();
-  scalar_bar_->SetLabelFormat("%-#8.3g");
-  caption_->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+  scalar_bar_->SetLabelFormat("%#.3g");
   caption_->GetTextProperty()->SetFontSize(16);
   caption_->GetTextProperty()->SetVerticalJustificationToTop();
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
@@ -110,6 +123,25 @@ SceneView::SceneView(QWidget* parent)
   connect(slider_, &QSlider::valueChanged, this, &SceneView::setFrame);
   connect(reset, &QToolButton::clicked, this, &SceneView::resetCamera);
   connect(save, &QToolButton::clicked, this, &SceneView::exportPngInteractive);
+  applyPaletteColors();
+}
+
+void SceneView::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::PaletteChange) applyPaletteColors();
+}
+
+void SceneView::applyPaletteColors() {
+  const DrawingColors c = drawingColors(palette());
+  vtkRenderer* renderer = gl_->renderer();
+  renderer->SetBackground(c.view_bottom.redF(), c.view_bottom.greenF(), c.view_bottom.blueF());
+  renderer->SetBackground2(c.view_top.redF(), c.view_top.greenF(), c.view_top.blueF());
+  // Text on a light background is near-black, on a dark one the palette's text colour.
+  const QColor text = isDark(palette()) ? c.foreground : QColor::fromRgbF(0.1f, 0.1f, 0.1f);
+  for (vtkTextProperty* p : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty(),
+                             caption_->GetTextProperty()})
+    p->SetColor(text.redF(), text.greenF(), text.blueF());
+  gl_->update();
 }
 
 SceneView::~SceneView() {
@@ -175,12 +207,12 @@ void SceneView::rebuildStatic() {
     renderer->AddViewProp(scalar_bar_);
   }
   Bounds3D ground = bounds;
-  if (view.water_level_z) {
-    auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.28);
+  if (view.water_level_z && nearModel(*view.water_level_z, bounds)) {
+    auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.22);
     renderer->AddActor(water);
     static_actors_.push_back(water);
   }
-  if (view.seabed_z) {
+  if (view.seabed_z && nearModel(*view.seabed_z, bounds)) {
     auto seabed = makeHorizontalPlane(ground, *view.seabed_z, 0.25, {0.62, 0.52, 0.38}, 0.9);
     renderer->AddActor(seabed);
     static_actors_.push_back(seabed);
@@ -210,8 +242,10 @@ void SceneView::updateTimeLabel() {
   if (!results_ || frameCount() == 0) return;
   const double t = results_->view.frames[frame_].time;
   const QString text = QStringLiteral("t = %1 s").arg(t, 0, 'g', 6);
-  time_->setText(frameCount() > 1 ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : text);
-  caption_->SetInput(text.toStdString().c_str());
+  // A static result (one frame) has no time worth showing.
+  const bool animated = frameCount() > 1;
+  time_->setText(animated ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : QString());
+  caption_->SetInput(animated ? text.toStdString().c_str() : "");
 }
 
 void SceneView::setFrame(int index) {
@@ -238,7 +272,11 @@ bool SceneView::isPlaying() const { return timer_->isActive(); }
 
 void SceneView::resetCamera() {
   if (!results_) return;
-  const Bounds3D bounds = viewBounds(results_->view);
+  Bounds3D bounds = viewBounds(results_->view);
+  // The still-water and sea-bed planes belong in the picture when they are drawn.
+  const Bounds3D model = bounds;
+  for (const auto& z : {results_->view.water_level_z, results_->view.seabed_z})
+    if (z && nearModel(*z, model)) bounds.add(Eigen::Vector3d(model.centre().x(), model.centre().y(), *z));
   const Eigen::Vector3d c = bounds.centre();
   // An oblique view from the front-right and slightly above, z up.
   const Eigen::Vector3d from = Eigen::Vector3d(0.55, -1.0, 0.35).normalized();
@@ -247,8 +285,11 @@ void SceneView::resetCamera() {
   const Eigen::Vector3d eye = c + from * bounds.diagonal() * 2.0;
   camera->SetPosition(eye.x(), eye.y(), eye.z());
   camera->SetViewUp(0, 0, 1);
-  gl_->renderer()->ResetCamera();
-  camera->Zoom(0.92);  // a margin around the model for the caption and the colour bar
+  gl_->renderer()->ResetCamera(bounds.b.data());
+  // A margin around the model for the caption; with a colour bar (the right ~18 % of the view)
+  // the model moves left and shrinks a little so that the bar does not cover it.
+  camera->SetWindowCenter(have_scalars_ ? 0.14 : 0.0, 0.0);
+  camera->Zoom(have_scalars_ ? 0.85 : 0.92);
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
   gl_->update();

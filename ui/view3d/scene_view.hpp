@@ -56,7 +56,11 @@ class SceneView : public QWidget {
  signals:
   void message(const QString& text);
 
+ protected:
+  void changeEvent(QEvent* event) override;  // a new palette (theme) recolours background and text
+
  private:
+  void applyPaletteColors();
   void rebuildStatic();
   void drawFrame();
   void updateTimeLabel();

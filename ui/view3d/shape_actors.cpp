@@ -272,6 +272,11 @@ vtkSmartPointer<vtkActor> makeHorizontalPlane(const Bounds3D& bounds, double z, 
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(rgb.x(), rgb.y(), rgb.z());
   actor->GetProperty()->SetOpacity(opacity);
+  // Seen at a grazing angle a headlight leaves a horizontal plane nearly black: mostly ambient
+  // light keeps the sea bed sand-coloured and the water blue from any viewpoint.
+  actor->GetProperty()->SetAmbient(0.6);
+  actor->GetProperty()->SetDiffuse(0.4);
+  actor->GetProperty()->SetSpecular(0.0);
   actor->PickableOff();
   return actor;
 }

@@ -1,9 +1,15 @@
 // The seismic scene through the catalog: built-in scenarios validate, bad input is a field error,
 // the default scenario runs and reports the free-field checks.
+#include <atomic>
+#include <chrono>
+#include <thread>
+
 #include <gtest/gtest.h>
 
 #include "catalog.hpp"
 #include "core/errors.hpp"
+#include "core/results.hpp"
+#include "core/run_context.hpp"
 
 namespace maris {
 namespace {
@@ -38,6 +44,67 @@ TEST(SeismicScene, TooFineMeshIsAFieldError) {
   const auto errors = validateParameters(requireScene("seismic"), s.parameters);
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].path, "parameters.solver.cutoff_frequency");
+}
+
+}  // namespace
+}  // namespace maris
+
+namespace maris {
+namespace {
+
+TEST(SeismicScene, SweepAndTransferTablesAreFilled) {
+  // Regression: columns were filled through references that a later Table::add invalidated, leaving
+  // the angle-sweep and free-field transfer tables empty. A small, coarse reef sweep (f_cut 0.8 Hz).
+  auto s = findBuiltin("seismic_default")->scenario;
+  auto& prm = s.parameters;
+  prm["model"]["compare_without_water"] = false;
+  prm["incidence"]["sweep_angles_deg"] = nlohmann::json::array({15.0});
+  prm["input"]["ricker_peak_frequency"] = 0.3;
+  prm["solver"]["cutoff_frequency"] = 0.8;
+  prm["solver"]["duration"] = 3.0;
+  prm["output"]["snapshot_count"] = 0;
+  prm["modes"]["count"] = 2;
+  const auto& scene = requireScene("seismic");
+  ASSERT_TRUE(validateParameters(scene, prm).empty());
+  RunContext ctx;
+  const Results r = scene.run(prm, ctx);
+  auto rows = [&](const std::string& name) {
+    for (const auto& t : r.tables)
+      if (t.name == name) return t.rows();
+    return std::size_t{0};
+  };
+  EXPECT_EQ(rows("angle_sweep"), 2u);
+  EXPECT_EQ(rows("free_field_transfer"), 400u);
+  EXPECT_EQ(rows("modes"), 2u);
+  EXPECT_GT(r.stats.error_estimate, 0.0);  // the coarse-companion estimate is present
+}
+
+}  // namespace
+}  // namespace maris
+
+namespace maris {
+namespace {
+
+TEST(SeismicScene, CancellationStopsTheRunDuringTheTimeStepping) {
+  // A cancel request 100 ms into the default scenario (seconds of FE work on three threads) must end
+  // the run with RunCancelled before the stage after the FE runs (modal analysis) starts: the
+  // workers check the flag every step. No wall-time bound (the test machine is shared).
+  const auto& scene = requireScene("seismic");
+  const auto prm = findBuiltin("seismic_default")->scenario.parameters;
+  std::atomic<bool> cancel{false};
+  std::atomic<bool> reached_modes{false};
+  RunContext ctx(
+      [&](double, const std::string& stage) {
+        if (stage.rfind("modal", 0) == 0) reached_modes = true;
+      },
+      &cancel);
+  std::thread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    cancel = true;
+  });
+  EXPECT_THROW(scene.run(prm, ctx), RunCancelled);
+  stopper.join();
+  EXPECT_FALSE(reached_modes);
 }
 
 }  // namespace
