@@ -57,9 +57,11 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   RiserRecorder recorder(model, p, stabilisation);
   recorder.sample(0.0, y, true, std::string("profile_static"));
   // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).
+  RiserModes modes;
   if (p.solve_statics && 3 * (model.n + 1) <= 600) {
     context.progress(0.0, "natural frequencies");
-    recorder.addModes(computeModes(model, statics, 6));
+    modes = computeModes(model, statics, 6);
+    recorder.addModes(modes);
   }
   SolverStats stats;
   stats.method = "RK4, constant step h = " + std::to_string(h) + " s, " +
@@ -91,7 +93,13 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
     stats.steps = steps;
     stats.rhs_evaluations = 4 * steps;
   }
-  return recorder.finish(stats, statics.iterations, statics.residual);
+  Results results = recorder.finish(stats, statics.iterations, statics.residual);
+  // Without a time history the 3D view animates the mode shapes instead (one period per mode).
+  if (steps == 0 && !modes.frequencies.empty()) {
+    results.view.frames.clear();
+    appendModeFrames(model, statics, modes, 24, results.view);
+  }
+  return results;
 }
 
 }  // namespace maris::riser
