@@ -89,7 +89,11 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
   updateRunEnabled();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // The document is a child: QWidget's destructor deletes it after ours has run, and its undo stack
+  // still emits signals then. Nothing of this window may receive them.
+  document_->disconnect(this);
+}
 
 void MainWindow::createActions() {
   QMenu* file = menuBar()->addMenu(tr("&File"));

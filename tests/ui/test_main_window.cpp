@@ -138,7 +138,9 @@ class MainWindowTest : public QObject {
     QVERIFY(window_->cancelAction()->isEnabled());
     QVERIFY(QTest::qWaitForWindowActive(window_.get()));
     QTest::keyClick(window_.get(), Qt::Key_Escape);
-    QVERIFY(cancelled.wait(2000));
+    // The claim is the solver's stop latency below. The GUI hearing of it waits for the event loop,
+    // which under ASan + software OpenGL can be busy redrawing live results for seconds.
+    QVERIFY(cancelled.wait(30000));
     const double latency = window_->runController()->lastCancelLatency();
     qInfo("cancel latency: solver stopped after %.1f ms, GUI heard after %.1f ms", latency * 1e3,
           window_->runController()->lastCancelAcknowledgeLatency() * 1e3);

@@ -55,6 +55,7 @@ vtkGenericOpenGLRenderWindow* VtkGlWidget::renderWindow() const { return window_
 vtkGenericRenderWindowInteractor* VtkGlWidget::interactor() const { return interactor_; }
 
 VtkGlWidget::~VtkGlWidget() {
+  QObject::disconnect(context_teardown_);
   makeCurrent();
   releaseGraphics();
   doneCurrent();
@@ -84,7 +85,9 @@ void VtkGlWidget::releaseGraphics() {
 
 void VtkGlWidget::initializeGL() {
   // The context goes away when the widget moves to another window: free VTK's GL objects first.
-  connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
+  // Disconnected in the destructor: QOpenGLWidget's own destructor emits it after ours has run.
+  QObject::disconnect(context_teardown_);
+  context_teardown_ = connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
     makeCurrent();
     releaseGraphics();
     doneCurrent();

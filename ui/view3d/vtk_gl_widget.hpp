@@ -51,6 +51,7 @@ class VtkGlWidget : public QOpenGLWidget {
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
+  QMetaObject::Connection context_teardown_;  // context aboutToBeDestroyed -> release VTK's GL objects
   bool initialized_ = false;
 };
 
