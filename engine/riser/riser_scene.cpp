@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/scene.hpp"
+#include "riser/riser_envelope.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 
@@ -94,6 +95,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
     stats.rhs_evaluations = 4 * steps;
   }
   Results results = recorder.finish(stats, statics.iterations, statics.residual);
+  addEnvelope(model, results);
   // Without a time history the 3D view animates the mode shapes instead (one period per mode).
   if (steps == 0 && !modes.frequencies.empty()) {
     results.view.frames.clear();
