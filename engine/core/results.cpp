@@ -92,4 +92,16 @@ Json summaryJson(const Results& results) {
   return j;
 }
 
+PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y,
+                  bool log_y) {
+  PlotSpec p;
+  p.name = std::move(name);
+  p.title = std::move(title);
+  p.table = std::move(table);
+  p.x = std::move(x);
+  p.y = std::move(y);
+  p.log_y = log_y;
+  return p;
+}
+
 }  // namespace maris

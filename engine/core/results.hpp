@@ -53,6 +53,10 @@ struct PlotSpec {
   std::vector<std::string> reference_y;  // its y columns (x column has the same name as `x`)
 };
 
+// A plot of y columns against x from one table; the other fields (log_x, references) set afterwards.
+PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y,
+                  bool log_y = false);
+
 // One drawable object. Coordinates in metres, z up, in the scene's global frame.
 struct Shape3D {
   enum class Kind { Tube, Polyline, Sphere, Hemisphere, Box, Surface, Points };

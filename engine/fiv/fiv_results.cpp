@@ -87,17 +87,6 @@ PlotSpec curvePlot(std::string name, std::string title, std::string x, std::vect
 
 }  // namespace
 
-PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y,
-                  bool log_y) {
-  PlotSpec p;
-  p.name = std::move(name);
-  p.title = std::move(title);
-  p.table = std::move(table);
-  p.x = std::move(x);
-  p.y = std::move(y);
-  p.log_y = log_y;
-  return p;
-}
 
 void addSweepResults(Results& results, const FivModel& model, const SweepResult& sweep, bool has_reference) {
   Table t;

@@ -30,10 +30,6 @@ struct DetailPoint {
 };
 void addDetailResults(Results& results, const FivModel& model, const DetailPoint& detail, int animation_frames);
 
-// A plot of `y` columns against `x` in `table`, optionally on a log y axis.
-PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y,
-                  bool log_y = false);
-
 // The 3D frames: the cylinder (a box) on two springs, anchored below, the free surface at z = 0.
 View3D buildCylinderView(const FivModel& model, const DetailPoint& detail, int frames);
 

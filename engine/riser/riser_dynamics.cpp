@@ -52,14 +52,19 @@ RiserWorkspace makeWorkspace(const RiserModel& m, double stabilisation_rate) {
   return ws;
 }
 
-int stateSize(const RiserModel& m) { return workOffset(m) + 3; }
+int stateSize(const RiserModel& m) { return workOffset(m) + kWorkIntegrals; }
+
+Eigen::Index workIntegralOffset(const RiserModel& m) { return workOffset(m); }
+
+Eigen::Index segmentStateOffset(const RiserModel& m, int i) { return segmentOffset(m, i); }
 
 std::string stateComponentName(const RiserModel& m, Eigen::Index k) {
   static const char* axis[] = {"x", "y", "z"};
   static const char* quat[] = {"w", "x", "y", "z"};
   if (k < 3) return std::string("top position ") + axis[k];
   if (k < kHeader) return std::string("top velocity ") + axis[k - 3];
-  if (k >= workOffset(m)) return "work integral " + std::to_string(k - workOffset(m));
+  static const char* work[] = {"work of drag", "work of dampers", "work of the supports", "work of internal flow"};
+  if (k >= workOffset(m)) return work[std::min<Eigen::Index>(k - workOffset(m), kWorkIntegrals - 1)];
   const int i = m.first_dynamic + static_cast<int>((k - kHeader) / stride(m));
   const int c = static_cast<int>((k - kHeader) % stride(m));
   const std::string seg = "segment " + std::to_string(i) + " ";
@@ -270,6 +275,7 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
   dy[ow] = ws.loads.power_drag;
   dy[ow + 1] = ws.loads.power_damping;
   dy[ow + 2] = ws.reaction[f].dot(pose.velocity[f]) + ws.loads.power_point;
+  dy[ow + 3] = ws.loads.power_flow;
 }
 
 void normaliseState(const RiserModel& m, Eigen::VectorXd& y) {

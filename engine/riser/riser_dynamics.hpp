@@ -15,7 +15,7 @@
 //      constraints (eq 55) are kept by Baumgarte stabilisation Φ̈ + 2αΦ̇ + α²Φ = 0; the drift
 //      |Φ| is reported.
 // State layout (both): [r_top(3), v_top(3)], then per dynamic segment J: [q(4), ω(3)],
-// A: [r(3), q(4), v(3), ω(3)], then [W_drag, W_damping, W_boundary] (work integrals, J).
+// A: [r(3), q(4), v(3), ω(3)], then [W_drag, W_damping, W_boundary, W_flow] (work integrals, J).
 #pragma once
 
 #include <string>
@@ -42,7 +42,12 @@ struct RiserWorkspace {
 
 RiserWorkspace makeWorkspace(const RiserModel& m, double stabilisation_rate);
 
+inline constexpr int kWorkIntegrals = 4;  // W_drag, W_damping, W_boundary (top + point loads), W_flow [J]
 int stateSize(const RiserModel& m);
+// Index of the first state entry of dynamic segment i (layout in the file comment).
+Eigen::Index segmentStateOffset(const RiserModel& m, int i);
+// Index of the first work integral in the state.
+Eigen::Index workIntegralOffset(const RiserModel& m);
 // Name of state component k for error messages ("segment 17 angular velocity z").
 std::string stateComponentName(const RiserModel& m, Eigen::Index k);
 

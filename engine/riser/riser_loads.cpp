@@ -88,6 +88,33 @@ void addDrag(const RiserModel& m, const RiserPose& pose, double factor, SegmentL
   }
 }
 
+Vec3 curvatureVector(const RiserModel& m, const RiserPose& pose, int i) {
+  // Stencil (left, middle, right) and the point where the derivative of the quadratic is taken.
+  const int mid = std::clamp(i, 1, m.n - 1);
+  auto centre = [&](int k) { return m.segments[k].arc_start + 0.5 * m.segments[k].length; };
+  const double h1 = centre(mid) - centre(mid - 1), h2 = centre(mid + 1) - centre(mid);
+  const Vec3 tl = pose.tangent(mid - 1), tm = pose.tangent(mid), tr = pose.tangent(mid + 1);
+  if (i == mid)
+    return -h2 / (h1 * (h1 + h2)) * tl + (h2 - h1) / (h1 * h2) * tm + h1 / (h2 * (h1 + h2)) * tr;
+  if (i < mid)
+    return -(2 * h1 + h2) / (h1 * (h1 + h2)) * tl + (h1 + h2) / (h1 * h2) * tm - h1 / (h2 * (h1 + h2)) * tr;
+  return h2 / (h1 * (h1 + h2)) * tl - (h1 + h2) / (h1 * h2) * tm + (h1 + 2 * h2) / (h2 * (h1 + h2)) * tr;
+}
+
+void addInternalFlow(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads) {
+  const double u = m.flow_speed;
+  for (int i = 0; i <= m.n; ++i) {
+    const Segment& seg = m.segments[i];
+    if (seg.fluid_mass_per_length == 0.0) continue;
+    const Vec3 t = pose.tangent(i), arm = 0.5 * seg.length * t;
+    const Vec3 tangent_rate = pose.omega[i].cross(t);
+    const Vec3 f = -seg.fluid_mass_per_length * seg.length * (2 * u * tangent_rate + u * u * curvatureVector(m, pose, i));
+    loads.force[i] += f;
+    loads.moment[i] += arm.cross(f);
+    loads.power_flow += f.dot(pose.velocity[i] + pose.omega[i].cross(arm));
+  }
+}
+
 void addPointLoads(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
   for (const auto& l : m.point_loads) {
     if (pose.time < l.start_time || pose.time >= l.end_time) continue;
@@ -117,11 +144,12 @@ void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, Seg
     loads.moment[i].setZero();
   }
   loads.support_force.setZero();
-  loads.power_drag = loads.power_damping = loads.power_point = 0.0;
+  loads.power_drag = loads.power_damping = loads.power_point = loads.power_flow = 0.0;
   addSpringMoments(m, pose, loads);
   if (m.gravity > 0) addGravityAndBuoyancy(m, pose, factor, loads);
   addDrag(m, pose, factor, loads);
   if (!m.point_loads.empty()) addPointLoads(m, pose, factor, loads);
+  if (m.flow_speed != 0.0) addInternalFlow(m, pose, loads);
   if (m.bottom == BottomCondition::Spring) addBottomSpring(m, pose, loads);
 }
 

@@ -36,6 +36,7 @@ struct SegmentLoads {
   double power_drag = 0.0;           // [W] power of drag on the structure
   double power_damping = 0.0;        // [W] power of spring dampers and the anchor damper (<= 0)
   double power_point = 0.0;          // [W] power of the point loads
+  double power_flow = 0.0;           // [W] power of the internal-flow forces (eq 46)
 
   void resize(int segment_count);
 };
@@ -52,6 +53,12 @@ void addSpringMoments(const RiserModel& m, const RiserPose& pose, SegmentLoads& 
 void addGravityAndBuoyancy(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads);
 // Morison drag (eq 34) with tangential and normal coefficients against the current, at Gauss points.
 void addDrag(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads);
+// Curvature vector k_i = dt/ds at the centre of segment i from a quadratic through the tangents of three
+// neighbouring segment centres (eqs 47-49; stencils (0,1,2) at the top, (i-1,i,i+1), (n-2,n-1,n) at the bottom).
+Vec3 curvatureVector(const RiserModel& m, const RiserPose& pose, int i);
+// Internal flow of constant speed u (eq 46): F_i = -ρ_f A_inn l_i [2u ṫ_i + u² k_i] at the segment centre
+// (Coriolis and centrifugal terms of Païdoussis' fluid force (43); the r̈ term is in the mass, eq 11).
+void addInternalFlow(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads);
 // Point forces and moments active at pose.time.
 void addPointLoads(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads);
 // Bottom spring (and damper) to the anchor, for BottomCondition::Spring.

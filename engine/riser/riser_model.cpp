@@ -83,7 +83,58 @@ Vec3 RiserModel::currentAt(double z) const {
   return speed * Vec3(std::cos(current_direction), std::sin(current_direction), 0.0);
 }
 
+TopKinematics TopMotionSpline::at(double t) const {
+  const std::size_t last = time.size() - 1;
+  if (t < time.front()) return {value.front(), Vec3::Zero(), Vec3::Zero()};
+  if (t > time[last]) return {value[last], Vec3::Zero(), Vec3::Zero()};
+  const std::size_t above = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), t) - time.begin());
+  const std::size_t k = std::min(above, last) - 1;  // interval [t_k, t_k+1] containing t (t = t_last: the last one)
+  const double h = time[k + 1] - time[k], a = (time[k + 1] - t) / h, b = (t - time[k]) / h;
+  const Vec3 &m0 = curvature[k], &m1 = curvature[k + 1];
+  TopKinematics out;
+  out.position = a * value[k] + b * value[k + 1] + ((a * a * a - a) * m0 + (b * b * b - b) * m1) * (h * h / 6);
+  out.velocity = (value[k + 1] - value[k]) / h + ((1 - 3 * a * a) * m0 + (3 * b * b - 1) * m1) * (h / 6);
+  out.acceleration = a * m0 + b * m1;
+  return out;
+}
+
+// Clamped spline (end slopes 0): tridiagonal system for the knot second derivatives, Thomas algorithm.
+TopMotionSpline buildTopMotionSpline(const std::vector<TopMotionRow>& rows, bool vertical_free) {
+  TopMotionSpline s;
+  for (const auto& r : rows) {
+    s.time.push_back(r.time);
+    s.value.emplace_back(r.x, r.y, vertical_free ? 0.0 : r.z);
+  }
+  const std::size_t n = s.time.size();
+  if (n < 2) return {};
+  std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0);
+  std::vector<Vec3> rhs(n, Vec3::Zero());
+  for (std::size_t k = 0; k < n; ++k) {
+    const double hl = k > 0 ? s.time[k] - s.time[k - 1] : 0.0, hr = k + 1 < n ? s.time[k + 1] - s.time[k] : 0.0;
+    const Vec3 sl = k > 0 ? Vec3((s.value[k] - s.value[k - 1]) / hl) : Vec3::Zero();
+    const Vec3 sr = k + 1 < n ? Vec3((s.value[k + 1] - s.value[k]) / hr) : Vec3::Zero();
+    lower[k] = hl;
+    diag[k] = 2 * (hl + hr);
+    upper[k] = hr;
+    rhs[k] = 6 * (sr - sl);
+  }
+  for (std::size_t k = 1; k < n; ++k) {
+    const double w = lower[k] / diag[k - 1];
+    diag[k] -= w * upper[k - 1];
+    rhs[k] -= w * rhs[k - 1];
+  }
+  s.curvature.assign(n, Vec3::Zero());
+  s.curvature[n - 1] = rhs[n - 1] / diag[n - 1];
+  for (std::size_t k = n - 1; k-- > 0;) s.curvature[k] = (rhs[k] - upper[k] * s.curvature[k + 1]) / diag[k];
+  return s;
+}
+
 TopKinematics RiserModel::topAt(double t) const {
+  if (!top_table.empty()) {
+    TopKinematics k = top_table.at(t);
+    k.position += top_mean;
+    return k;
+  }
   // Quintic smooth step g(τ) = τ³(10 - 15τ + 6τ²) so position, velocity and acceleration start at zero.
   double g = 1, gd = 0, gdd = 0;
   if (ramp_time > 0 && t < ramp_time) {
@@ -141,6 +192,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     g.buoyancy_per_length = p.water_density * p.gravity * a_out;
     g.normal_drag = 0.5 * p.water_density * sec.outer_diameter * sec.normal_drag_coefficient;
     g.tangential_drag = 0.5 * p.water_density * sec.outer_diameter * sec.tangential_drag_coefficient;
+    g.fluid_mass_per_length = contents;
     m.segments.push_back(g);
   }
   // Joints: stiffness of the primary element they represent, C = (GJ, EI, EI)/Δ (RFEM rule, brief §2.4).
@@ -175,6 +227,9 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   m.motion_phase = Vec3(p.motion_phase_x, p.motion_phase_y, p.motion_phase_z);
   m.motion_omega = 2 * kPi / p.motion_period;
   m.ramp_time = p.motion_ramp_time;
+  if (p.top_motion == "table" && m.top != TopCondition::Free)
+    m.top_table = buildTopMotionSpline(p.top_motion_table, m.top == TopCondition::Tensioner);
+  m.flow_speed = p.internal_flow_speed;
   m.current_surface = p.current_speed_surface;
   m.current_seabed = p.current_speed_seabed;
   m.current_direction = p.current_direction;

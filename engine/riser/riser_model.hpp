@@ -46,6 +46,7 @@ struct Segment {
   double buoyancy_per_length = 0.0; // [N/m] ρ_w g A_out where submerged
   double normal_drag = 0.0;         // [kg/m²] ½ ρ_w D_out D_yz
   double tangential_drag = 0.0;     // [kg/m²] ½ ρ_w D_out D_x
+  double fluid_mass_per_length = 0.0;  // [kg/m] ρ_f A_inn of the contents (internal flow, eq 46)
 };
 
 // One spring-damping element between segments i-1 and i (i = 1..n).
@@ -60,6 +61,19 @@ struct Joint {
 struct TopKinematics {
   Vec3 position, velocity, acceleration;  // [m], [m/s], [m/s²] global
 };
+
+// Clamped cubic spline through a time table of top displacements (zero velocity at the first and last
+// rows, so velocity is continuous everywhere; the first/last row is held outside the table).
+// Position is C², velocity C¹ inside; interpolation error O(Δt⁴) for smooth motions.
+struct TopMotionSpline {
+  std::vector<double> time;     // [s] knots (strictly increasing)
+  std::vector<Vec3> value;      // [m] displacement at the knots
+  std::vector<Vec3> curvature;  // [m/s²] second derivative at the knots, written by buildTopMotionSpline
+  bool empty() const { return time.empty(); }
+  // Displacement, velocity and acceleration at time t.
+  TopKinematics at(double t) const;
+};
+TopMotionSpline buildTopMotionSpline(const std::vector<TopMotionRow>& rows, bool vertical_free);
 
 struct RiserModel {
   int n = 0;                     // primary elements; segments 0..n, joints 1..n
@@ -83,6 +97,8 @@ struct RiserModel {
   double spring_stiffness = 0.0, spring_damping = 0.0;  // bottom spring [N/m], [N·s/m]
   Vec3 motion_amplitude = Vec3::Zero(), motion_phase = Vec3::Zero();  // [m], [rad]
   double motion_omega = 0.0, ramp_time = 0.0;  // [rad/s], [s]
+  TopMotionSpline top_table;                   // non-empty: top motion from the time table (replaces harmonic)
+  double flow_speed = 0.0;                     // [m/s] u of the internal flow (eqs 43-52)
   double current_surface = 0.0, current_seabed = 0.0, current_direction = 0.0;  // [m/s], [m/s], [rad]
   std::vector<PointLoadRow> point_loads;
   std::vector<Eigen::Quaterniond> initial_orientation;  // n+1 segment orientations R_GS of the initial shape
@@ -92,7 +108,7 @@ struct RiserModel {
   bool isDynamic(int i) const { return i >= first_dynamic && i <= last_dynamic; }
   // Current velocity at height z (linear between surface and sea bed, zero above the water).
   Vec3 currentAt(double z) const;
-  // Prescribed top motion at time t (mean position + ramped harmonic motion per axis).
+  // Prescribed top motion at time t (mean position + ramped harmonic motion per axis, or the table).
   TopKinematics topAt(double t) const;
   // Segment index and local coordinate ξ of arc length s.
   std::pair<int, double> locate(double s) const;

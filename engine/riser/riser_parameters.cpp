@@ -40,6 +40,15 @@ SchemaBinder<PointLoadRow> pointLoadBinder() {
   return b;
 }
 
+SchemaBinder<TopMotionRow> topMotionBinder() {
+  SchemaBinder<TopMotionRow> b;
+  b.real("time", &TopMotionRow::time, "s", Range::nonNegative(), "Time of the row");
+  b.real("x", &TopMotionRow::x, "m", Range::closed(-1e4, 1e4), "Top displacement from top.x");
+  b.real("y", &TopMotionRow::y, "m", Range::closed(-1e4, 1e4), "Top displacement from top.y");
+  b.real("z", &TopMotionRow::z, "m", Range::closed(-1e4, 1e4), "Top displacement from top.z (not for a tensioner)");
+  return b;
+}
+
 SchemaBinder<P> makeBinder() {
   SchemaBinder<P> b;
   b.real("geometry.length", &P::length, "m", Range::positive(1e5), "Length L of the riser or cable");
@@ -68,6 +77,8 @@ SchemaBinder<P> makeBinder() {
   b.real("environment.seabed_level", &P::seabed_level, "m", Range::any(), "z of the sea bed (drawn)");
   b.real("environment.internal_fluid_density", &P::internal_fluid_density, "kg/m^3", Range::nonNegative(1e5),
          "Density of the contents");
+  b.real("environment.internal_flow_speed", &P::internal_flow_speed, "m/s", Range::closed(-100, 100),
+         "Constant flow speed u of the contents along the riser (> 0 from top to bottom; eqs 43-52)");
   b.real("current.speed_surface", &P::current_speed_surface, "m/s", Range::closed(-20, 20), "Current at the surface");
   b.real("current.speed_seabed", &P::current_speed_seabed, "m/s", Range::closed(-20, 20), "Current at the sea bed");
   b.real("current.direction", &P::current_direction, "rad", Range::closed(-7, 7), "Current heading from +x to +y");
@@ -85,6 +96,10 @@ SchemaBinder<P> makeBinder() {
   b.real("top.motion_phase_y", &P::motion_phase_y, "rad", Range::closed(-7, 7), "Phase of the y motion");
   b.real("top.motion_phase_z", &P::motion_phase_z, "rad", Range::closed(-7, 7), "Phase of the z motion");
   b.real("top.motion_ramp_time", &P::motion_ramp_time, "s", Range::nonNegative(1e5), "Smooth start of the motion");
+  b.choice("top.motion", &P::top_motion, {"harmonic", "table"},
+           "Top motion: harmonic per axis (amplitudes, period, phases) or the time table top_motion_table");
+  b.table("top_motion_table", &P::top_motion_table, topMotionBinder(), 0, 100000,
+          "Top displacement over time (clamped cubic spline; first/last row held outside the table)");
   b.choice("bottom.condition", &P::bottom_condition, {"pinned", "clamped", "free", "spring"},
            "Bottom end: ball joint at the anchor, clamp, free, or linear spring to the anchor");
   b.real("bottom.x", &P::bottom_x, "m", Range::any(), "Anchor x");
@@ -98,7 +113,13 @@ SchemaBinder<P> makeBinder() {
   b.boolean("initial.solve_statics", &P::solve_statics, "Start from static equilibrium");
   b.table("point_loads", &P::point_loads, pointLoadBinder(), 0, 1000, "Forces and moments at nodes (box pulses)");
   b.real("solver.end_time", &P::end_time, "s", Range::nonNegative(1e6), "Simulated time");
-  b.real("solver.time_step", &P::time_step, "s", Range::nonNegative(10.0), "RK4 step (0 = automatic)");
+  b.real("solver.time_step", &P::time_step, "s", Range::nonNegative(10.0),
+         "Step of rk4 and implicit (0 = automatic: rk4 half its stability limit, implicit from the tolerance)");
+  b.choice("solver.integrator", &P::integrator, {"auto", "rk4", "dopri5", "implicit"},
+           "Time integrator: rk4 (constant step, the paper's), dopri5 (adaptive), implicit (stiff torsion), "
+           "auto (the cheapest for the tolerance)");
+  b.real("solver.tolerance", &P::tolerance, "-", Range::closed(1e-12, 1e-1),
+         "Relative local error tolerance of dopri5 and of the implicit Newton iteration");
   b.integer("output.frame_count", &P::frame_count, "-", Range::closed(1, 10000), "Stored frames");
   b.real("output.probe_position", &P::probe_position, "m", Range::nonNegative(), "Arc length of the probe point");
   b.realList("output.stress_times", &P::stress_times, "s", Range::nonNegative(), 0, 100,
@@ -143,6 +164,15 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
       e.push_back({at + ".node", std::to_string(l.node), "must be in [0, " + std::to_string(last_node) + "]"});
     if (l.end_time < l.start_time)
       e.push_back({at + ".end_time", num(l.end_time), "must not be before start_time = " + num(l.start_time)});
+  }
+  if (p.top_motion == "table") {
+    if (p.top_motion_table.size() < 2)
+      e.push_back({"top_motion_table", std::to_string(p.top_motion_table.size()) + " rows",
+                   "top.motion = table needs at least 2 rows"});
+    for (std::size_t k = 1; k < p.top_motion_table.size(); ++k)
+      if (!(p.top_motion_table[k].time > p.top_motion_table[k - 1].time))
+        e.push_back({"top_motion_table[" + std::to_string(k) + "].time", num(p.top_motion_table[k].time),
+                     "must be greater than the previous row's time " + num(p.top_motion_table[k - 1].time)});
   }
   if (p.probe_position > p.length)
     e.push_back({"output.probe_position", num(p.probe_position), "must be in [0, " + num(p.length) + "]"});

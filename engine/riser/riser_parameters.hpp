@@ -39,6 +39,14 @@ struct PointLoadRow {
   double end_time = 1e9;    // [s]
 };
 
+// One row of a top-motion time table: displacement of the top end from its mean position (top.x/y/z).
+struct TopMotionRow {
+  double time = 0.0;  // [s]
+  double x = 0.0;     // [m] displacement along global x
+  double y = 0.0;     // [m]
+  double z = 0.0;     // [m] (ignored for the tensioner, whose vertical motion is free)
+};
+
 struct RiserParameters {
   // geometry
   double length = 100.0;   // [m] unstretched length L
@@ -63,6 +71,7 @@ struct RiserParameters {
   double water_level = 0.0;          // [m] z of the still-water surface (buoyancy and drag only below it)
   double seabed_level = -100.0;      // [m] z of the sea bed (drawn only)
   double internal_fluid_density = 1025.0;  // [kg/m^3] ρ_f of the contents
+  double internal_flow_speed = 0.0;        // [m/s] u: constant flow speed of the contents along s (> 0: top to bottom)
   double current_speed_surface = 1.0;      // [m/s] current at the water level
   double current_speed_seabed = 1.0;       // [m/s] current at the sea bed (linear in between)
   double current_direction = 0.0;          // [rad] heading of the current in the xy-plane, from +x towards +y
@@ -80,6 +89,8 @@ struct RiserParameters {
   double motion_phase_y = 1.5707963267948966;  // [rad] x and y a quarter period apart: an ellipse
   double motion_phase_z = 0.0;              // [rad]
   double motion_ramp_time = 6.0;            // [s] smooth start of the top motion (0 = none)
+  std::string top_motion = "harmonic";      // "harmonic" (amplitudes above) or "table" (top_motion_table)
+  std::vector<TopMotionRow> top_motion_table;  // time table of the top displacement (clamped cubic spline)
   // bottom end
   std::string bottom_condition = "pinned";  // "pinned", "clamped", "free", "spring"
   double bottom_x = 0.0;                    // [m] anchor point
@@ -95,7 +106,9 @@ struct RiserParameters {
   std::vector<PointLoadRow> point_loads;  // forces and moments at nodes
   // solver
   double end_time = 24.0;   // [s]
-  double time_step = 0.0;   // [s] RK4 step; 0 = automatic (half the estimated stability limit)
+  double time_step = 0.0;   // [s] rk4/implicit step; 0 = automatic (rk4: half the estimated stability limit)
+  std::string integrator = "auto";  // "auto", "rk4", "dopri5", "implicit" (see docs/riser.md)
+  double tolerance = 1e-6;  // [-] relative local error tolerance (dopri5, implicit Newton, auto's choice)
   // output
   int frame_count = 60;            // [-] View3D frames and position snapshots
   double probe_position = 50.0;    // [m] arc length of the probe point whose history is recorded

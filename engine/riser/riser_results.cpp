@@ -63,7 +63,7 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
                         "bottom_force_z"})
     history_.add(c, "N");
   for (const char* c : {"kinetic_energy", "spring_energy", "gravity_energy", "total_energy", "work_drag",
-                        "work_damping", "work_boundary", "energy_balance_error"})
+                        "work_damping", "work_boundary", "work_flow", "energy_balance_error"})
     history_.add(c, "J");
   history_.add("constraint_drift", "m");
   history_.add("probe_bending_stress", "Pa");
@@ -89,17 +89,18 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   const double kin = kineticEnergy(m_, pose), spr = springEnergy(m_, pose);
   const double grav = gravityPotential(m_, pose) + anchorSpringEnergy(m_, pose);
   const double total = kin + spr + grav;
-  const Eigen::Index ow = y.size() - 3;
-  const double wd = y[ow], wdamp = y[ow + 1], wb = y[ow + 2];
+  const Eigen::Index ow = workIntegralOffset(m_);
+  const double wd = y[ow], wdamp = y[ow + 1], wb = y[ow + 2], wf = y[ow + 3];
   if (first_) energy0_ = total;
-  const double balance = total - energy0_ - (wd + wdamp + wb);
-  energy_scale_ = std::max({energy_scale_, kin + std::abs(spr), std::abs(wd) + std::abs(wdamp) + std::abs(wb),
-                            std::abs(total - energy0_)});
+  const double balance = total - energy0_ - (wd + wdamp + wb + wf);
+  energy_scale_ = std::max({energy_scale_, kin + std::abs(spr),
+                            std::abs(wd) + std::abs(wdamp) + std::abs(wb) + std::abs(wf), std::abs(total - energy0_)});
   balance_max_ = std::max(balance_max_, std::abs(balance));
   drift_max_ = std::max(drift_max_, ws_.constraint_drift);
   const Vec3 probe = probePoint(m_, pose, p_.probe_position);
   if (first_) probe_start_ = probe;
   const Vec3 dp = probe - probe_start_;
+  pose_end_ = pose.end_position;
   probe_max_ = std::max(probe_max_, dp.norm());
   const int f = m_.first_dynamic, last = m_.last_dynamic;
   const Vec3 bottom = (m_.bottom == BottomCondition::Free || m_.bottom == BottomCondition::Spring)
@@ -108,7 +109,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   std::vector<double> row = {t, dp.x(), dp.y(), dp.z(), pose.node(0).x(), pose.node(0).y(), pose.node(0).z(),
                              pose.end_position.x(), pose.end_position.y(), pose.end_position.z(),
                              ws_.reaction[f].x(), ws_.reaction[f].y(), ws_.reaction[f].z(),
-                             bottom.x(), bottom.y(), bottom.z(), kin, spr, grav, total, wd, wdamp, wb, balance,
+                             bottom.x(), bottom.y(), bottom.z(), kin, spr, grav, total, wd, wdamp, wb, wf, balance,
                              ws_.constraint_drift, prof.bending_stress[jp], prof.torsional_stress[jp]};
   for (std::size_t c = 0; c < row.size(); ++c) history_.columns[c].values.push_back(row[c]);
   for (int k = 0; k < nodes; ++k) {
@@ -206,8 +207,6 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
   Results out = std::move(r_);
   out.stats = stats;
   const double scale = std::max(energy_scale_, 1e-300);
-  out.stats.error_estimate = balance_max_;
-  out.stats.error_unit = "J";
   out.tables.push_back(history_);
   out.tables.push_back(nodes_);
   const auto& h = history_;
@@ -219,13 +218,23 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
   out.addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress σ_b over joints and samples");
   out.addScalar("max_torsional_stress", max_torsion_, "Pa", "Largest |σ_t| over joints and samples");
   out.addScalar("max_tension", max_tension_, "N", "Largest tension over nodes and samples");
-  out.addScalar("top_force_z_final", h.find("top_force_z")->values[last], "N", "Vertical top reaction at the end");
+  const Vec3 end_displacement = pose_end_ - initial_nodes_.back();
+  out.addScalar("tip_deflection", end_displacement.norm(), "m", "Displacement of the bottom end from its start at the end");
+  for (const char* c : {"top_force_x", "top_force_y", "top_force_z", "bottom_force_x", "bottom_force_y",
+                        "bottom_force_z"})
+    out.addScalar(std::string(c) + "_final", h.find(c)->values[last], "N",
+                  "Reaction at the end of the run (top: on the riser from the support; bottom: on the support)");
+  out.addScalar("energy_drift", balance_max_, "J",
+                "max |E(t) - E(0) - W_drag - W_damping - W_boundary - W_flow| over the run");
   out.addScalar("energy_balance_error", balance_max_ / scale, "-",
                 "max |E(t) - E(0) - W_drag - W_damping - W_boundary| relative to the energy scale of the run");
   out.addScalar("constraint_drift", drift_max_, "m", "Largest constraint violation |Φ| (bottom end; A: all joints)");
   out.addScalar("statics_iterations", statics_iterations, "-", "Newton iterations of the static solution");
   out.addScalar("statics_residual", statics_residual, "-", "Final scaled residual of the static solution");
-  out.addScalar("steps", static_cast<double>(stats.steps), "-", "Time steps");
+  out.addScalar("steps", static_cast<double>(stats.steps), "-", "Accepted time steps");
+  out.addScalar("rhs_evaluations", static_cast<double>(stats.rhs_evaluations), "-", "Right-hand side evaluations");
+  out.addScalar("integrator_error_estimate", stats.error_estimate, "-",
+                "Integrator's relative global error estimate (sum of local estimates, see docs/numerics.md)");
   // Plots.
   auto plot = [&](std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
     PlotSpec p;
@@ -240,7 +249,7 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
     plot("probe_displacement", "Probe point displacement", "history", "time", {"probe_dx", "probe_dy", "probe_dz"});
     plot("top_force", "Top reaction", "history", "time", {"top_force_x", "top_force_y", "top_force_z"});
     plot("energy", "Energy and work", "history", "time",
-         {"kinetic_energy", "spring_energy", "work_drag", "work_boundary", "energy_balance_error"});
+         {"kinetic_energy", "spring_energy", "work_drag", "work_boundary", "work_flow", "energy_balance_error"});
     plot("probe_stress", "Stress at the probe", "history", "time", {"probe_bending_stress", "probe_torsional_stress"});
   }
   for (const auto& t : out.tables) {

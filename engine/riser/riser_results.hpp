@@ -46,7 +46,7 @@ class RiserRecorder {
   Results r_;
   Table history_, nodes_;
   std::vector<Vec3> initial_nodes_;
-  Vec3 probe_start_ = Vec3::Zero();
+  Vec3 probe_start_ = Vec3::Zero(), pose_end_ = Vec3::Zero();
   double energy0_ = 0.0, energy_scale_ = 0.0, balance_max_ = 0.0, drift_max_ = 0.0;
   double max_bending_ = 0.0, max_torsion_ = 0.0, max_tension_ = 0.0, probe_max_ = 0.0;
   bool first_ = true;

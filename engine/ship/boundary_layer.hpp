@@ -67,6 +67,7 @@ class TangencyKochin : public KochinFunction {
   void prepare(double speed) override;
   void evaluate(double k0, double lambda, double& fine, double& coarse) override;
   bool hasCoarse() const override { return true; }
+  double richardsonDivisor() const override { return std::exp2(correction_->grid().convergence_order) - 1.0; }
   double length() const override { return (correction_->grid().nx() - 1) * correction_->grid().dx; }
   double depth() const override { return correction_->grid().depth(); }
   int clampedSlopes() const { return clamped_; }

@@ -24,9 +24,9 @@ double bulbFactor(const HoltropHull& h) {
   return std::exp(-1.89 * std::sqrt(c3));
 }
 
-// Wave resistance of the 1984 re-analysis: low-speed formula (a), high-speed formula (b), linear blend
-// between Fn 0.40 and 0.55.
-double waveResistance(const HoltropHull& h, double fn, double density, double gravity) {
+// Wave resistance. 1984 re-analysis: low-speed formula (a), high-speed formula (b), linear blend between
+// Fn 0.40 and 0.55. 1982 original: formula (a) with the m2 term instead of m4, at every speed.
+double waveResistance(const HoltropHull& h, double fn, double density, double gravity, HoltropEdition edition) {
   const double L = h.length_wl, B = h.beam, T = h.draft, V = h.volume, cp = h.prismatic();
   const double c2 = bulbFactor(h);
   const double c5 = 1.0 - 0.8 * h.transom_area / (B * T * h.midship_coefficient);
@@ -34,7 +34,10 @@ double waveResistance(const HoltropHull& h, double fn, double density, double gr
   const double l3v = L * L * L / V;
   const double c15 = l3v < 512.0 ? -1.69385 : (l3v > 1726.91 ? 0.0 : -1.69385 + (L / std::cbrt(V) - 8.0) / 2.36);
   constexpr double d = -0.9;
-  auto m4 = [&](double f) { return c15 * 0.4 * std::exp(-0.034 * std::pow(f, -3.29)); };
+  auto m4 = [&](double f) {
+    if (edition == HoltropEdition::Original1982) return c15 * cp * cp * std::exp(-0.1 / (f * f));  // m2
+    return c15 * 0.4 * std::exp(-0.034 * std::pow(f, -3.29));
+  };
   auto low = [&](double f) {
     const double bl = B / L;
     const double c7 = bl < 0.11 ? 0.229577 * std::pow(bl, 1.0 / 3.0) : (bl < 0.25 ? bl : 0.5 - 0.0625 * L / B);
@@ -52,7 +55,7 @@ double waveResistance(const HoltropHull& h, double fn, double density, double gr
     const double m3 = -7.2035 * std::pow(B / L, 0.326869) * std::pow(T / B, 0.605375);
     return c17 * c2 * c5 * V * density * gravity * std::exp(m3 * std::pow(f, d) + m4(f) * std::cos(lambda / (f * f)));
   };
-  if (fn <= 0.4) return low(fn);
+  if (fn <= 0.4 || edition == HoltropEdition::Original1982) return low(fn);
   if (fn >= 0.55) return high(fn);
   const double a = low(0.4), b = high(0.55);
   return a + (20.0 * fn - 8.0) * (b - a) / 3.0;
@@ -60,8 +63,17 @@ double waveResistance(const HoltropHull& h, double fn, double density, double gr
 
 }  // namespace
 
-double holtropFormFactor(const HoltropHull& h) {
+double holtropFormFactor(const HoltropHull& h, HoltropEdition edition) {
   const double L = h.length_wl, cp = h.prismatic();
+  if (edition == HoltropEdition::Original1982) {
+    const double tl = h.draft / L;
+    const double c12 = tl > 0.05 ? std::pow(tl, 0.2228446) : (tl > 0.02 ? 48.20 * std::pow(tl - 0.02, 2.078) + 0.479948 : 0.479948);
+    const double c13 = 1.0 + 0.003 * h.stern_shape;
+    // C_P ≥ 0.95 or a far-aft LCB leave the regression (holtropRangeNotes warns); keep the powers defined.
+    return c13 * (0.93 + c12 * std::pow(h.beam / lengthOfRun(h), 0.92497) *
+                             std::pow(std::max(0.95 - cp, 1e-3), -0.521448) *
+                             std::pow(std::max(1.0 - cp + 0.0225 * h.lcb_percent, 1e-3), 0.6906));
+  }
   const double c14 = 1.0 + 0.011 * h.stern_shape;
   return 0.93 + 0.487118 * c14 * std::pow(h.beam / L, 1.06806) * std::pow(h.draft / L, 0.46106) *
                     std::pow(L / lengthOfRun(h), 0.121563) * std::pow(L * L * L / h.volume, 0.36486) *
@@ -77,13 +89,13 @@ double holtropCorrelationAllowance(const HoltropHull& h) {
 }
 
 HoltropResistance holtropMennen(const HoltropHull& h, double speed, double density, double viscosity,
-                                double gravity, bool with_correlation_allowance) {
+                                double gravity, bool with_correlation_allowance, HoltropEdition edition) {
   HoltropResistance r;
   const double q = 0.5 * density * speed * speed;
   const double fn = speed / std::sqrt(gravity * h.length_wl);
-  r.form_factor = holtropFormFactor(h);
+  r.form_factor = holtropFormFactor(h, edition);
   r.friction = ittc57FrictionCoefficient(speed * h.length_wl / viscosity) * q * h.wetted_surface;
-  r.wave = waveResistance(h, fn, density, gravity);
+  r.wave = waveResistance(h, fn, density, gravity, edition);
   if (h.bulb_area > 0) {
     const double sa = std::sqrt(h.bulb_area);
     // P_B measures the bow emergence; a bulb centre above T/1.5 makes it infinite (exp(−3/P_B²) → 1).

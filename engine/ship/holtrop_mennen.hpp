@@ -11,6 +11,11 @@
 
 namespace maris::ship {
 
+// Which edition of the regression: the original (Holtrop & Mennen 1982: form factor with c12, c13 and one
+// wave-resistance formula with m2 = c15 C_P² e^{−0.1 Fn^−2} at all speeds) or the re-analysis (Holtrop
+// 1984: form factor with c14, wave resistance with m4 and a separate high-speed formula).
+enum class HoltropEdition { Original1982, Revised1984 };
+
 struct HoltropHull {
   double length_wl = 0;          // [m] L, waterline length
   double beam = 0;               // [m] B
@@ -37,13 +42,15 @@ struct HoltropResistance {
   double total = 0;            // [N] R_T
 };
 
-// 1 + k1 = 0.93 + 0.487118 c14 (B/L)^1.06806 (T/L)^0.46106 (L/L_R)^0.121563 (L³/∇)^0.36486 (1 − C_P)^−0.604247.
-double holtropFormFactor(const HoltropHull& hull);
+// 1984: 1 + k1 = 0.93 + 0.487118 c14 (B/L)^1.06806 (T/L)^0.46106 (L/L_R)^0.121563 (L³/∇)^0.36486 (1 − C_P)^−0.604247.
+// 1982: 1 + k1 = c13 [0.93 + c12 (B/L_R)^0.92497 (0.95 − C_P)^−0.521448 (1 − C_P + 0.0225 lcb)^0.6906].
+double holtropFormFactor(const HoltropHull& hull, HoltropEdition edition = HoltropEdition::Revised1984);
 // Holtrop's correlation allowance C_A (for full-scale ships; meaningless at model scale).
 double holtropCorrelationAllowance(const HoltropHull& hull);
 // Resistance components at speed U [m/s] in water of density ρ and viscosity ν.
 HoltropResistance holtropMennen(const HoltropHull& hull, double speed, double density, double viscosity,
-                                double gravity, bool with_correlation_allowance);
+                                double gravity, bool with_correlation_allowance,
+                                HoltropEdition edition = HoltropEdition::Revised1984);
 // Human-readable notes on inputs outside the regression's range (empty when inside).
 std::vector<std::string> holtropRangeNotes(const HoltropHull& hull);
 

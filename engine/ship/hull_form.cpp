@@ -30,6 +30,7 @@ HullGrid HullGrid::coarsened() const {
   c.x_aft = x_aft;
   c.dx = 2.0 * dx;
   c.dz = 2.0 * dz;
+  c.convergence_order = convergence_order;
   c.half_breadth.resize((nx() + 1) / 2, (nz() + 1) / 2);
   for (int i = 0; i < c.nx(); ++i)
     for (int j = 0; j < c.nz(); ++j) c.half_breadth(i, j) = half_breadth(2 * i, 2 * j);
@@ -68,6 +69,7 @@ HullGrid sampleHull(const HullForm& hull, int nx, int nz) {
   assert(nx >= 3 && nz >= 3 && nx % 2 == 1 && nz % 2 == 1);
   HullGrid g;
   g.half_breadth.resize(nx, nz);
+  g.convergence_order = hull.kind == HullForm::Kind::Parametric ? 2.0 : 1.0;
   if (hull.kind == HullForm::Kind::Parametric) {
     const double L = hull.length_pp;
     g.x_aft = 0.0;
@@ -106,13 +108,41 @@ HullGrid sampleHull(const HullForm& hull, int nx, int nz) {
   return g;
 }
 
+// The moulded draft: the deepest keel point of the stations in the middle half of Lpp (so that a sonar dome
+// or a bulb below the baseline does not count). A station whose bottom row still has breadth reaches the
+// grid's depth; otherwise its keel lies between its last wet row and the next one, found by extending the
+// last two wet half-breadths linearly to zero (exact for a V keel such as the Wigley hull's, error < dz for
+// a flat bottom lying between two rows).
+double designDraft(const HullGrid& g, double length_pp) {
+  double draft = 0.0;
+  bool any = false;
+  for (int i = 0; i < g.nx(); ++i) {
+    if (g.x(i) < 0.25 * length_pp || g.x(i) > 0.75 * length_pp) continue;
+    int last_wet = -1;
+    for (int j = 0; j < g.nz(); ++j)
+      if (g.half_breadth(i, j) > 0.0) last_wet = j;
+    if (last_wet < 0) continue;
+    any = true;
+    double keel = g.depth();
+    if (last_wet < g.nz() - 1) {
+      const double y = g.half_breadth(i, last_wet);
+      const double drop = last_wet > 0 ? g.half_breadth(i, last_wet - 1) - y : 0.0;
+      const double extension = drop > y ? g.dz * y / drop : g.dz;  // linear extension, at most one row
+      keel = -g.z(last_wet) + extension;
+    }
+    draft = std::max(draft, keel);
+  }
+  return any ? draft : g.depth();  // a hull without a middle body (or a tiny grid): the deepest point
+}
+
 HullParticulars computeParticulars(const HullGrid& g, double length_pp) {
   HullParticulars p;
   const int nx = g.nx(), nz = g.nz();
   const Eigen::VectorXd wx = simpsonWeights(nx, g.dx), wz = simpsonWeights(nz, g.dz);
   const Eigen::MatrixXd& Y = g.half_breadth;
   p.length_pp = length_pp;
-  p.draft = g.depth();
+  p.max_depth = g.depth();
+  p.draft = designDraft(g, length_pp);
 
   // Sections: area and vertical moment; then volume, LCB and KB.
   const Eigen::VectorXd section_area = 2.0 * Y * wz;
@@ -124,6 +154,7 @@ HullParticulars computeParticulars(const HullGrid& g, double length_pp) {
   for (int i = 0; i < nx; ++i) xs[i] = g.x(i);
   p.lcb_from_ap = p.volume > 0 ? wx.cwiseProduct(xs).dot(section_area) / p.volume : 0.0;
   p.lcb_percent = 100.0 * (p.lcb_from_ap - 0.5 * length_pp) / length_pp;
+  // KB above the keel of the midship part (the baseline), so that KB = T − depth of the centroid.
   p.kb = p.volume > 0 ? wx.dot(section_moment) / p.volume + p.draft : 0.0;
   p.max_section_area = section_area.maxCoeff();
 

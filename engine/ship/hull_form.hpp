@@ -22,6 +22,10 @@ struct HullGrid {
   double dx = 0.0;             // [m] station spacing
   double dz = 0.0;             // [m] waterline spacing
   Eigen::MatrixXd half_breadth;  // [m] nx × nz, Y(x_i, z_j) ≥ 0; written by sampleHull
+  // [-] order p the Richardson grid-error estimate assumes, error ≈ |R(h) − R(2h)|/(2^p − 1): 2 for the
+  // smooth mathematical hulls (observed ≈ 2 on the Wigley hull), 1 for offsets tables, whose interpolated
+  // surface has kinks (keel lines, domes, table nodes) and converges pre-asymptotically on real hulls.
+  double convergence_order = 2.0;
   int nx() const { return static_cast<int>(half_breadth.rows()); }
   int nz() const { return static_cast<int>(half_breadth.cols()); }
   double x(int i) const { return x_aft + i * dx; }
@@ -58,25 +62,27 @@ HullForm makeOffsetsHull(std::string name, OffsetsTable table, double length_pp,
 HullGrid sampleHull(const HullForm& hull, int nx, int nz);
 
 // Main particulars from a grid (Simpson in x and z; wetted surface from the triangulated grid surface).
+// C_B, C_M use the moulded draft T and B_WL; h_B of the bulb is measured from the keel at T.
 struct HullParticulars {
   double length_pp = 0;        // [m] Lpp (given)
   double length_wl = 0;        // [m] waterline length (extent of Y(x, 0) > 0)
   double beam_wl = 0;          // [m] 2 max Y(x, 0)
-  double draft = 0;            // [m] deepest point below the waterline
+  double draft = 0;            // [m] T: deepest keel point in the middle half of Lpp (excludes domes, bulbs)
+  double max_depth = 0;        // [m] deepest point of the whole hull below the waterline
   double volume = 0;           // [m³] ∇ = 2 ∬ Y dz dx
   double wetted_surface = 0;   // [m²] both sides, hull below the waterline
   double waterplane_area = 0;  // [m²] 2 ∫ Y(x, 0) dx
   double max_section_area = 0; // [m²] A_M = max_x 2 ∫ Y dz
   double lcb_from_ap = 0;      // [m] centre of buoyancy from the AP
   double lcb_percent = 0;      // [% Lpp] LCB forward of midship (x = Lpp/2), negative aft
-  double kb = 0;               // [m] centre of buoyancy above the deepest point
+  double kb = 0;               // [m] centre of buoyancy above the keel (T below the waterline)
   double block_coefficient = 0;       // C_B = ∇/(Lpp B T)
   double prismatic_coefficient = 0;   // C_P = ∇/(A_M Lpp)
   double midship_coefficient = 0;     // C_M = A_M/(B T)
   double waterplane_coefficient = 0;  // C_WP = A_WP/(Lpp B)
   double transom_area = 0;     // [m²] immersed section area at the aft end of the grid
   double bulb_area = 0;        // [m²] section area at the FP when the hull extends forward of it
-  double bulb_centre_height = 0;  // [m] centroid of that section above the deepest point
+  double bulb_centre_height = 0;  // [m] centroid of that section above the keel (T below the waterline)
 };
 HullParticulars computeParticulars(const HullGrid& grid, double length_pp);
 

@@ -231,7 +231,7 @@ WaveResistance michellWaveResistance(KochinFunction& kochin, double speed, doubl
   r.resistance = prefactor * (fine + tail);
   r.quadrature_error = prefactor * quad_error;
   r.tail_error = 0.5 * r.tail;
-  r.grid_error = kochin.hasCoarse() ? prefactor * std::abs(fine - coarse) / 3.0 : 0.0;
+  r.grid_error = kochin.hasCoarse() ? prefactor * std::abs(fine - coarse) / kochin.richardsonDivisor() : 0.0;
   r.error_estimate = r.quadrature_error + r.tail_error + r.grid_error;
   r.lambda_max = lambda_max;
   r.tail_exponent = exponent;

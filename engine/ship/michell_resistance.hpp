@@ -11,6 +11,7 @@
 // a power-law tail beyond λ_max fitted on the last two octaves.
 #pragma once
 
+#include <cmath>
 #include <complex>
 #include <vector>
 
@@ -29,6 +30,8 @@ class KochinFunction {
   // `fine` for closed forms), used for the Richardson estimate of the discretisation error.
   virtual void evaluate(double k0, double lambda, double& fine, double& coarse) = 0;
   virtual bool hasCoarse() const = 0;
+  // 2^p − 1 of the Richardson estimate |fine − coarse|/(2^p − 1) for a grid converging at order p.
+  virtual double richardsonDivisor() const { return 3.0; }
   virtual double length() const = 0;  // [m] longitudinal extent: sets the interference period in λ
   virtual double depth() const = 0;   // [m] draft: sets where the depth decay makes the tail algebraic
 };
@@ -38,6 +41,7 @@ class GridKochin : public KochinFunction {
   explicit GridKochin(HullGrid grid, bool with_coarse = true);
   void evaluate(double k0, double lambda, double& fine, double& coarse) override;
   bool hasCoarse() const override { return with_coarse_; }
+  double richardsonDivisor() const override { return std::exp2(fine_.convergence_order) - 1.0; }
   double length() const override { return (fine_.nx() - 1) * fine_.dx; }
   double depth() const override { return fine_.depth(); }
   const HullGrid& grid() const { return fine_; }
@@ -79,7 +83,7 @@ struct WaveResistance {
   double quadrature_error = 0;  // [N] Σ |K15 − G7| over panels
   double tail = 0;              // [N] estimated contribution beyond λ_max (included in `resistance`)
   double tail_error = 0;        // [N] half the tail (the power law is only asymptotic)
-  double grid_error = 0;        // [N] |R(h) − R(2h)|/3 (second-order grid), 0 for closed forms
+  double grid_error = 0;        // [N] |R(h) − R(2h)|/(2^p − 1), p = HullGrid::convergence_order; 0 for closed forms
   double lambda_max = 0;        // [-] end of the integrated λ range
   double tail_exponent = 0;     // [-] m of the fitted tail g ∝ λ^-m
   long evaluations = 0;         // Kochin evaluations

@@ -50,11 +50,16 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
   b.choice("water.kind", &P::water, {"fresh", "sea"}, "Fresh water or sea water (salinity 35 g/kg)");
   b.real("water.temperature", &P::temperature, "degC", Range::closed(0, 40), "Water temperature");
   b.real("water.gravity", &P::gravity, "m/s^2", Range::closed(9.7, 9.9), "Gravitational acceleration");
-  b.choice("viscous.form_factor_method", &P::form_factor_method, {"input", "holtrop"},
-           "Form factor 1+k: the value below, or Holtrop's regression from the particulars");
+  b.choice("viscous.form_factor_method", &P::form_factor_method, {"input", "holtrop", "prohaska"},
+           "Form factor 1+k: the value below, Holtrop's regression from the particulars, or Prohaska's fit to "
+           "the measured points");
   b.real("viscous.form_factor", &P::form_factor, "-", Range::closed(1, 2), "Form factor 1+k (R_V = (1+k) R_F)");
   b.real("viscous.correlation_allowance", &P::correlation_allowance, "-", Range::closed(-0.001, 0.002),
          "Correlation allowance C_A added to C_T");
+  b.real("viscous.prohaska_froude_max", &P::prohaska_froude_max, "-", Range::closed(0.02, 0.5),
+         "Measured points up to this Froude number enter Prohaska's fit C_T/C_F = (1+k) + c Fn^4/C_F");
+  b.choice("holtrop.edition", &P::holtrop_edition, {"1984", "1982"},
+           "Holtrop's 1984 re-analysis or the original Holtrop & Mennen (1982) formulas");
   b.choice("holtrop.stern_shape", &P::stern_shape, {"pram_gondola", "v_shaped", "normal", "u_shaped"},
            "Holtrop-Mennen afterbody form (C_stern = -25, -10, 0, 10)");
   b.boolean("holtrop.correlation_allowance", &P::holtrop_correlation_allowance,
@@ -97,6 +102,9 @@ std::vector<FieldError> checkShipParameters(const ShipParameters& p) {
     e.push_back({"hull.offsets_file", Json(p.offsets_file).dump(), "is not a readable file"});
   if (!p.measured_file.empty() && !std::filesystem::is_regular_file(p.measured_file))
     e.push_back({"measured.file", Json(p.measured_file).dump(), "is not a readable file"});
+  if (p.form_factor_method == "prohaska" && p.measured_file.empty())
+    e.push_back({"viscous.form_factor_method", "\"prohaska\"",
+                 "needs measured.file (the measured C_T points that Prohaska's fit uses)"});
   if ((p.hull_source == "wigley" || p.hull_source == "parametric") && p.draft > p.length)
     e.push_back({"hull.draft", num(p.draft), "must not exceed hull.length = " + num(p.length) + " m (a thin ship)"});
   return e;

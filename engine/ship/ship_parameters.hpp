@@ -31,10 +31,12 @@ struct ShipParameters {
   double temperature = 15.0;           // [°C] water temperature
   double gravity = 9.81;               // [m/s²]
   // Viscous resistance
-  std::string form_factor_method = "input";  // input | holtrop
+  std::string form_factor_method = "input";  // input | holtrop | prohaska (fit to measured.file)
   double form_factor = 1.095;          // [-] 1 + k (used when form_factor_method = input)
   double correlation_allowance = 0.0;  // [-] C_A added to C_T
+  double prohaska_froude_max = 0.2;    // [-] measured points with Fn ≤ this enter the Prohaska fit
   // Holtrop–Mennen comparison
+  std::string holtrop_edition = "1984";  // 1984 (Holtrop's re-analysis) | 1982 (Holtrop & Mennen's original)
   std::string stern_shape = "normal";  // pram_gondola | v_shaped | normal | u_shaped (C_stern −25, −10, 0, 10)
   bool holtrop_correlation_allowance = false;  // include Holtrop's R_A (full-scale ships only)
   // The paper's corrections

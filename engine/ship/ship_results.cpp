@@ -22,7 +22,8 @@ void addParticulars(Results& r, const ShipModel& m) {
   r.addScalar("length_pp", q.length_pp, "m", "Length between perpendiculars Lpp");
   r.addScalar("length_wl", q.length_wl, "m", "Waterline length");
   r.addScalar("beam_wl", q.beam_wl, "m", "Waterline beam");
-  r.addScalar("draft", q.draft, "m", "Draft (deepest point below the waterline)");
+  r.addScalar("draft", q.draft, "m", "Moulded draft T (deepest keel point in the middle half of Lpp)");
+  r.addScalar("max_depth", q.max_depth, "m", "Deepest point of the hull below the waterline (domes, keels)");
   r.addScalar("displacement_volume", q.volume, "m^3", "Displacement volume");
   r.addScalar("displacement_mass", q.volume * m.water.density, "kg", "Displacement mass");
   r.addScalar("wetted_surface_geometry", q.wetted_surface, "m^2", "Wetted surface computed from the grid");
@@ -34,7 +35,13 @@ void addParticulars(Results& r, const ShipModel& m) {
   r.addScalar("waterplane_coefficient", q.waterplane_coefficient, "-", "C_WP = A_WP/(Lpp B)");
   r.addScalar("lcb", q.lcb_percent, "%", "LCB forward of midship, % of Lpp");
   r.addScalar("form_factor", m.form_factor, "-", "Form factor 1+k used for C_T");
-  r.addScalar("holtrop_form_factor", holtropFormFactor(m.holtrop_hull), "-", "Holtrop's regression 1+k1");
+  r.addScalar("holtrop_form_factor", holtropFormFactor(m.holtrop_hull, m.holtrop_edition), "-",
+              "Holtrop's regression 1+k1");
+  if (m.prohaska) {
+    r.addScalar("prohaska_points", m.prohaska->points, "-", "Measured points in Prohaska's fit");
+    r.addScalar("prohaska_slope", m.prohaska->slope, "-", "Slope c of C_T/C_F = (1+k) + c Fn^4/C_F");
+    r.addScalar("prohaska_rms_residual", m.prohaska->rms_residual, "-", "RMS residual of C_T/C_F about the fit");
+  }
   r.addScalar("water_density", m.water.density, "kg/m^3", "Water density");
   r.addScalar("kinematic_viscosity", m.water.kinematic_viscosity, "m^2/s", "Kinematic viscosity");
   if (m.fore_shoulder.distance > 0)

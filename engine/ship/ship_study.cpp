@@ -3,6 +3,9 @@
 #include <cmath>
 #include <memory>
 
+#include "core/errors.hpp"
+#include "core/scenario.hpp"
+
 #include "ship/resistance_sweep.hpp"
 
 namespace maris::ship {
@@ -16,7 +19,33 @@ double sternShapeCoefficient(const std::string& s) {
   return 0.0;
 }
 
+// Prohaska's 1 + k from the measured points with Fn ≤ viscous.prohaska_froude_max (C_F at the model's
+// Reynolds number on L_WL, as for the computed curves). Throws InputError when too few points qualify.
+ProhaskaFit fitProhaska(const ShipParameters& p, const ShipModel& m) {
+  const MeasuredPoints mp = readMeasuredPoints(p.measured_file);
+  std::vector<double> fn, ct, cf;
+  for (std::size_t i = 0; i < mp.froude.size(); ++i) {
+    if (mp.froude[i] <= 0 || mp.froude[i] > p.prohaska_froude_max) continue;
+    const double U = mp.froude[i] * std::sqrt(p.gravity * m.hull.length_pp);
+    fn.push_back(mp.froude[i]);
+    ct.push_back(mp.c_total[i]);
+    cf.push_back(ittc57FrictionCoefficient(U * m.particulars.length_wl / m.water.kinematic_viscosity));
+  }
+  bool distinct = false;
+  for (double f : fn) distinct = distinct || f != fn.front();
+  if (!distinct)
+    throw InputError("parameters.measured.file", Json(p.measured_file).dump(),
+                     "Prohaska's fit needs measured points at two or more Froude numbers in (0, " +
+                         Json(p.prohaska_froude_max).dump() + "] (viscous.prohaska_froude_max); found " +
+                         std::to_string(fn.size()));
+  return prohaskaFormFactor(fn, ct, cf);
+}
+
 }  // namespace
+
+double waveNumberCorrectionFactor(const ForeShoulder& fs) {
+  return fs.distance > 0 ? 1.0 + 3.7 * (fs.arc_length / fs.distance - 1.0) : 1.0;
+}
 
 ShipModel buildShipModel(const ShipParameters& p, RunContext& context) {
   ShipModel m;
@@ -46,12 +75,17 @@ ShipModel buildShipModel(const ShipParameters& p, RunContext& context) {
   h.transom_area = q.transom_area;
   h.stern_shape = sternShapeCoefficient(p.stern_shape);
   for (auto& note : holtropRangeNotes(h)) m.notes.push_back(note);
-  m.form_factor = p.form_factor_method == "holtrop" ? holtropFormFactor(h) : p.form_factor;
+  m.holtrop_edition = p.holtrop_edition == "1982" ? HoltropEdition::Original1982 : HoltropEdition::Revised1984;
+  m.form_factor = p.form_factor;
+  if (p.form_factor_method == "holtrop") m.form_factor = holtropFormFactor(h, m.holtrop_edition);
+  if (p.form_factor_method == "prohaska") {
+    m.prohaska = fitProhaska(p, m);
+    m.form_factor = m.prohaska->form_factor;
+  }
 
   // The paper's corrections.
   m.fore_shoulder = foreShoulder(m.grid);
-  if (p.wave_number_correction && m.fore_shoulder.distance > 0)
-    m.wave_number_factor = 1.0 + 3.7 * (m.fore_shoulder.arc_length / m.fore_shoulder.distance - 1.0);
+  if (p.wave_number_correction) m.wave_number_factor = waveNumberCorrectionFactor(m.fore_shoulder);
   if (p.tangency_correction) m.tangency = std::make_shared<const TangencyCorrection>(m.grid, p.trip_position);
   m.any_correction = p.tangency_correction || p.wave_number_correction || p.short_wave_cutoff > 0;
   return m;
@@ -100,7 +134,7 @@ ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipMode
   for (double U : c.speed) {
     c.c_friction.push_back(ittc57FrictionCoefficient(U * m.particulars.length_wl / m.water.kinematic_viscosity));
     c.holtrop.push_back(holtropMennen(m.holtrop_hull, U, rho, m.water.kinematic_viscosity, g,
-                                      p.holtrop_correlation_allowance));
+                                      p.holtrop_correlation_allowance, m.holtrop_edition));
   }
   return c;
 }

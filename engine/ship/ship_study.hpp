@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,11 +30,16 @@ struct ShipModel {
   double wave_number_factor = 1; // [-] k̂0/k0 (1 when the correction is off)
   ForeShoulder fore_shoulder;
   HoltropHull holtrop_hull;
+  HoltropEdition holtrop_edition = HoltropEdition::Revised1984;
+  std::optional<ProhaskaFit> prohaska;  // set when the form factor comes from Prohaska's fit
   bool any_correction = false;
   std::vector<std::string> notes;  // warnings for the user
 };
 
 ShipModel buildShipModel(const ShipParameters& p, RunContext& context);
+
+// k̂0/k0 = 1 + 3.7 (s_FS/l_FS − 1), the paper's eq 12 (coefficient 3.7 as printed; sign inferred, brief §2.5).
+double waveNumberCorrectionFactor(const ForeShoulder& fore_shoulder);
 
 struct ResistanceCurves {
   std::vector<double> froude, speed;          // [-], [m/s]

@@ -1,6 +1,7 @@
 #include "ship/viscous_resistance.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace maris::ship {
 
@@ -27,6 +28,36 @@ WaterProperties waterProperties(WaterKind kind, double t) {
 double ittc57FrictionCoefficient(double reynolds) {
   const double l = std::log10(reynolds) - 2.0;
   return 0.075 / (l * l);
+}
+
+ProhaskaFit prohaskaFormFactor(const std::vector<double>& froude, const std::vector<double>& c_total,
+                               const std::vector<double>& c_friction) {
+  const std::size_t n = froude.size();
+  if (c_total.size() != n || c_friction.size() != n || n < 2)
+    throw std::invalid_argument("Prohaska fit needs at least 2 points with froude, c_total and c_friction each");
+  // Straight line y = a + c x through (x, y) = (Fn⁴/C_F, C_T/C_F), centred sums for accuracy.
+  std::vector<double> x(n), y(n);
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = std::pow(froude[i], 4) / c_friction[i];
+    y[i] = c_total[i] / c_friction[i];
+    mx += x[i] / n;
+    my += y[i] / n;
+  }
+  double sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxx += (x[i] - mx) * (x[i] - mx);
+    sxy += (x[i] - mx) * (y[i] - my);
+  }
+  if (!(sxx > 1e-300)) throw std::invalid_argument("Prohaska fit needs points at two or more different speeds");
+  ProhaskaFit fit;
+  fit.slope = sxy / sxx;
+  fit.form_factor = my - fit.slope * mx;
+  fit.points = static_cast<int>(n);
+  double ss = 0;
+  for (std::size_t i = 0; i < n; ++i) ss += std::pow(y[i] - fit.form_factor - fit.slope * x[i], 2);
+  fit.rms_residual = std::sqrt(ss / n);
+  return fit;
 }
 
 }  // namespace maris::ship

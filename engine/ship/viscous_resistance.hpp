@@ -2,6 +2,8 @@
 // R_F = C_F ½ρU²S (paper eqs 13–14).
 #pragma once
 
+#include <vector>
+
 namespace maris::ship {
 
 enum class WaterKind { Fresh, Sea };
@@ -21,5 +23,18 @@ WaterProperties waterProperties(WaterKind kind, double temperature_c);
 
 // ITTC-1957 model–ship correlation line C_F = 0.075/(log10 Re − 2)², Re > 100.
 double ittc57FrictionCoefficient(double reynolds);
+
+// Prohaska's method (ITTC Recommended Procedure 7.5-02-02-01): at low speed the wave resistance grows like
+// Fn⁴, C_T = (1 + k) C_F + c Fn⁴, so C_T/C_F against Fn⁴/C_F is a straight line with intercept 1 + k.
+// Least squares over the given measured points (C_F from ITTC-57 at each point's Reynolds number).
+struct ProhaskaFit {
+  double form_factor = 1;   // [-] 1 + k, the intercept
+  double slope = 0;         // [-] c
+  int points = 0;           // measured points used
+  double rms_residual = 0;  // [-] RMS of C_T/C_F about the line
+};
+// froude, c_total, c_friction: equal sizes, ≥ 2 points with distinct Fn⁴/C_F (else std::invalid_argument).
+ProhaskaFit prohaskaFormFactor(const std::vector<double>& froude, const std::vector<double>& c_total,
+                               const std::vector<double>& c_friction);
 
 }  // namespace maris::ship

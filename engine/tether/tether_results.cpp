@@ -137,16 +137,10 @@ Table stabilityTable(const TetherParameters& p) {
   return t;
 }
 
+// Most tether plots are histories: x = time.
 PlotSpec plot(std::string name, std::string title, std::string table, std::vector<std::string> y, bool log_y = false,
               std::string x = "time") {
-  PlotSpec spec;
-  spec.name = std::move(name);
-  spec.title = std::move(title);
-  spec.table = std::move(table);
-  spec.x = std::move(x);
-  spec.y = std::move(y);
-  spec.log_y = log_y;
-  return spec;
+  return makePlot(std::move(name), std::move(title), std::move(table), std::move(x), std::move(y), log_y);
 }
 
 void addPlots(const TetherParameters& p, Results& r) {

@@ -87,6 +87,7 @@ TEST_P(UndampedSwing, ConservesEnergyAtFourthOrder) {
   p.initial_azimuth = kPi / 2;  // horizontal along +y
   p.solve_statics = false;
   p.end_time = 1.2;
+  p.integrator = "rk4";
   double errors[2];
   for (int k = 0; k < 2; ++k) {
     p.time_step = k == 0 ? 1e-3 : 5e-4;
@@ -199,6 +200,7 @@ TEST(RiserDynamics, UnstableStepReportsTheDivergingQuantity) {
   RiserParameters p;
   p.segment_count = 10;
   p.end_time = 2.0;
+  p.integrator = "rk4";
   p.time_step = 0.05;
   p.stress_times.clear();
   try {

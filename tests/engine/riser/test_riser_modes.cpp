@@ -307,5 +307,40 @@ TEST(RiserModes, StaticRunAnimatesModeShapesInTheView) {
   EXPECT_NEAR(tip.x(), p.length + 0.05 * p.length * shapes->find("dx")->values[tip_row], 1e-9);
 }
 
+// Internal flow without its Coriolis term (the linearisation keeps only shape-dependent loads): for the
+// pinned-pinned tensioned beam of eq (66) the modes stay sines, so ω_1² = (π/L)²[T − M_f u² + EI(π/L)²]/m
+// with M_f = ρ_f A_inn (Païdoussis; brief §5.4) and m the substitute mass, and ω_1 → 0 at the divergence
+// speed u_c = √((T + EIπ²/L²)/M_f). n = 20: the SM error of eq (66) is 5e-4 (test above), the u² term
+// uses a three-point curvature fit (O(Δ²)): tolerance 2e-3 relative at u = 0.5 u_c; past u_c no mode 1.
+TEST(RiserModes, InternalFlowLowersFrequencyToZeroAtDivergenceSpeed) {
+  RiserParameters p = test::calmInAir();
+  p.length = 10.0;
+  p.segment_count = 20;
+  p.outer_diameter = 0.1;
+  p.inner_diameter = 0.08;
+  p.added_mass_coefficient = 0.0;
+  p.internal_fluid_density = 1000.0;
+  p.torsion = false;
+  p.gravity = 0.0;
+  p.top_condition = "tensioner";
+  p.top_tension = 1000.0;
+  p.bottom_condition = "pinned";
+  p.bottom_z = -10.0;
+  const double a_inn = kPi / 4 * 0.0064, a_wall = kPi / 4 * (0.01 - 0.0064);
+  const double fluid = p.internal_fluid_density * a_inn, m = fluid + p.density * a_wall;
+  const double ei = test::bendingStiffness(p), k1 = kPi / p.length;
+  const double critical = std::sqrt((p.top_tension + ei * k1 * k1) / fluid);
+  p.internal_flow_speed = 0.5 * critical;
+  const std::vector<double> w = distinctFrequencies(p, 1);
+  ASSERT_EQ(w.size(), 1u);
+  const double exact = k1 * std::sqrt((p.top_tension - fluid * p.internal_flow_speed * p.internal_flow_speed +
+                                       ei * k1 * k1) / m);
+  EXPECT_NEAR(w[0], exact, 2e-3 * exact);
+  p.internal_flow_speed = 1.05 * critical;  // beyond divergence: the first mode is unstable (ω² < 0)
+  const std::vector<double> beyond = distinctFrequencies(p, 1);
+  ASSERT_EQ(beyond.size(), 1u);
+  EXPECT_GT(beyond[0], 2.0 * exact) << "the lowest remaining mode must be the second one";
+}
+
 }  // namespace
 }  // namespace maris::riser

@@ -3,9 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -14,27 +11,14 @@
 #include "core/resources.hpp"
 #include "ship/hull_form.hpp"
 #include "ship/hull_offsets.hpp"
+#include "shared_hulls.hpp"
 
 using namespace maris;
 using namespace maris::ship;
 
 namespace {
 
-// shared/data/hulls: MARIS_SHARED_DIR (<source>/../shared) in the main checkout; a helper work tree sits one
-// level deeper (<work>/wt/<name>), so its shared folder is <source>/../../shared.
-std::string hullsDir() {
-  for (const std::string& dir : {std::string(MARIS_SHARED_DIR), std::string(MARIS_SOURCE_DIR) + "/../../shared"})
-    if (std::filesystem::exists(dir + "/data/hulls")) return dir + "/data/hulls/";
-  ADD_FAILURE() << "shared/data/hulls not found next to " << MARIS_SOURCE_DIR;
-  return {};
-}
-
-std::string readShared(const std::string& relative) {
-  std::ifstream in(hullsDir() + relative);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string readShared(const std::string& relative) { return test_data::readSharedHullFile(relative); }
 
 nlohmann::json particularsJson(const std::string& hull) { return nlohmann::json::parse(readShared(hull + "/particulars.json")); }
 
@@ -143,4 +127,88 @@ TEST(HullGeometry, MonotoneInterpolationNeverOvershoots) {
     EXPECT_GE(p(x), 0.0);
     EXPECT_LE(p(x), 1.0);
   }
+}
+
+namespace {
+
+// The shared 161×41 tables are sampled on 321×81 nodes, which contain the table's own nodes, so that the
+// grid adds no error of its own at the stations and waterlines of the table.
+HullParticulars sharedTableParticulars(const std::string& file, double lpp) {
+  return particularsOf(readShared(file), file, lpp, 321, 81);
+}
+
+// Wetted surface of an interpolated offsets table against the exact surface it was sliced from: the monotone
+// cubic surface between table nodes is slightly wavier than the real one and the grid triangles across a
+// rising keel line count a sliver of centre plane, so S reads high. Measured on the DTC, KCS (+0.3 … 0.4 %,
+// flat bottoms), DTMB 5415 (+1.8 %, sonar dome) and Sysser 1 (+1.4 %, rounded canoe body): the band is
+// [−0.5 %, +2 %]. Use the published S (hull.wetted_surface) for coefficients.
+void expectWettedSurfaceNear(double computed, double exact_surface, const std::string& hull) {
+  EXPECT_GT(computed, exact_surface * (1.0 - 5e-3)) << hull;
+  EXPECT_LT(computed, exact_surface * (1.0 + 2e-2)) << hull;
+}
+
+}  // namespace
+
+TEST(HullGeometry, DtcTableMatchesPublishedParticulars) {
+  // DTC model 1:59.407 (el Moctar et al. 2012, Table 1, divided by the scale; particulars.json "published").
+  // The shared README's hydrostatics of the exact STL differ from these by ≤ 0.08 % (∇, C_B) and 0.003 %
+  // (LCB); the table adds its sampling error (stations 3.9 cm apart, waterlines 6 mm): 0.3 % on ∇ and C_B,
+  // 0.1 % on B_WL and T (flat keel: the deepest row), 0.1 % Lpp on LCB.
+  const auto j = particularsJson("dtc");
+  const auto& pub = j["published"];
+  const double lpp = pub["lpp_m"].get<double>();
+  const HullParticulars p = sharedTableParticulars("dtc/dtc_model_offsets_161x41.csv", lpp);
+  const double volume = pub["volume_m3"].get<double>();
+  EXPECT_NEAR(p.volume, volume, 3e-3 * volume);
+  expectWettedSurfaceNear(p.wetted_surface, j["computed"]["wetted_area_m2"].get<double>(), "dtc");
+  EXPECT_NEAR(p.beam_wl, pub["bwl_m"].get<double>(), 1e-3 * 0.8585);
+  EXPECT_NEAR(p.draft, pub["draft_m"].get<double>(), 1e-3 * 0.2441);
+  EXPECT_NEAR(p.block_coefficient, pub["cb"].get<double>(), 3e-3 * 0.661);
+  EXPECT_NEAR(p.lcb_from_ap, pub["lcb_from_ap_m"].get<double>(), 1e-3 * lpp);
+  EXPECT_GT(p.bulb_area, 0.0);  // the bulb reaches forward of the FP
+}
+
+TEST(HullGeometry, Dtmb5415TableMatchesPublishedParticularsDespiteTheSonarDome) {
+  // DTMB 5415 full scale (SIMMAN 2008: ∇ 8424.4 m³, C_B 0.506, C_M 0.816, T 6.15 m). The sonar dome reaches
+  // 9.17 m below the waterline: the moulded draft must still be the midship keel at 6.15 m (within half a
+  // waterline spacing, 0.057 m), not the dome. The STL is coarse (3436 facets): the shared README measures
+  // ∇ −0.45 % and C_M −0.08 % against the published values, so the tolerances are 0.8 % (∇, C_B) and 0.5 %
+  // (C_M, with the published B and T); LCB is 0.21 % Lpp forward of the published value in the STL itself
+  // (0.3 % Lpp here).
+  const auto j = particularsJson("dtmb5415");
+  const auto& pub = j["published"];
+  const double lpp = pub["lpp_m"].get<double>(), T = pub["draft_m"].get<double>(), B = pub["bwl_m"].get<double>();
+  const HullParticulars p = sharedTableParticulars("dtmb5415/dtmb5415_fullscale_offsets_161x41.csv", lpp);
+  EXPECT_NEAR(p.max_depth, j["computed"]["t_max_m"].get<double>(), 1e-5 * 9.17);
+  EXPECT_NEAR(p.draft, T, 0.5 * p.max_depth / 80.0);
+  const double volume = pub["volume_m3"].get<double>();
+  EXPECT_NEAR(p.volume, volume, 8e-3 * volume);
+  expectWettedSurfaceNear(p.wetted_surface, j["computed"]["wetted_area_m2"].get<double>(), "dtmb5415");
+  EXPECT_NEAR(p.volume / (lpp * B * T), pub["cb"].get<double>(), 8e-3 * 0.506);
+  EXPECT_NEAR(p.max_section_area / (B * T), pub["cm"].get<double>(), 5e-3 * 0.816);
+  EXPECT_NEAR(p.beam_wl, B, 1e-3 * B);
+  EXPECT_NEAR(p.lcb_percent, pub["lcb_from_midship_pct_lpp"].get<double>(), 0.3);
+}
+
+TEST(HullGeometry, Sysser1YachtTableMatchesPublishedHydrostatics) {
+  // Delft Systematic Yacht Hull Series, Sysser 1 canoe body (TU Delft 4TU.ResearchData CC0 release, row
+  // Sysser = 1; particulars.json "published"). Reference length LWL 1.6 m; T_c is the canoe-body depth. The
+  // shared README finds ∇, A_WP and A_M within 0.2 % from the exact IGES surface but B_WL +1.1 % and S +2.1 %
+  // (unexplained: possibly nominal values), so those two are checked against the IGES surface instead.
+  // Tolerances add the table's sampling: 0.4 % (∇, A_WP, A_M), 0.3 % (B_WL against the IGES).
+  const auto j = particularsJson("dsyhs_sysser01");
+  const auto& pub = j["published"];
+  const auto& iges = j["computed"];
+  const double lwl = pub["lwl_m"].get<double>();
+  const HullParticulars p = sharedTableParticulars("dsyhs_sysser01/sysser01_model_offsets_161x41.csv", lwl);
+  const double volume = pub["volume_m3"].get<double>(), awp = pub["waterplane_area_m2"].get<double>();
+  const double am = pub["max_section_area_m2"].get<double>();
+  EXPECT_NEAR(p.volume, volume, 4e-3 * volume);
+  EXPECT_NEAR(p.waterplane_area, awp, 4e-3 * awp);
+  EXPECT_NEAR(p.max_section_area, am, 4e-3 * am);
+  EXPECT_NEAR(p.draft, pub["draft_m"].get<double>(), 0.5 * p.max_depth / 80.0);
+  EXPECT_NEAR(p.beam_wl, iges["bwl_m"].get<double>(), 3e-3 * 0.5129);
+  expectWettedSurfaceNear(p.wetted_surface, iges["wetted_area_m2"].get<double>(), "sysser01");
+  // LCB from mid-LWL: published −0.0366 m, IGES −0.0343 m (0.15 % LWL apart): within 0.3 % LWL.
+  EXPECT_NEAR(p.lcb_from_ap - 0.5 * lwl, pub["lcb_from_mid_lwl_m"].get<double>(), 3e-3 * lwl);
 }

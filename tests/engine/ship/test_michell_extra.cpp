@@ -9,6 +9,7 @@
 #include "ship/hull_form.hpp"
 #include "ship/hull_offsets.hpp"
 #include "ship/michell_resistance.hpp"
+#include "shared_hulls.hpp"
 
 using namespace maris;
 using namespace maris::ship;
@@ -50,4 +51,32 @@ TEST(MichellBulb, GridErrorEstimateHoldsForTheBulbousKcs) {
   const WaveResistance b = michellWaveResistance(fine, U, g, rho, s);
   EXPECT_LE(std::abs(a.resistance - b.resistance), a.error_estimate);
   EXPECT_LE(std::abs(a.resistance - b.resistance), 0.01 * b.resistance);
+}
+
+TEST(MichellSharedHulls, GridErrorEstimateHoldsForDomeAndYachtHulls) {
+  // Hard cases from the shared benchmark tables (161×41): the DTMB 5415 model (1:24.824) with its sonar dome
+  // 3 m (full scale) below the keel at the bow — the grid spans the dome's depth, a third of it empty
+  // elsewhere — and the Sysser 1 yacht canoe body (L/B 3.1, shallow, rounded). As for the KCS, the 257×51
+  // estimate must bound the change to a 1025×201 sampling of the same surface, at Fn 0.3 (where the
+  // second-order estimate failed on both by up to 1.6×).
+  struct Case {
+    const char* file;
+    double lpp;  // [m]
+  };
+  for (const Case c : {Case{"dtmb5415/dtmb5415_model_offsets_161x41.csv", 142.0 / 24.824},
+                       Case{"dsyhs_sysser01/sysser01_model_offsets_161x41.csv", 1.6}}) {
+    const HullForm hull = makeOffsetsHull(c.file, parseOffsetsCsv(test_data::readSharedHullFile(c.file), c.file), c.lpp);
+    GridKochin coarse(sampleHull(hull, 257, 51));
+    GridKochin fine(sampleHull(hull, 1025, 201), false);
+    for (double fn : {0.3}) {
+      const double g = 9.81, rho = 1000.0, U = fn * std::sqrt(g * hull.length_pp);
+      MichellSettings s;
+      s.relative_tolerance = 1e-6;
+      const WaveResistance a = michellWaveResistance(coarse, U, g, rho, s);
+      const WaveResistance b = michellWaveResistance(fine, U, g, rho, s);
+      EXPECT_TRUE(a.converged && b.converged) << c.file << " Fn " << fn;
+      EXPECT_LE(std::abs(a.resistance - b.resistance), a.error_estimate) << c.file << " Fn " << fn;
+      EXPECT_LE(std::abs(a.resistance - b.resistance), 0.02 * b.resistance) << c.file << " Fn " << fn;
+    }
+  }
 }

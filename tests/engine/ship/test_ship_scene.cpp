@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fstream>
 
@@ -91,4 +92,49 @@ TEST(ShipScene, BadOffsetsFileIsNamed) {
     EXPECT_NE(all.find("hull.offsets_file"), std::string::npos) << all;
     EXPECT_NE(all.find("numerics.stations"), std::string::npos) << all;
   }
+}
+
+TEST(ShipScene, CancellationStopsTheSweep) {
+  // The cancel flag is raised at the first progress report of the Michell sweep; the run must end with
+  // RunCancelled instead of finishing the 251 speeds (the sweep polls every 1500 Kochin evaluations).
+  const BuiltinScenario* b = findBuiltin("ship_default");
+  ASSERT_NE(b, nullptr);
+  Scenario s = b->scenario;
+  applyOverride(s, "numerics.stations=129");
+  applyOverride(s, "numerics.waterlines=25");
+  std::atomic<bool> cancel{false};
+  RunContext ctx(
+      [&](double, const std::string& stage) {
+        if (stage.find("Michell") != std::string::npos) cancel = true;
+      },
+      &cancel);
+  ctx.setProgressInterval(0.0);
+  EXPECT_THROW(runScenario(requireScene("ship"), s, ctx), RunCancelled);
+  EXPECT_TRUE(cancel.load());
+}
+
+TEST(ShipScene, WigleySweepResolvesTheSameHumpsAndHollowsAsTheClosedForm) {
+  // Brief W4: the humps and hollows of the Wigley C_W curve, swept on 0.2 ≤ Fn ≤ 0.6 in steps of 0.004,
+  // must sit at the same Froude numbers on the grid path (129×25, −0.4 % level error) as on the closed-form
+  // Kochin path, to one sweep step; the main hump lies near Fn 0.5 (brief §6.2: within ±0.05).
+  const Results r = runBuiltin("ship_default", {"speed.froude_min=0.2", "speed.froude_max=0.6", "speed.count=101",
+                                                "numerics.stations=129", "numerics.waterlines=25",
+                                                "corrections.wave_number=false"});
+  const Table* t = r.findTable("resistance_curve");
+  ASSERT_NE(t, nullptr);
+  const auto& fn = t->find("froude")->values;
+  auto extrema = [&](const std::vector<double>& c) {
+    std::vector<double> at;
+    for (std::size_t k = 1; k + 1 < c.size(); ++k)
+      if ((c[k] - c[k - 1]) * (c[k + 1] - c[k]) < 0) at.push_back(fn[k]);
+    return at;
+  };
+  const auto& grid = t->find("c_wave")->values;
+  const auto& exact = t->find("c_wave_exact")->values;
+  const auto a = extrema(grid), b = extrema(exact);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GE(b.size(), 3u);  // at least a hump, a hollow and the main hump
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 0.004 + 1e-12) << k;
+  const auto main = std::max_element(exact.begin(), exact.end()) - exact.begin();
+  EXPECT_NEAR(fn[main], 0.5, 0.05);
 }

@@ -1,0 +1,147 @@
+#include "riser/riser_implicit.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "core/errors.hpp"
+
+namespace maris::riser {
+namespace {
+
+Mat3 skew(const Vec3& v) {
+  Mat3 s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
+
+Mat3 expMap(const Vec3& theta) {
+  const double a = theta.norm();
+  return a > 0 ? Mat3(Eigen::AngleAxisd(a, theta / a)) : Mat3::Identity();
+}
+
+// Rotations above this within one chunk mean the chunk is far too long for the chart (J_r is singular at 2π).
+constexpr double kLargestChartRotation = 5.0;  // [rad]
+
+}  // namespace
+
+Mat3 rightJacobian(const Vec3& theta) {
+  const double a2 = theta.squaredNorm(), a = std::sqrt(a2);
+  // (1 − cos a)/a² and (a − sin a)/a³, by their series below 1e-3 rad (cancellation).
+  const double c1 = a < 1e-3 ? 0.5 - a2 / 24 : (1 - std::cos(a)) / a2;
+  const double c2 = a < 1e-3 ? 1.0 / 6 - a2 / 120 : (a - std::sin(a)) / (a2 * a);
+  const Mat3 k = skew(theta);
+  return Mat3::Identity() - c1 * k + c2 * k * k;
+}
+
+RotationVectorChart::RotationVectorChart(const RiserModel& m, double stabilisation_rate)
+    : m_(m), ws_(makeWorkspace(m, stabilisation_rate)) {
+  const int segments = m.last_dynamic - m.first_dynamic + 1;
+  per_segment_ = m.formulation == Formulation::Joint ? 3 : 6;
+  work_ = 3 + static_cast<Eigen::Index>(segments) * per_segment_;
+  size_ = work_ + kWorkIntegrals;
+  reference_.assign(segments, Mat3::Identity());
+  y_.resize(stateSize(m));
+  dy_.resize(stateSize(m));
+}
+
+void RotationVectorChart::reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) {
+  q.setZero(size_);
+  v.setZero(size_);
+  q.head<3>() = y.head<3>();
+  v.head<3>() = y.segment<3>(3);
+  const bool joint = m_.formulation == Formulation::Joint;
+  for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
+    const int k = i - m_.first_dynamic;
+    const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
+    const Eigen::Quaterniond quat(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
+    reference_[k] = quat.normalized().toRotationMatrix();
+    const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
+    const Vec3 omega = y.segment<3>(joint ? o + 4 : o + 10);
+    v.segment<3>(gt) = reference_[k].transpose() * omega;  // θ = 0: J_r = I
+    if (!joint) {
+      q.segment<3>(g) = y.segment<3>(o);
+      v.segment<3>(g) = y.segment<3>(o + 7);
+    }
+  }
+  const Eigen::Index ow = workIntegralOffset(m_);
+  for (int w = 0; w < kWorkIntegrals; ++w) v[work_ + w] = y[ow + w];
+}
+
+void RotationVectorChart::toState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
+  y.setZero(stateSize(m_));
+  y.head<3>() = q.head<3>();
+  y.segment<3>(3) = v.head<3>();
+  const bool joint = m_.formulation == Formulation::Joint;
+  for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
+    const int k = i - m_.first_dynamic;
+    const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
+    const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
+    const Vec3 theta = q.segment<3>(gt);
+    const Mat3 r = reference_[k] * expMap(theta);
+    const Eigen::Quaterniond quat(r);
+    y.segment<4>(oq) << quat.w(), quat.x(), quat.y(), quat.z();
+    y.segment<3>(joint ? o + 4 : o + 10) = r * (rightJacobian(theta) * v.segment<3>(gt));
+    if (!joint) {
+      y.segment<3>(o) = q.segment<3>(g);
+      y.segment<3>(o + 7) = v.segment<3>(g);
+    }
+  }
+  const Eigen::Index ow = workIntegralOffset(m_);
+  for (int w = 0; w < kWorkIntegrals; ++w) y[ow + w] = v[work_ + w];
+}
+
+void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                   const Eigen::VectorXd& acc, Eigen::VectorXd& r) {
+  toState(q, v, y_);
+  evaluateRhs(m_, ws_, t, y_, dy_);
+  const bool joint = m_.formulation == Formulation::Joint;
+  r.resize(size_);
+  r.head<3>() = acc.head<3>() - dy_.segment<3>(3);
+  for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
+    const int k = i - m_.first_dynamic;
+    const Eigen::Index o = segmentStateOffset(m_, i);
+    const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
+    const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
+    if (!(theta.norm() < kLargestChartRotation))
+      throw SolverError("segment " + std::to_string(i) + " rotation", t, -1,
+                        "rotated " + std::to_string(theta.norm()) +
+                            " rad within one chunk of the implicit integrator: raise output.frame_count");
+    const Mat3 rot = reference_[k] * expMap(theta), jr = rightJacobian(theta);
+    // θ̈ = J_r⁻¹ (Rᵀ α − J̇_r θ̇); J̇_r θ̇ by a central difference along θ̇ (step 1e-4 rad: error ~1e-8 relative).
+    const double speed = rate.norm();
+    Vec3 jdot_rate = Vec3::Zero();
+    if (speed > 0) {
+      const double eps = 1e-4 / speed;
+      jdot_rate = (rightJacobian(theta + eps * rate) - rightJacobian(theta - eps * rate)) * rate / (2 * eps);
+    }
+    const Vec3 alpha = dy_.segment<3>(joint ? o + 4 : o + 10);
+    const Vec3 theta_acc = jr.lu().solve(rot.transpose() * alpha - jdot_rate);
+    r.segment<3>(gt) = acc.segment<3>(gt) - theta_acc;
+    if (!joint) r.segment<3>(g) = acc.segment<3>(g) - dy_.segment<3>(o + 7);
+  }
+  const Eigen::Index ow = workIntegralOffset(m_);
+  for (int w = 0; w < kWorkIntegrals; ++w) r[work_ + w] = acc[work_ + w] - dy_[ow + w];
+}
+
+double RotationVectorChart::largestRotation(const Eigen::VectorXd& q) const {
+  double largest = 0;
+  const int off = m_.formulation == Formulation::Joint ? 0 : 3;
+  for (int k = 0; k <= m_.last_dynamic - m_.first_dynamic; ++k)
+    largest = std::max(largest, q.segment<3>(3 + k * per_segment_ + off).norm());
+  return largest;
+}
+
+std::string RotationVectorChart::name(Eigen::Index k) const {
+  static const char* axis[] = {"x", "y", "z"};
+  if (k < 3) return std::string("top position ") + axis[k];
+  if (k >= work_) return "work integral " + std::to_string(k - work_);
+  const int i = m_.first_dynamic + static_cast<int>((k - 3) / per_segment_);
+  const int c = static_cast<int>((k - 3) % per_segment_);
+  const std::string seg = "segment " + std::to_string(i) + " ";
+  if (per_segment_ == 6 && c < 3) return seg + "position " + axis[c];
+  return seg + "rotation vector " + axis[c % 3];
+}
+
+}  // namespace maris::riser

@@ -1,0 +1,48 @@
+// Second-order form of the riser equations for the implicit generalized-α integrator (core/ode.hpp),
+// over one chunk of time in which every orientation is a rotation vector about a reference
+// (see riser_integration.hpp for why and how it is used).
+//
+// Coordinates q (and velocities v = q̇), in the order of the first-order state:
+//   top end (3): position, velocity                         (prescribed components are ignored by the pose)
+//   per dynamic segment: J: θ_i (3);  A: r_i (3), θ_i (3)    R_i = R_ref,i exp([θ_i]×), ω_body = J_r(θ_i) θ̇_i
+//   work integrals (4): q = ∫W dt (unused), v = W           (q̈ = power)
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "riser/riser_dynamics.hpp"
+
+namespace maris::riser {
+
+// Right Jacobian of SO(3): body angular velocity of R exp([θ]×) is J_r(θ) θ̇ (R fixed).
+Mat3 rightJacobian(const Vec3& theta);
+
+class RotationVectorChart {
+ public:
+  RotationVectorChart(const RiserModel& m, double stabilisation_rate);
+
+  Eigen::Index size() const { return size_; }
+  // Takes the orientations of first-order state y as the references; q (θ = 0) and v from y.
+  void reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v);
+  // First-order state (quaternions, angular velocities) of (q, v).
+  void toState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;
+  // r = acc − a(t, q, v), a from the O(n) solve of riser_dynamics mapped to the chart.
+  void residual(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
+                Eigen::VectorXd& r);
+  // Largest |θ_i| of q [rad].
+  double largestRotation(const Eigen::VectorXd& q) const;
+  // Name of coordinate k for error messages.
+  std::string name(Eigen::Index k) const;
+
+ private:
+  const RiserModel& m_;
+  RiserWorkspace ws_;
+  std::vector<Mat3> reference_;  // R_ref,i per dynamic segment
+  Eigen::VectorXd y_, dy_;
+  Eigen::Index size_ = 0;
+  int per_segment_ = 3;          // J: θ; A: r, θ
+  Eigen::Index work_ = 0;        // offset of the work coordinates in q
+};
+
+}  // namespace maris::riser

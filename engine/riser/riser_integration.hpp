@@ -1,0 +1,53 @@
+// Time integration of the riser: chooses an integrator of core/ode.hpp, runs it between sample times
+// and feeds the recorder.
+//
+// The state carries unit quaternions, which no general-purpose integrator keeps on the unit sphere;
+// the explicit integrators (RK4, DOPRI5) therefore run from sample to sample (≈ 2000 per run) and the
+// state is projected back (quaternions renormalised, spin about the axes removed without torsion) at
+// every sample. Between samples the right-hand side uses the normalised quaternion, so the drift of
+// the norm never reaches the physics.
+//
+// The implicit integrator (core generalized-α, second-order form M q̈ = f) needs a vector-space
+// configuration: each chunk re-parametrises every segment's orientation by a rotation vector θ_i about
+// its orientation at the chunk start, R_i = R_ref,i exp([θ_i]×) (local re-parametrisation, so no Euler
+// singularity), with velocities θ̇_i. The residual is r = q̈ − a(t, q, q̇), a = the accelerations of the
+// O(n) Newton–Euler/reaction solve mapped to θ̈ through the right Jacobian of SO(3). Work integrals ride
+// along as coordinates whose velocity is the work (q̈ = power). The iteration matrix of this residual is
+// dense (a depends on every segment through the reactions), so the implicit path forms it by n forward
+// differences and factorises it densely, kept across steps by the core integrator: O(N³) per refresh.
+#pragma once
+
+#include <string>
+
+#include "core/results.hpp"
+#include "core/run_context.hpp"
+#include "riser/riser_results.hpp"
+
+namespace maris::riser {
+
+enum class Integrator { Rk4, Dopri5, Implicit };
+
+struct IntegrationPlan {
+  Integrator method = Integrator::Rk4;
+  double step = 0.0;                // [s] RK4/implicit step; DOPRI5: largest step (0 = unlimited)
+  double stabilisation_rate = 0.0;  // [1/s] Baumgarte α of the constraints
+  double highest_frequency = 0.0;   // [rad/s] ω_max estimate (bending, torsion, tension)
+  std::string reason;               // why this integrator (auto) and step
+};
+
+// Chooses integrator, step and stabilisation from solver.integrator, solver.time_step and solver.tolerance.
+// "auto": implicit when the explicit stability limit would need more than 2e6 steps (stiff torsion of fine
+// discretisations) or when solver.tolerance >= 1e-3 and the implicit run is estimated cheaper; else RK4 at
+// half its stability limit (see docs/riser.md for the measured costs of the three).
+IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p);
+
+// Integrates y (at t = 0) to p.end_time, sampling `recorder` at ≈ 2000 history points, p.frame_count frames
+// and the stress times. Returns the solver statistics (steps, rejected, RHS evaluations, error estimate).
+// Throws SolverError (diverging state, naming time, step and quantity), RunCancelled.
+SolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
+                           Eigen::VectorXd& y, RiserRecorder& recorder, RunContext& context);
+
+// Name of a time for table names: 12.5 -> "12_5".
+std::string formatTime(double t);
+
+}  // namespace maris::riser
