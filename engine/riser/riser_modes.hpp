@@ -1,9 +1,22 @@
 // Natural frequencies and mode shapes of the segment chain, linearised about a static equilibrium
-// (the paper's "procedure of [60]", issue 10). Joint coordinates, no damping, no drag, top held.
+// (the paper's "procedure of [60]", issue 10). Undamped (no spring dampers, no drag damping); the
+// current's drag on the static shape is kept as a load; top held where its motion is prescribed.
+//
+// Why both formulations give the same frequencies: with Baumgarte feedback off, the absolute
+// equations keep Φ̈ = 0, so Dᵀ(q) f(q) = 0 for every configuration q at rest; at an equilibrium
+// (f = 0) this gives Dᵀ A = 0 for A = ∂f/∂q. The image of A therefore lies in the tangent space of
+// the constraints, every eigenvector with ω ≠ 0 is a motion that keeps the chain connected, and on
+// that space A is the joint-coordinate linearisation written in other coordinates (a similarity
+// transform). The 3(n+2) constraint-violating directions only add zero eigenvalues, which are
+// dropped. This needs f = 0 at the linearisation point, so the current's drag must stay in the model
+// (dropping it leaves the bent shape unbalanced and the two linearisations differed by 7e-5).
+// Test `AbsoluteAndJointLinearisationsGiveTheSameFrequencies` checks it numerically. When the loads do
+// not depend on positions at all the A position columns vanish and both give the same matrix.
 #pragma once
 
 #include <vector>
 
+#include "core/results.hpp"
 #include "riser/riser_statics.hpp"
 
 namespace maris::riser {
@@ -11,13 +24,26 @@ namespace maris::riser {
 struct RiserModes {
   std::vector<double> frequencies;           // [rad/s] ascending, constraint (zero) modes removed
   std::vector<std::vector<Vec3>> shapes;     // [-] node displacements (n+2 nodes) per mode, largest = 1
+                                             //     (all zero for a pure torsion mode)
+  std::vector<std::vector<double>> twists;   // [-] rotation of segment i about its own axis (n+1), largest = 1
+  std::vector<double> torsion_share;         // [-] Σ twist² / Σ |rotation|² of the mode (1 = pure torsion)
 };
 
-// Linearises q̈ = f(q) about the static state (q = rotation increments of the dynamic segments, 2 per
-// segment without torsion, plus the free top coordinates) by central differences of the O(n)
-// accelerations, A = ∂f/∂q, and solves the eigenproblem of -A: ω² = eigenvalues. Directions that
-// violate a held bottom end have zero eigenvalues (the constrained acceleration keeps Φ̈ = 0) and are
-// dropped. Dense O(N³) in N ≈ 3n: meant for n up to a few hundred. Returns at most `count` modes.
-RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count);
+// Linearises q̈ = f(q) about the static state by central differences of the O(n) accelerations
+// (evaluateRhs with Baumgarte feedback off), A = ∂f/∂q, and solves the eigenproblem of -A: ω² are
+// its positive real eigenvalues. Coordinates:
+//   Joint:    free top coordinates + a rotation increment per dynamic segment (3, or 2 without torsion);
+//   Absolute: position of each dynamic segment's origin (3) + the same rotation increments.
+// Zero eigenvalues (directions violating a held end or, in A, a joint) are dropped. Dense O(N³) with
+// N ≈ 3n (J) or 6n (A): meant for n up to a few hundred. Returns at most `count` modes.
+RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count,
+                        Formulation linearisation = Formulation::Joint);
+
+// Animation of the modes for the 3D view: for each mode, `frames_per_mode` frames over one period,
+// the static shape plus amplitude·sin(phase)·shape, amplitude = 5 % of L (torsion modes: the tube
+// colour shows the twist). Frame time = mode index (from 0) + phase/(2π), so mode k plays on [k, k+1).
+// Shapes are coloured by the modal displacement magnitude (twist for torsion-dominated modes).
+void appendModeFrames(const RiserModel& model, const StaticSolution& statics, const RiserModes& modes,
+                      int frames_per_mode, View3D& view);
 
 }  // namespace maris::riser

@@ -183,7 +183,7 @@ void RiserRecorder::addModes(const RiserModes& modes) {
   shapes.title = "Mode shapes (node displacements, largest = 1)";
   for (const char* c : {"mode", "node"}) shapes.add(c, "-");
   shapes.add("arc_length", "m");
-  for (const char* c : {"dx", "dy", "dz"}) shapes.add(c, "-");
+  for (const char* c : {"dx", "dy", "dz", "twist"}) shapes.add(c, "-");
   std::vector<double> index, omega, hertz, period;
   for (std::size_t k = 0; k < modes.frequencies.size(); ++k) {
     const double w = modes.frequencies[k];
@@ -194,14 +194,15 @@ void RiserRecorder::addModes(const RiserModes& modes) {
     for (int node = 0; node <= m_.n + 1; ++node) {
       const Vec3& d = modes.shapes[k][node];
       const double s = node <= m_.n ? m_.segments[node].arc_start : m_.length;
-      const double row[6] = {double(k + 1), double(node), s, d.x(), d.y(), d.z()};
-      for (int c = 0; c < 6; ++c) shapes.columns[c].values.push_back(row[c]);
+      const double row[7] = {double(k + 1), double(node), s, d.x(), d.y(), d.z(), modes.twists[k][std::min(node, m_.n)]};
+      for (int c = 0; c < 7; ++c) shapes.columns[c].values.push_back(row[c]);
     }
   }
   freq.add("mode", "-", index);
   freq.add("angular_frequency", "rad/s", omega);
   freq.add("frequency", "Hz", hertz);
   freq.add("period", "s", period);
+  freq.add("torsion_share", "-", modes.torsion_share);
   if (!omega.empty())
     r_.addScalar("first_natural_frequency", omega.front(), "rad/s", "Lowest natural frequency about the static state");
   r_.tables.push_back(std::move(freq));

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/scene.hpp"
+#include "riser/riser_envelope.hpp"
 #include "riser/riser_integration.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
@@ -21,12 +22,21 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   RiserRecorder recorder(model, p, plan.stabilisation_rate);
   recorder.sample(0.0, y, true, std::string("profile_static"));
   // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).
+  RiserModes modes;
   if (p.solve_statics && 3 * (model.n + 1) <= 600) {
     context.progress(0.0, "natural frequencies");
-    recorder.addModes(computeModes(model, statics, 6));
+    modes = computeModes(model, statics, 6);
+    recorder.addModes(modes);
   }
   const SolverStats stats = integrateRiser(model, p, plan, y, recorder, context);
-  return recorder.finish(stats, statics.iterations, statics.residual);
+  Results results = recorder.finish(stats, statics.iterations, statics.residual);
+  addEnvelope(model, results);
+  // Without a time history the 3D view animates the mode shapes instead (one period per mode).
+  if (p.end_time <= 0 && !modes.frequencies.empty()) {
+    results.view.frames.clear();
+    appendModeFrames(model, statics, modes, 24, results.view);
+  }
+  return results;
 }
 
 }  // namespace maris::riser

@@ -1,9 +1,13 @@
-// Natural frequencies of the linearised chain against closed forms (brief §5.2, §5.3, §5.5).
+// Natural frequencies of the linearised chain against closed forms (brief §5.2, §5.3, §5.5, §5.7),
+// an independent finite-difference solution, and each other (joint vs absolute linearisation).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 #include "riser/riser_modes.hpp"
+#include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
 
 namespace maris::riser {
@@ -12,11 +16,12 @@ namespace {
 using test::kPi;
 
 // Distinct frequencies: in 3D every planar bending mode appears twice (two transverse planes).
-std::vector<double> distinctFrequencies(const RiserParameters& p, int count) {
+std::vector<double> distinctFrequencies(const RiserParameters& p, int count,
+                                        Formulation linearisation = Formulation::Joint) {
   const RiserModel m = buildRiserModel(p);
   RunContext context;
   const StaticSolution s = solveStatics(m, context);
-  const RiserModes modes = computeModes(m, s, 4 * count);
+  const RiserModes modes = computeModes(m, s, 4 * count, linearisation);
   std::vector<double> out;
   for (double w : modes.frequencies)
     if (out.empty() || w > out.back() * (1 + 1e-6)) out.push_back(w);
@@ -96,6 +101,245 @@ TEST(RiserModes, CantileverMatchesEulerBernoulli) {
     const double exact = beta[k] * beta[k] * std::sqrt(ei / (mu * std::pow(10.0, 4)));
     EXPECT_NEAR(w[k], exact, 5e-3 * exact) << "mode " << k + 1;
   }
+}
+
+// Pinned-pinned string (EI → 0, no gravity) on a tensioner: ω_k = (kπ/L)√(T/μ). The SM chain is a
+// discrete string; its relative error has the size (kπ/n)²/24 of a second-order lumped string's
+// dispersion (positive here: the rigid segments carry consistent rotary inertia; measured +3.7 % for
+// k = 3, n = 10): tolerance 1.2x that, and halving Δ must cut each error by about 4 (3 to 5).
+TEST(RiserModes, StringLimitMatchesTautStringFrequencies) {
+  double previous[3] = {0, 0, 0};
+  for (int n : {10, 20}) {
+    RiserParameters p = test::calmInAir();
+    p.length = 10.0;
+    p.segment_count = n;
+    p.outer_diameter = 0.1;
+    p.inner_diameter = 0.0;
+    p.added_mass_coefficient = 0.0;
+    p.density = 1.0 / (kPi / 4 * 0.01);  // μ = 1 kg/m
+    p.youngs_modulus = 1e-6;              // EI ≈ 5e-12 N·m²: a string
+    p.torsion = false;
+    p.gravity = 0.0;
+    p.top_condition = "tensioner";
+    p.top_tension = 100.0;
+    p.bottom_condition = "pinned";
+    p.bottom_z = -10.0;
+    const std::vector<double> w = distinctFrequencies(p, 3);
+    ASSERT_EQ(w.size(), 3u);
+    for (int k = 0; k < 3; ++k) {
+      const double exact = (k + 1) * kPi / p.length * std::sqrt(p.top_tension / 1.0);
+      const double error = (w[k] - exact) / exact;
+      EXPECT_LT(std::abs(error), 1.2 * std::pow((k + 1) * kPi / n, 2) / 24) << "mode " << k + 1 << " n = " << n;
+      if (previous[k] != 0) {
+        EXPECT_NEAR(previous[k] / error, 4.0, 1.0) << "mode " << k + 1;
+      }
+      previous[k] = error;
+    }
+  }
+}
+
+// Fixed-free torsion (top clamped, bottom free, no gravity): ω_k = (2k-1)π/(2L)·√(GJ/ι) (brief §5.7).
+// The torsion modes are those with torsion_share > 0.99 (the others are bending modes). The chain is a
+// lumped second-order string in twist: relative error -((2k-1)π/(2n))²/24 to leading order; tolerance
+// 1.2x that and a ratio of about 4 (3 to 5) when Δ is halved.
+TEST(RiserModes, FixedFreeTorsionMatchesClosedForm) {
+  double previous[2] = {0, 0};
+  for (int n : {10, 20}) {
+    RiserParameters p = test::calmInAir();
+    p.length = 10.0;
+    p.segment_count = n;
+    p.outer_diameter = 0.1;
+    p.inner_diameter = 0.08;
+    p.gravity = 0.0;
+    p.top_condition = "clamped";
+    p.bottom_condition = "free";
+    const RiserModel m = buildRiserModel(p);
+    RunContext context;
+    const StaticSolution s = solveStatics(m, context);
+    const RiserModes modes = computeModes(m, s, 6 * n);
+    std::vector<double> torsion;
+    for (std::size_t k = 0; k < modes.frequencies.size(); ++k)
+      if (modes.torsion_share[k] > 0.99) torsion.push_back(modes.frequencies[k]);
+    ASSERT_GE(torsion.size(), 2u) << "n = " << n;
+    const double wave_speed = std::sqrt(p.shear_modulus / p.density);  // √(GJ/ι) for a tube: J = polar moment
+    for (int k = 0; k < 2; ++k) {
+      const double exact = (2 * k + 1) * kPi / (2 * p.length) * wave_speed;
+      const double error = (torsion[k] - exact) / exact;
+      EXPECT_LT(std::abs(error), 1.2 * std::pow((2 * k + 1) * kPi / (2 * n), 2) / 24)
+          << "torsion mode " << k + 1 << " n = " << n;
+      if (previous[k] != 0) {
+        EXPECT_NEAR(previous[k] / error, 4.0, 1.0) << "torsion mode " << k + 1;
+      }
+      previous[k] = error;
+    }
+  }
+}
+
+// Independent reference for a heavy riser: μ ÿ = (T(s) y')' - EI y'''' with T(s) = T_top - w s
+// (submerged weight w, s from the top), pinned ends (y = y'' = 0), by second-order finite
+// differences on N intervals (ghost points y_{-1} = -y_1), Richardson-extrapolated from N = 200 and
+// 400 (remaining error O(N⁻⁴) ≈ 1e-8 relative). Returns the lowest `count` ω [rad/s].
+std::vector<double> heavyRiserFiniteDifference(double length, double mu, double ei, double top_tension,
+                                               double weight, int count) {
+  auto solve = [&](int intervals) {
+    const int size = intervals - 1;
+    const double h = length / intervals;
+    const double stencil[5] = {1, -4, 6, -4, 1};
+    Eigen::MatrixXd k = Eigen::MatrixXd::Zero(size, size);
+    for (int j = 0; j < size; ++j) {
+      const double s = (j + 1) * h;
+      const double t_above = top_tension - weight * (s - h / 2), t_below = top_tension - weight * (s + h / 2);
+      k(j, j) += (t_above + t_below) / (h * h);
+      if (j > 0) k(j, j - 1) -= t_above / (h * h);
+      if (j + 1 < size) k(j, j + 1) -= t_below / (h * h);
+      for (int o = -2; o <= 2; ++o) {
+        int col = j + o;
+        double sign = 1;
+        if (col == -1 || col == size) continue;  // the support itself: y = 0
+        if (col < -1) col = -col - 2, sign = -1;  // ghost y_{-1} = -y_1 (moment-free end)
+        if (col > size) col = 2 * size - col, sign = -1;
+        k(j, col) += sign * ei * stencil[o + 2] / std::pow(h, 4);
+      }
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(k / mu);
+    std::vector<double> w;
+    for (int c = 0; c < count; ++c) w.push_back(std::sqrt(eig.eigenvalues()[c]));
+    return w;
+  };
+  const std::vector<double> coarse = solve(200), fine = solve(400);
+  std::vector<double> out;
+  for (int c = 0; c < count; ++c) out.push_back((4 * fine[c] - coarse[c]) / 3);
+  return out;
+}
+
+// Heavy riser in water: 100 m steel pipe (D 0.3/0.26 m, water-filled), top tensioner 2x its submerged
+// weight, bottom pinned, fully submerged, so tension falls linearly from 2wL to wL along it and EI
+// matters as much as tension. SM against the finite-difference Sturm-Liouville solution: O(1/n²),
+// tolerance 0.5 % at n = 20 and a ratio 3 to 5 when Δ is halved (n = 40).
+TEST(RiserModes, HeavyRiserMatchesFiniteDifferenceSturmLiouville) {
+  RiserParameters p = test::calmInAir();
+  p.length = 100.0;
+  p.outer_diameter = 0.3;
+  p.inner_diameter = 0.26;
+  p.torsion = false;
+  p.water_level = 1.0;  // whole riser submerged
+  p.seabed_level = -100.0;
+  p.top_condition = "tensioner";
+  p.bottom_condition = "pinned";
+  p.bottom_z = -100.0;
+  const double a_out = kPi / 4 * 0.09, a_inn = kPi / 4 * 0.26 * 0.26;
+  const double wall = p.density * (a_out - a_inn), contents = p.internal_fluid_density * a_inn;
+  const double mu = wall + contents + p.water_density * p.added_mass_coefficient * a_out;
+  const double weight = (wall + contents - p.water_density * a_out) * p.gravity;
+  p.top_tension = 2 * weight * p.length;
+  const double ei = test::bendingStiffness(p);
+  const std::vector<double> exact = heavyRiserFiniteDifference(p.length, mu, ei, p.top_tension, weight, 3);
+  double previous[3] = {0, 0, 0};
+  for (int n : {20, 40}) {
+    p.segment_count = n;
+    const std::vector<double> w = distinctFrequencies(p, 3);
+    ASSERT_EQ(w.size(), 3u);
+    for (int k = 0; k < 3; ++k) {
+      const double error = (w[k] - exact[k]) / exact[k];
+      EXPECT_LT(std::abs(error), n == 20 ? 5e-3 : 1.5e-3) << "mode " << k + 1 << " n = " << n;
+      if (previous[k] != 0) {
+        EXPECT_NEAR(previous[k] / error, 4.0, 1.0) << "mode " << k + 1;
+      }
+      previous[k] = error;
+    }
+  }
+}
+
+// Both linearisations of the same bent equilibrium (default riser in its 1 m/s current, torsion on,
+// bottom on a spring so that loads depend on positions and the A position columns do not vanish):
+// the absolute one has 6 coordinates per segment and 3(n+2) extra zero modes, yet its non-zero
+// frequencies must equal the joint ones (see riser_modes.hpp for why). Central differences with step
+// 1e-6 leave ~1e-9 relative noise (measured 2e-10): tolerance 1e-7.
+TEST(RiserModes, AbsoluteAndJointLinearisationsGiveTheSameFrequencies) {
+  RiserParameters p;
+  p.segment_count = 10;
+  p.bottom_condition = "spring";
+  p.bottom_spring_stiffness = 2e5;
+  p.end_time = 0.0;
+  p.stress_times.clear();
+  const RiserModel m = buildRiserModel(p);
+  RunContext context;
+  const StaticSolution s = solveStatics(m, context);
+  const RiserModes joint = computeModes(m, s, 12, Formulation::Joint);
+  const RiserModes absolute = computeModes(m, s, 12, Formulation::Absolute);
+  ASSERT_EQ(joint.frequencies.size(), 12u);
+  ASSERT_EQ(absolute.frequencies.size(), 12u);
+  for (int k = 0; k < 12; ++k) {
+    EXPECT_NEAR(absolute.frequencies[k], joint.frequencies[k], 1e-7 * joint.frequencies[k]) << "mode " << k + 1;
+    // Same shape up to sign, except within pairs of (nearly) equal frequency, which may mix.
+    double dot = 0, nj = 0, na = 0;
+    for (int node = 0; node <= m.n + 1; ++node) {
+      dot += joint.shapes[k][node].dot(absolute.shapes[k][node]);
+      nj += joint.shapes[k][node].squaredNorm();
+      na += absolute.shapes[k][node].squaredNorm();
+    }
+    const bool paired = (k > 0 && std::abs(joint.frequencies[k] / joint.frequencies[k - 1] - 1) < 1e-3) ||
+                        (k < 11 && std::abs(joint.frequencies[k + 1] / joint.frequencies[k] - 1) < 1e-3);
+    if (!paired && nj > 0) {
+      EXPECT_NEAR(std::abs(dot) / std::sqrt(nj * na), 1.0, 1e-5) << "mode " << k + 1;
+    }
+  }
+}
+
+// Without a time history the scene's 3D view animates each mode over one period: 24 frames per mode at
+// times k + f/24, and at a quarter period the tube is the static shape plus 5 % L times the shape.
+TEST(RiserModes, StaticRunAnimatesModeShapesInTheView) {
+  RiserParameters p = test::tipLoadedCantilever(10, 0.0);
+  p.point_loads.clear();
+  RunContext context;
+  const Results r = solveRiser(p, context);
+  const Table* modes = r.findTable("modes");
+  const Table* shapes = r.findTable("mode_shapes");
+  ASSERT_NE(modes, nullptr);
+  ASSERT_NE(shapes, nullptr);
+  const std::size_t count = modes->rows();
+  ASSERT_EQ(r.view.frames.size(), 24 * count);
+  const Frame3D& quarter = r.view.frames[6];  // mode 1, phase π/2
+  EXPECT_NEAR(quarter.time, 0.25, 1e-12);
+  const auto& tip = quarter.shapes.front().points.back();
+  const int tip_row = p.segment_count + 1;  // mode 1, node n+1
+  EXPECT_NEAR(tip.z(), 0.05 * p.length * shapes->find("dz")->values[tip_row], 1e-9);
+  EXPECT_NEAR(tip.x(), p.length + 0.05 * p.length * shapes->find("dx")->values[tip_row], 1e-9);
+}
+
+// Internal flow without its Coriolis term (the linearisation keeps only shape-dependent loads): for the
+// pinned-pinned tensioned beam of eq (66) the modes stay sines, so ω_1² = (π/L)²[T − M_f u² + EI(π/L)²]/m
+// with M_f = ρ_f A_inn (Païdoussis; brief §5.4) and m the substitute mass, and ω_1 → 0 at the divergence
+// speed u_c = √((T + EIπ²/L²)/M_f). n = 20: the SM error of eq (66) is 5e-4 (test above), the u² term
+// uses a three-point curvature fit (O(Δ²)): tolerance 2e-3 relative at u = 0.5 u_c; past u_c no mode 1.
+TEST(RiserModes, InternalFlowLowersFrequencyToZeroAtDivergenceSpeed) {
+  RiserParameters p = test::calmInAir();
+  p.length = 10.0;
+  p.segment_count = 20;
+  p.outer_diameter = 0.1;
+  p.inner_diameter = 0.08;
+  p.added_mass_coefficient = 0.0;
+  p.internal_fluid_density = 1000.0;
+  p.torsion = false;
+  p.gravity = 0.0;
+  p.top_condition = "tensioner";
+  p.top_tension = 1000.0;
+  p.bottom_condition = "pinned";
+  p.bottom_z = -10.0;
+  const double a_inn = kPi / 4 * 0.0064, a_wall = kPi / 4 * (0.01 - 0.0064);
+  const double fluid = p.internal_fluid_density * a_inn, m = fluid + p.density * a_wall;
+  const double ei = test::bendingStiffness(p), k1 = kPi / p.length;
+  const double critical = std::sqrt((p.top_tension + ei * k1 * k1) / fluid);
+  p.internal_flow_speed = 0.5 * critical;
+  const std::vector<double> w = distinctFrequencies(p, 1);
+  ASSERT_EQ(w.size(), 1u);
+  const double exact = k1 * std::sqrt((p.top_tension - fluid * p.internal_flow_speed * p.internal_flow_speed +
+                                       ei * k1 * k1) / m);
+  EXPECT_NEAR(w[0], exact, 2e-3 * exact);
+  p.internal_flow_speed = 1.05 * critical;  // beyond divergence: the first mode is unstable (ω² < 0)
+  const std::vector<double> beyond = distinctFrequencies(p, 1);
+  ASSERT_EQ(beyond.size(), 1u);
+  EXPECT_GT(beyond[0], 2.0 * exact) << "the lowest remaining mode must be the second one";
 }
 
 }  // namespace
