@@ -50,12 +50,20 @@ struct FloatModel {
   ModeRadiation surge, heave;           // filled by buildRadiation
 };
 
+// Radiation between two different translational DoFs (multi-body coefficients): the force on DoF `row` from the
+// motion of DoF `col`, DoF index 2·float + (0 surge, 1 heave).
+struct CrossRadiation {
+  int row = 0, col = 0;
+  ModeRadiation mode;
+};
+
 struct WecModel {
   double density = 0.0, gravity = 0.0, depth = 0.0;
   double direction = 1.0;  // +1: waves travel along +x, −1: along −x
   // [kg] error bar of A∞ when it was recovered by Ogilvie from an imported table (Nemoh), 0 otherwise.
   double a_inf_error_surge = 0.0, a_inf_error_heave = 0.0;
   std::vector<FloatModel> floats;
+  std::vector<CrossRadiation> cross;  // off-diagonal radiation entries, filled by buildRadiation (coupled only)
 };
 
 // Derived geometry and hydrodynamics; radiation kernels are computed by buildRadiation (costly).

@@ -189,6 +189,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   TimeDomainOptions base;
   base.state_space = p.radiation == "state_space";
   base.projection = p.constraint_control == "projection";
+  base.newmark = p.augmented_integrator == "newmark_two_loop";
   base.baumgarte_rate = p.baumgarte_rate;
   base.time_step = p.time_step;
   base.duration = p.duration;
@@ -241,12 +242,19 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
                   "max |theta_classical - theta_augmented| / max |theta - theta0|");
     res.addScalar("classical_augmented_force_difference", amp_f > 0 ? d_f / amp_f : d_f, "-",
                   "max hinge-force difference / max hinge force");
-    res.addScalar("constraint_drift_max", second.max_position_drift, "m", "max |C| of the augmented run before projection");
+    res.addScalar("constraint_drift_max", second.max_position_drift, "m",
+                  "max |C| of the augmented run (RK4: before projection; Newmark: after the Newton-Raphson loop)");
+    res.addScalar("constraint_velocity_drift_max", second.max_velocity_drift, "m/s", "max |C_q dq/dt| of the augmented run");
+    if (base.newmark) {
+      res.addScalar("newmark_stability_step", second.stability_step, "s", "Stability limit 2/omega_max of explicit Newmark");
+      res.addScalar("newmark_max_velocity_iterations", second.max_velocity_iterations, "-",
+                    "Most velocity fixed-point iterations in one Newmark step");
+    }
     res.stats.method += "; " + second.method;
     res.stats.steps += second.steps;
     res.stats.rhs_evaluations += second.rhs_evaluations;
-    res.addScalar("rk4_error_estimate_augmented", second.error_estimate, "rad",
-                  "Sum of embedded RK4 local-error estimates of theta, augmented run");
+    res.addScalar("error_estimate_augmented", second.error_estimate, "rad",
+                  "Sum of local-error estimates of theta, augmented run (RK4 embedded pair or Newmark h^2/6 |dtheta_dd|)");
   }
   res.tables.push_back(std::move(hist));
   for (std::size_t i = 0; i < model.floats.size(); ++i) {
