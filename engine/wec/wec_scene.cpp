@@ -1,5 +1,6 @@
 // Registry entry of the hinged-float WEC scene: parameters → model → frequency domain, radiation memory,
 // time-domain check points, main time-domain run(s) → Results.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -81,6 +82,19 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
 // Radiation kernel fit quality and the Ogilvie check of A∞ for float 1.
 void addRadiationScalars(const WecModel& model, Results& res, RunContext& ctx) {
   const auto& f = model.floats.front();
+  if (model.coupled) {
+    double worst_r2 = 1.0, worst_b = 0.0;
+    for (const auto& c : model.cross) {
+      worst_r2 = std::min(worst_r2, c.mode.fit.r_squared);
+      worst_b = std::max(worst_b, c.mode.quality.damping_error);
+      if (!c.mode.fit.stable()) ctx.warn("cross radiation kernel fit has an unstable pole");
+    }
+    res.addScalar("cross_radiation_channels", static_cast<double>(model.cross.size()), "-",
+                  "Off-diagonal (float-float and surge-heave) radiation entries with their own kernels");
+    res.addScalar("cross_kernel_fit_r2_min", worst_r2, "-", "Lowest R^2 of the cross-kernel modal fits");
+    res.addScalar("cross_kernel_fit_damping_error_max", worst_b, "-",
+                  "Largest max|B_fit - B| / max|B| of the cross-kernel fits on 0.3-3 rad/s");
+  }
   for (auto [name, mode] : {std::pair{"surge", &f.surge}, std::pair{"heave", &f.heave}}) {
     const std::string s = name;
     res.addScalar("kernel_fit_order_" + s, mode->fit.order, "-", "States of the modal (Prony) fit of K(t)");
