@@ -185,7 +185,13 @@ TEST(WecCoupled, TimeDomainMatchesCoupledFrequencyDomain) {
   writeBodies(pair, table(2, kCoupling, -1.0, 1.0));
   const WecModel m = wec_test::model(twoFloats(pair));
   EXPECT_EQ(m.cross.size(), 4u);  // (surge 1, surge 2), (heave 1, heave 2), both ways; surge–heave terms are 0
-  for (const auto& c : m.cross) EXPECT_TRUE(c.mode.fit.stable());
+  double r2 = 1.0;
+  for (const auto& c : m.cross) {
+    EXPECT_TRUE(c.mode.fit.stable());
+    r2 = std::min(r2, c.mode.fit.r_squared);
+  }
+  RecordProperty("cross_fit_r2_min", std::to_string(r2));
+  double worst_amp = 0.0, worst_phase = 0.0, worst_balance = 0.0;
   for (bool augmented : {false, true}) {
     TimeDomainOptions o;
     o.augmented = augmented;
@@ -195,14 +201,19 @@ TEST(WecCoupled, TimeDomainMatchesCoupledFrequencyDomain) {
       double exc = 0.0, out = 0.0;
       for (std::size_t i = 0; i < 2; ++i) {
         const FrequencyResponse fd = solveFrequency(m, m.floats[i], w);
+        worst_amp = std::max(worst_amp, std::abs(std::abs(s.pitch[i]) / std::abs(fd.pitch) - 1.0));
+        worst_phase = std::max(worst_phase, std::abs(std::arg(s.pitch[i] / fd.pitch)) / kDeg);
         EXPECT_NEAR(std::abs(s.pitch[i]) / std::abs(fd.pitch), 1.0, 0.015) << w << " float " << i << " " << augmented;
         EXPECT_NEAR(std::arg(s.pitch[i] / fd.pitch), 0.0, 2.0 * kDeg) << w << " float " << i << " " << augmented;
         exc += s.excitation_power[i];
         out += s.pto_power[i] + s.radiated_power[i];
       }
+      worst_balance = std::max(worst_balance, std::abs(out / exc - 1.0));
       EXPECT_NEAR(out / exc, 1.0, 0.01) << w << " " << augmented;
     }
   }
+  RecordProperty("worst", std::to_string(worst_amp) + " " + std::to_string(worst_phase) + " deg, balance " +
+                              std::to_string(worst_balance));
 }
 
 // A two-body file with three floats, or with waves along −x (heading 180 is not read), is an input error naming
