@@ -15,3 +15,17 @@ std::optional<std::string_view> builtinResource(std::string_view path);
 std::vector<std::string> builtinResourcePaths();
 
 }  // namespace maris
+
+namespace maris {
+
+// Data files that scenarios name (offsets, measured points, records): "builtin:NAME" is
+// resources/data/<scene>/NAME embedded in the engine, anything else a path on disk. One spelling
+// for every scene, so a scenario that ships its data runs from any folder.
+bool isBuiltinDataPath(std::string_view path);
+// Why `path` cannot be read ("no built-in data set ... (available: ...)", "is not a readable
+// file"), or nullopt when it can. For validation, which reports every bad field.
+std::optional<std::string> dataPathProblem(std::string_view path, std::string_view scene);
+// The text behind `path`; throws InputError(field, path, reason) when it cannot be read.
+std::string readDataText(std::string_view path, std::string_view scene, const std::string& field);
+
+}  // namespace maris

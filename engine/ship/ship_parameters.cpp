@@ -23,12 +23,7 @@ constexpr BuiltinHull kBuiltinHulls[] = {
     {"kcs", "data/ship/kcs_model_offsets.csv", "KCS (SIMMAN 2014 IGES)", 230.0 / 31.5994},
 };
 
-constexpr std::string_view kBuiltinPrefix = "builtin:";
-const std::string kMeasuredPrefixPath = "data/ship/";
-
 }  // namespace
-
-bool isBuiltinMeasured(const std::string& path) { return path.rfind(kBuiltinPrefix, 0) == 0; }
 
 SchemaBinder<ShipParameters> shipSchemaBinder() {
   using P = ShipParameters;
@@ -110,13 +105,9 @@ std::vector<FieldError> checkShipParameters(const ShipParameters& p) {
     e.push_back({"hull.offsets_file", "\"\"", "must name a CSV file when hull.source = offsets_file"});
   if (p.hull_source == "offsets_file" && !p.offsets_file.empty() && !std::filesystem::is_regular_file(p.offsets_file))
     e.push_back({"hull.offsets_file", Json(p.offsets_file).dump(), "is not a readable file"});
-  if (isBuiltinMeasured(p.measured_file)) {
-    if (!builtinResource(kMeasuredPrefixPath + p.measured_file.substr(kBuiltinPrefix.size())))
-      e.push_back({"measured.file", Json(p.measured_file).dump(),
-                   "is not a built-in data set (see resources/data/ship/README.md)"});
-  } else if (!p.measured_file.empty() && !std::filesystem::is_regular_file(p.measured_file)) {
-    e.push_back({"measured.file", Json(p.measured_file).dump(), "is not a readable file"});
-  }
+  if (!p.measured_file.empty())
+    if (auto problem = dataPathProblem(p.measured_file, "ship"))
+      e.push_back({"measured.file", Json(p.measured_file).dump(), *problem});
   if (p.form_factor_method == "prohaska" && p.measured_file.empty())
     e.push_back({"viscous.form_factor_method", "\"prohaska\"",
                  "needs measured.file (the measured C_T points that Prohaska's fit uses)"});
@@ -146,14 +137,7 @@ HullForm buildHullForm(const ShipParameters& p) {
 
 MeasuredPoints readMeasuredPoints(const std::string& path) {
   const std::string origin = "parameters.measured.file (" + path + ")";
-  std::string text;
-  if (isBuiltinMeasured(path)) {
-    const auto builtin = builtinResource(kMeasuredPrefixPath + path.substr(kBuiltinPrefix.size()));
-    if (!builtin) throw InputError(origin, Json(path).dump(), "is not a built-in data set");
-    text = std::string(*builtin);
-  } else {
-    text = readTextFile(path);
-  }
+  const std::string text = readDataText(path, "ship", origin);
   MeasuredPoints m;
   std::size_t pos = 0;
   int line = 0, froude_col = -1, ct_col = -1;

@@ -70,7 +70,5 @@ struct MeasuredPoints {
   std::vector<double> froude, c_total;
 };
 MeasuredPoints readMeasuredPoints(const std::string& path);
-// True when `path` names a built-in measured data set ("builtin:NAME") rather than a file.
-bool isBuiltinMeasured(const std::string& path);
 
 }  // namespace maris::ship
