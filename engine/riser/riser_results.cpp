@@ -243,13 +243,7 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
                 "Integrator's relative global error estimate (sum of local estimates, see docs/numerics.md)");
   // Plots.
   auto plot = [&](std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
-    PlotSpec p;
-    p.name = std::move(name);
-    p.title = std::move(title);
-    p.table = std::move(table);
-    p.x = std::move(x);
-    p.y = std::move(y);
-    out.plots.push_back(std::move(p));
+    out.plots.push_back(makePlot(std::move(name), std::move(title), std::move(table), std::move(x), std::move(y)));
   };
   if (h.rows() > 1) {
     plot("probe_displacement", "Probe point displacement", "history", "time", {"probe_dx", "probe_dy", "probe_dz"});

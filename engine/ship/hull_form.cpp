@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/monotone_cubic.hpp"
+
 namespace maris::ship {
 
 namespace {
@@ -93,17 +95,17 @@ HullGrid sampleHull(const HullForm& hull, int nx, int nz) {
   g.dz = depth / (nz - 1);
   Eigen::MatrixXd by_station(st.size(), nz);
   for (std::size_t s = 0; s < st.size(); ++s) {
-    const Pchip section(st[s].z, st[s].half_breadth);
-    for (int j = 0; j < nz; ++j) by_station(s, j) = section(j == nz - 1 ? -depth : g.z(j), 0.0);
+    const MonotoneCubic section(st[s].z, st[s].half_breadth);
+    for (int j = 0; j < nz; ++j) by_station(s, j) = section.valueOr(j == nz - 1 ? -depth : g.z(j), 0.0);
   }
   std::vector<double> xs(st.size());
   for (std::size_t s = 0; s < st.size(); ++s) xs[s] = st[s].x;
   for (int j = 0; j < nz; ++j) {
     std::vector<double> ys(by_station.rows());
     for (Eigen::Index s = 0; s < by_station.rows(); ++s) ys[s] = by_station(s, j);
-    const Pchip waterline(xs, ys);
+    const MonotoneCubic waterline(xs, ys);
     for (int i = 0; i < nx; ++i)
-      g.half_breadth(i, j) = std::max(0.0, waterline(i == nx - 1 ? xs.back() : g.x(i), 0.0));
+      g.half_breadth(i, j) = std::max(0.0, waterline.valueOr(i == nx - 1 ? xs.back() : g.x(i), 0.0));
   }
   return g;
 }

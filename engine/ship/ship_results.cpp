@@ -50,16 +50,6 @@ void addParticulars(Results& r, const ShipModel& m) {
   r.addScalar("wave_number_factor", m.wave_number_factor, "-", "k0_hat/k0 applied by the wave-number correction");
 }
 
-PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
-  PlotSpec plot;
-  plot.name = std::move(name);
-  plot.title = std::move(title);
-  plot.table = std::move(table);
-  plot.x = std::move(x);
-  plot.y = std::move(y);
-  return plot;
-}
-
 // The hull as two Surface shapes (port and starboard), sampled coarser than the Michell grid.
 Shape3D hullSurface(const HullForm& hull, double side) {
   const HullGrid g = sampleHull(hull, 81, 21);
