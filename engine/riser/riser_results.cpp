@@ -205,6 +205,9 @@ void RiserRecorder::addModes(const RiserModes& modes) {
   freq.add("torsion_share", "-", modes.torsion_share);
   if (!omega.empty())
     r_.addScalar("first_natural_frequency", omega.front(), "rad/s", "Lowest natural frequency about the static state");
+  if (std::isfinite(modes.divergence_flow_speed))
+    r_.addScalar("divergence_flow_speed", modes.divergence_flow_speed, "m/s",
+                 "Internal flow speed |u| at which the lowest natural frequency reaches zero (at the static shape)");
   r_.tables.push_back(std::move(freq));
   r_.tables.push_back(std::move(shapes));
 }

@@ -204,7 +204,7 @@ HullParticulars computeParticulars(const HullGrid& g, double length_pp) {
   return p;
 }
 
-ForeShoulder foreShoulder(const HullGrid& g) {
+ForeShoulder foreShoulder(const HullGrid& g, double shoulder_distance) {
   const Eigen::VectorXd wl = g.half_breadth.col(0);
   const double ymax = wl.maxCoeff();
   int bow = -1;
@@ -212,9 +212,17 @@ ForeShoulder foreShoulder(const HullGrid& g) {
     if (wl[i] > 0.0) bow = std::min(i + 1, g.nx() - 1);
   ForeShoulder fs;
   if (bow < 0) return fs;
-  // Walk aft from the bow until the waterline reaches its maximum (within 1e-6: a parallel middle body
-  // interpolated from equal offsets is flat to round-off).
   for (int i = bow; i > 0; --i) {
+    if (shoulder_distance > 0) {
+      // A given shoulder: the last step is cut where it reaches the distance (the waterline is linear on it).
+      const double step = std::min(g.dx, shoulder_distance - fs.distance);
+      fs.arc_length += std::hypot(step, (wl[i] - wl[i - 1]) * step / g.dx);
+      fs.distance += step;
+      if (fs.distance >= shoulder_distance * (1.0 - 1e-12)) break;
+      continue;
+    }
+    // Walk aft from the bow until the waterline reaches its maximum (within 1e-6: a parallel middle body
+    // interpolated from equal offsets is flat to round-off).
     fs.arc_length += std::hypot(g.dx, wl[i] - wl[i - 1]);
     fs.distance += g.dx;
     if (wl[i - 1] >= ymax * (1.0 - 1e-6)) break;
