@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace maris::riser {
 namespace {
@@ -150,7 +151,9 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   if (profile_name) {
     Table tab;
     tab.name = *profile_name;
-    tab.title = "Along the riser at t = " + std::to_string(t) + " s";
+    std::ostringstream title;  // 6 significant digits, no trailing zeros: "t = 24 s", "t = 12.5 s"
+    title << "Along the riser at t = " << t << " s";
+    tab.title = title.str();
     tab.add("arc_length", "m", prof.arc_length);
     std::vector<double> x, yv, z, dx;
     for (int k = 0; k < nodes; ++k) {
