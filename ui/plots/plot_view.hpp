@@ -26,12 +26,19 @@ class PlotView : public QWidget {
     QString label;
     std::shared_ptr<const Results> results;
   };
-  // First source solid, the others overlaid. Keeps the results alive while shown.
+  // First source solid, the others overlaid. Keeps the results alive while shown. A hidden tab
+  // redraws when it is shown (or asked for its data), so live updates cost one visible plot only.
   void setSources(std::vector<Source> sources);
 
   const PlotSpec& spec() const { return spec_; }
-  QCustomPlot* plot() const { return plot_; }
-  bool hasData() const { return has_data_; }
+  QCustomPlot* plot() const {
+    ensureDrawn();
+    return plot_;
+  }
+  bool hasData() const {
+    ensureDrawn();
+    return has_data_;
+  }
   // Points drawn for the first source's y columns (what the test of "expected points" reads).
   int pointCount() const;
 
@@ -47,9 +54,11 @@ class PlotView : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;  // a new palette (theme) redraws in its colours
+  void showEvent(QShowEvent* event) override;
 
  private:
   void redraw();
+  void ensureDrawn() const;
   void applyAxisScales();
   void onMouseMove(QMouseEvent* event);
 
@@ -60,6 +69,7 @@ class PlotView : public QWidget {
   QLabel* empty_;
   QCPItemTracer* tracer_ = nullptr;
   bool has_data_ = false;
+  bool stale_ = false;  // sources changed while hidden
   bool log_x_;
   bool log_y_;
 };
