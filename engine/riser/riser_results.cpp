@@ -15,16 +15,6 @@ int nearestJoint(const RiserModel& m, double s) {
   return std::clamp(static_cast<int>(std::lround(s / m.element_length + 0.5)), 1, m.n);
 }
 
-PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
-  PlotSpec p;
-  p.name = std::move(name);
-  p.title = std::move(title);
-  p.table = std::move(table);
-  p.x = std::move(x);
-  p.y = std::move(y);
-  return p;
-}
-
 // The time-history plots (shared by the final and the partial results, so live plots keep their tabs).
 void addHistoryPlots(Results& out) {
   out.plots.push_back(makePlot("probe_displacement", "Probe point displacement", "history", "time",

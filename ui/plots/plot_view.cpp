@@ -41,6 +41,14 @@ void PlotView::setSources(std::vector<Source> sources) {
     stale_ = true;
 }
 
+void PlotView::setReferences(std::vector<Table> references) {
+  references_ = std::move(references);
+  if (isVisible())
+    redraw();
+  else
+    stale_ = true;
+}
+
 void PlotView::showEvent(QShowEvent* event) {
   QWidget::showEvent(event);
   ensureDrawn();
@@ -56,7 +64,7 @@ void PlotView::redraw() {
   std::vector<PlotSource> drawn;
   for (const auto& s : sources_) drawn.push_back({s.label, s.results.get()});
   tracer_ = nullptr;
-  has_data_ = !drawn.empty() && fillPlot(*plot_, drawn, spec_);
+  has_data_ = !drawn.empty() && fillPlot(*plot_, drawn, spec_, references_);
   if (has_data_) {
     for (auto* axis : plot_->axisRect()->axes()) axis->grid()->setSubGridVisible(false);
     applyAxisScales();

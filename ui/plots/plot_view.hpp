@@ -30,6 +30,10 @@ class PlotView : public QWidget {
   // redraws when it is shown (or asked for its data), so live updates cost one visible plot only.
   void setSources(std::vector<Source> sources);
 
+  // A user's reference tables drawn as markers on this plot (kept across runs).
+  void setReferences(std::vector<Table> references);
+  const std::vector<Table>& references() const { return references_; }
+
   const PlotSpec& spec() const { return spec_; }
   QCustomPlot* plot() const {
     ensureDrawn();
@@ -64,6 +68,7 @@ class PlotView : public QWidget {
 
   PlotSpec spec_;
   std::vector<Source> sources_;
+  std::vector<Table> references_;
   QCustomPlot* plot_;
   QLabel* readout_;
   QLabel* empty_;
