@@ -20,7 +20,7 @@ struct WaveTerms {
   Complex ux, uy, sxx, syy, sxy;
 };
 
-WaveTerms pWave(double s, double p, double eta_p, double lambda, double mu, double vp) {
+WaveTerms pWave(double s, double p, Complex eta_p, double lambda, double mu, double vp) {
   return {p, s * eta_p, -(lambda / (vp * vp) + 2.0 * mu * p * p), -(lambda / (vp * vp) + 2.0 * mu * eta_p * eta_p),
           -2.0 * mu * p * s * eta_p};
 }
@@ -43,19 +43,14 @@ FreeField::FreeField(const ElasticMaterial& solid, const WaterLayer& water, Wave
     v << angle_rad * deg;
     throw InputError("incidence.angle_deg", v.str(), "must be in (-90, 90) degrees");
   }
-  if (type == WaveType::SV && std::abs(angle_rad) >= criticalAngleSv(solid)) {
-    std::ostringstream v, m;
-    v << angle_rad * deg;
-    m << "SV incidence must stay below the critical angle asin(vs/vp) = " << criticalAngleSv(solid) * deg
-      << " degrees for vs = " << solid.vs << " m/s, vp = " << solid.vp
-      << " m/s: beyond it the reflected P wave is evanescent and the plane-wave free field does not apply";
-    throw InputError("incidence.angle_deg", v.str(), m.str());
-  }
   lambda_ = solid.lameLambda();
   mu_ = solid.shearModulus();
   const double c_incident = type == WaveType::P ? solid.vp : solid.vs;
   p_ = std::sin(angle_rad) / c_incident;
-  eta_p_ = std::sqrt(std::max(0.0, 1.0 / (solid.vp * solid.vp) - p_ * p_));
+  // Beyond the SV critical angle p > 1/vp: the reflected P is evanescent, η_p = +i·√(p² − 1/vp²), so
+  // the down-going factor e^{−iωη_p y} = e^{ωκy} decays with depth (y < 0) for Re ω > 0; the synthesis
+  // evaluates Re ω ≥ 0 only and fills the negative frequencies by conjugation.
+  eta_p_ = std::sqrt(Complex(1.0 / (solid.vp * solid.vp) - p_ * p_, 0.0));
   eta_s_ = std::sqrt(std::max(0.0, 1.0 / (solid.vs * solid.vs) - p_ * p_));
   // Principal root: real and positive when propagating, +i·|…| (decaying upwards) when evanescent.
   eta_f_ = water.depth > 0.0 ? std::sqrt(Complex(1.0 / (water.sound_speed * water.sound_speed) - p_ * p_, 0.0))
@@ -144,9 +139,10 @@ FreeFieldPoint FreeField::waterAt(const FreeFieldAmplitudes& a, Complex omega, d
 }
 
 double FreeField::energyResidual(const FreeFieldAmplitudes& a) const {
-  const double eta_inc = type_ == WaveType::P ? eta_p_ : eta_s_;
+  // An evanescent P (Re η_p = 0) carries no vertical energy flux.
+  const double eta_inc = type_ == WaveType::P ? eta_p_.real() : eta_s_;
   const double incoming = eta_inc * std::norm(a.incident);
-  const double outgoing = eta_p_ * std::norm(a.reflected_p) + eta_s_ * std::norm(a.reflected_s);
+  const double outgoing = eta_p_.real() * std::norm(a.reflected_p) + eta_s_ * std::norm(a.reflected_s);
   return outgoing / incoming - 1.0;
 }
 

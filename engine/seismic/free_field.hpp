@@ -59,12 +59,16 @@ struct FreeFieldPoint {
 
 class FreeField {
  public:
-  // Throws InputError (path "incidence.angle_deg") for SV at or beyond the critical angle
-  // asin(vs/vp), where the reflected P turns evanescent, and for |θ| ≥ 90°.
+  // Throws InputError (path "incidence.angle_deg") for |θ| ≥ 90°. SV beyond the critical angle
+  // asin(vs/vp) is accepted: the reflected P is then evanescent (complex Snell's law, see
+  // reflectedPEvanescent) and the reflection coefficients become complex and frequency independent.
   FreeField(const ElasticMaterial& solid, const WaterLayer& water, WaveType type, double angle_rad);
 
   // SV critical angle asin(vs/vp) [rad].
   static double criticalAngleSv(const ElasticMaterial& solid);
+  // True for SV beyond the critical angle: the reflected P decays with depth as e^{−ωκ|y|},
+  // κ = √(p² − 1/vp²), and travels along x with the incident wave's slowness p.
+  bool reflectedPEvanescent() const { return eta_p_.imag() > 0.0; }
 
   // Solves the seabed/surface conditions at (possibly complex) circular frequency ω [rad/s].
   FreeFieldAmplitudes solve(Complex omega) const;
@@ -73,14 +77,14 @@ class FreeField {
   // Sums the water's plane waves at (x, 0 ≤ y ≤ h) [m]; zero everywhere when there is no water.
   FreeFieldPoint waterAt(const FreeFieldAmplitudes& a, Complex omega, double x, double y) const;
 
-  // Energy balance of the solid waves for real ω: (η_p|a_rp|² + η_s|b_rs|²)/(η_inc|a_inc|²) − 1.
+  // Energy balance of the solid waves for real ω: (Re η_p|a_rp|² + η_s|b_rs|²)/(η_inc|a_inc|²) − 1.
   // The water layer over a free surface carries no net flux, so this is zero up to round-off.
   double energyResidual(const FreeFieldAmplitudes& a) const;
 
   // Horizontal slowness p = sinθ/c_incident [s/m]; the field at x is the field at 0 delayed by p·x.
   double horizontalSlowness() const { return p_; }
   // Vertical slowness of the incident wave [s/m] (arrival time advance per metre of depth).
-  double incidentVerticalSlowness() const { return type_ == WaveType::P ? eta_p_ : eta_s_; }
+  double incidentVerticalSlowness() const { return type_ == WaveType::P ? eta_p_.real() : eta_s_; }
   WaveType type() const { return type_; }
   double angle() const { return angle_; }
   const ElasticMaterial& solid() const { return solid_; }
@@ -94,7 +98,8 @@ class FreeField {
   double angle_;
   double lambda_, mu_;
   double p_;             // horizontal slowness [s/m]
-  double eta_p_, eta_s_; // vertical slownesses in the solid [s/m] (real below critical)
+  Complex eta_p_;        // vertical P slowness in the solid [s/m]: real, or +i·κ beyond the SV critical angle
+  double eta_s_;         // vertical S slowness in the solid [s/m]
   Complex eta_f_;        // vertical slowness in the water [s/m] (imaginary part ≥ 0 when evanescent)
 };
 

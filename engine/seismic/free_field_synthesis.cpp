@@ -11,9 +11,21 @@ namespace maris::seismic {
 FreeFieldSynthesis::FreeFieldSynthesis(const FreeField& field, const std::vector<double>& incident, double t0,
                                        double dt)
     : field_(field), t0_(t0), dt_(dt), n_out_(static_cast<int>(incident.size())) {
-  n_fft_ = std::bit_ceil(std::max<std::size_t>(64, 2 * incident.size()));
+  if (field.reflectedPEvanescent()) {
+    // Beyond the SV critical angle the reflection coefficients are complex constants: the reflected
+    // waves carry a Hilbert-transformed copy of the input whose tails reach before the arrival (the
+    // head-wave precursor of an infinite plane wave). A damped frequency would amplify the part of
+    // that tail wrapped from before t0 by e^{εN dt}, so real frequencies are used with a longer
+    // window: 8× the record, and ≥ 64 s with water, whose reverberation (≈ 0.78 per round trip in
+    // the paper's set-up) then decays below 1e-6 before it wraps.
+    const std::size_t span = field.hasWater() ? static_cast<std::size_t>(std::ceil(64.0 / dt)) : 0;
+    n_fft_ = std::bit_ceil(std::max<std::size_t>({64, 8 * incident.size(), span}));
+    eps_ = 0.0;
+  } else {
+    n_fft_ = std::bit_ceil(std::max<std::size_t>(64, 2 * incident.size()));
+    eps_ = std::log(1.0e6) / (static_cast<double>(n_fft_) * dt);
+  }
   const double window = static_cast<double>(n_fft_) * dt;
-  eps_ = std::log(1.0e6) / window;
 
   // Damped input spectrum in the e^{+iωt} transform: U(ω+iε) = Σ u_k e^{-ε t_k} e^{iω t_k} dt (t from t0).
   std::vector<Complex> buffer(n_fft_, Complex(0.0));
@@ -27,6 +39,9 @@ FreeFieldSynthesis::FreeFieldSynthesis(const FreeField& field, const std::vector
   amplitudes_.resize(half + 1);
   for (std::size_t k = 0; k <= half; ++k) {
     omega_[k] = Complex(2.0 * std::numbers::pi * static_cast<double>(k) / window, eps_);
+    // Undamped: the water potential φ = a/(iω) has a finite limit at ω → 0 that the formula cannot
+    // evaluate at 0 itself; the zero bin is taken 1e-6 of a bin above it (relative error ~1e-6 in that bin).
+    if (k == 0 && eps_ == 0.0) omega_[k] = Complex(2.0e-6 * std::numbers::pi / window, 0.0);
     input_spectrum_[k] = buffer[k] * dt;
     amplitudes_[k] = field_.solve(omega_[k]);
   }

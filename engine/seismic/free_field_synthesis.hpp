@@ -6,7 +6,9 @@
 // "complex frequency" method). ε = ln(1e6)/(N·dt) damps what wraps around the window by 1e-6, so
 // the undamped water-layer reverberation (seabed reflection ≈ 0.78 per round trip) neither aliases
 // nor needs a minute-long window. Using the e^{-iωt} convention on both sides keeps the result
-// causal: nothing before the first arrival (tested).
+// causal: nothing before the first arrival (tested). Beyond the SV critical angle the plane-wave
+// field is not causal in that sense (the reflections contain the input's Hilbert transform, whose
+// tail precedes the arrival): there ε = 0 and a window of 8× the record (≥ 64 s with water) is used.
 // The field at (x, y, t) equals the one at (0, y, t − p·x), p the horizontal slowness, so one
 // history per depth serves a whole row of nodes (see sampleDelayed).
 #pragma once

@@ -15,17 +15,6 @@ namespace maris::seismic {
 
 namespace {
 
-// Central-difference time derivative (one-sided at the ends): O(dt²) inside.
-std::vector<double> rate(const std::vector<double>& u, double dt) {
-  std::vector<double> v(u.size(), 0.0);
-  for (std::size_t k = 1; k + 1 < u.size(); ++k) v[k] = (u[k + 1] - u[k - 1]) / (2.0 * dt);
-  if (u.size() > 1) {
-    v.front() = (u[1] - u[0]) / dt;
-    v.back() = (u[u.size() - 1] - u[u.size() - 2]) / dt;
-  }
-  return v;
-}
-
 double peak(const std::vector<double>& v) {
   double m = 0.0;
   for (double x : v) m = std::max(m, std::abs(x));
@@ -34,31 +23,21 @@ double peak(const std::vector<double>& v) {
 
 double mean(const std::vector<double>& v) { return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
 
-// Fourier amplitude |Σ a_k e^{-iωt_k} dt| on the FFT grid (zero-padded to a power of two).
-std::vector<double> fourierAmplitude(const std::vector<double>& a, double dt, std::size_t n_fft) {
-  std::vector<std::complex<double>> z(n_fft, 0.0);
-  for (std::size_t k = 0; k < a.size() && k < n_fft; ++k) z[k] = a[k];
-  z = fft(std::move(z));
-  std::vector<double> out(n_fft / 2 + 1);
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = std::abs(z[k]) * dt;
-  return out;
-}
-
 }  // namespace
 
 PeakRatios amplificationRatios(const FeCase& c) {
   const double dt = c.time_step;
-  const auto v0 = rate(c.incident, dt), a0 = rate(v0, dt);
+  const auto v0 = timeRate(c.incident, dt), a0 = timeRate(v0, dt);
   const double ru = 2.0 * peak(c.incident), rv = 2.0 * peak(v0), ra = 2.0 * peak(a0);
   PeakRatios r;
   for (std::size_t s = 0; s < c.ux.size(); ++s) {
-    const auto vx = rate(c.ux[s], dt), vy = rate(c.uy[s], dt);
+    const auto vx = timeRate(c.ux[s], dt), vy = timeRate(c.uy[s], dt);
     r.ux.push_back(peak(c.ux[s]) / ru);
     r.uy.push_back(peak(c.uy[s]) / ru);
     r.vx.push_back(peak(vx) / rv);
     r.vy.push_back(peak(vy) / rv);
-    r.ax.push_back(peak(rate(vx, dt)) / ra);
-    r.ay.push_back(peak(rate(vy, dt)) / ra);
+    r.ax.push_back(peak(timeRate(vx, dt)) / ra);
+    r.ay.push_back(peak(timeRate(vy, dt)) / ra);
   }
   return r;
 }
@@ -134,7 +113,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
 
   // Fourier spectral ratios H_a = |A(f)| / (2|A_0(f)|) (paper eq 30), up to f_cut where the input has energy.
   const std::size_t n_fft = std::bit_ceil(c.incident.size());
-  const auto a0 = fourierAmplitude(rate(rate(c.incident, dt), dt), dt, n_fft);
+  const auto a0 = fourierAmplitude(timeRate(timeRate(c.incident, dt), dt), dt, n_fft);
   const double a0_max = *std::max_element(a0.begin(), a0.end());
   Table spec{"spectral_ratio", "Acceleration Fourier spectral ratios H_a", {}};
   auto& f_col = spec.add("frequency", "Hz").values;
@@ -142,8 +121,8 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   std::vector<std::vector<double>> s_ax(3), s_ay(3);
   const std::size_t which[3] = {0, mid, last};
   for (int w = 0; w < 3; ++w) {
-    s_ax[w] = fourierAmplitude(rate(rate(c.ux[which[w]], dt), dt), dt, n_fft);
-    s_ay[w] = fourierAmplitude(rate(rate(c.uy[which[w]], dt), dt), dt, n_fft);
+    s_ax[w] = fourierAmplitude(timeRate(timeRate(c.ux[which[w]], dt), dt), dt, n_fft);
+    s_ay[w] = fourierAmplitude(timeRate(timeRate(c.uy[which[w]], dt), dt), dt, n_fft);
   }
   for (std::size_t k = 1; k < a0.size(); ++k) {
     const double f = k / (n_fft * dt);
@@ -161,20 +140,16 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   results.plots.push_back({"spectral_ratio", "Acceleration spectral ratios", "spectral_ratio", "frequency",
                            {"Hax_left", "Hax_centre", "Hax_right", "Hay_centre"}, false, false, "", {}});
 
-  // H_a along the flat: per station the largest ratio and its frequency, over the band where the input
-  // spectrum exceeds 5 % of its peak (outside it the ratio divides by almost nothing).
+  // H_a along the flat: per station the largest ratio and its frequency, from the map (input band
+  // above 5 % of its peak), and the map itself.
   {
+    const SpectralRatioMap map = spectralRatioMap(c, p.cutoff_frequency, 0.05);
     std::vector<double> xl, hx_max, hx_f, hy_max, hy_f;
     for (std::size_t st = 0; st < c.ux.size(); ++st) {
-      const auto sx = fourierAmplitude(rate(rate(c.ux[st], dt), dt), dt, n_fft);
-      const auto sy = fourierAmplitude(rate(rate(c.uy[st], dt), dt), dt, n_fft);
       double bx = 0.0, fx = 0.0, by = 0.0, fy = 0.0;
-      for (std::size_t k = 1; k < a0.size(); ++k) {
-        const double f = k / (n_fft * dt);
-        if (f > p.cutoff_frequency) break;
-        if (a0[k] < 0.05 * a0_max) continue;
-        if (sx[k] / (2.0 * a0[k]) > bx) bx = sx[k] / (2.0 * a0[k]), fx = f;
-        if (sy[k] / (2.0 * a0[k]) > by) by = sy[k] / (2.0 * a0[k]), fy = f;
+      for (std::size_t k = 0; k < map.frequency.size(); ++k) {
+        if (map.hx[st][k] > bx) bx = map.hx[st][k], fx = map.frequency[k];
+        if (map.hy[st][k] > by) by = map.hy[st][k], fy = map.frequency[k];
       }
       xl.push_back(c.station_x[st] / (reef ? p.flat_width : 1.0));
       hx_max.push_back(bx);
@@ -193,6 +168,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
     results.tables.push_back(std::move(along));
     results.plots.push_back({"spectral_ratio_along_flat", "Largest spectral ratio along the flat",
                              "spectral_ratio_along_flat", "x_over_L", {"Hax_max", "Hay_max"}, false, false, "", {}});
+    addSpectralMap(p, c, results);
   }
 
   // Box: FE against the analytic free field at B (seabed) and A (water surface).

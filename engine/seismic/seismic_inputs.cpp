@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include "core/errors.hpp"
+#include "core/resources.hpp"
 
 namespace maris::seismic {
 
@@ -82,8 +83,19 @@ Accelerogram correctAccelerogram(const std::vector<double>& time, const std::vec
 }
 
 Accelerogram loadAccelerogram(const std::string& path, double dt, double peak_acceleration, const std::string& field) {
-  std::ifstream in(path);
-  if (!in) throw InputError(field, "\"" + path + "\"", "cannot open the accelerogram file");
+  const std::string prefix = "builtin:";
+  std::stringstream in;
+  if (path.rfind(prefix, 0) == 0) {
+    const auto text = builtinResource("data/seismic/" + path.substr(prefix.size()));
+    if (!text)
+      throw InputError(field, "\"" + path + "\"",
+                       "no built-in record of that name (available: builtin:synthetic_kanai_tajimi.csv)");
+    in << *text;
+  } else {
+    std::ifstream file(path);
+    if (!file) throw InputError(field, "\"" + path + "\"", "cannot open the accelerogram file");
+    in << file.rdbuf();
+  }
   std::vector<double> time, acc;
   std::string line;
   while (std::getline(in, line)) {

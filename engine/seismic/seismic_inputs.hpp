@@ -29,6 +29,8 @@ struct Accelerogram {
 // Reads "time, acceleration" rows (a header line and '#' comments are skipped; ',' ';' or blanks
 // separate), resamples linearly to dt, removes a least-squares quadratic baseline from the
 // displacement (so the corrected record ends at rest), and scales it to |a|max = peak_acceleration.
+// A path "builtin:<name>.csv" reads resources/data/seismic/<name>.csv embedded in the engine
+// (builtin:synthetic_kanai_tajimi.csv, a synthetic record: see the header of that file).
 // Throws InputError naming `field` on an unreadable file, fewer than 8 rows, non-increasing time
 // or an all-zero record.
 Accelerogram loadAccelerogram(const std::string& path, double dt, double peak_acceleration, const std::string& field);

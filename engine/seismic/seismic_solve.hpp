@@ -58,6 +58,22 @@ struct PeakRatios {
 };
 PeakRatios amplificationRatios(const FeCase& c);
 
+// Central-difference time derivative (one-sided at the ends): O(dt²) inside.
+std::vector<double> timeRate(const std::vector<double>& u, double dt);
+// Fourier amplitude |Σ a_k e^{-iωt_k} dt| on the n_fft grid (zero-padded), bins k = 0..n_fft/2.
+std::vector<double> fourierAmplitude(const std::vector<double>& a, double dt, std::size_t n_fft);
+
+// Acceleration spectral ratios H_a(x, f) = |A(x, f)|/(2|A_0(f)|) (paper eq 30) of every station, on the
+// FFT bins f ≤ cutoff where the input spectrum exceeds band_fraction of its peak.
+struct SpectralRatioMap {
+  std::vector<double> frequency;           // [Hz] (n_f)
+  std::vector<std::vector<double>> hx, hy; // [-] per station, per frequency
+};
+SpectralRatioMap spectralRatioMap(const FeCase& c, double cutoff_frequency, double band_fraction);
+// Tables "spectral_ratio_map" (long format, heat-map data) and "spectral_ratio_lines" (H_a(f) at five
+// points of the flat) with their plots.
+void addSpectralMap(const SeismicParameters& p, const FeCase& c, Results& results);
+
 // Amplification, spectral ratios, histories, the water's effect, snapshots and the angle sweep.
 void addFeResults(const SeismicParameters& p, const FeCase& main, const FeCase* dry, const std::vector<FeCase>& sweep,
                   Results& results);

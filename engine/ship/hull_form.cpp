@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/monotone_cubic.hpp"
+
 namespace maris::ship {
 
 namespace {
@@ -93,17 +95,17 @@ HullGrid sampleHull(const HullForm& hull, int nx, int nz) {
   g.dz = depth / (nz - 1);
   Eigen::MatrixXd by_station(st.size(), nz);
   for (std::size_t s = 0; s < st.size(); ++s) {
-    const Pchip section(st[s].z, st[s].half_breadth);
-    for (int j = 0; j < nz; ++j) by_station(s, j) = section(j == nz - 1 ? -depth : g.z(j), 0.0);
+    const MonotoneCubic section(st[s].z, st[s].half_breadth);
+    for (int j = 0; j < nz; ++j) by_station(s, j) = section.valueOr(j == nz - 1 ? -depth : g.z(j), 0.0);
   }
   std::vector<double> xs(st.size());
   for (std::size_t s = 0; s < st.size(); ++s) xs[s] = st[s].x;
   for (int j = 0; j < nz; ++j) {
     std::vector<double> ys(by_station.rows());
     for (Eigen::Index s = 0; s < by_station.rows(); ++s) ys[s] = by_station(s, j);
-    const Pchip waterline(xs, ys);
+    const MonotoneCubic waterline(xs, ys);
     for (int i = 0; i < nx; ++i)
-      g.half_breadth(i, j) = std::max(0.0, waterline(i == nx - 1 ? xs.back() : g.x(i), 0.0));
+      g.half_breadth(i, j) = std::max(0.0, waterline.valueOr(i == nx - 1 ? xs.back() : g.x(i), 0.0));
   }
   return g;
 }
@@ -202,7 +204,7 @@ HullParticulars computeParticulars(const HullGrid& g, double length_pp) {
   return p;
 }
 
-ForeShoulder foreShoulder(const HullGrid& g) {
+ForeShoulder foreShoulder(const HullGrid& g, double shoulder_distance) {
   const Eigen::VectorXd wl = g.half_breadth.col(0);
   const double ymax = wl.maxCoeff();
   int bow = -1;
@@ -210,9 +212,17 @@ ForeShoulder foreShoulder(const HullGrid& g) {
     if (wl[i] > 0.0) bow = std::min(i + 1, g.nx() - 1);
   ForeShoulder fs;
   if (bow < 0) return fs;
-  // Walk aft from the bow until the waterline reaches its maximum (within 1e-6: a parallel middle body
-  // interpolated from equal offsets is flat to round-off).
   for (int i = bow; i > 0; --i) {
+    if (shoulder_distance > 0) {
+      // A given shoulder: the last step is cut where it reaches the distance (the waterline is linear on it).
+      const double step = std::min(g.dx, shoulder_distance - fs.distance);
+      fs.arc_length += std::hypot(step, (wl[i] - wl[i - 1]) * step / g.dx);
+      fs.distance += step;
+      if (fs.distance >= shoulder_distance * (1.0 - 1e-12)) break;
+      continue;
+    }
+    // Walk aft from the bow until the waterline reaches its maximum (within 1e-6: a parallel middle body
+    // interpolated from equal offsets is flat to round-off).
     fs.arc_length += std::hypot(g.dx, wl[i] - wl[i - 1]);
     fs.distance += g.dx;
     if (wl[i - 1] >= ymax * (1.0 - 1e-6)) break;

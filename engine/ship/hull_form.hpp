@@ -86,13 +86,14 @@ struct HullParticulars {
 };
 HullParticulars computeParticulars(const HullGrid& grid, double length_pp);
 
-// Arc length of the design waterline from the FP (the forward end of Y(x,0) > 0) to the fore shoulder (the
-// first station, going aft, where Y(x,0) reaches 99.9 % of its maximum) and the longitudinal distance between
-// them: the s_FS and l_FS of the paper's wave-number correction (eq 12).
+// Arc length of the design waterline from the FP (the forward end of Y(x,0) > 0) to the fore shoulder and the
+// longitudinal distance between them: the s_FS and l_FS of the paper's wave-number correction (eq 12). The
+// paper does not define the shoulder: by default it is the first station, going aft, where Y(x,0) reaches its
+// maximum (to 1e-6); `shoulder_distance` > 0 [m] puts it that far aft of the FP instead.
 struct ForeShoulder {
   double arc_length = 0;  // [m] s_FS
   double distance = 0;    // [m] l_FS
 };
-ForeShoulder foreShoulder(const HullGrid& grid);
+ForeShoulder foreShoulder(const HullGrid& grid, double shoulder_distance = 0.0);
 
 }  // namespace maris::ship

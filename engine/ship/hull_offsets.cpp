@@ -153,45 +153,4 @@ OffsetsTable scaledOffsets(const OffsetsTable& table, double scale) {
   return out;
 }
 
-Pchip::Pchip(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y)) {
-  const std::size_t n = x_.size();
-  assert(n >= 2 && y_.size() == n);
-  slope_.assign(n, 0.0);
-  std::vector<double> h(n - 1), delta(n - 1);
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    h[k] = x_[k + 1] - x_[k];
-    delta[k] = (y_[k + 1] - y_[k]) / h[k];
-  }
-  if (n == 2) {
-    slope_[0] = slope_[1] = delta[0];
-    return;
-  }
-  // Interior: weighted harmonic mean of the secants, zero at local extrema (Fritsch & Butland 1984).
-  for (std::size_t k = 1; k + 1 < n; ++k) {
-    if (delta[k - 1] * delta[k] <= 0.0) continue;
-    const double w1 = 2.0 * h[k] + h[k - 1], w2 = h[k] + 2.0 * h[k - 1];
-    slope_[k] = (w1 + w2) / (w1 / delta[k - 1] + w2 / delta[k]);
-  }
-  // Ends: one-sided three-point estimate, limited to keep the end interval monotone.
-  auto endSlope = [](double h0, double h1, double d0, double d1) {
-    double d = ((2.0 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
-    if (d * d0 <= 0.0) return 0.0;
-    if (d0 * d1 <= 0.0 && std::abs(d) > 3.0 * std::abs(d0)) return 3.0 * d0;
-    return d;
-  };
-  slope_[0] = endSlope(h[0], h[1], delta[0], delta[1]);
-  slope_[n - 1] = endSlope(h[n - 2], h[n - 3], delta[n - 2], delta[n - 3]);
-}
-
-double Pchip::operator()(double x, double outside) const {
-  if (x < x_.front() || x > x_.back()) return outside;
-  auto it = std::upper_bound(x_.begin(), x_.end(), x);
-  std::size_t k = it == x_.begin() ? 0 : static_cast<std::size_t>(it - x_.begin()) - 1;
-  if (k >= x_.size() - 1) k = x_.size() - 2;
-  const double h = x_[k + 1] - x_[k], t = (x - x_[k]) / h;
-  const double t2 = t * t, t3 = t2 * t;
-  return (2 * t3 - 3 * t2 + 1) * y_[k] + (t3 - 2 * t2 + t) * h * slope_[k] + (-2 * t3 + 3 * t2) * y_[k + 1] +
-         (t3 - t2) * h * slope_[k + 1];
-}
-
 }  // namespace maris::ship

@@ -34,16 +34,4 @@ OffsetsTable parseOffsetsCsv(std::string_view text, const std::string& origin);
 // Multiplies every length of the table by `scale`.
 OffsetsTable scaledOffsets(const OffsetsTable& table, double scale);
 
-// Monotone piecewise-cubic Hermite interpolation through (x_k, y_k), x strictly ascending, n ≥ 2.
-// Shape preserving: no overshoot, so non-negative data stay non-negative. Outside [x_0, x_{n-1}] it returns
-// `outside`.
-class Pchip {
- public:
-  Pchip(std::vector<double> x, std::vector<double> y);
-  double operator()(double x, double outside = 0.0) const;
-
- private:
-  std::vector<double> x_, y_, slope_;
-};
-
 }  // namespace maris::ship

@@ -23,7 +23,12 @@ constexpr BuiltinHull kBuiltinHulls[] = {
     {"kcs", "data/ship/kcs_model_offsets.csv", "KCS (SIMMAN 2014 IGES)", 230.0 / 31.5994},
 };
 
+constexpr std::string_view kBuiltinPrefix = "builtin:";
+const std::string kMeasuredPrefixPath = "data/ship/";
+
 }  // namespace
+
+bool isBuiltinMeasured(const std::string& path) { return path.rfind(kBuiltinPrefix, 0) == 0; }
 
 SchemaBinder<ShipParameters> shipSchemaBinder() {
   using P = ShipParameters;
@@ -74,6 +79,9 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
          "Discard waves shorter than this fraction of Lpp (paper section 3.3); 0 = keep all");
   b.real("corrections.trip_position", &P::trip_position, "-", Range::closed(0, 1),
          "Forced laminar-turbulent transition of the boundary layer, fraction of the waterline from the bow");
+  b.real("corrections.fore_shoulder", &P::fore_shoulder, "-", Range::closed(0, 0.9),
+         "Fore shoulder of the wave-number correction, fraction of Lpp aft of the FP; 0 = where the design "
+         "waterline first reaches its maximum half-breadth");
   b.real("full_scale.ship_length", &P::ship_length, "m", Range::nonNegative(1000),
          "Lpp of the full-scale ship for the extrapolation at equal Fn (0 = model only)");
   b.real("full_scale.water_temperature", &P::ship_water_temperature, "degC", Range::closed(0, 40),
@@ -83,7 +91,9 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
   b.real("numerics.relative_tolerance", &P::relative_tolerance, "-", Range::closed(1e-10, 0.1),
          "Relative tolerance of the wave-angle quadrature and tail, per speed");
   b.integer("numerics.threads", &P::threads, "-", Range::closed(0, 256), "Threads for the speed sweep (0 = all cores)");
-  b.text("measured.file", &P::measured_file, "Optional CSV of measured points: columns froude, c_total");
+  b.text("measured.file", &P::measured_file,
+         "Optional CSV of measured points: columns froude, c_total; builtin:NAME for a data set shipped in "
+         "resources/data/ship (e.g. builtin:kcs_tokyo2015_case21_efd.csv)");
   return b;
 }
 
@@ -100,8 +110,13 @@ std::vector<FieldError> checkShipParameters(const ShipParameters& p) {
     e.push_back({"hull.offsets_file", "\"\"", "must name a CSV file when hull.source = offsets_file"});
   if (p.hull_source == "offsets_file" && !p.offsets_file.empty() && !std::filesystem::is_regular_file(p.offsets_file))
     e.push_back({"hull.offsets_file", Json(p.offsets_file).dump(), "is not a readable file"});
-  if (!p.measured_file.empty() && !std::filesystem::is_regular_file(p.measured_file))
+  if (isBuiltinMeasured(p.measured_file)) {
+    if (!builtinResource(kMeasuredPrefixPath + p.measured_file.substr(kBuiltinPrefix.size())))
+      e.push_back({"measured.file", Json(p.measured_file).dump(),
+                   "is not a built-in data set (see resources/data/ship/README.md)"});
+  } else if (!p.measured_file.empty() && !std::filesystem::is_regular_file(p.measured_file)) {
     e.push_back({"measured.file", Json(p.measured_file).dump(), "is not a readable file"});
+  }
   if (p.form_factor_method == "prohaska" && p.measured_file.empty())
     e.push_back({"viscous.form_factor_method", "\"prohaska\"",
                  "needs measured.file (the measured C_T points that Prohaska's fit uses)"});
@@ -131,7 +146,14 @@ HullForm buildHullForm(const ShipParameters& p) {
 
 MeasuredPoints readMeasuredPoints(const std::string& path) {
   const std::string origin = "parameters.measured.file (" + path + ")";
-  const std::string text = readTextFile(path);
+  std::string text;
+  if (isBuiltinMeasured(path)) {
+    const auto builtin = builtinResource(kMeasuredPrefixPath + path.substr(kBuiltinPrefix.size()));
+    if (!builtin) throw InputError(origin, Json(path).dump(), "is not a built-in data set");
+    text = std::string(*builtin);
+  } else {
+    text = readTextFile(path);
+  }
   MeasuredPoints m;
   std::size_t pos = 0;
   int line = 0, froude_col = -1, ct_col = -1;

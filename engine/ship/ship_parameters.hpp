@@ -45,6 +45,7 @@ struct ShipParameters {
   bool corrected_prefactor = false;    // also use k̂0 in the k0² prefactor of eq 8
   double short_wave_cutoff = 0.0;      // [-] discard waves shorter than this fraction of Lpp (0: off)
   double trip_position = 0.05;         // [-] forced laminar→turbulent transition, fraction of L from the bow
+  double fore_shoulder = 0.0;          // [-] l_FS of eq 12 as a fraction of Lpp aft of the FP (0: first maximum of Y(x,0))
   // Full-scale extrapolation at equal Fn (ITTC-1978 form-factor method, hull only)
   double ship_length = 0.0;            // [m] Lpp of the full-scale ship (0: no extrapolation)
   double ship_water_temperature = 15.0;  // [°C] sea water temperature of the ship
@@ -54,7 +55,8 @@ struct ShipParameters {
   double relative_tolerance = 1e-4;    // [-] target of the λ quadrature and tail per speed
   int threads = 0;                     // [-] sweep threads (0: all hardware threads)
   // Measurements
-  std::string measured_file;           // optional CSV with columns froude, c_total (names row, units row)
+  std::string measured_file;           // optional CSV with columns froude, c_total (names row, units row);
+                                       // "builtin:NAME" reads resources/data/ship/NAME
 };
 
 SchemaBinder<ShipParameters> shipSchemaBinder();
@@ -68,5 +70,7 @@ struct MeasuredPoints {
   std::vector<double> froude, c_total;
 };
 MeasuredPoints readMeasuredPoints(const std::string& path);
+// True when `path` names a built-in measured data set ("builtin:NAME") rather than a file.
+bool isBuiltinMeasured(const std::string& path);
 
 }  // namespace maris::ship

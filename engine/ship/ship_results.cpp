@@ -44,20 +44,12 @@ void addParticulars(Results& r, const ShipModel& m) {
   }
   r.addScalar("water_density", m.water.density, "kg/m^3", "Water density");
   r.addScalar("kinematic_viscosity", m.water.kinematic_viscosity, "m^2/s", "Kinematic viscosity");
-  if (m.fore_shoulder.distance > 0)
+  if (m.fore_shoulder.distance > 0) {
     r.addScalar("fore_shoulder_ratio", m.fore_shoulder.arc_length / m.fore_shoulder.distance, "-",
                 "s_FS/l_FS: waterline arc over distance from FP to the fore shoulder");
+    r.addScalar("fore_shoulder_distance", m.fore_shoulder.distance, "m", "l_FS: fore shoulder aft of the FP");
+  }
   r.addScalar("wave_number_factor", m.wave_number_factor, "-", "k0_hat/k0 applied by the wave-number correction");
-}
-
-PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
-  PlotSpec plot;
-  plot.name = std::move(name);
-  plot.title = std::move(title);
-  plot.table = std::move(table);
-  plot.x = std::move(x);
-  plot.y = std::move(y);
-  return plot;
 }
 
 // The hull as two Surface shapes (port and starboard), sampled coarser than the Michell grid.

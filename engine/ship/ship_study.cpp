@@ -84,7 +84,7 @@ ShipModel buildShipModel(const ShipParameters& p, RunContext& context) {
   }
 
   // The paper's corrections.
-  m.fore_shoulder = foreShoulder(m.grid);
+  m.fore_shoulder = foreShoulder(m.grid, p.fore_shoulder * p.length);
   if (p.wave_number_correction) m.wave_number_factor = waveNumberCorrectionFactor(m.fore_shoulder);
   if (p.tangency_correction) m.tangency = std::make_shared<const TangencyCorrection>(m.grid, p.trip_position);
   m.any_correction = p.tangency_correction || p.wave_number_correction || p.short_wave_cutoff > 0;

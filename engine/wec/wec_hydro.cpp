@@ -8,52 +8,6 @@
 
 namespace maris::wec {
 
-// ---------------------------------------------------------------------------------------------
-// Monotone cubic (Fritsch & Carlson 1980, SIAM J. Numer. Anal. 17; the three-point slope formula
-// of Fritsch & Butland 1984 as used by PCHIP).
-MonotoneCubic::MonotoneCubic(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y)) {
-  assert(x_.size() == y_.size() && x_.size() >= 2);
-  const std::size_t n = x_.size();
-  std::vector<double> h(n - 1), delta(n - 1);
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    h[i] = x_[i + 1] - x_[i];
-    assert(h[i] > 0.0);
-    delta[i] = (y_[i + 1] - y_[i]) / h[i];
-  }
-  slope_.assign(n, 0.0);
-  // Interior slopes: weighted harmonic mean where the secants agree in sign, else 0.
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    if (delta[i - 1] * delta[i] <= 0.0) continue;
-    const double w1 = 2.0 * h[i] + h[i - 1], w2 = h[i] + 2.0 * h[i - 1];
-    slope_[i] = (w1 + w2) / (w1 / delta[i - 1] + w2 / delta[i]);
-  }
-  // End slopes: one-sided three-point estimate, limited to keep monotonicity.
-  auto endSlope = [](double h0, double h1, double d0, double d1) {
-    double s = ((2.0 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
-    if (s * d0 <= 0.0) return 0.0;
-    if (d0 * d1 <= 0.0 && std::abs(s) > 3.0 * std::abs(d0)) return 3.0 * d0;
-    return s;
-  };
-  if (n == 2) {
-    slope_[0] = slope_[1] = delta[0];
-  } else {
-    slope_[0] = endSlope(h[0], h[1], delta[0], delta[1]);
-    slope_[n - 1] = endSlope(h[n - 2], h[n - 3], delta[n - 2], delta[n - 3]);
-  }
-}
-
-double MonotoneCubic::operator()(double x) const {
-  if (x <= x_.front()) return y_.front();
-  if (x >= x_.back()) return y_.back();
-  const auto it = std::upper_bound(x_.begin(), x_.end(), x);
-  const std::size_t i = static_cast<std::size_t>(it - x_.begin()) - 1;
-  const double h = x_[i + 1] - x_[i], t = (x - x_[i]) / h;
-  const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
-  const double h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
-  return h00 * y_[i] + h10 * h * slope_[i] + h01 * y_[i + 1] + h11 * h * slope_[i + 1];
-}
-
-// ---------------------------------------------------------------------------------------------
 namespace {
 
 // Hulme (1982) Table 1, heave, as tabulated in LHEEA/Hulme_Heaving_Sphere comparison/HulmeResult.dat.

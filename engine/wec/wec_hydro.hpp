@@ -15,23 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "core/monotone_cubic.hpp"
+
 namespace maris::wec {
 
 using Complex = std::complex<double>;
-
-// Monotone piecewise-cubic (Fritsch–Carlson PCHIP) interpolant through (x_i, y_i), x strictly increasing.
-// Preserves monotonicity between nodes (no overshoot); outside [x_0, x_n] it returns the end values.
-class MonotoneCubic {
- public:
-  MonotoneCubic() = default;
-  MonotoneCubic(std::vector<double> x, std::vector<double> y);
-  double operator()(double x) const;
-  const std::vector<double>& nodes() const { return x_; }
-  const std::vector<double>& values() const { return y_; }
-
- private:
-  std::vector<double> x_, y_, slope_;
-};
 
 // Hulme (1982), "The wave forces acting on a floating hemisphere undergoing forced periodic oscillations",
 // J. Fluid Mech. 121, 443–463, Tables 1 (heave) and 2 (surge); deep water. Nondimensional:

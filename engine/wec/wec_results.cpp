@@ -9,15 +9,6 @@ namespace maris::wec {
 namespace {
 constexpr double kDeg = 180.0 / std::numbers::pi;
 std::string col(const std::string& name, std::size_t i) { return name + "_" + std::to_string(i + 1); }
-PlotSpec makePlot(std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
-  PlotSpec s;
-  s.name = std::move(name);
-  s.title = std::move(title);
-  s.table = std::move(table);
-  s.x = std::move(x);
-  s.y = std::move(y);
-  return s;
-}
 }  // namespace
 
 Table frequencyTable(const std::vector<double>& omega, const std::vector<std::vector<FrequencyResponse>>& response) {

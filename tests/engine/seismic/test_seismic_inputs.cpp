@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/spectrum.hpp"
 #include "core/errors.hpp"
 #include "seismic/seismic_inputs.hpp"
 
@@ -72,6 +73,38 @@ TEST(SeismicInputs, UnreadableAccelerogramNamesTheField) {
   try {
     loadAccelerogram("/nonexistent/record.csv", 0.01, 1.0, "input.accelerogram_file");
     FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.errors().at(0).path, "input.accelerogram_file");
+  }
+}
+
+TEST(SeismicInputs, BuiltinSyntheticRecordLoadsWithItsDesignedContent) {
+  // resources/data/seismic/synthetic_kanai_tajimi.csv: 25 s at 0.01 s, Kanai–Tajimi filter at 2.5 Hz
+  // with ζ 0.6 (its generator's parameters). After correction: the target peak exactly, and the
+  // acceleration's Fourier amplitude, smoothed over ±0.5 Hz, largest within 1–5 Hz (the broad filter
+  // peak; below it the baseline correction removes content, above it the filter rolls off as f⁻²).
+  const Accelerogram rec = loadAccelerogram("builtin:synthetic_kanai_tajimi.csv", 0.01, 2.0, "input.accelerogram_file");
+  ASSERT_EQ(rec.acceleration.size(), 2501u);
+  double peak = 0.0;
+  for (double a : rec.acceleration) peak = std::max(peak, std::abs(a));
+  EXPECT_NEAR(peak, 2.0, 1e-12);
+  const std::size_t n = 4096;
+  std::vector<std::complex<double>> z(n, 0.0);
+  for (std::size_t k = 0; k < rec.acceleration.size(); ++k) z[k] = rec.acceleration[k];
+  z = fft(std::move(z));
+  const double df = 1.0 / (n * 0.01);
+  const int half_window = static_cast<int>(0.5 / df);
+  double best = 0.0, f_best = 0.0;
+  for (int k = half_window; k < static_cast<int>(15.0 / df); ++k) {
+    double sum = 0.0;
+    for (int j = k - half_window; j <= k + half_window; ++j) sum += std::abs(z[j]);
+    if (sum > best) best = sum, f_best = k * df;
+  }
+  EXPECT_GT(f_best, 1.0);
+  EXPECT_LT(f_best, 5.0);
+  try {
+    loadAccelerogram("builtin:no_such_record.csv", 0.01, 1.0, "input.accelerogram_file");
+    FAIL() << "an unknown built-in record was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.errors().at(0).path, "input.accelerogram_file");
   }

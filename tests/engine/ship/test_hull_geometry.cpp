@@ -120,15 +120,6 @@ TEST(HullGeometry, BadOffsetsAreReportedByLineAndColumn) {
   EXPECT_NO_THROW(parseOffsetsCsv("x,z,half_breadth\nm,m,m\n0,0,1\n0,-1,1\n1,0,1\n1,-1,1\n2,0,0\n2,-1,0\n", "f"));
 }
 
-TEST(HullGeometry, MonotoneInterpolationNeverOvershoots) {
-  // PCHIP through a step keeps within the data range (no negative half-breadths next to a keel).
-  const Pchip p({0, 1, 2, 3, 4}, {0, 0, 1, 1, 1});
-  for (double x = 0; x <= 4; x += 0.01) {
-    EXPECT_GE(p(x), 0.0);
-    EXPECT_LE(p(x), 1.0);
-  }
-}
-
 namespace {
 
 // The shared 161×41 tables are sampled on 321×81 nodes, which contain the table's own nodes, so that the

@@ -44,16 +44,6 @@ TEST(WecHydro, AddedMassTendsToTheExactLimits) {
   EXPECT_NEAR(hemisphereSurgePhase(0.0), std::numbers::pi / 2, 1e-12);
 }
 
-// PCHIP never leaves the range of the two neighbouring nodes (no overshoot), unlike a natural spline.
-TEST(WecHydro, MonotoneInterpolationDoesNotOvershoot) {
-  const MonotoneCubic f({0, 1, 2, 3, 4}, {0, 0, 1, 1, 1});
-  for (double x = 0.0; x <= 4.0; x += 0.01) {
-    EXPECT_GE(f(x), -1e-15);
-    EXPECT_LE(f(x), 1.0 + 1e-15);
-  }
-  EXPECT_DOUBLE_EQ(f(3.5), 1.0);
-}
-
 // Haskind–Newman in water of depth h (Newman 1976, axisymmetric body): |X3|² = 4ρgC_g B33/k and
 // |X1|² = 8ρgC_g B11/k hold for WAMIT's own excitation and damping to 1 % (brief T6; WAMIT's panel error),
 // which also checks that the importer dimensionalises both files consistently. At T = 8 s (kh = 3.2) the
