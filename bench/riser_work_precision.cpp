@@ -7,14 +7,19 @@
 //   error_finest_n: the same against the finest-n J3 reference (discretisation + time error).
 // Also the CPU time of one right-hand side evaluation against n (must grow linearly).
 // Times are thread CPU times (the machine may be shared), integration only (statics excluded).
-//   bench_riser_work_precision [out.csv] [n_max (default 400)] [case5_end_time (default 36)]
-// Plot: maris-cli has no CSV plotting command; columns are in the Maris CSV layout (names, units,
-// data), so any plotting tool reads them; docs/riser.md has the measured tables.
+//   bench_riser_work_precision [out.csv] [n_max (default 400; 1000 adds an implicit J3 run at n = 1000)]
+//                              [case5_end_time (default 36)] [cases: all | case5 | cable3d]
+// Integrators: RK4 at 0.9, 0.45, 0.225 x its stability estimate, DOPRI5 rtol 1e-3/1e-6/1e-8 (n <= 100), and
+// the scene's implicit generalized-alpha (riser_integration) at T/25, T/50, T/100 of the top-motion period.
+// Plot: bench/tools/work_precision_plot (built with the GUI) renders the CSV to PNG with the GUI's plot
+// code, e.g. --x cpu_time --y error_same_n --series variant,method --where case=case5 --where n=100;
+// docs/riser.md has the measured tables.
 #include <time.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,6 +28,8 @@
 #include "core/resources.hpp"
 #include "core/scenario.hpp"
 #include "riser/riser_dynamics.hpp"
+#include "riser/riser_integration.hpp"
+#include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 
 using namespace maris;
@@ -78,6 +85,43 @@ struct Run {
   long steps = 0;
 };
 
+// The scene's implicit generalized-α path (riser_integration: chart, Newton, recorder), step `step`:
+// the probe at L/2 from the recorder's history (≈ 2000 samples), interpolated linearly to the 0.2 s
+// output times (interpolation error ≈ (ωΔt)²/8 ≈ 1e-5 of the motion at Δt = 0.018 s, T = 10 s).
+Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSolution& s, double step) {
+  p.integrator = "implicit";
+  p.time_step = step;
+  p.probe_position = 0.5 * p.length;
+  p.stress_times.clear();
+  // Frames are the implicit integrator's chunk ends (Newton matrix refreshed per chunk); 2 per period
+  // keeps them from capping the step.
+  p.frame_count = std::max(2, static_cast<int>(std::ceil(2 * p.end_time / p.motion_period)));
+  RunContext ctx;
+  Eigen::VectorXd y = restState(m, s.orientation, s.top);
+  const IntegrationPlan plan = planIntegration(m, p);
+  RiserRecorder recorder(m, p, plan.stabilisation_rate);
+  recorder.sample(0.0, y, true, std::string("profile_static"));
+  Run run;
+  const double t0 = cpuSeconds();
+  const SolverStats st = integrateRiser(m, p, plan, y, recorder, ctx);
+  run.cpu = cpuSeconds() - t0;
+  run.rhs = st.rhs_evaluations;
+  run.steps = st.steps;
+  const Results r = recorder.finish(st, 0, 0.0);
+  const Table* h = r.findTable("history");
+  const auto& time = h->find("time")->values;
+  const Column* d[3] = {h->find("probe_dx"), h->find("probe_dy"), h->find("probe_dz")};
+  std::size_t j = 0;
+  for (double t = 0.0; t <= p.end_time + 1e-9; t += 0.2) {
+    while (j + 2 < time.size() && time[j + 1] < t) ++j;
+    const double w = std::clamp((t - time[j]) / (time[j + 1] - time[j]), 0.0, 1.0);
+    Vec3 v;
+    for (int c = 0; c < 3; ++c) v[c] = (1 - w) * d[c]->values[j] + w * d[c]->values[j + 1];
+    run.mid.push_back(v);
+  }
+  return run;
+}
+
 Run integrate(const RiserParameters& p, const std::string& method, double value) {
   const RiserModel m = buildRiserModel(p);
   RunContext ctx;
@@ -97,8 +141,9 @@ Run integrate(const RiserParameters& p, const std::string& method, double value)
   o.t0 = 0.0;
   o.t1 = p.end_time;
   o.output_interval = 0.2;
-  const double t0 = cpuSeconds();
   OdeStats st;
+  if (method == "implicit") return integrateImplicit(m, p, s, value);
+  const double t0 = cpuSeconds();
   if (method == "rk4") {
     o.step = value;
     st = integrateRk4(rhs, y, o, ctx, observe);
@@ -111,10 +156,12 @@ Run integrate(const RiserParameters& p, const std::string& method, double value)
   run.cpu = cpuSeconds() - t0;
   run.rhs = st.rhs_evaluations;
   run.steps = st.steps;
+  for (std::size_t k = run.mid.size(); k-- > 0;) run.mid[k] -= run.mid[0];  // displacement, as the implicit path
   return run;
 }
 
 double relativeError(const Run& a, const Run& ref) {
+  if (a.mid.empty() || ref.mid.empty()) return std::numeric_limits<double>::quiet_NaN();
   double scale = 0, err = 0;
   for (std::size_t k = 0; k < std::min(a.mid.size(), ref.mid.size()); ++k) {
     scale = std::max(scale, (ref.mid[k] - ref.mid[0]).norm());
@@ -169,33 +216,49 @@ int main(int argc, char** argv) {
     const char* name;
     RiserParameters p;
   };
-  std::vector<Case> cases = {{"case5", builtin("riser_paper_case5_j3")}, {"cable3d", cable3d()}};
-  cases[0].p.end_time = case5_end;
+  const std::string only = argc > 4 ? argv[4] : "all";
+  std::vector<Case> cases;
+  if (only == "all" || only == "case5") cases.push_back({"case5", builtin("riser_paper_case5_j3")});
+  if (only == "all" || only == "cable3d") cases.push_back({"cable3d", cable3d()});
+  for (auto& c : cases)
+    if (c.name == std::string("case5")) c.p.end_time = case5_end;
   std::vector<int> ns;
   for (int n : {10, 20, 50, 100, 200, 400})
     if (n <= n_max) ns.push_back(n);
+  const bool thousand = n_max >= 1000;  // n = 1000: implicit J3 only, error against the finest n only
   for (auto& c : cases) {
-    // Finest-n reference: J3, DOPRI5 rtol 1e-10.
+    // Finest-n reference: J3, DOPRI5 rtol 1e-10 (n ≤ 100) or RK4 at 0.2 × its limit (n ≥ 200, where
+    // DOPRI5 is as stability-bound as RK4 but 3x dearer; RK4's time error there is < 1e-8).
+    auto reference = [](const RiserParameters& p) {
+      if (p.segment_count <= 100) return integrate(p, "dopri5", 1e-10);
+      return integrate(p, "rk4", 0.2 * 2.8 / highestFrequencyEstimate(buildRiserModel(p)));
+    };
     RiserParameters pf = c.p;
     pf.segment_count = ns.back();
     pf.formulation = "joint";
     pf.torsion = true;
-    const Run finest = integrate(pf, "dopri5", 1e-10);
+    const Run finest = reference(pf);
     std::printf("# %s finest reference n = %d: %.2f s CPU, %ld steps\n", c.name, ns.back(), finest.cpu, finest.steps);
-    for (const Variant& v : kVariants)
-      for (int n : ns) {
+    const double period = c.p.motion_period;
+    for (const Variant& v : kVariants) {
+      std::vector<int> sizes = ns;
+      if (thousand && std::string(v.name) == "J3") sizes.push_back(1000);
+      for (int n : sizes) {
         RiserParameters p = c.p;
         p.segment_count = n;
         p.formulation = v.formulation;
         p.torsion = v.torsion;
-        const bool big = n >= 200;
+        const bool big = n >= 200, huge = n > ns.back();
         if (big && std::string(v.name) != "J3" && std::string(v.name) != "A2") continue;  // keep the bench in minutes
-        const Run ref = (n == ns.back() && std::string(v.name) == "J3") ? finest : integrate(p, "dopri5", 1e-10);
+        const Run ref = huge ? Run{} : (n == ns.back() && std::string(v.name) == "J3") ? finest : reference(p);
         const double limit = 2.8 / highestFrequencyEstimate(buildRiserModel(p));  // RK4 stability estimate
-        std::vector<std::pair<std::string, double>> settings = {{"rk4", 0.9 * limit}, {"rk4", 0.45 * limit},
-                                                                {"dopri5", 1e-3}, {"dopri5", 1e-6}};
-        if (!big) settings.push_back({"rk4", 0.225 * limit}), settings.push_back({"dopri5", 1e-8});
+        std::vector<std::pair<std::string, double>> settings;
+        if (!huge) settings = {{"rk4", 0.9 * limit}, {"rk4", 0.45 * limit}};
+        if (!big) settings.insert(settings.end(), {{"rk4", 0.225 * limit}, {"dopri5", 1e-3}, {"dopri5", 1e-6}, {"dopri5", 1e-8}});
         if (c.name == std::string("case5") && n == 100) settings.push_back({"rk4", 0.002});  // the paper's step
+        // Implicit generalized-α of the scene at T/25, T/50, T/100 (T = top-motion period).
+        for (double k : {25.0, 50.0, 100.0})
+          if (!huge || k == 50.0) settings.push_back({"implicit", period / k});
         for (const auto& [method, value] : settings) {
           Run r;
           try {
@@ -209,10 +272,12 @@ int main(int argc, char** argv) {
           std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,%ld,%ld,%.4e,%.3e,%.3e\n", c.name, v.name, n,
                         method.c_str(), value, r.steps, r.rhs, r.cpu, relativeError(r, ref), relativeError(r, finest));
           csv += line;
+          writeFileAtomic(out, csv);  // after every row: a long run can be cut short and still plotted
           std::fputs(line, stdout);
           std::fflush(stdout);
         }
       }
+    }
   }
   writeFileAtomic(out, csv);
   std::printf("# written %s\n", out.c_str());

@@ -109,6 +109,7 @@ OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::Vecto
     v_new = newton.v();
     if (!q_new.allFinite()) throwIfNotFinite(q_new, t_new, stats.steps + 1, options.state_name);
     if (!v_new.allFinite()) throwIfNotFinite(v_new, t_new, stats.steps + 1, options.state_name);
+    if (system.project_step) system.project_step(t_new, q_new, v_new);
     stats.error_estimate +=
         relativeLocalError((h_step * h_step * std::abs(c.beta - 1.0 / 6.0)) * (acc_new - acc), q_new, options.atol);
 

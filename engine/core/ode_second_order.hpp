@@ -56,6 +56,11 @@ struct SecondOrderSystem {
   // Default: dense S by forward differences of `residual` (n extra calls) and a partial-pivoting LU.
   std::function<bool(const IterationMatrixRequest& request, Eigen::VectorXd& rhs)> solve_iteration_matrix;
 
+  // Optional. Called after every accepted step with the new coordinates and velocities, which it may change
+  // (projection onto a constraint manifold, renormalisation). The accelerations are kept as they are, so a
+  // projection should be small (of the order of the step's truncation error).
+  std::function<void(double t, Eigen::VectorXd& q, Eigen::VectorXd& v)> project_step;
+
   // Optional, for the default path: S is banded, S_ij = 0 unless −lower ≤ j − i ≤ upper (a chain whose
   // coordinate i couples to i ± b: b and b). Then S is formed from lower + upper + 1 grouped residual
   // differences instead of n and factorised by BandedLu in O(n·b²). −1 (either): dense.

@@ -15,11 +15,6 @@ int segmentOffset(const RiserModel& m, int i) { return kHeader + (i - m.first_dy
 int workOffset(const RiserModel& m) { return segmentOffset(m, m.last_dynamic + 1); }
 int quaternionOffset(const RiserModel& m) { return m.formulation == Formulation::Joint ? 0 : 3; }
 
-// Top components whose force is known (free top: all; tensioner: z) instead of their motion.
-bool topForceKnown(const RiserModel& m, int c) {
-  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
-}
-
 Mat3 skew(const Vec3& v) {
   Mat3 s;
   s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
@@ -36,6 +31,10 @@ Vec3 bottomHoldPoint(const RiserModel& m) {
 }
 
 }  // namespace
+
+bool topForceKnown(const RiserModel& m, int c) {
+  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
+}
 
 RiserWorkspace makeWorkspace(const RiserModel& m, double stabilisation_rate) {
   RiserWorkspace ws;
@@ -135,102 +134,105 @@ void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, Rise
   }
 }
 
-void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
-  RiserPose& pose = ws.pose;
-  poseFromState(m, t, y, pose);
-  computeLoads(m, pose, 1.0, ws.loads);
-  const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
-  const bool joint = m.formulation == Formulation::Joint;
-  const double alpha = ws.stabilisation_rate;
-
-  // Stage 1: per-segment inverse mass W_i and bias b_i in the global frame.
-  for (int i = f; i <= last; ++i) {
-    const Segment& s = m.segments[i];
-    const Mat3& r = pose.rotation[i];
-    const Mat6& wl = s.inverse_mass_local;
+namespace {
+// W_i = M_i⁻¹ of the dynamic segments in the global frame at ws.pose.
+void updateInverseMasses(const RiserModel& m, RiserWorkspace& ws) {
+  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
+    const Mat3& r = ws.pose.rotation[i];
+    const Mat6& wl = m.segments[i].inverse_mass_local;
     Mat6& w = ws.inverse_mass[i];
     w.topLeftCorner<3, 3>() = r * wl.topLeftCorner<3, 3>() * r.transpose();
     w.topRightCorner<3, 3>() = r * wl.topRightCorner<3, 3>() * r.transpose();
     w.bottomLeftCorner<3, 3>() = w.topRightCorner<3, 3>().transpose();
     w.bottomRightCorner<3, 3>() = r * wl.bottomRightCorner<3, 3>() * r.transpose();
+  }
+}
+}  // namespace
+
+void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
+  RiserPose& pose = ws.pose;
+  poseFromState(m, t, y, pose);
+  computeLoads(m, pose, 1.0, ws.loads);
+  updateInverseMasses(m, ws);
+  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
+    const Segment& s = m.segments[i];
+    const Mat3& r = pose.rotation[i];
     const Vec3& om = pose.omega[i];
     const Vec3 c = 0.5 * s.length * r.col(0);
     const Mat3 inertia = r * s.mass_local.bottomRightCorner<3, 3>() * r.transpose();
     ws.bias[i] << ws.loads.force[i] - s.mass * om.cross(om.cross(c)), ws.loads.moment[i] - om.cross(inertia * om);
   }
+}
+
+ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& pose, double t) {
+  ConstraintViolation out;
+  const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
+  out.position.assign(nb, Vec3::Zero());
+  out.velocity.assign(nb, Vec3::Zero());
+  const TopKinematics top = m.topAt(t);
+  Vec3 hold = top.position, hold_v = top.velocity;
+  if (f == 1) hold += m.segments[0].length * pose.rotation[0].col(0);
+  for (int c = 0; c < 3; ++c) {
+    if (topForceKnown(m, c)) continue;
+    out.position[0][c] = pose.position[f][c] - hold[c];
+    out.velocity[0][c] = pose.velocity[f][c] - hold_v[c];
+  }
+  for (int k = 1; k < nb - 1; ++k) {
+    const int j = f + k;
+    const Vec3 dp = m.segments[j - 1].length * pose.rotation[j - 1].col(0);
+    out.position[k] = pose.position[j - 1] + dp - pose.position[j];
+    out.velocity[k] = pose.velocity[j - 1] + pose.omega[j - 1].cross(dp) - pose.velocity[j];
+  }
+  if (m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped) {
+    const Vec3 dl = m.segments[last].length * pose.rotation[last].col(0);
+    out.position[nb - 1] = pose.position[last] + dl - bottomHoldPoint(m);
+    out.velocity[nb - 1] = pose.velocity[last] + pose.omega[last].cross(dl);
+  }
+  for (const Vec3& p : out.position) out.largest = std::max(out.largest, p.lpNorm<Eigen::Infinity>());
+  return out;
+}
+
+namespace {
+
+// Stages 2-4: the block-tridiagonal matrix of the reactions (rows: top, inner joints, bottom).
+void assembleReactionMatrix(const RiserModel& m, RiserWorkspace& ws) {
+  const RiserPose& pose = ws.pose;
+  const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
   auto d = [&](int i) -> Vec3 { return m.segments[i].length * pose.rotation[i].col(0); };
-  auto kappa = [&](int i) -> Vec3 { return pose.omega[i].cross(pose.omega[i].cross(d(i))); };
-  // W_i D'_i, the response of segment i to a unit force at its far end (6x3).
-  auto wd = [&](int i) -> Eigen::Matrix<double, 6, 3> {
+  auto wd = [&](int i) -> Eigen::Matrix<double, 6, 3> {  // W_i D'_i: response to a unit far-end force
     const Mat6& w = ws.inverse_mass[i];
     return w.leftCols<3>() + w.rightCols<3>() * skew(d(i));
   };
-  double drift = 0.0;
-
-  // Stage 2: top row (joint A_f): prescribed acceleration, or known force components.
-  const TopKinematics top = m.topAt(t);
-  {
-    const Mat6& w = ws.inverse_mass[f];
-    ws.lower[0].setZero();
-    ws.diag[0] = w.topLeftCorner<3, 3>();
-    ws.upper[0] = -wd(f).topRows<3>();
-    Vec3 target = top.acceleration;
-    if (!joint) {
-      Vec3 hold = top.position, hold_v = top.velocity;
-      if (f == 1) hold += d(0);
-      for (int c = 0; c < 3; ++c) {
-        if (topForceKnown(m, c)) continue;
-        const double phi = pose.position[f][c] - hold[c], phid = pose.velocity[f][c] - hold_v[c];
-        target[c] -= 2 * alpha * phid + alpha * alpha * phi;
-        drift = std::max(drift, std::abs(phi));
-      }
-    }
-    ws.rhs[0] = target - (w * ws.bias[f]).head<3>();
-    for (int c = 0; c < 3; ++c) {
-      if (!topForceKnown(m, c)) continue;
-      ws.diag[0].row(c) = Vec3::Unit(c).transpose();
-      ws.upper[0].row(c).setZero();
-      ws.rhs[0][c] = m.top == TopCondition::Tensioner ? m.top_tension : 0.0;
-    }
+  ws.lower[0].setZero();
+  ws.diag[0] = ws.inverse_mass[f].topLeftCorner<3, 3>();
+  ws.upper[0] = -wd(f).topRows<3>();
+  for (int c = 0; c < 3; ++c) {
+    if (!topForceKnown(m, c)) continue;
+    ws.diag[0].row(c) = Vec3::Unit(c).transpose();
+    ws.upper[0].row(c).setZero();
   }
-  // Stage 3: continuity rows for the joints between dynamic segments.
   for (int k = 1; k < nb - 1; ++k) {
     const int j = f + k;
     const auto wd_prev = wd(j - 1);
-    const Vec3 dp = d(j - 1);
     ws.lower[k] = -wd_prev.topRows<3>().transpose();
-    ws.diag[k] = ws.inverse_mass[j].topLeftCorner<3, 3>() + wd_prev.topRows<3>() - skew(dp) * wd_prev.bottomRows<3>();
+    ws.diag[k] = ws.inverse_mass[j].topLeftCorner<3, 3>() + wd_prev.topRows<3>() - skew(d(j - 1)) * wd_prev.bottomRows<3>();
     ws.upper[k] = -wd(j).topRows<3>();
-    Vec3 stab = Vec3::Zero();
-    if (!joint) {
-      const Vec3 phi = pose.position[j - 1] + dp - pose.position[j];
-      const Vec3 phid = pose.velocity[j - 1] + pose.omega[j - 1].cross(dp) - pose.velocity[j];
-      stab = 2 * alpha * phid + alpha * alpha * phi;
-      drift = std::max(drift, phi.lpNorm<Eigen::Infinity>());
-    }
-    ws.rhs[k] = kappa(j - 1) + stab + farEnd(ws.inverse_mass[j - 1] * ws.bias[j - 1], dp) -
-                (ws.inverse_mass[j] * ws.bias[j]).head<3>();
   }
-  // Stage 4: bottom row: end held (pinned/clamped) or force known (free/spring: F = 0, load already applied).
-  {
-    const int k = nb - 1;
-    ws.upper[k].setZero();
-    if (m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped) {
-      const auto wd_last = wd(last);
-      const Vec3 dl = d(last);
-      const Vec3 phi = pose.position[last] + dl - bottomHoldPoint(m);
-      const Vec3 phid = pose.velocity[last] + pose.omega[last].cross(dl);
-      drift = std::max(drift, phi.lpNorm<Eigen::Infinity>());
-      ws.lower[k] = -wd_last.topRows<3>().transpose();
-      ws.diag[k] = wd_last.topRows<3>() - skew(dl) * wd_last.bottomRows<3>();
-      ws.rhs[k] = farEnd(ws.inverse_mass[last] * ws.bias[last], dl) + kappa(last) + 2 * alpha * phid + alpha * alpha * phi;
-    } else {
-      ws.lower[k].setZero();
-      ws.diag[k].setIdentity();
-      ws.rhs[k].setZero();
-    }
+  const int k = nb - 1;
+  ws.upper[k].setZero();
+  if (m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped) {
+    const auto wd_last = wd(last);
+    ws.lower[k] = -wd_last.topRows<3>().transpose();
+    ws.diag[k] = wd_last.topRows<3>() - skew(d(last)) * wd_last.bottomRows<3>();
+  } else {
+    ws.lower[k].setZero();
+    ws.diag[k].setIdentity();
   }
-  // Stage 5: block-Thomas sweep for the reactions F_f .. F_{last+1}.
+}
+
+// Stage 5: block-Thomas sweep of the assembled system for right side ws.rhs into ws.reaction[f ..].
+void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
+  const int f = m.first_dynamic, nb = m.last_dynamic - f + 2;
   for (int k = 0; k < nb; ++k) {
     Mat3 pivot = ws.diag[k];
     Vec3 r = ws.rhs[k];
@@ -243,6 +245,44 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
     ws.reaction[f + k] = lu.solve(r);
   }
   for (int k = nb - 2; k >= 0; --k) ws.reaction[f + k] -= ws.pivot_upper[k] * ws.reaction[f + k + 1];
+}
+
+// Baumgarte term 2αΦ̇ + α²Φ of row k (absolute coordinates; joint: only the bottom row).
+Vec3 stabilisation(const RiserModel& m, const ConstraintViolation& phi, int k, double alpha) {
+  const int nb = static_cast<int>(phi.position.size());
+  if (m.formulation == Formulation::Joint && k < nb - 1) return Vec3::Zero();
+  return 2 * alpha * phi.velocity[k] + alpha * alpha * phi.position[k];
+}
+
+}  // namespace
+
+void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+  prepareSegments(m, ws, t, y);
+  const RiserPose& pose = ws.pose;
+  const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
+  const bool joint = m.formulation == Formulation::Joint;
+  const double alpha = ws.stabilisation_rate;
+  const ConstraintViolation phi = constraintViolation(m, pose, t);
+  assembleReactionMatrix(m, ws);
+  auto d = [&](int i) -> Vec3 { return m.segments[i].length * pose.rotation[i].col(0); };
+  auto kappa = [&](int i) -> Vec3 { return pose.omega[i].cross(pose.omega[i].cross(d(i))); };
+  auto wb = [&](int i) -> Vec6 { return ws.inverse_mass[i] * ws.bias[i]; };
+
+  // Right sides: top row (prescribed acceleration, or known force components), continuity, bottom.
+  const TopKinematics top = m.topAt(t);
+  ws.rhs[0] = top.acceleration - (joint ? Vec3::Zero() : stabilisation(m, phi, 0, alpha)) - wb(f).head<3>();
+  for (int c = 0; c < 3; ++c)
+    if (topForceKnown(m, c)) ws.rhs[0][c] = m.top == TopCondition::Tensioner ? m.top_tension : 0.0;
+  for (int k = 1; k < nb - 1; ++k) {
+    const int j = f + k;
+    ws.rhs[k] = kappa(j - 1) + stabilisation(m, phi, k, alpha) + farEnd(wb(j - 1), d(j - 1)) - wb(j).head<3>();
+  }
+  const bool held = m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+  ws.rhs[nb - 1] = held ? Vec3(farEnd(wb(last), d(last)) + kappa(last) + stabilisation(m, phi, nb - 1, alpha))
+                        : Vec3::Zero();
+  solveReactionSystem(m, ws);
+  double drift = phi.position[nb - 1].lpNorm<Eigen::Infinity>();
+  if (!joint) drift = phi.largest;
   ws.constraint_drift = drift;
 
   // Stage 6: accelerations x_i = W_i (E F_i - D'_i F_{i+1} + b_i) and the state derivative.
@@ -276,6 +316,79 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
   dy[ow + 1] = ws.loads.power_damping;
   dy[ow + 2] = ws.reaction[f].dot(pose.velocity[f]) + ws.loads.power_point;
   dy[ow + 3] = ws.loads.power_flow;
+}
+
+void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, const std::vector<Vec6>& x,
+                     const std::vector<Vec3>& reaction, std::vector<Vec6>& segment_residual,
+                     std::vector<Vec3>& row_residual) {
+  const RiserPose& pose = ws.pose;
+  const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
+  const ConstraintViolation phi = constraintViolation(m, pose, t);
+  const double alpha = ws.stabilisation_rate;
+  auto d = [&](int i) -> Vec3 { return m.segments[i].length * pose.rotation[i].col(0); };
+  auto kappa = [&](int i) -> Vec3 { return pose.omega[i].cross(pose.omega[i].cross(d(i))); };
+  segment_residual.resize(m.segmentCount());
+  row_residual.resize(nb);
+  for (int i = f; i <= last; ++i) {
+    Vec6 g = ws.bias[i];
+    g.head<3>() += reaction[i] - reaction[i + 1];
+    g.tail<3>() -= d(i).cross(reaction[i + 1]);
+    segment_residual[i] = x[i] - ws.inverse_mass[i] * g;
+  }
+  const TopKinematics top = m.topAt(t);
+  const bool joint = m.formulation == Formulation::Joint;
+  row_residual[0] = x[f].head<3>() - top.acceleration + (joint ? Vec3::Zero() : stabilisation(m, phi, 0, alpha));
+  for (int c = 0; c < 3; ++c)
+    if (topForceKnown(m, c)) row_residual[0][c] = reaction[f][c] - (m.top == TopCondition::Tensioner ? m.top_tension : 0.0);
+  for (int k = 1; k < nb - 1; ++k) {
+    const int j = f + k;
+    row_residual[k] = x[j].head<3>() - farEnd(x[j - 1], d(j - 1)) - kappa(j - 1) - stabilisation(m, phi, k, alpha);
+  }
+  const bool held = m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+  row_residual[nb - 1] = held ? Vec3(farEnd(x[last], d(last)) + kappa(last) + stabilisation(m, phi, nb - 1, alpha))
+                              : Vec3(reaction[last + 1]);
+}
+
+double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, int iterations) {
+  if (m.formulation == Formulation::Joint) return 0.0;
+  const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
+  // Right sides for δΦ = −Φ: the matrix rows give δz_f (top), δz_j − D'ᵀδz_{j−1} (inner), −D'ᵀδz_last (bottom).
+  auto setRhs = [&](const std::vector<Vec3>& phi) {
+    ws.rhs[0] = -phi[0];
+    for (int k = 1; k < nb; ++k) ws.rhs[k] = phi[k];
+  };
+  auto correction = [&](int i) -> Vec6 {
+    Vec6 g;
+    const Vec3 d = m.segments[i].length * ws.pose.rotation[i].col(0);
+    g << ws.reaction[i] - ws.reaction[i + 1], -d.cross(ws.reaction[i + 1]);
+    return ws.inverse_mass[i] * g;
+  };
+  for (int it = 0; it <= iterations; ++it) {
+    poseFromState(m, t, y, ws.pose);
+    updateInverseMasses(m, ws);
+    const ConstraintViolation phi = constraintViolation(m, ws.pose, t);
+    assembleReactionMatrix(m, ws);
+    setRhs(it < iterations ? phi.position : phi.velocity);
+    solveReactionSystem(m, ws);
+    for (int i = f; i <= last; ++i) {
+      const Vec6 dz = correction(i);
+      const int o = segmentOffset(m, i);
+      if (it == iterations) {  // velocities: v_i += δv, ω_i += δω
+        y.segment<3>(o + 7) += dz.head<3>();
+        y.segment<3>(o + 10) += dz.tail<3>();
+        continue;
+      }
+      y.segment<3>(o) += dz.head<3>();
+      const Eigen::Quaterniond q(y[o + 3], y[o + 4], y[o + 5], y[o + 6]);
+      const double angle = dz.tail<3>().norm();
+      const Eigen::Quaterniond turn =
+          angle > 0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, dz.tail<3>() / angle)) : Eigen::Quaterniond::Identity();
+      const Eigen::Quaterniond rotated = (turn * q).normalized();
+      y.segment<4>(o + 3) << rotated.w(), rotated.x(), rotated.y(), rotated.z();
+    }
+  }
+  poseFromState(m, t, y, ws.pose);
+  return constraintViolation(m, ws.pose, t).largest;
 }
 
 void normaliseState(const RiserModel& m, Eigen::VectorXd& y) {

@@ -60,6 +60,37 @@ void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, Rise
 // dy/dt at (t, y). Leaves pose, loads, reactions and accelerations in the workspace.
 void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
 
+// The three steps of evaluateRhs, exposed for the implicit integrator's Newton matrix (riser_newton):
+// pose, loads, inverse masses W_i and biases b_i of the dynamic segments at (t, y).
+void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y);
+
+// Constraint violations Φ and Φ̇ per row of the reaction system (row 0: top hold, k: joint A_{f+k},
+// last: bottom hold; zero where the force is known). Joint coordinates satisfy the inner rows exactly.
+struct ConstraintViolation {
+  std::vector<Vec3> position;  // [m] Φ_k
+  std::vector<Vec3> velocity;  // [m/s] Φ̇_k
+  double largest = 0.0;        // [m] max |Φ_k| (infinity norm)
+};
+ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& pose, double t);
+
+// Residuals of the unreduced equations at the pose prepared in ws, for given accelerations x_i = (a_{A_i}, α_i)
+// and reactions F_j (indices as in ws.acceleration / ws.reaction):
+//   segment i:  x_i − W_i (E F_i − D'_i F_{i+1} + b_i)
+//   row k:      the acceleration-level constraint with Baumgarte terms (or F − known for known forces).
+// Both vanish at the solution of evaluateRhs. The force-space Newton matrix of riser_newton differentiates them.
+void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, const std::vector<Vec6>& x,
+                     const std::vector<Vec3>& reaction, std::vector<Vec6>& segment_residual,
+                     std::vector<Vec3>& row_residual);
+
+// Absolute coordinates: projects y onto the constraint manifold Φ = 0, Φ̇ = 0 by mass-weighted least-squares
+// corrections δz_i = W_i (E μ_i − D'_i μ_{i+1}) of positions and rotations (Gauss–Newton, the reaction
+// system's block-tridiagonal matrix with Φ as right side; `iterations` sweeps), then the same for the
+// velocities. O(n). Returns the largest |Φ| [m] after the projection. Joint coordinates: no-op, returns 0.
+double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, int iterations = 2);
+
+// Top components whose force is known (free top: all; tensioner: z) instead of their motion.
+bool topForceKnown(const RiserModel& m, int c);
+
 // Renormalises the quaternions of y (after a step) and, without torsion, removes spin about the axes.
 void normaliseState(const RiserModel& m, Eigen::VectorXd& y);
 

@@ -24,6 +24,9 @@ Mat3 expMap(const Vec3& theta) {
 // Rotations above this within one chunk mean the chunk is far too long for the chart (J_r is singular at 2π).
 constexpr double kLargestChartRotation = 5.0;  // [rad]
 
+// J̇_r θ̇ by a central difference along θ̇ (step 1e-4 rad: error ~1e-8 relative).
+Vec3 rightJacobianRate(const Vec3& theta, const Vec3& rate);
+
 }  // namespace
 
 Mat3 rightJacobian(const Vec3& theta) {
@@ -60,6 +63,29 @@ void RotationVectorChart::reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Ei
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
     const Vec3 omega = y.segment<3>(joint ? o + 4 : o + 10);
     v.segment<3>(gt) = reference_[k].transpose() * omega;  // θ = 0: J_r = I
+    if (!joint) {
+      q.segment<3>(g) = y.segment<3>(o);
+      v.segment<3>(g) = y.segment<3>(o + 7);
+    }
+  }
+  const Eigen::Index ow = workIntegralOffset(m_);
+  for (int w = 0; w < kWorkIntegrals; ++w) v[work_ + w] = y[ow + w];
+}
+
+void RotationVectorChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) const {
+  q.head<3>() = y.head<3>();
+  v.head<3>() = y.segment<3>(3);
+  const bool joint = m_.formulation == Formulation::Joint;
+  for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
+    const int k = i - m_.first_dynamic;
+    const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
+    const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
+    const Eigen::Quaterniond quat(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
+    const Mat3 rot = quat.normalized().toRotationMatrix();
+    const Eigen::AngleAxisd turn(reference_[k].transpose() * rot);
+    const Vec3 theta = turn.angle() * turn.axis();
+    q.segment<3>(gt) = theta;
+    v.segment<3>(gt) = rightJacobian(theta).lu().solve(rot.transpose() * y.segment<3>(joint ? o + 4 : o + 10));
     if (!joint) {
       q.segment<3>(g) = y.segment<3>(o);
       v.segment<3>(g) = y.segment<3>(o + 7);
@@ -109,13 +135,8 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
                         "rotated " + std::to_string(theta.norm()) +
                             " rad within one chunk of the implicit integrator: raise output.frame_count");
     const Mat3 rot = reference_[k] * expMap(theta), jr = rightJacobian(theta);
-    // θ̈ = J_r⁻¹ (Rᵀ α − J̇_r θ̇); J̇_r θ̇ by a central difference along θ̇ (step 1e-4 rad: error ~1e-8 relative).
-    const double speed = rate.norm();
-    Vec3 jdot_rate = Vec3::Zero();
-    if (speed > 0) {
-      const double eps = 1e-4 / speed;
-      jdot_rate = (rightJacobian(theta + eps * rate) - rightJacobian(theta - eps * rate)) * rate / (2 * eps);
-    }
+    // θ̈ = J_r⁻¹ (Rᵀ α − J̇_r θ̇).
+    const Vec3 jdot_rate = rightJacobianRate(theta, rate);
     const Vec3 alpha = dy_.segment<3>(joint ? o + 4 : o + 10);
     const Vec3 theta_acc = jr.lu().solve(rot.transpose() * alpha - jdot_rate);
     r.segment<3>(gt) = acc.segment<3>(gt) - theta_acc;
@@ -123,6 +144,46 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
   }
   const Eigen::Index ow = workIntegralOffset(m_);
   for (int w = 0; w < kWorkIntegrals; ++w) r[work_ + w] = acc[work_ + w] - dy_[ow + w];
+}
+
+namespace {
+Vec3 rightJacobianRate(const Vec3& theta, const Vec3& rate) {
+  const double speed = rate.norm();
+  if (!(speed > 0)) return Vec3::Zero();
+  const double eps = 1e-4 / speed;
+  return (rightJacobian(theta + eps * rate) - rightJacobian(theta - eps * rate)) * rate / (2 * eps);
+}
+}  // namespace
+
+void RotationVectorChart::accelerationMap(const Eigen::VectorXd& q, std::vector<Mat3>& turn, std::vector<Vec3>& arm) const {
+  const int segments = m_.last_dynamic - m_.first_dynamic + 1;
+  const int off = m_.formulation == Formulation::Joint ? 0 : 3;
+  turn.resize(segments);
+  arm.resize(segments);
+  for (int k = 0; k < segments; ++k) {
+    const Vec3 theta = q.segment<3>(3 + k * per_segment_ + off);
+    const Mat3 rot = reference_[k] * expMap(theta);
+    turn[k] = rot * rightJacobian(theta);
+    arm[k] = m_.segments[m_.first_dynamic + k].length * rot.col(0);
+  }
+}
+
+void RotationVectorChart::balance(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
+                                  const std::vector<Vec3>& reaction, std::vector<Vec6>& segment_residual,
+                                  std::vector<Vec3>& row_residual) {
+  toState(q, v, y_);
+  prepareSegments(m_, ws_, t, y_);
+  x_.resize(m_.segmentCount());
+  const int off = m_.formulation == Formulation::Joint ? 0 : 3;
+  for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
+    const int k = i - m_.first_dynamic;
+    const Eigen::Index g = 3 + k * per_segment_, gt = g + off;
+    const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
+    const Mat3 rot = reference_[k] * expMap(theta);
+    const Vec3 alpha = rot * (rightJacobian(theta) * acc.segment<3>(gt) + rightJacobianRate(theta, rate));
+    x_[i] << (off ? Vec3(acc.segment<3>(g)) : Vec3::Zero()), alpha;
+  }
+  balanceResidual(m_, ws_, t, x_, reaction, segment_residual, row_residual);
 }
 
 double RotationVectorChart::largestRotation(const Eigen::VectorXd& q) const {

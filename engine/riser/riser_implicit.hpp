@@ -25,11 +25,25 @@ class RotationVectorChart {
   Eigen::Index size() const { return size_; }
   // Takes the orientations of first-order state y as the references; q (θ = 0) and v from y.
   void reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v);
+  // (q, v) of first-order state y with the current references kept (θ = log(R_refᵀ R), θ̇ = J_r⁻¹ Rᵀω);
+  // the work coordinates of q are left as they are. For projecting the state after a step.
+  void fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) const;
   // First-order state (quaternions, angular velocities) of (q, v).
   void toState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;
   // r = acc − a(t, q, v), a from the O(n) solve of riser_dynamics mapped to the chart.
   void residual(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
                 Eigen::VectorXd& r);
+  // Per dynamic segment k: the map of its chart accelerations (r̈, θ̈) to x = (a_{A_i}, α_i) is
+  // x = (r̈, turn_k θ̈ + R J̇_r θ̇) with turn_k = R_i J_r(θ_i); also writes the arm d_i = l_i t_i (both at q).
+  void accelerationMap(const Eigen::VectorXd& q, std::vector<Mat3>& turn, std::vector<Vec3>& arm) const;
+  // Absolute coordinates: residuals of the unreduced equations (balanceResidual) at chart state (q, v),
+  // chart accelerations acc and reactions F_j; used by the O(n) Newton matrix (riser_newton).
+  void balance(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
+               const std::vector<Vec3>& reaction, std::vector<Vec6>& segment_residual, std::vector<Vec3>& row_residual);
+  // Workspace of the last residual()/balance() evaluation (reactions, pose).
+  const RiserWorkspace& workspace() const { return ws_; }
+  RiserWorkspace& workspace() { return ws_; }
+  int perSegment() const { return per_segment_; }
   // Largest |θ_i| of q [rad].
   double largestRotation(const Eigen::VectorXd& q) const;
   // Name of coordinate k for error messages.
@@ -40,6 +54,7 @@ class RotationVectorChart {
   RiserWorkspace ws_;
   std::vector<Mat3> reference_;  // R_ref,i per dynamic segment
   Eigen::VectorXd y_, dy_;
+  std::vector<Vec6> x_;          // physical accelerations of balance()
   Eigen::Index size_ = 0;
   int per_segment_ = 3;          // J: θ; A: r, θ
   Eigen::Index work_ = 0;        // offset of the work coordinates in q

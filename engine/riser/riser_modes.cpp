@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <complex>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 
 #include "riser/riser_dynamics.hpp"
 
@@ -131,54 +134,204 @@ void modeShape(const RiserModel& m, const RiserPose& pose, const Coordinates& q,
   for (double& t : twist) t /= biggest_twist > 0 ? biggest_twist : 1.0;
 }
 
+// Generalised accelerations of state y on the coordinates q (same scaling as the coordinates).
+Eigen::VectorXd coordinateAccelerations(const RiserModel& m, RiserWorkspace& ws, const Coordinates& q,
+                                        const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+  evaluateRhs(m, ws, 0.0, y, dy);
+  Eigen::VectorXd a(q.size());
+  int k = 0;
+  for (int c : q.top_axes) a[k++] = dy[3 + c] / m.length;
+  for (const auto& [i, c] : q.positions) a[k++] = ws.acceleration[i][c] / m.element_length;
+  for (const auto& [i, axis] : q.rotations) a[k++] = ws.acceleration[i].tail<3>().dot(axis);
+  return a;
+}
+
+// Rest state y0 with coordinate velocity k set to h (dimensionless per second): the top velocity,
+// the origin velocity (A) or the angular velocity about the coordinate's axis.
+Eigen::VectorXd movingState(const RiserModel& m, const Coordinates& q, const Eigen::VectorXd& y0, int k, double h) {
+  Eigen::VectorXd y = y0;
+  const int nt = static_cast<int>(q.top_axes.size()), np = static_cast<int>(q.positions.size());
+  const bool joint = m.formulation == Formulation::Joint;
+  if (k < nt) {
+    y[3 + q.top_axes[k]] += h * m.length;
+  } else if (k < nt + np) {
+    const auto& [i, c] = q.positions[k - nt];
+    y[segmentStateOffset(m, i) + 7 + c] += h * m.element_length;
+  } else {
+    const auto& [i, axis] = q.rotations[k - nt - np];
+    y.segment<3>(segmentStateOffset(m, i) + (joint ? 4 : 10)) += h * axis;
+  }
+  return y;
+}
+
+// ∂(accelerations)/∂q (stiffness part K) by central differences, step 1e-6: truncation ~1e-12,
+// round-off ~1e-10 of the largest entry.
+Eigen::MatrixXd positionJacobian(const RiserModel& m, const StaticSolution& statics, const Coordinates& q) {
+  RiserWorkspace ws = makeWorkspace(m, 0.0);  // Baumgarte off: A keeps Φ̈ = 0 exactly (see header)
+  const Eigen::VectorXd y0 = restState(m, statics.orientation, statics.top);
+  Eigen::VectorXd dy(y0.size());
+  const int n = q.size();
+  const double h = 1e-6;
+  Eigen::MatrixXd a(n, n);
+  for (int k = 0; k < n; ++k)
+    a.col(k) = (coordinateAccelerations(m, ws, q, perturbedState(m, statics, q, y0, k, h), dy) -
+                coordinateAccelerations(m, ws, q, perturbedState(m, statics, q, y0, k, -h), dy)) / (2 * h);
+  return a;
+}
+
+// ∂(accelerations)/∂q̇ at rest (gyroscopic part G). Drag is switched off for it (its velocity
+// dependence is damping, not gyroscopic); what remains linear in the velocities at rest is the
+// Coriolis force −2 m_f l u ṫ of the internal flow (the other velocity terms are quadratic).
+Eigen::MatrixXd velocityJacobian(RiserModel m, const StaticSolution& statics, const Coordinates& q) {
+  for (auto& s : m.segments) s.normal_drag = s.tangential_drag = 0.0;
+  m.spring_damping = 0.0;
+  RiserWorkspace ws = makeWorkspace(m, 0.0);
+  const Eigen::VectorXd y0 = restState(m, statics.orientation, statics.top);
+  Eigen::VectorXd dy(y0.size());
+  const int n = q.size();
+  const double h = 1e-6;
+  Eigen::MatrixXd g(n, n);
+  for (int k = 0; k < n; ++k)
+    g.col(k) = (coordinateAccelerations(m, ws, q, movingState(m, q, y0, k, h), dy) -
+                coordinateAccelerations(m, ws, q, movingState(m, q, y0, k, -h), dy)) / (2 * h);
+  return g;
+}
+
+// Orthonormal basis of the coordinate directions that keep the chain connected and the held ends in
+// place: the null space of ∂Φ/∂q, Φ = the gaps the reaction solve closes (held top axes and, in A,
+// every joint, scaled by Δ; the held bottom end). Rank by column-pivoted QR of (∂Φ/∂q)ᵀ.
+Eigen::MatrixXd connectedBasis(const RiserModel& m, const StaticSolution& statics, const Coordinates& q) {
+  const Eigen::VectorXd y0 = restState(m, statics.orientation, statics.top);
+  RiserPose pose;
+  pose.resize(m.segmentCount());
+  const int f = m.first_dynamic, last = m.last_dynamic;
+  const bool bottom_held = m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+  auto gaps = [&](const Eigen::VectorXd& y) {
+    poseFromState(m, 0.0, y, pose);
+    std::vector<double> g;
+    auto push = [&](const Vec3& v) { for (int c = 0; c < 3; ++c) g.push_back(v[c] / m.element_length); };
+    Vec3 hold = m.topAt(0.0).position;
+    if (f == 1) hold += m.segments[0].length * pose.tangent(0);
+    for (int c = 0; c < 3; ++c)
+      if (!topFree(m, c)) g.push_back((pose.position[f][c] - hold[c]) / m.element_length);
+    for (int j = f + 1; j <= last; ++j)
+      push(pose.position[j - 1] + m.segments[j - 1].length * pose.tangent(j - 1) - pose.position[j]);
+    if (bottom_held) {
+      Vec3 anchor = m.anchor;
+      if (m.bottom == BottomCondition::Clamped)
+        anchor -= m.segments[m.n].length * m.initial_orientation[m.n].toRotationMatrix().col(0);
+      push(pose.position[last] + m.segments[last].length * pose.tangent(last) - anchor);
+    }
+    return Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(g.size())).eval();
+  };
+  const int n = q.size();
+  const double h = 1e-6;
+  Eigen::MatrixXd jac(gaps(y0).size(), n);
+  for (int k = 0; k < n; ++k)
+    jac.col(k) = (gaps(perturbedState(m, statics, q, y0, k, h)) - gaps(perturbedState(m, statics, q, y0, k, -h))) / (2 * h);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jac.transpose());
+  qr.setThreshold(1e-8);
+  const Eigen::Index rank = qr.rank();
+  const Eigen::MatrixXd full = qr.householderQ();
+  return full.rightCols(n - rank);
+}
+
+// Real displacement pattern of a complex mode x: the phase e^{-iφ} that makes it as real as possible
+// (φ = arg(Σ x_k²)/2), then its real part. For a real mode this is the mode itself.
+Eigen::VectorXd realPart(const Eigen::VectorXcd& x) {
+  const std::complex<double> sum = (x.array() * x.array()).sum();
+  return (x * std::exp(std::complex<double>(0.0, -0.5 * std::arg(sum)))).real();
+}
+
 }  // namespace
+
+double divergenceFlowSpeed(const RiserModel& model, const StaticSolution& statics) {
+  bool contents = false;
+  for (const auto& s : model.segments) contents = contents || s.fluid_mass_per_length > 0;
+  if (!contents) return std::numeric_limits<double>::infinity();
+  RiserModel m = undampedModel(model, Formulation::Joint);
+  const Coordinates q = makeCoordinates(m, statics);
+  const Eigen::MatrixXd z = connectedBasis(m, statics, q);
+  m.flow_speed = 0.0;
+  const Eigen::MatrixXd k0 = z.transpose() * positionJacobian(m, statics, q) * z;
+  m.flow_speed = 1.0;
+  // The flow's shape-dependent force −m_f l u² k is quadratic in u: K(u) = K0 + u² K1 exactly.
+  const Eigen::MatrixXd k1 = z.transpose() * positionJacobian(m, statics, q) * z - k0;
+  Eigen::GeneralizedEigenSolver<Eigen::MatrixXd> eig(-k0, k1, false);
+  double smallest = std::numeric_limits<double>::infinity();
+  const double scale = k0.cwiseAbs().maxCoeff() / std::max(k1.cwiseAbs().maxCoeff(), 1e-300);
+  for (Eigen::Index k = 0; k < eig.alphas().size(); ++k) {
+    const std::complex<double> a = eig.alphas()[k];
+    const double b = eig.betas()[k];
+    if (std::abs(b) < 1e-12 * std::abs(a) || std::abs(a.imag()) > 1e-6 * std::abs(a)) continue;
+    const double u2 = a.real() / b;
+    if (u2 > 1e-12 * scale) smallest = std::min(smallest, u2);
+  }
+  return std::sqrt(smallest);
+}
 
 RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count, Formulation linearisation) {
   const RiserModel m = undampedModel(model, linearisation);
   const Coordinates q = makeCoordinates(m, statics);
   const int n = q.size();
-  RiserWorkspace ws = makeWorkspace(m, 0.0);  // Baumgarte off: A keeps Φ̈ = 0 exactly (see header)
-  const Eigen::VectorXd y0 = restState(m, statics.orientation, statics.top);
-  Eigen::VectorXd dy(y0.size());
-  // Generalised accelerations of state y on the coordinates (same scaling as the coordinates).
-  auto accelerations = [&](const Eigen::VectorXd& y) {
-    evaluateRhs(m, ws, 0.0, y, dy);
-    Eigen::VectorXd a(n);
-    int k = 0;
-    for (int c : q.top_axes) a[k++] = dy[3 + c] / m.length;
-    for (const auto& [i, c] : q.positions) a[k++] = ws.acceleration[i][c] / m.element_length;
-    for (const auto& [i, axis] : q.rotations) a[k++] = ws.acceleration[i].tail<3>().dot(axis);
-    return a;
-  };
-  // A = ∂(accelerations)/∂q by central differences (step 1e-6: truncation ~1e-12, round-off ~1e-10).
-  Eigen::MatrixXd a(n, n);
-  const double h = 1e-6;
-  for (int k = 0; k < n; ++k)
-    a.col(k) = (accelerations(perturbedState(m, statics, q, y0, k, h)) -
-                accelerations(perturbedState(m, statics, q, y0, k, -h))) / (2 * h);
-  Eigen::EigenSolver<Eigen::MatrixXd> eig(-a);
-  const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
-  std::vector<std::pair<double, int>> found;
-  for (int k = 0; k < n; ++k) {
-    const auto lambda = eig.eigenvalues()[k];
-    if (lambda.real() > 1e-9 * largest && std::abs(lambda.imag()) < 1e-6 * std::abs(lambda.real()))
-      found.push_back({std::sqrt(lambda.real()), k});
-  }
-  std::sort(found.begin(), found.end());
+  const Eigen::MatrixXd a = positionJacobian(m, statics, q);
   RiserModes out;
+  out.divergence_flow_speed = divergenceFlowSpeed(model, statics);
   RiserPose pose;
   pose.resize(m.segmentCount());
-  poseFromState(m, 0.0, y0, pose);
-  for (int c = 0; c < std::min<int>(count, static_cast<int>(found.size())); ++c) {
+  poseFromState(m, 0.0, restState(m, statics.orientation, statics.top), pose);
+  auto add = [&](double omega, const Eigen::VectorXd& v) {
     std::vector<Vec3> shape;
     std::vector<double> twist;
     double share = 0;
-    modeShape(m, pose, q, eig.eigenvectors().col(found[c].second).real(), shape, twist, share);
-    out.frequencies.push_back(found[c].first);
+    modeShape(m, pose, q, v, shape, twist, share);
+    out.frequencies.push_back(omega);
     out.shapes.push_back(std::move(shape));
     out.twists.push_back(std::move(twist));
     out.torsion_share.push_back(share);
+  };
+  if (m.flow_speed == 0.0) {
+    // No gyroscopic term: ω² are the positive real eigenvalues of −A.
+    Eigen::EigenSolver<Eigen::MatrixXd> eig(-a);
+    const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
+    std::vector<std::pair<double, int>> found;
+    for (int k = 0; k < n; ++k) {
+      const auto lambda = eig.eigenvalues()[k];
+      if (lambda.real() > 1e-9 * largest && std::abs(lambda.imag()) < 1e-6 * std::abs(lambda.real()))
+        found.push_back({std::sqrt(lambda.real()), k});
+    }
+    std::sort(found.begin(), found.end());
+    for (int c = 0; c < std::min<int>(count, static_cast<int>(found.size())); ++c)
+      add(found[c].first, eig.eigenvectors().col(found[c].second).real());
+    return out;
   }
+  // Internal flow: q̈ = A q + G q̇ with the Coriolis coupling G. On the connected directions
+  // q = Z ξ (A and G map into them, so Zᵀ is exact) the first-order system
+  //   d/dt [ξ; ξ̇] = [0 I; ZᵀAZ ZᵀGZ] [ξ; ξ̇]
+  // has eigenvalues ±iω for stable modes (gyroscopic, conservative), real pairs past divergence
+  // and complex quadruples in flutter. Frequencies are Im λ of the eigenvalues on the imaginary axis.
+  const Eigen::MatrixXd z = connectedBasis(m, statics, q);
+  const Eigen::Index p = z.cols();
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(2 * p, 2 * p);
+  s.topRightCorner(p, p).setIdentity();
+  s.bottomLeftCorner(p, p) = z.transpose() * a * z;
+  s.bottomRightCorner(p, p) = z.transpose() * velocityJacobian(m, statics, q) * z;
+  Eigen::EigenSolver<Eigen::MatrixXd> eig(s);
+  const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
+  std::vector<std::pair<double, Eigen::Index>> found;
+  for (Eigen::Index k = 0; k < 2 * p; ++k) {
+    const std::complex<double> lambda = eig.eigenvalues()[k];
+    const double size = std::abs(lambda);
+    if (size < 1e-7 * largest) continue;  // rigid-body (zero) directions
+    if (std::abs(lambda.real()) <= 1e-6 * size) {
+      if (lambda.imag() > 0) found.push_back({lambda.imag(), k});
+    } else if (lambda.real() > 0) {
+      ++out.unstable_count;
+    }
+  }
+  std::sort(found.begin(), found.end());
+  for (int c = 0; c < std::min<int>(count, static_cast<int>(found.size())); ++c)
+    add(found[c].first, realPart(z * eig.eigenvectors().col(found[c].second).head(p)));
   return out;
 }
 

@@ -14,6 +14,7 @@
 // not depend on positions at all the A position columns vanish and both give the same matrix.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "core/results.hpp"
@@ -27,6 +28,8 @@ struct RiserModes {
                                              //     (all zero for a pure torsion mode)
   std::vector<std::vector<double>> twists;   // [-] rotation of segment i about its own axis (n+1), largest = 1
   std::vector<double> torsion_share;         // [-] Σ twist² / Σ |rotation|² of the mode (1 = pure torsion)
+  int unstable_count = 0;                    // [-] eigenvalues with Re λ > 0 (internal flow past divergence/flutter)
+  double divergence_flow_speed = std::numeric_limits<double>::infinity();  // [m/s] |u| at which ω_1 → 0; ∞ without contents
 };
 
 // Linearises q̈ = f(q) about the static state by central differences of the O(n) accelerations
@@ -36,8 +39,22 @@ struct RiserModes {
 //   Absolute: position of each dynamic segment's origin (3) + the same rotation increments.
 // Zero eigenvalues (directions violating a held end or, in A, a joint) are dropped. Dense O(N³) with
 // N ≈ 3n (J) or 6n (A): meant for n up to a few hundred. Returns at most `count` modes.
+// With internal flow (u ≠ 0) the Coriolis force −2 m_f l u ṫ makes the system gyroscopic, q̈ = A q + G q̇:
+// then G = ∂(accelerations)/∂q̇ is differentiated too (drag off) and the first-order (state-space)
+// eigenproblem of size 2N′ is solved on the N′ directions that keep the chain connected (null space of
+// the constraint Jacobian, so no zero-eigenvalue Jordan blocks blur small frequencies). Frequencies are
+// the imaginary parts of the eigenvalues on the imaginary axis; modes past divergence or in flutter are
+// counted in unstable_count. Shapes: the real part of the complex mode at the phase that makes it most real.
 RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count,
                         Formulation linearisation = Formulation::Joint);
+
+// Flow speed |u| at which the lowest frequency reaches zero (divergence: the stiffness A(u) becomes
+// singular; the Coriolis term cannot move an eigenvalue through zero). The flow's shape-dependent force
+// is −m_f l u² k, so A(u) = A0 + u² A1 exactly at a fixed shape, and u_c² is the smallest positive
+// eigenvalue of the pencil (−A0, A1) on the connected directions. Evaluated at the given static shape
+// (exact for a straight riser; for a riser bent by current the shape itself changes with u). Returns
+// +∞ without contents (m_f = 0) or when no positive u² exists (joint coordinates).
+double divergenceFlowSpeed(const RiserModel& model, const StaticSolution& statics);
 
 // Animation of the modes for the 3D view: for each mode, `frames_per_mode` frames over one period,
 // the static shape plus amplitude·sin(phase)·shape, amplitude = 5 % of L (torsion modes: the tube

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace maris::riser {
 namespace {
@@ -163,7 +164,9 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   if (profile_name) {
     Table tab;
     tab.name = *profile_name;
-    tab.title = "Along the riser at t = " + std::to_string(t) + " s";
+    std::ostringstream title;  // 6 significant digits, no trailing zeros: "t = 24 s", "t = 12.5 s"
+    title << "Along the riser at t = " << t << " s";
+    tab.title = title.str();
     tab.add("arc_length", "m", prof.arc_length);
     std::vector<double> x, yv, z, dx;
     for (int k = 0; k < nodes; ++k) {
@@ -234,6 +237,9 @@ void RiserRecorder::addModes(const RiserModes& modes) {
   freq.add("torsion_share", "-", modes.torsion_share);
   if (!omega.empty())
     r_.addScalar("first_natural_frequency", omega.front(), "rad/s", "Lowest natural frequency about the static state");
+  if (std::isfinite(modes.divergence_flow_speed))
+    r_.addScalar("divergence_flow_speed", modes.divergence_flow_speed, "m/s",
+                 "Internal flow speed |u| at which the lowest natural frequency reaches zero (at the static shape)");
   r_.tables.push_back(std::move(freq));
   r_.tables.push_back(std::move(shapes));
 }

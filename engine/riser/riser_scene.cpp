@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/scene.hpp"
 #include "riser/riser_envelope.hpp"
@@ -28,6 +29,10 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
     context.progress(0.0, "natural frequencies");
     modes = computeModes(model, statics, 6);
     recorder.addModes(modes);
+    if (modes.unstable_count > 0)
+      context.warn(std::to_string(modes.unstable_count) + " linearised modes are unstable: internal flow speed " +
+                   std::to_string(std::abs(model.flow_speed)) + " m/s is beyond the divergence speed " +
+                   std::to_string(modes.divergence_flow_speed) + " m/s (or in flutter)");
   }
   const SolverStats stats = integrateRiser(model, p, plan, y, recorder, context);
   Results results = recorder.finish(stats, statics.iterations, statics.residual);

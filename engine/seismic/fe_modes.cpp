@@ -9,17 +9,11 @@
 #include <Eigen/SparseCholesky>
 
 #include "core/errors.hpp"
+#include "seismic/fe_modes_detail.hpp"
 
 namespace maris::seismic {
 
-namespace {
-
-// Unknowns: (u_x, u_y) of every node carrying solid mass, except the clamped bottom row.
-struct DofMap {
-  std::vector<int> of_node;  // first dof of a node (x; y = x + 1), −1 if none
-  std::vector<double> mass;  // [kg/m] per dof
-  int count = 0;
-};
+namespace detail {
 
 DofMap numberDofs(const FeModel& model, bool fixed_base) {
   const FeMesh& m = model.mesh;
@@ -71,6 +65,9 @@ void describeMode(const FeModel& model, const DofMap& d, const Eigen::VectorXd& 
     py += d.mass[k] * x[k + 1];
   }
   for (double node_mass : model.solid_mass) mass += node_mass;  // clamped nodes included
+  mode.ux.assign(m.nodeCount(), 0.0);
+  mode.uy.assign(m.nodeCount(), 0.0);
+  if (!(total > 0.0)) return;  // a water-only mode of the coupled analysis: no solid motion to describe
   double reef = 0.0, top = 0.0, cells = 0.0;
   for (int c : model.solid_cells) {
     int n[4];
@@ -90,8 +87,6 @@ void describeMode(const FeModel& model, const DofMap& d, const Eigen::VectorXd& 
   mode.mass_ratio_y = py * py / total / mass;
   double peak = 0.0;
   for (int k = 0; k < d.count; ++k) peak = std::max(peak, std::abs(x[k]));
-  mode.ux.assign(m.nodeCount(), 0.0);
-  mode.uy.assign(m.nodeCount(), 0.0);
   for (int a = 0; a < m.nodeCount(); ++a)
     if (d.of_node[a] >= 0) {
       mode.ux[a] = x[d.of_node[a]] / peak;
@@ -99,7 +94,9 @@ void describeMode(const FeModel& model, const DofMap& d, const Eigen::VectorXd& 
     }
 }
 
-}  // namespace
+}  // namespace detail
+
+using namespace detail;
 
 ModalResult computeSolidModes(const FeModel& model, int count, bool fixed_base, RunContext& ctx) {
   ctx.progress(0.0, "modal analysis: factorising K");

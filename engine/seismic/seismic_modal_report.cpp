@@ -1,6 +1,8 @@
-// Modal table of the reef (paper Table 2): the lowest natural modes of the solid reef + seabed on the
-// scene's own mesh, with the diagnostics that tell a global mode (large effective mass) from a partial
-// mode of the upper layers (motion concentrated in layer 1).
+// Modal table of the reef (paper Table 2): the lowest natural modes of the reef + seabed on the
+// scene's own mesh, with the water coupled when model.include_water (fluid–solid modes, as the
+// paper's FLUID80 model) or dry otherwise, and the diagnostics that tell a global mode (large
+// effective mass) from a partial mode of the upper layers (motion concentrated in layer 1) and a
+// water mode (water_share near 1).
 #include <algorithm>
 #include <string>
 
@@ -19,11 +21,15 @@ void addModalResults(const SeismicParameters& p, Results& results, RunContext& c
     ctx.warn("modal analysis on the coarse mesh (Δ = " + std::to_string(model.mesh.delta) + " m): the main mesh has over " +
              std::to_string(kMaxModalCells) + " solid cells");
   }
-  const ModalResult r = computeSolidModes(model, p.mode_count, p.modal_base == "fixed", ctx);
+  const bool wet = p.include_water && p.water_depth > 0.0;
+  const bool fixed = p.modal_base == "fixed";
+  const ModalResult r =
+      wet ? computeCoupledModes(model, p.mode_count, fixed, ctx) : computeSolidModes(model, p.mode_count, fixed, ctx);
   if (r.modes.empty()) return;
 
-  Table t{"modes", "Natural modes of the solid reef and seabed (water not included)", {}};
-  std::vector<double> index, f, horizontal, reef, top, mx, my, residual;
+  Table t{"modes", wet ? "Fluid–solid natural modes of the reef, seabed and water"
+                       : "Natural modes of the solid reef and seabed (no water)", {}};
+  std::vector<double> index, f, horizontal, reef, top, mx, my, residual, water;
   double worst = 0.0;
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const SolidMode& m = r.modes[k];
@@ -35,6 +41,7 @@ void addModalResults(const SeismicParameters& p, Results& results, RunContext& c
     mx.push_back(m.mass_ratio_x);
     my.push_back(m.mass_ratio_y);
     residual.push_back(m.residual);
+    water.push_back(m.water_share);
     worst = std::max(worst, m.residual);
   }
   t.add("mode", "-", index);
@@ -45,6 +52,7 @@ void addModalResults(const SeismicParameters& p, Results& results, RunContext& c
   t.add("mass_ratio_x", "-", mx);
   t.add("mass_ratio_y", "-", my);
   t.add("residual", "-", residual);
+  if (wet) t.add("water_share", "-", water);
   results.tables.push_back(std::move(t));
   results.plots.push_back({"modes", "Modal effective masses", "modes", "frequency", {"mass_ratio_x", "mass_ratio_y"},
                            false, false, "", {}});

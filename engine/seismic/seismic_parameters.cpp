@@ -68,7 +68,7 @@ SchemaBinder<SeismicParameters> seismicBinder() {
   b.integer("output.snapshot_count", &P::snapshot_count, "-", Range::closed(0, 200), "Wave-field frames");
   b.integer("output.station_count", &P::station_count, "-", Range::closed(3, 401), "Stations along the reef flat");
   b.integer("modes.count", &P::mode_count, "-", Range::closed(0, 60),
-            "Lowest natural modes of the solid reef and seabed (no water); 0 skips");
+            "Lowest natural modes of the reef and seabed, with the water coupled when it is present; 0 skips");
   b.choice("modes.base", &P::modal_base, {"fixed", "springs"},
            "Modal boundary: clamped bottom, or the artificial boundary's springs only");
   return b;

@@ -63,7 +63,7 @@ struct SeismicParameters {
   int snapshot_count = 16;        // [-] wave-field frames in the 3D view
   int station_count = 41;         // [-] stations along the reef flat
 
-  // Modal analysis of the solid reef + seabed (water not included), reef model only
+  // Modal analysis of the reef + seabed (+ the water when include_water: fluid–solid modes), reef model only
   int mode_count = 10;              // [-] lowest modes reported; 0 skips the analysis
   std::string modal_base = "fixed"; // "fixed": bottom clamped, or "springs": boundary springs only
 };

@@ -6,6 +6,11 @@
 namespace maris::wec {
 
 FrequencyResponse solveFrequency(const WecModel& model, const FloatModel& f, double omega, double pto_damping) {
+  // Interacting floats: the coupled system, of which this float's row is returned.
+  if (model.coupled) {
+    const auto i = static_cast<int>(&f - model.floats.data());
+    return solveCoupledFrequency(model, omega, i, pto_damping)[static_cast<std::size_t>(i)];
+  }
   const double b_pto = pto_damping < 0.0 ? f.pto_damping : pto_damping;
   const double rx = f.arm_length * std::cos(f.theta0), rz = f.arm_length * std::sin(f.theta0);
   const FloatHydro h = f.hydro->at(omega);

@@ -6,7 +6,8 @@
 //   J = I_cg + m L² + A_zz r_x0² + A_xx r_z0²,  B_θ = B_zz r_x0² + B_xx r_z0²,
 //   K_θ = ρ g A_w r_x0² + k_PTO,               X_θ = r_x0 X_z − r_z0 X_x   (location phase included).
 //
-// Floats do not interact hydrodynamically, so the N-float system is diagonal and solved float by float.
+// Without multi-body coefficients the floats do not interact and the N-float system is diagonal (solved float by
+// float); with them (model.coupled) solveFrequency returns the float's row of the coupled system (wec_coupled.hpp).
 // Hinge force (on the structure): F̂_h = Q̂ − m ü, Q̂ = X̂ + (ω² A − iω B) ξ̂ − ρ g A_w ξ̂_z ê_z.
 // Mean PTO power P̄ = ½ B_PTO ω² |Θ|²; the passive optimum B_PTO,opt = √(B_θ² + (ωJ − K_θ/ω)²);
 // capture width CW = P̄/J_wave, J_wave = ρ g² a²/(4ω) (deep water), bounded by 3λ/(2π) for a body

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/errors.hpp"
 #include "wec/wec_nemoh.hpp"
 #include "wec/wec_wamit.hpp"
 
@@ -24,9 +25,16 @@ WecModel buildWecModel(const WecParameters& p) {
   if (p.hydro_source == "nemoh_files") {
     const NemohImport nemoh = readNemoh(p.nemoh_directory);
     imported = nemoh.hydro;
+    m.coupled = nemoh.coupled;
     m.a_inf_error_surge = nemoh.a_inf_spread_surge;
     m.a_inf_error_heave = nemoh.a_inf_spread_heave;
   }
+  if (m.coupled && m.coupled->bodies() != static_cast<int>(p.floats.size()))
+    throw InputError("floats", std::to_string(p.floats.size()) + " rows",
+                     "the Nemoh files describe " + std::to_string(m.coupled->bodies()) +
+                         " bodies: give one float per body, in body order");
+  if (m.coupled && m.direction < 0.0)
+    throw InputError("waves.direction", "\"-x\"", "multi-body Nemoh coefficients are read for heading 0 only: use +x");
   for (const auto& row : p.floats) {
     FloatModel f;
     f.arm_length = row.arm_length;
@@ -42,7 +50,10 @@ WecModel buildWecModel(const WecParameters& p) {
     f.waterplane_area = kPi * row.radius * row.radius;
     f.x_f0 = row.hinge_x + row.arm_length * std::cos(f.theta0);
     // Floats of equal radius share one coefficient database (and, below, one set of kernels).
-    if (imported) {
+    if (m.coupled) {
+      f.hydro = m.coupled->floatView(static_cast<int>(m.floats.size()));
+      f.excitation_positioned = true;
+    } else if (imported) {
       f.hydro = imported;
     } else {
       for (const auto& other : m.floats)
@@ -79,11 +90,13 @@ void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt) {
     build(f.surge, false);
     build(f.heave, true);
   }
+  buildCrossRadiation(model, kernel_duration, kernel_dt);
 }
 
 FloatExcitation excitationAt(const WecModel& model, const FloatModel& f, double omega) {
   const FloatHydro h = f.hydro->at(omega);
   const double s = model.direction;
+  if (f.excitation_positioned) return {h.surge.excitation, h.heave.excitation};
   const Complex location = std::polar(1.0, -s * waveNumber(omega, model.gravity) * f.x_f0);
   return {s * h.surge.excitation * location, h.heave.excitation * location};
 }

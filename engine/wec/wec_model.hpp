@@ -11,8 +11,9 @@
 //   * complex amplitudes: e^{+iωt}, η(x, t) = Re{a e^{i(ωt − kx)}} (see wec_hydro.hpp);
 //   * weight and still-water buoyancy cancel (water-ballasted float), hydrostatics are linear:
 //     F_z,hs = −ρ g A_w u_z with u_z = z_f (paper eq 7);
-//   * hydrodynamics are deep-water and without float–float interaction (each float sees the incident
-//     wave at its own position). Depth only raises a flag where kh < π.
+//   * built-in hydrodynamics are deep-water and without float–float interaction (each float sees the incident
+//     wave at its own position; depth only raises a flag where kh < π); multi-body Nemoh/Capytaine files add
+//     the interaction (WecModel::coupled, wec_coupled.hpp).
 #pragma once
 
 #include <memory>
@@ -20,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "wec/wec_coupled.hpp"
 #include "wec/wec_hydro.hpp"
 #include "wec/wec_parameters.hpp"
 #include "wec/wec_radiation.hpp"
@@ -47,7 +49,15 @@ struct FloatModel {
   double waterplane_area = 0.0;         // [m²] πa²
   double x_f0 = 0.0;                    // [m] float centre x at equilibrium
   std::shared_ptr<const HydroDatabase> hydro;
+  bool excitation_positioned = false;   // true: hydro's excitation already holds the location phase (multi-body)
   ModeRadiation surge, heave;           // filled by buildRadiation
+};
+
+// Radiation between two different translational DoFs (multi-body coefficients): the force on DoF `row` from the
+// motion of DoF `col`, DoF index 2·float + (0 surge, 1 heave).
+struct CrossRadiation {
+  int row = 0, col = 0;
+  ModeRadiation mode;
 };
 
 struct WecModel {
@@ -56,6 +66,8 @@ struct WecModel {
   // [kg] error bar of A∞ when it was recovered by Ogilvie from an imported table (Nemoh), 0 otherwise.
   double a_inf_error_surge = 0.0, a_inf_error_heave = 0.0;
   std::vector<FloatModel> floats;
+  std::shared_ptr<const CoupledHydro> coupled;  // multi-body coefficients; null: floats do not interact
+  std::vector<CrossRadiation> cross;  // off-diagonal radiation entries, filled by buildRadiation (coupled only)
 };
 
 // Derived geometry and hydrodynamics; radiation kernels are computed by buildRadiation (costly).

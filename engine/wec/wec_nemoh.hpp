@@ -7,7 +7,8 @@
 //                              |F| [N/m], angle [rad]
 // Coefficients are dimensional; the frequency column is ω [rad/s] unless the VARIABLES line names "(Hz)" or a
 // period "(s)". Nemoh and Capytaine use the e^{−iωt} time factor: amplitudes are conjugated on import into the
-// scene's e^{+iωt} convention (wec_hydro.hpp). Body 1, DoFs 1 (surge) and 3 (heave), heading 0 are read.
+// scene's e^{+iωt} convention (wec_hydro.hpp). DoFs 1 (surge) and 3 (heave) of every body and heading 0 are read;
+// with N bodies a row holds 6N (A, B) pairs, body-major, and the result is a CoupledHydro (one float per body).
 //
 // Nemoh does not write A∞, so it is recovered from the finite-frequency table by Ogilvie's relation
 // (wec_radiation.hpp), averaged over the table band; the spread of the estimate is returned as its error.
@@ -16,12 +17,14 @@
 #include <filesystem>
 #include <memory>
 
+#include "wec/wec_coupled.hpp"
 #include "wec/wec_hydro.hpp"
 
 namespace maris::wec {
 
 struct NemohImport {
-  std::shared_ptr<TabulatedHydro> hydro;
+  std::shared_ptr<TabulatedHydro> hydro;   // one body in the files
+  std::shared_ptr<CoupledHydro> coupled;   // several bodies: surge/heave of all, with the interaction
   double a_inf_spread_surge = 0.0;  // [kg] max − min of the Ogilvie estimates over the band
   double a_inf_spread_heave = 0.0;  // [kg]
 };

@@ -51,11 +51,13 @@ SchemaBinder<WecParameters> wecBinder() {
   b.choice("time.formulation", &P::formulation, {"classical", "augmented", "both"},
            "Classical (one ODE per float) and/or augmented (x, z, theta with hinge multipliers)");
   b.choice("time.radiation", &P::radiation, {"state_space", "direct"}, "Radiation memory evaluation");
+  b.choice("time.augmented_integrator", &P::augmented_integrator, {"newmark_two_loop", "rk4"},
+           "Augmented formulation: the paper's explicit Newmark with Newton-Raphson on the constraints, or RK4");
   b.choice("time.constraint_control", &P::constraint_control, {"projection", "baumgarte"},
-           "Augmented formulation: project onto the constraints each step, or Baumgarte stabilisation only");
+           "Augmented RK4: project onto the constraints each step, or Baumgarte stabilisation only");
   b.real("time.baumgarte_rate", &P::baumgarte_rate, "1/s", Range::closed(0.0, 1e3), "Baumgarte rate alpha");
   b.real("time.duration", &P::duration, "s", Range::positive(1e5), "Simulated time");
-  b.real("time.time_step", &P::time_step, "s", Range{0.0, 1.0, true, false}, "RK4 time step");
+  b.real("time.time_step", &P::time_step, "s", Range{0.0, 1.0, true, false}, "Time step (RK4 or Newmark)");
   b.real("time.kernel_duration", &P::kernel_duration, "s", Range::closed(2.0, 300.0), "Radiation kernel length");
   b.real("time.initial_offset_deg", &P::initial_offset_deg, "deg", Range::closed(-45.0, 45.0), "Initial angle offset from equilibrium");
   b.integer("time.animation_frames", &P::animation_frames, "-", Range::closed(1, 2000), "3D view frames");

@@ -49,10 +49,11 @@ struct WecParameters {
   // time domain
   std::string formulation = "both";      // classical | augmented | both
   std::string radiation = "state_space"; // state_space | direct
-  std::string constraint_control = "projection";  // projection | baumgarte (augmented only)
+  std::string augmented_integrator = "newmark_two_loop";  // newmark_two_loop (the paper's) | rk4 (augmented only)
+  std::string constraint_control = "projection";  // projection | baumgarte (augmented with rk4 only)
   double baumgarte_rate = 10.0;          // [1/s] α of C̈ + 2αĊ + α²C = 0
   double duration = 200.0;               // [s]
-  double time_step = 0.05;               // [s] RK4 step
+  double time_step = 0.05;               // [s] integrator step (RK4 or Newmark)
   double kernel_duration = 40.0;         // [s] length of the radiation kernel K(t)
   double initial_offset_deg = 0.0;       // [deg] θ(0) − θ0 (free-decay runs)
   int animation_frames = 120;            // [-] frames of the 3D view

@@ -1,5 +1,6 @@
 // Registry entry of the hinged-float WEC scene: parameters → model → frequency domain, radiation memory,
 // time-domain check points, main time-domain run(s) → Results.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -81,6 +82,19 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
 // Radiation kernel fit quality and the Ogilvie check of A∞ for float 1.
 void addRadiationScalars(const WecModel& model, Results& res, RunContext& ctx) {
   const auto& f = model.floats.front();
+  if (model.coupled) {
+    double worst_r2 = 1.0, worst_b = 0.0;
+    for (const auto& c : model.cross) {
+      worst_r2 = std::min(worst_r2, c.mode.fit.r_squared);
+      worst_b = std::max(worst_b, c.mode.quality.damping_error);
+      if (!c.mode.fit.stable()) ctx.warn("cross radiation kernel fit has an unstable pole");
+    }
+    res.addScalar("cross_radiation_channels", static_cast<double>(model.cross.size()), "-",
+                  "Off-diagonal (float-float and surge-heave) radiation entries with their own kernels");
+    res.addScalar("cross_kernel_fit_r2_min", worst_r2, "-", "Lowest R^2 of the cross-kernel modal fits");
+    res.addScalar("cross_kernel_fit_damping_error_max", worst_b, "-",
+                  "Largest max|B_fit - B| / max|B| of the cross-kernel fits on 0.3-3 rad/s");
+  }
   for (auto [name, mode] : {std::pair{"surge", &f.surge}, std::pair{"heave", &f.heave}}) {
     const std::string s = name;
     res.addScalar("kernel_fit_order_" + s, mode->fit.order, "-", "States of the modal (Prony) fit of K(t)");
@@ -189,6 +203,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   TimeDomainOptions base;
   base.state_space = p.radiation == "state_space";
   base.projection = p.constraint_control == "projection";
+  base.newmark = p.augmented_integrator == "newmark_two_loop";
   base.baumgarte_rate = p.baumgarte_rate;
   base.time_step = p.time_step;
   base.duration = p.duration;
@@ -241,12 +256,19 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
                   "max |theta_classical - theta_augmented| / max |theta - theta0|");
     res.addScalar("classical_augmented_force_difference", amp_f > 0 ? d_f / amp_f : d_f, "-",
                   "max hinge-force difference / max hinge force");
-    res.addScalar("constraint_drift_max", second.max_position_drift, "m", "max |C| of the augmented run before projection");
+    res.addScalar("constraint_drift_max", second.max_position_drift, "m",
+                  "max |C| of the augmented run (RK4: before projection; Newmark: after the Newton-Raphson loop)");
+    res.addScalar("constraint_velocity_drift_max", second.max_velocity_drift, "m/s", "max |C_q dq/dt| of the augmented run");
+    if (base.newmark) {
+      res.addScalar("newmark_stability_step", second.stability_step, "s", "Stability limit 2/omega_max of explicit Newmark");
+      res.addScalar("newmark_max_velocity_iterations", second.max_velocity_iterations, "-",
+                    "Most velocity fixed-point iterations in one Newmark step");
+    }
     res.stats.method += "; " + second.method;
     res.stats.steps += second.steps;
     res.stats.rhs_evaluations += second.rhs_evaluations;
-    res.addScalar("rk4_error_estimate_augmented", second.error_estimate, "rad",
-                  "Sum of embedded RK4 local-error estimates of theta, augmented run");
+    res.addScalar("error_estimate_augmented", second.error_estimate, "rad",
+                  "Sum of local-error estimates of theta, augmented run (RK4 embedded pair or Newmark h^2/6 |dtheta_dd|)");
   }
   res.tables.push_back(std::move(hist));
   for (std::size_t i = 0; i < model.floats.size(); ++i) {

@@ -16,6 +16,9 @@
 // once per completed step. The radiation memory is a modal state-space system integrated with the
 // mechanics (ẇ = p w + u̇), or direct trapezoidal convolution over the stored velocity history with
 // the memory force extrapolated linearly across each step (second order).
+// The augmented formulation can instead use the paper's own scheme (options.newmark; wec_newmark.cpp): explicit
+// Newmark-β (β = 0, γ = ½) on θ with an inner Newton–Raphson loop on the position constraints, which satisfies
+// the constraints at position, velocity and acceleration level with no drift.
 #pragma once
 
 #include <string>
@@ -29,7 +32,8 @@ namespace maris::wec {
 struct TimeDomainOptions {
   bool augmented = false;          // false: classical
   bool state_space = true;         // false: direct convolution
-  bool projection = true;          // augmented: project onto the constraints after each step
+  bool projection = true;          // augmented RK4: project onto the constraints after each step
+  bool newmark = false;            // augmented: the paper's Newmark two-loop scheme instead of RK4
   double baumgarte_rate = 10.0;    // [1/s] α
   double time_step = 0.05;         // [s]
   double duration = 100.0;         // [s]
@@ -58,10 +62,12 @@ struct TimeDomainResult {
   std::vector<FloatHistory> floats;
   double max_position_drift = 0.0;         // [m] max |C| over the run (before projection)
   double max_velocity_drift = 0.0;         // [m/s] max |C_q q̇|
-  double stability_step = 0.0;             // [s] estimated RK4 stability limit of the fastest mode
+  double stability_step = 0.0;             // [s] estimated stability limit of the integrator (fastest mode)
   // [rad] Σ over steps of the local error of θ from the embedded 3rd-order companion, h|k4 − k5|/6 with
   // k5 = the next step's k1 (as in core/ode.hpp); an over-estimate of RK4's global error.
   double error_estimate = 0.0;
+  int max_newton_iterations = 0;           // Newmark: most position (Newton–Raphson) iterations in one step
+  int max_velocity_iterations = 0;         // Newmark: most velocity fixed-point iterations in one step
   long steps = 0;
   long rhs_evaluations = 0;
   std::string method;

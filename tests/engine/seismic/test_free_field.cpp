@@ -170,5 +170,18 @@ TEST(FreeField, SvCriticalAngleIsReported) {
   EXPECT_THROW(FreeField(kSeabed, kWater, WaveType::SV, 90.0 * kDeg), InputError);
 }
 
+TEST(FreeField, ObliquePWaterResonanceStopsTheSeabedVertically) {
+  // Brief A6: the water layer's reactive impedance on the seabed, ρ_f ω tan(ωhη_f)/η_f, is infinite at
+  // ωhη_f = π/2, i.e. f₁ = c_f/(4h cosθ_f) with sinθ_f = c_f sinθ/v_p: there the seabed cannot move
+  // vertically (round-off, 1e-9), while just off resonance it does (> 0.05).
+  for (double deg : {30.0, 45.0, 70.0}) {
+    const FreeField ff(kSeabed, kWater, WaveType::P, deg * kDeg);
+    const double sin_f = kWater.sound_speed * std::sin(deg * kDeg) / kSeabed.vp;
+    const double f1 = kWater.sound_speed / (4.0 * kWater.depth * std::sqrt(1.0 - sin_f * sin_f));
+    EXPECT_LT(std::abs(ff.solidAt(ff.solve(omegaOf(f1)), omegaOf(f1), 0.0, 0.0).uy), 1e-9) << deg;
+    EXPECT_GT(std::abs(ff.solidAt(ff.solve(omegaOf(0.9 * f1)), omegaOf(0.9 * f1), 0.0, 0.0).uy), 0.05) << deg;
+  }
+}
+
 }  // namespace
 }  // namespace maris::seismic
