@@ -173,6 +173,11 @@ void MainWindow::createDocks() {
     a->setChecked(theme == theme_);
     themes->addAction(a);
   }
+  QMenu* plot = menuBar()->addMenu(tr("&Plot"));
+  plot->addAction(plots_->addReferenceAction());
+  plot->addAction(plots_->clearReferenceAction());
+  plot->addSeparator();
+  plot->addMenu(plots_->exportMenu());
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Maris"), this, [this] {
     QMessageBox::about(this, tr("About Maris"),

@@ -16,6 +16,19 @@ int nearestJoint(const RiserModel& m, double s) {
   return std::clamp(static_cast<int>(std::lround(s / m.element_length + 0.5)), 1, m.n);
 }
 
+// The time-history plots (shared by the final and the partial results, so live plots keep their tabs).
+void addHistoryPlots(Results& out) {
+  out.plots.push_back(makePlot("probe_displacement", "Probe point displacement", "history", "time",
+                               {"probe_dx", "probe_dy", "probe_dz"}));
+  out.plots.push_back(makePlot("top_force", "Top reaction", "history", "time",
+                               {"top_force_x", "top_force_y", "top_force_z"}));
+  out.plots.push_back(makePlot(
+      "energy", "Energy and work", "history", "time",
+      {"kinetic_energy", "spring_energy", "work_drag", "work_boundary", "work_flow", "energy_balance_error"}));
+  out.plots.push_back(makePlot("probe_stress", "Stress at the probe", "history", "time",
+                               {"probe_bending_stress", "probe_torsional_stress"}));
+}
+
 }  // namespace
 
 RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
@@ -175,6 +188,22 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     r_.tables.push_back(std::move(tab));
   }
   first_ = false;
+  if (live_ && history_.rows() > 1 && live_->wantsPartialResults()) live_->publishPartial(partialResults());
+}
+
+std::shared_ptr<const Results> RiserRecorder::partialResults() const {
+  auto out = std::make_shared<Results>();
+  out->tables.push_back(history_);
+  addHistoryPlots(*out);
+  out->view.scalar_name = r_.view.scalar_name;
+  out->view.scalar_unit = r_.view.scalar_unit;
+  out->view.water_level_z = r_.view.water_level_z;
+  out->view.seabed_z = r_.view.seabed_z;
+  if (!r_.view.frames.empty()) out->view.frames.push_back(r_.view.frames.back());
+  out->addScalar("time", history_.columns.front().values.back(), "s", "Simulated time reached so far");
+  out->addScalar("probe_max_displacement", probe_max_, "m", "Largest displacement of the probe point so far");
+  out->addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress so far");
+  return out;
 }
 
 void RiserRecorder::addModes(const RiserModes& modes) {
@@ -248,20 +277,12 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
   out.addScalar("integrator_error_estimate", stats.error_estimate, "-",
                 "Integrator's relative global error estimate (sum of local estimates, see docs/numerics.md)");
   // Plots.
-  auto plot = [&](std::string name, std::string title, std::string table, std::string x, std::vector<std::string> y) {
-    out.plots.push_back(makePlot(std::move(name), std::move(title), std::move(table), std::move(x), std::move(y)));
-  };
-  if (h.rows() > 1) {
-    plot("probe_displacement", "Probe point displacement", "history", "time", {"probe_dx", "probe_dy", "probe_dz"});
-    plot("top_force", "Top reaction", "history", "time", {"top_force_x", "top_force_y", "top_force_z"});
-    plot("energy", "Energy and work", "history", "time",
-         {"kinetic_energy", "spring_energy", "work_drag", "work_boundary", "work_flow", "energy_balance_error"});
-    plot("probe_stress", "Stress at the probe", "history", "time", {"probe_bending_stress", "probe_torsional_stress"});
-  }
+  if (h.rows() > 1) addHistoryPlots(out);
   for (const auto& t : out.tables) {
     if (t.name.rfind("profile", 0) != 0) continue;
-    plot(t.name + "_stress", t.title + ": stress", t.name, "arc_length", {"bending_stress", "torsional_stress"});
-    plot(t.name + "_shape", t.title + ": shape", t.name, "arc_length", {"x", "y"});
+    out.plots.push_back(makePlot(t.name + "_stress", t.title + ": stress", t.name, "arc_length",
+                                 {"bending_stress", "torsional_stress"}));
+    out.plots.push_back(makePlot(t.name + "_shape", t.title + ": shape", t.name, "arc_length", {"x", "y"}));
   }
   return out;
 }

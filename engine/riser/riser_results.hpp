@@ -4,10 +4,12 @@
 // (riser as a tube coloured by bending stress), plots and key scalars.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "core/results.hpp"
+#include "core/run_context.hpp"
 #include "riser/riser_dynamics.hpp"
 #include "riser/riser_modes.hpp"
 #include "riser/riser_parameters.hpp"
@@ -35,6 +37,9 @@ class RiserRecorder {
 
   // Records state y at time t: always a history row; optionally a 3D frame and a profile table.
   void sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name);
+  // Publish partial results to `context` while recording (for live plots): at the context's throttled
+  // rate, a copy of the history so far with its plots and the latest 3D frame. nullptr turns it off.
+  void publishPartialsTo(RunContext* context) { live_ = context; }
   // Natural frequencies and mode shapes about the static state: tables "modes" and "mode_shapes".
   void addModes(const RiserModes& modes);
   // Results with everything recorded, the statics summary and the solver statistics.
@@ -52,6 +57,9 @@ class RiserRecorder {
   double energy0_ = 0.0, energy_scale_ = 0.0, balance_max_ = 0.0, drift_max_ = 0.0;
   double max_bending_ = 0.0, max_torsion_ = 0.0, max_tension_ = 0.0, probe_max_ = 0.0;
   bool first_ = true;
+  RunContext* live_ = nullptr;
+
+  std::shared_ptr<const Results> partialResults() const;
 };
 
 }  // namespace maris::riser

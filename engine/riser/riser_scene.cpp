@@ -21,6 +21,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
 
   const IntegrationPlan plan = planIntegration(model, p);
   RiserRecorder recorder(model, p, plan.stabilisation_rate);
+  recorder.publishPartialsTo(&context);  // live plots in the GUI (no-op without a partial sink)
   recorder.sample(0.0, y, true, std::string("profile_static"));
   // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).
   RiserModes modes;

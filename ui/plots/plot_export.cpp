@@ -29,6 +29,32 @@ void writePlotCsv(const std::filesystem::path& file, const Results& results, con
   writeFileAtomic(file, table.toCsv());
 }
 
+Table plotDataOfRuns(const std::vector<RunData>& runs, const PlotSpec& spec) {
+  Table out;
+  out.name = spec.name + "_runs";
+  out.title = spec.title;
+  for (const auto& run : runs) {
+    if (!run.results) continue;
+    const Table one = plotDataTable(*run.results, spec);
+    if (one.columns.size() != spec.y.size() + 1) continue;  // this run lacks a column of the plot
+    if (out.columns.empty()) {
+      out.add("run", "-");
+      for (const auto& c : one.columns) out.add(c.name, c.unit);
+    }
+    out.columns[0].values.insert(out.columns[0].values.end(), one.rows(), static_cast<double>(run.id));
+    for (std::size_t c = 0; c < one.columns.size(); ++c)
+      out.columns[c + 1].values.insert(out.columns[c + 1].values.end(), one.columns[c].values.begin(),
+                                       one.columns[c].values.end());
+  }
+  return out;
+}
+
+void writeRunsCsv(const std::filesystem::path& file, const std::vector<RunData>& runs, const PlotSpec& spec) {
+  const Table table = plotDataOfRuns(runs, spec);
+  if (table.columns.empty()) throw std::runtime_error("no run has the data of plot '" + spec.name + "'");
+  writeFileAtomic(file, table.toCsv());
+}
+
 namespace {
 
 std::string formatNumber(double v) {

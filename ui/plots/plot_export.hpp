@@ -20,6 +20,16 @@ Table plotDataTable(const Results& results, const PlotSpec& spec);
 // Writes plotDataTable as CSV, atomically. Throws std::runtime_error on failure.
 void writePlotCsv(const std::filesystem::path& file, const Results& results, const PlotSpec& spec);
 
+// Several runs' data of one plot stacked in one table: a "run" column (the run's number) first,
+// then x and each y, the rows of each run in turn. Runs lacking the plot's columns are left out.
+struct RunData {
+  unsigned long long id = 0;
+  const Results* results = nullptr;
+};
+Table plotDataOfRuns(const std::vector<RunData>& runs, const PlotSpec& spec);
+// Writes plotDataOfRuns as CSV, atomically. Throws std::runtime_error if no run has the data.
+void writeRunsCsv(const std::filesystem::path& file, const std::vector<RunData>& runs, const PlotSpec& spec);
+
 // A summary for people: scalars with units and descriptions, solver statistics, warnings, files.
 std::string summaryMarkdown(const Scenario& scenario, const Results& results,
                             const std::vector<std::filesystem::path>& files);

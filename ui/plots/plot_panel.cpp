@@ -2,12 +2,20 @@
 
 #include <QAction>
 #include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QFileDialog>
 #include <QMenu>
 #include <QTabWidget>
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "plots/plot_export.hpp"
+#include "plots/reference_data.hpp"
 
 namespace maris::ui {
 
@@ -29,14 +37,28 @@ PlotPanel::PlotPanel(QWidget* parent)
   overlay_button->setPopupMode(QToolButton::InstantPopup);
   overlay_button->setToolTip(tr("Draw earlier runs of this scene on the same axes"));
   toolbar_->addWidget(overlay_button);
-  auto* export_menu = new QMenu(tr("Export"), this);
-  export_menu->addAction(tr("Plot as PNG…"), this, [this] { exportCurrent(QStringLiteral("png")); });
-  export_menu->addAction(tr("Plot as PDF…"), this, [this] { exportCurrent(QStringLiteral("pdf")); });
-  export_menu->addAction(tr("Plot as SVG…"), this, [this] { exportCurrent(QStringLiteral("svg")); });
-  export_menu->addAction(tr("Data as CSV…"), this, [this] { exportCurrent(QStringLiteral("csv")); });
+  auto* reference_menu = new QMenu(tr("Reference data"), this);
+  add_reference_ = reference_menu->addAction(tr("Add reference data…"), this, [this] {
+    const QString file = QFileDialog::getOpenFileName(this, tr("Add reference data"), QDir::homePath(),
+                                                      tr("CSV files (*.csv *.txt);;All files (*)"));
+    if (!file.isEmpty()) addReferenceFile(file);
+  });
+  add_reference_->setToolTip(tr("Draw points from a CSV file (names row, optional units row, numbers) on this plot"));
+  clear_reference_ = reference_menu->addAction(tr("Remove reference data"), this, [this] { clearReferences(); });
+  auto* reference_button = new QToolButton(toolbar_);
+  reference_button->setText(tr("Reference data"));
+  reference_button->setMenu(reference_menu);
+  reference_button->setPopupMode(QToolButton::InstantPopup);
+  toolbar_->addWidget(reference_button);
+  export_menu_ = new QMenu(tr("Export"), this);
+  export_menu_->addAction(tr("Plot as PNG…"), this, [this] { exportCurrent(QStringLiteral("png")); });
+  export_menu_->addAction(tr("Plot as PDF…"), this, [this] { exportCurrent(QStringLiteral("pdf")); });
+  export_menu_->addAction(tr("Plot as SVG…"), this, [this] { exportCurrent(QStringLiteral("svg")); });
+  export_menu_->addAction(tr("Data as CSV…"), this, [this] { exportCurrent(QStringLiteral("csv")); });
+  export_menu_->addAction(tr("Data of all kept runs as CSV…"), this, [this] { exportCurrent(QStringLiteral("all.csv")); });
   auto* export_button = new QToolButton(toolbar_);
   export_button->setText(tr("Export"));
-  export_button->setMenu(export_menu);
+  export_button->setMenu(export_menu_);
   export_button->setPopupMode(QToolButton::InstantPopup);
   toolbar_->addWidget(export_button);
   tabs_->setDocumentMode(true);
@@ -91,6 +113,7 @@ void PlotPanel::rebuildTabs(const Results& results) {
   views_.clear();
   for (const auto& spec : results.plots) {
     auto* view = new PlotView(spec, tabs_);
+    if (auto it = references_.find(spec.name); it != references_.end()) view->setReferences(it->second);
     view->setObjectName(QString::fromStdString("plot:" + spec.name));
     views_.push_back(view);
     tabs_->addTab(view, QString::fromStdString(spec.title.empty() ? spec.name : spec.title));
@@ -102,6 +125,7 @@ void PlotPanel::rebuildTabs(const Results& results) {
 void PlotPanel::setAvailableRuns(const std::vector<RunRecord>& runs, quint64 shown_run) {
   runs_.clear();
   overlay_menu_->clear();
+  shown_run_ = shown_run;
   for (const auto& r : runs) {
     if (r.id == shown_run) continue;
     runs_.push_back(r);
@@ -143,6 +167,51 @@ void PlotPanel::syncToolbar() {
   log_y_->setEnabled(v);
   log_x_->setChecked(v && v->logX());
   log_y_->setChecked(v && v->logY());
+  add_reference_->setEnabled(v);
+  clear_reference_->setEnabled(v && !v->references().empty());
+}
+
+bool PlotPanel::addReferenceFile(const QString& file) {
+  PlotView* v = currentView();
+  if (!v) {
+    emit message(tr("No plot to add reference data to: run the scenario first."));
+    return false;
+  }
+  try {
+    QFile in(file);
+    if (!in.open(QIODevice::ReadOnly)) throw std::runtime_error("cannot open the file: " + in.errorString().toStdString());
+    Table table = tableFromCsv(in.readAll().toStdString(), QFileInfo(file).completeBaseName().toStdString());
+    std::vector<Table>& kept = references_[v->spec().name];
+    kept.push_back(std::move(table));
+    v->setReferences(kept);
+    QString note = tr("Reference data %1 added to %2").arg(QFileInfo(file).fileName(), QString::fromStdString(v->spec().name));
+    if (shown_)
+      for (const auto& n : referenceUnitMismatches(kept.back(), *shown_, v->spec()))
+        note += QStringLiteral("; ") + QString::fromStdString(n);
+    emit message(note);
+    syncToolbar();
+    return true;
+  } catch (const std::exception& e) {
+    emit message(tr("Could not read reference data: %1").arg(QString::fromUtf8(e.what())));
+    return false;
+  }
+}
+
+void PlotPanel::clearReferences() {
+  PlotView* v = currentView();
+  if (!v) return;
+  references_.erase(v->spec().name);
+  v->setReferences({});
+  syncToolbar();
+}
+
+void PlotPanel::exportAllRunsCsv(const QString& file) {
+  PlotView* v = currentView();
+  if (!v || !shown_) throw std::runtime_error("no plot with data to export");
+  std::vector<RunData> runs{{shown_run_, shown_.get()}};
+  for (const auto& r : runs_) runs.push_back({r.id, r.results.get()});
+  std::sort(runs.begin(), runs.end(), [](const RunData& a, const RunData& b) { return a.id < b.id; });
+  writeRunsCsv(file.toStdString(), runs, v->spec());
 }
 
 void PlotPanel::exportCurrent(const QString& suffix) {
@@ -151,12 +220,17 @@ void PlotPanel::exportCurrent(const QString& suffix) {
     emit message(tr("Nothing to export: run the scenario first."));
     return;
   }
-  const QString suggested = QDir::home().filePath(QString::fromStdString(v->spec().name) + "." + suffix);
+  const bool all_runs = suffix == QLatin1String("all.csv");
+  const QString suggested = QDir::home().filePath(QString::fromStdString(v->spec().name) + (all_runs ? "_runs." : ".") +
+                                                  (all_runs ? QStringLiteral("csv") : suffix));
   const QString file = QFileDialog::getSaveFileName(this, tr("Export plot"), suggested,
-                                                    QStringLiteral("*.%1").arg(suffix));
+                                                    QStringLiteral("*.%1").arg(all_runs ? QStringLiteral("csv") : suffix));
   if (file.isEmpty()) return;
   try {
-    v->exportTo(file);
+    if (all_runs)
+      exportAllRunsCsv(file);
+    else
+      v->exportTo(file);
     emit message(tr("Exported %1").arg(file));
   } catch (const std::exception& e) {
     emit message(tr("Export failed: %1").arg(QString::fromUtf8(e.what())));

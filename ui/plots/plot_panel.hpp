@@ -1,9 +1,12 @@
 // The plot tabs: one PlotView per PlotSpec of the shown run, a toolbar acting on the current tab
-// (log axes, fit, export as PNG/PDF/SVG/CSV) and an "Overlay runs" menu listing earlier runs of
-// the same scene, whose curves are drawn dashed or in other colours on every tab.
+// (log axes, fit, reference data from a CSV, export as PNG/PDF/SVG/CSV of the shown run or of all
+// kept runs) and an "Overlay runs" menu listing earlier runs of the same scene, whose curves are
+// drawn dashed or in other colours on every tab.
 #pragma once
 
+#include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 #include <QWidget>
@@ -36,6 +39,18 @@ class PlotPanel : public QWidget {
   PlotView* currentView() const;
   QTabWidget* tabs() const { return tabs_; }
 
+  // Reads a CSV (see plots/reference_data.hpp) and draws it as markers on the current plot, for this
+  // and later runs. Returns false and says why (message()) if the file cannot be read.
+  bool addReferenceFile(const QString& file);
+  void clearReferences();  // of the current plot
+  // The current plot's data for the shown run and every kept run of the scene, one "run" column first.
+  void exportAllRunsCsv(const QString& file);
+
+  // For the main window's Plot menu.
+  QAction* addReferenceAction() const { return add_reference_; }
+  QAction* clearReferenceAction() const { return clear_reference_; }
+  QMenu* exportMenu() const { return export_menu_; }
+
  signals:
   void message(const QString& text);  // export results and errors, for the status bar / log
 
@@ -50,11 +65,16 @@ class PlotPanel : public QWidget {
   QAction* log_x_;
   QAction* log_y_;
   QMenu* overlay_menu_;
+  QMenu* export_menu_;
+  QAction* add_reference_;
+  QAction* clear_reference_;
   std::vector<PlotView*> views_;
   std::shared_ptr<const Results> shown_;
   QString shown_label_;
   std::vector<RunRecord> runs_;
   std::set<quint64> overlaid_;
+  quint64 shown_run_ = 0;
+  std::map<std::string, std::vector<Table>> references_;  // by plot name
 };
 
 }  // namespace maris::ui

@@ -35,14 +35,36 @@ PlotView::PlotView(PlotSpec spec, QWidget* parent)
 
 void PlotView::setSources(std::vector<Source> sources) {
   sources_ = std::move(sources);
-  redraw();
+  if (isVisible())
+    redraw();
+  else
+    stale_ = true;
+}
+
+void PlotView::setReferences(std::vector<Table> references) {
+  references_ = std::move(references);
+  if (isVisible())
+    redraw();
+  else
+    stale_ = true;
+}
+
+void PlotView::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  ensureDrawn();
+}
+
+void PlotView::ensureDrawn() const {
+  // Drawing is not a visible change of state: the data were set already.
+  if (stale_) const_cast<PlotView*>(this)->redraw();
 }
 
 void PlotView::redraw() {
+  stale_ = false;
   std::vector<PlotSource> drawn;
   for (const auto& s : sources_) drawn.push_back({s.label, s.results.get()});
   tracer_ = nullptr;
-  has_data_ = !drawn.empty() && fillPlot(*plot_, drawn, spec_);
+  has_data_ = !drawn.empty() && fillPlot(*plot_, drawn, spec_, references_);
   if (has_data_) {
     for (auto* axis : plot_->axisRect()->axes()) axis->grid()->setSubGridVisible(false);
     applyAxisScales();
@@ -65,13 +87,16 @@ void PlotView::changeEvent(QEvent* event) {
   // Queued: this widget hears of a new palette before its child plot has it.
   if (event->type() == QEvent::PaletteChange)
     QMetaObject::invokeMethod(this, [this] {
-      if (has_data_) redraw();
+      if (has_data_ || stale_) redraw();
       applyPlotColors(*plot_);
       plot_->replot(QCustomPlot::rpQueuedReplot);
     }, Qt::QueuedConnection);
 }
 
-int PlotView::pointCount() const { return has_data_ ? primaryPointCount(*plot_, spec_) : 0; }
+int PlotView::pointCount() const {
+  ensureDrawn();
+  return has_data_ ? primaryPointCount(*plot_, spec_) : 0;
+}
 
 void PlotView::applyAxisScales() {
   QCPAxisRect* rect = plot_->axisRect();
@@ -106,6 +131,7 @@ void PlotView::resetZoom() {
 }
 
 void PlotView::exportTo(const QString& file, int width_px, int height_px) {
+  ensureDrawn();
   if (!has_data_ || sources_.empty()) throw std::runtime_error("the plot has no data to export");
   if (QFileInfo(file).suffix().toLower() == QLatin1String("csv")) {
     writePlotCsv(file.toStdString(), *sources_.front().results, spec_);

@@ -26,12 +26,23 @@ class PlotView : public QWidget {
     QString label;
     std::shared_ptr<const Results> results;
   };
-  // First source solid, the others overlaid. Keeps the results alive while shown.
+  // First source solid, the others overlaid. Keeps the results alive while shown. A hidden tab
+  // redraws when it is shown (or asked for its data), so live updates cost one visible plot only.
   void setSources(std::vector<Source> sources);
 
+  // A user's reference tables drawn as markers on this plot (kept across runs).
+  void setReferences(std::vector<Table> references);
+  const std::vector<Table>& references() const { return references_; }
+
   const PlotSpec& spec() const { return spec_; }
-  QCustomPlot* plot() const { return plot_; }
-  bool hasData() const { return has_data_; }
+  QCustomPlot* plot() const {
+    ensureDrawn();
+    return plot_;
+  }
+  bool hasData() const {
+    ensureDrawn();
+    return has_data_;
+  }
   // Points drawn for the first source's y columns (what the test of "expected points" reads).
   int pointCount() const;
 
@@ -47,19 +58,23 @@ class PlotView : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;  // a new palette (theme) redraws in its colours
+  void showEvent(QShowEvent* event) override;
 
  private:
   void redraw();
+  void ensureDrawn() const;
   void applyAxisScales();
   void onMouseMove(QMouseEvent* event);
 
   PlotSpec spec_;
   std::vector<Source> sources_;
+  std::vector<Table> references_;
   QCustomPlot* plot_;
   QLabel* readout_;
   QLabel* empty_;
   QCPItemTracer* tracer_ = nullptr;
   bool has_data_ = false;
+  bool stale_ = false;  // sources changed while hidden
   bool log_x_;
   bool log_y_;
 };

@@ -9,6 +9,7 @@
 #include <QSvgGenerator>
 #include <qcustomplot.h>
 
+#include "plots/reference_data.hpp"
 #include "theme.hpp"
 
 namespace maris::ui {
@@ -138,7 +139,8 @@ bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec) {
   return fillPlot(plot, std::vector<PlotSource>{{QString(), &results}}, spec);
 }
 
-bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const PlotSpec& spec) {
+bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const PlotSpec& spec,
+              const std::vector<Table>& references) {
   plot.clearGraphs();
   plot.clearPlottables();
   plot.clearItems();
@@ -173,18 +175,22 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
     if (tx) addSourceGraphs(plot, x_axis, y_axis, sources[run], run, several, *t, *tx, spec);
   }
   int markers = 0;
+  auto add_markers = [&](const Table& ref, const Column* rx, const Column* ry, QCPScatterStyle::ScatterShape shape) {
+    QCPGraph* g = plot.addGraph(x_axis, y_axis);
+    g->setName(QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + ": " + axisLabel(ry->name, ""));
+    g->setLineStyle(QCPGraph::lsNone);
+    g->setScatterStyle(QCPScatterStyle(shape, QPen(drawingColors(plot.palette()).foreground, 1.2),
+                                       QBrush(seriesColor(3 + markers++, plot.palette())), 7));
+    g->setData(toQVector(rx->values), toQVector(ry->values));
+  };
   if (const Table* ref = primary.findTable(spec.reference_table)) {
     const Column* rx = ref->find(spec.x);
-    for (const auto& name : spec.reference_y) {
-      const Column* ry = ref->find(name);
-      if (!rx || !ry) continue;
-      QCPGraph* g = plot.addGraph(x_axis, y_axis);
-      g->setName(QString::fromStdString(ref->title.empty() ? ref->name : ref->title) + ": " + axisLabel(ry->name, ""));
-      g->setLineStyle(QCPGraph::lsNone);
-      g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(drawingColors(plot.palette()).foreground, 1.2),
-                                         QBrush(seriesColor(3 + markers++, plot.palette())), 7));
-      g->setData(toQVector(rx->values), toQVector(ry->values));
-    }
+    for (const auto& name : spec.reference_y)
+      if (const Column* ry = ref->find(name); rx && ry) add_markers(*ref, rx, ry, QCPScatterStyle::ssCircle);
+  }
+  for (const Table& ref : references) {
+    const ReferenceColumns match = matchReferenceColumns(ref, spec);
+    for (const Column* ry : match.y) add_markers(ref, match.x, ry, QCPScatterStyle::ssDiamond);
   }
   if (spec.log_x) setLogScale(x_axis);
   if (spec.log_y) setLogScale(y_axis);

@@ -26,8 +26,10 @@ struct PlotSource {
 // Returns false (and draws nothing) if the spec names a table or column that does not exist.
 bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec);
 // As above, the first source drawn solid, each further one (an overlaid run) dashed. Sources that
-// lack the table are skipped; false if the first one lacks it.
-bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const PlotSpec& spec);
+// lack the table are skipped; false if the first one lacks it. `references` (a user's imported
+// tables, see plots/reference_data.hpp) are drawn as markers beside the scene's own reference points.
+bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const PlotSpec& spec,
+              const std::vector<Table>& references = {});
 
 // Background, axes, grid and text in the colours of the plot's palette (light or dark theme).
 void applyPlotColors(QCustomPlot& plot);
