@@ -14,10 +14,7 @@ using namespace maris::wec;
 
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
-const WecModel& defaultModel() {
-  static const WecModel m = wec_test::model(wec_test::defaults());
-  return m;
-}
+using wec_test::defaultModel;
 WaveField calm() {
   WaveField w;
   w.ramp_duration = 30.0;

@@ -14,5 +14,10 @@ inline maris::wec::WecModel model(const maris::wec::WecParameters& p, double dt 
   return m;
 }
 inline maris::wec::WecParameters defaults() { return maris::wec::WecParameters{}; }
+// The default float's model, built once per test program (kernels and fits cost ~0.1 s).
+inline const maris::wec::WecModel& defaultModel() {
+  static const maris::wec::WecModel m = model(defaults());
+  return m;
+}
 
 }  // namespace wec_test
