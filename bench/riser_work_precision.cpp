@@ -91,7 +91,7 @@ struct Run {
 Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSolution& s, double step) {
   p.integrator = "implicit";
   p.time_step = step;
-  p.probe_position = 0.5 * p.length;
+  p.probes = {{0.5 * p.length}};
   p.stress_times.clear();
   // Frames are the implicit integrator's chunk ends (Newton matrix refreshed per chunk); 2 per period
   // keeps them from capping the step.

@@ -50,7 +50,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
 namespace maris {
 
 SceneDefinition makeRiserScene() {
-  return makeScene<riser::RiserParameters>(
+  SceneDefinition scene = makeScene<riser::RiserParameters>(
       "riser", "Riser / cable dynamics",
       "Risers, cables and mooring lines by the segment method (Adamiec-Wójcik, Brzozowska & Wojciech, "
       "Acta Mechanica 231, 2020): n+1 rigid segments joined by rotary spring-damping elements for bending "
@@ -59,6 +59,8 @@ SceneDefinition makeRiserScene() {
       "equilibrium by Newton's method, dynamics by RK4, DOPRI5 or implicit generalized-α with an O(n) "
       "block-tridiagonal reaction solve.",
       riser::riserBinder(), riser::checkRiserParameters, riser::solveRiser);
+  scene.upgrade = riser::upgradeRiserParameters;
+  return scene;
 }
 
 }  // namespace maris

@@ -40,7 +40,7 @@ inline RiserParameters tipLoadedCantilever(int n, double tip_force, double lengt
   load.node = n + 1;
   load.force_z = -tip_force;
   p.point_loads = {load};
-  p.probe_position = length;
+  p.probes = {{length}};
   return p;
 }
 
