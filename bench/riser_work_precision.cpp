@@ -99,7 +99,7 @@ Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSoluti
   RunContext ctx;
   Eigen::VectorXd y = restState(m, s.orientation, s.top);
   const IntegrationPlan plan = planIntegration(m, p);
-  RiserRecorder recorder(m, p, plan.stabilisation_rate);
+  RiserRecorder recorder(m, p);
   recorder.sample(0.0, y, true, std::string("profile_static"));
   Run run;
   const double t0 = cpuSeconds();

@@ -93,8 +93,8 @@ void RiserRecorder::addProbeScalars(Results& out) const {
                   "Largest displacement from its start of " + probeLabel(k, probes_[k].arc_length));
 }
 
-RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& parameters, double stabilisation_rate)
-    : m_(model), p_(parameters), ws_(makeWorkspace(model, stabilisation_rate)) {
+RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& parameters)
+    : m_(model), p_(parameters), ws_(makeWorkspace(model, 0.0)) {
   for (const ProbeRow& row : parameters.probes) {
     Probe probe;
     probe.arc_length = row.arc_length;

@@ -20,7 +20,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   Eigen::VectorXd y = restState(model, statics.orientation, statics.top);
 
   const IntegrationPlan plan = planIntegration(model, p);
-  RiserRecorder recorder(model, p, plan.stabilisation_rate);
+  RiserRecorder recorder(model, p);
   recorder.publishPartialsTo(&context);  // live plots in the GUI (no-op without a partial sink)
   recorder.sample(0.0, y, true, std::string("profile_static"));
   // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).

@@ -156,7 +156,11 @@ TEST(RiserDynamics, HorizontalCableSinksAtTerminalVelocity) {
 }
 
 // The two formulations describe the same system (brief §5.9): on a 3D case with current and top
-// motion, positions agree within 1e-6 L and the top reaction within 1e-5 relative.
+// motion, positions agree within 1e-6 L and the end reactions within 1e-6 relative to the top tension
+// at a tight setting (RK4, h = 2.5 ms, below the torsional stability limit). The reactions are the ideal
+// constraint forces (no Baumgarte term, see RiserRecorder), so their difference is integration error:
+// measured max |ΔF_top,x|/T = 1.7e-7, 2.9e-8, 5.8e-9 at h = 10, 5, 2.5 ms (J2/A2) and 7.3e-6 at the
+// automatic step of 42 ms; with the Baumgarte term it stalled at 3e-8 as h fell.
 TEST(RiserDynamics, JointAndAbsoluteCoordinatesAgree) {
   RiserParameters p;  // the default top-tensioned riser: current along x, elliptical top motion
   p.segment_count = 8;
@@ -164,6 +168,8 @@ TEST(RiserDynamics, JointAndAbsoluteCoordinatesAgree) {
   p.motion_ramp_time = 1.0;
   p.motion_period = 4.0;
   p.current_direction = 0.6;
+  p.integrator = "rk4";
+  p.time_step = 2.5e-3;
   p.stress_times.clear();
   for (bool torsion : {false, true}) {
     p.torsion = torsion;
@@ -173,8 +179,10 @@ TEST(RiserDynamics, JointAndAbsoluteCoordinatesAgree) {
     const Results absolute = run(p);
     for (const char* c : {"probe_dx", "probe_dy", "probe_dz", "end_x", "top_z"})
       EXPECT_LT(maxAbsDifference(column(joint, c), column(absolute, c)), 1e-6 * p.length) << c << " torsion " << torsion;
-    const double fx = maxAbsDifference(column(joint, "top_force_x"), column(absolute, "top_force_x"));
-    EXPECT_LT(fx, 1e-5 * p.top_tension) << "torsion " << torsion;
+    for (const char* c : {"top_force_x", "top_force_y", "top_force_z", "bottom_force_x", "bottom_force_y",
+                          "bottom_force_z"})
+      EXPECT_LT(maxAbsDifference(column(joint, c), column(absolute, c)), 1e-6 * p.top_tension)
+          << c << " torsion " << torsion;
     EXPECT_LT(absolute.findScalar("constraint_drift")->value, 1e-6 * p.length);
   }
 }
