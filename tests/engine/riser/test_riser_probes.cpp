@@ -10,6 +10,7 @@
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_model.hpp"
 #include "riser/riser_scene.hpp"
+#include "riser_test_cases.hpp"
 
 namespace maris {
 SceneDefinition makeRiserScene();
@@ -44,18 +45,13 @@ Vec3 interpolateNodes(const Table& nodes, std::size_t first, int node_count, dou
   return Vec3::Zero();
 }
 
-// Three probes on the default riser in current with elliptical top motion: one between nodes, one
+// Three probes on a short run of the default riser in current with elliptical top motion: one between nodes, one
 // at the top (s = 0) and one at the bottom (s = L). References: the node positions of the stored frames
 // interpolated at s (independent of the probe code), the top_x/y and end_x/y columns. Tolerance 1e-9 L:
 // round-off of positions of order 100 m.
 TEST(RiserProbes, EachProbeRecordsTheHistoryOfItsOwnPoint) {
-  RiserParameters p;
-  p.segment_count = 8;
-  p.end_time = 2.0;
-  p.motion_ramp_time = 0.5;
-  p.motion_period = 2.0;
+  RiserParameters p = test::shortMovingTopRun();
   p.frame_count = 5;
-  p.stress_times.clear();
   const double s_between = 0.37 * p.length;  // inside segment 3 (Δ = 12.5 m, segments start at 6.25 + 12.5 k)
   p.probes = {{s_between}, {0.0}, {p.length}};
   RunContext context;
