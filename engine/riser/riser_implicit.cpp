@@ -50,26 +50,16 @@ RotationVectorChart::RotationVectorChart(const RiserModel& m, double stabilisati
 }
 
 void RotationVectorChart::reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) {
-  q.setZero(size_);
-  v.setZero(size_);
-  q.head<3>() = y.head<3>();
-  v.head<3>() = y.segment<3>(3);
+  // The current orientations become the references; fromState then gives θ = 0 exactly (see there).
   const bool joint = m_.formulation == Formulation::Joint;
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
-    const int k = i - m_.first_dynamic;
     const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
     const Eigen::Quaterniond quat(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
-    reference_[k] = quat.normalized().toRotationMatrix();
-    const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
-    const Vec3 omega = y.segment<3>(joint ? o + 4 : o + 10);
-    v.segment<3>(gt) = reference_[k].transpose() * omega;  // θ = 0: J_r = I
-    if (!joint) {
-      q.segment<3>(g) = y.segment<3>(o);
-      v.segment<3>(g) = y.segment<3>(o + 7);
-    }
+    reference_[i - m_.first_dynamic] = quat.normalized().toRotationMatrix();
   }
-  const Eigen::Index ow = workIntegralOffset(m_);
-  for (int w = 0; w < kWorkIntegrals; ++w) v[work_ + w] = y[ow + w];
+  q.setZero(size_);
+  v.setZero(size_);
+  fromState(y, q, v);
 }
 
 void RotationVectorChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) const {
@@ -82,8 +72,13 @@ void RotationVectorChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
     const Eigen::Quaterniond quat(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
     const Mat3 rot = quat.normalized().toRotationMatrix();
-    const Eigen::AngleAxisd turn(reference_[k].transpose() * rot);
-    const Vec3 theta = turn.angle() * turn.axis();
+    // At the reference (right after reset) θ is exactly 0 and J_r = I, so ω' = Rᵀω unchanged; the
+    // angle-axis of Rᵀ·R would give a round-off angle with an arbitrary axis instead.
+    Vec3 theta = Vec3::Zero();
+    if (rot != reference_[k]) {
+      const Eigen::AngleAxisd turn(reference_[k].transpose() * rot);
+      theta = turn.angle() * turn.axis();
+    }
     q.segment<3>(gt) = theta;
     v.segment<3>(gt) = rightJacobian(theta).lu().solve(rot.transpose() * y.segment<3>(joint ? o + 4 : o + 10));
     if (!joint) {
