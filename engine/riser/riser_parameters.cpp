@@ -131,6 +131,11 @@ SchemaBinder<P> makeBinder() {
           "Probe points (arc length from the top) whose displacement and stress histories are recorded");
   b.realList("output.stress_times", &P::stress_times, "s", Range::nonNegative(), 0, 100,
              "Times of the stress-along-the-riser tables");
+  b.realList("frequency_sweep.pretension_ratios", &P::sweep_pretension_ratios, "-", Range::closed(0.0, 1000.0), 0, 100,
+             "Pretension ratios i_T to sweep (tensioner: T = i_T g m', m' the submerged mass of riser and contents); "
+             "each gives the first two bending frequencies (table frequency_vs_pretension)");
+  b.realList("frequency_sweep.segment_counts", &P::sweep_segment_counts, "-", Range::closed(2.0, 200.0), 0, 100,
+             "Segment counts n to sweep at top.tension (whole numbers; table frequency_vs_segments)");
   return b;
 }
 
@@ -206,6 +211,16 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
     e.push_back({"top.condition", "\"free\"", "both ends free with no gravity and no loads: nothing to compute"});
   if (p.top_condition == "clamped" && p.bottom_condition == "clamped" && p.segment_count < 3)
     e.push_back({"geometry.segment_count", std::to_string(p.segment_count), "must be >= 3 with both ends clamped"});
+  // Frequency sweeps: i_T scales the tensioner's pull; n must be whole.
+  if (!p.sweep_pretension_ratios.empty() && p.top_condition != "tensioner")
+    e.push_back({"frequency_sweep.pretension_ratios", std::to_string(p.sweep_pretension_ratios.size()) + " values",
+                 "a pretension sweep needs top.condition = tensioner (now \"" + p.top_condition + "\")"});
+  for (std::size_t k = 0; k < p.sweep_segment_counts.size(); ++k)
+    if (p.sweep_segment_counts[k] != std::round(p.sweep_segment_counts[k]))
+      e.push_back({"frequency_sweep.segment_counts[" + std::to_string(k) + "]", num(p.sweep_segment_counts[k]),
+                   "must be a whole number in [2, 200]"});
+  if ((!p.sweep_pretension_ratios.empty() || !p.sweep_segment_counts.empty()) && !p.solve_statics)
+    e.push_back({"initial.solve_statics", "false", "frequency sweeps linearise about the static state: must be true"});
   return e;
 }
 

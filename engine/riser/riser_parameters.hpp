@@ -118,6 +118,9 @@ struct RiserParameters {
   int frame_count = 60;            // [-] View3D frames and position snapshots
   std::vector<ProbeRow> probes = {{50.0}, {25.0}, {75.0}};  // recorded points: L/2 (the probe_* columns), L/4, 3L/4
   std::vector<double> stress_times = {12.0, 24.0};  // [s] times for the stress-along-the-riser table
+  // frequency sweeps (paper Sect. 8.2): first two bending frequencies for other pretensions and segment counts
+  std::vector<double> sweep_pretension_ratios;  // [-] i_T: top tension T = i_T g m′ (m′ submerged mass of riser + contents)
+  std::vector<double> sweep_segment_counts;     // [-] n (whole numbers) at the scenario's top tension
 };
 
 // The binder declaring path, unit, range and description of every field.

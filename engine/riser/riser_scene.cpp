@@ -6,6 +6,7 @@
 
 #include "core/scene.hpp"
 #include "riser/riser_envelope.hpp"
+#include "riser/riser_frequency_sweep.hpp"
 #include "riser/riser_integration.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
@@ -37,6 +38,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   const SolverStats stats = integrateRiser(model, p, plan, y, recorder, context);
   Results results = recorder.finish(stats, statics.iterations, statics.residual);
   addEnvelope(model, results);
+  addFrequencySweeps(p, results, context);  // paper Sect. 8.2 tables (no-op without sweep lists)
   // Without a time history the 3D view animates the mode shapes instead (one period per mode).
   if (p.end_time <= 0 && !modes.frequencies.empty()) {
     results.view.frames.clear();
