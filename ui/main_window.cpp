@@ -24,6 +24,7 @@
 #include "run/results_summary.hpp"
 #include "run/run_panel.hpp"
 #include "scene_library.hpp"
+#include "themed_icon.hpp"
 #include "view3d/scene_view.hpp"
 
 namespace maris::ui {
@@ -117,10 +118,10 @@ void MainWindow::createActions() {
   edit->addAction(redo);
 
   QMenu* run = menuBar()->addMenu(tr("&Run"));
-  run_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Run"), QKeySequence(Qt::CTRL | Qt::Key_R),
+  run_action_ = run->addAction(themedIcon(QStyle::SP_MediaPlay), tr("&Run"), QKeySequence(Qt::CTRL | Qt::Key_R),
                                this, [this] { startRun(); });
   run_action_->setToolTip(tr("Run the scenario (Ctrl+R)"));
-  cancel_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaStop), tr("&Cancel"),
+  cancel_action_ = run->addAction(themedIcon(QStyle::SP_MediaStop), tr("&Cancel"),
                                   QKeySequence(Qt::Key_Escape), this, &MainWindow::cancelRun);
   cancel_action_->setToolTip(tr("Cancel the running scenario (Esc)"));
   cancel_action_->setShortcutContext(Qt::WindowShortcut);

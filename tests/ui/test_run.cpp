@@ -16,6 +16,7 @@
 #include "run/run_history.hpp"
 #include "test_scene.hpp"
 #include "theme.hpp"
+#include "themed_icon.hpp"
 #include "ui_test_support.hpp"
 
 using namespace maris;
@@ -57,6 +58,18 @@ std::shared_ptr<const Results> growingLine(int n) {
   t.add("x", "m", x);
   t.add("y", "N", y);
   return r;
+}
+
+// Alpha-weighted mean luminance (0 black … 1 white, Rec. 601 weights) of an icon's visible pixels.
+double glyphLuminance(const QImage& icon) {
+  double sum = 0.0, weight = 0.0;
+  for (int y = 0; y < icon.height(); ++y)
+    for (int x = 0; x < icon.width(); ++x) {
+      const QColor c = icon.pixelColor(x, y);
+      sum += c.alphaF() * qGray(c.rgb()) / 255.0;
+      weight += c.alphaF();
+    }
+  return weight > 0 ? sum / weight : -1.0;
 }
 
 }  // namespace
@@ -278,6 +291,27 @@ class RunTest : public QObject {
     QCOMPARE(xRange(zoomed).upper, 99.0);
     zoomed.setSources({{QStringLiteral("running"), growingLine(150)}});
     QCOMPARE(xRange(zoomed).upper, 149.0);
+  }
+
+  // Toolbar icons in the dark theme: their glyphs must stand out from the window colour (a
+  // luminance difference of at least 0.4 of the full scale, about what black text on mid-grey
+  // has); in the light theme the style's own icon is shown unchanged.
+  void iconsStayReadableInTheDarkTheme() {
+    for (QStyle::StandardPixmap which : {QStyle::SP_MediaPlay, QStyle::SP_MediaStop, QStyle::SP_MediaPause,
+                                         QStyle::SP_BrowserReload}) {
+      const QIcon icon = themedIcon(which);
+      applyTheme(Theme::Dark);
+      const QImage dark = icon.pixmap(32, 32).toImage();
+      const QImage plain = QApplication::style()->standardIcon(which).pixmap(32, 32).toImage();
+      const double window = qGray(QApplication::palette().color(QPalette::Window).rgb()) / 255.0;
+      const double themed = glyphLuminance(dark);
+      qInfo("icon %d on the dark window (luminance %.2f): style's own %.2f, themed %.2f", int(which), window,
+            glyphLuminance(plain), themed);
+      QVERIFY2(std::abs(themed - window) > 0.4, qPrintable(QString::number(themed)));
+      applyTheme(Theme::Light);
+      QCOMPARE(icon.pixmap(32, 32).toImage(), QApplication::style()->standardIcon(which).pixmap(32, 32).toImage());
+    }
+    applyTheme(Theme::System);
   }
 
   void hoverShowsTheNearestValue() {

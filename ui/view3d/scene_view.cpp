@@ -26,6 +26,7 @@
 
 #include "plots/result_plot.hpp"
 #include "theme.hpp"
+#include "themed_icon.hpp"
 #include "view3d/shape_actors.hpp"
 #include "view3d/vtk_gl_widget.hpp"
 
@@ -90,7 +91,7 @@ SceneView::SceneView(QWidget* parent)
   triad_->SetEnabled(1);
   triad_->InteractiveOff();
 
-  play_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+  play_->setIcon(themedIcon(QStyle::SP_MediaPlay));
   play_->setToolTip(tr("Play / pause the animation"));
   play_->setCheckable(true);
   auto* reset = new QToolButton(this);
@@ -265,7 +266,7 @@ void SceneView::setPlaying(bool playing) {
     timer_->stop();
   const QSignalBlocker blocker(play_);
   play_->setChecked(timer_->isActive());
-  play_->setIcon(style()->standardIcon(timer_->isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+  play_->setIcon(themedIcon(timer_->isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
 }
 
 bool SceneView::isPlaying() const { return timer_->isActive(); }
