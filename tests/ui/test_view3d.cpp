@@ -2,13 +2,20 @@
 // the model is (a vertical tube in the middle, blue at the low-scalar top, red at the high-scalar
 // bottom), every Shape3D kind becomes an actor, frames animate, and export renders any size.
 // Needs an X server with OpenGL (run under xvfb-run).
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLineEdit>
 #include <QSlider>
 #include <QtTest>
 
+#include <vtkPropCollection.h>
 #include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkScalarsToColors.h>
 
 #include "test_scene.hpp"
 #include "theme.hpp"
+#include "view3d/color_map_control.hpp"
 #include "ui_test_support.hpp"
 #include "view3d/scene_view.hpp"
 #include "view3d/vtk_gl_widget.hpp"
@@ -65,6 +72,49 @@ Results everyShapeKind() {
   r.view.water_level_z = 0.0;
   r.view.seabed_z = -20.0;
   return r;
+}
+
+// Mean colour of the model's pixels in rows [top, bottom) of the left three quarters (clear of the
+// colour bar): pixels that differ from the background at the left edge of the same row (the
+// background is a vertical gradient) by more than 40 levels in some channel.
+struct ModelColour {
+  double r = 0, g = 0, b = 0, saturation = 0;
+  int pixels = 0;
+};
+ModelColour modelColour(const QImage& image, int top, int bottom) {
+  ModelColour m;
+  for (int y = top; y < bottom; ++y) {
+    const QColor bg = image.pixelColor(2, y);
+    for (int x = 0; x < image.width() * 3 / 4; ++x) {
+      const QColor c = image.pixelColor(x, y);
+      if (std::max({std::abs(c.red() - bg.red()), std::abs(c.green() - bg.green()), std::abs(c.blue() - bg.blue())}) < 40)
+        continue;
+      m.r += c.redF();
+      m.g += c.greenF();
+      m.b += c.blueF();
+      m.saturation += c.hsvSaturationF();
+      ++m.pixels;
+    }
+  }
+  if (m.pixels) {
+    m.r /= m.pixels;
+    m.g /= m.pixels;
+    m.b /= m.pixels;
+    m.saturation /= m.pixels;
+  }
+  return m;
+}
+
+// The range the colour bar is labelled with (its lookup table's).
+std::pair<double, double> colourBarRange(SceneView& view) {
+  vtkPropCollection* props = view.glWidget()->renderer()->GetViewProps();
+  props->InitTraversal();
+  while (vtkProp* prop = props->GetNextProp())
+    if (auto* bar = vtkScalarBarActor::SafeDownCast(prop)) {
+      const double* range = bar->GetLookupTable()->GetRange();
+      return {range[0], range[1]};
+    }
+  return {0.0, 0.0};
 }
 
 }  // namespace
@@ -139,6 +189,85 @@ class View3dTest : public QObject {
     view.glWidget()->renderer()->GetBackground(bottom);
     QVERIFY(QColor::fromRgbF(bottom[0], bottom[1], bottom[2]).lightnessF() > 0.8);
     applyTheme(Theme::System);
+  }
+
+  // The Colours control, driven as a user would: another map or a fixed range changes the colours
+  // at the model's pixels and the colour bar's range; the choice is remembered per quantity.
+  void colourMapAndRangeRecolourTheModel() {
+    SceneView view;
+    view.resize(600, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));  // scalars 0 … 20, top to bottom
+    view.showResults(tube);
+    ColorMapControl* control = view.colorControl();
+    QVERIFY(control->isEnabled());
+    const int h = view.glWidget()->height() * view.devicePixelRatioF();
+    const int top = h * 8 / 100, middle = h * 39 / 100, bottom = h * 70 / 100;
+    auto grab = [&](const char* name) {
+      QTest::qWait(30);
+      const QImage image = view.glWidget()->grabFramebuffer();
+      test::keepScreenshot(image, QString::fromLatin1(name));
+      return image;
+    };
+
+    // Default: cool to warm over the data's range 0 … 20.
+    QImage image = grab("view3d_coolwarm");
+    const ModelColour cool_upper = modelColour(image, top, middle);
+    QVERIFY(cool_upper.pixels > 100);
+    QVERIFY(cool_upper.b > cool_upper.r);
+    QVERIFY(cool_upper.saturation > 0.3);
+    QCOMPARE(colourBarRange(view), std::make_pair(0.0, 20.0));
+
+    // Greyscale: the model has no colour left (lighting is white, so grey stays grey).
+    control->mapBox()->setCurrentIndex(static_cast<int>(ColorMap::Greyscale));
+    QCOMPARE(view.colorSettings().map, ColorMap::Greyscale);
+    image = grab("view3d_greyscale");
+    const ModelColour grey = modelColour(image, top, bottom);
+    qInfo("mean saturation at the model: cool-warm upper half %.2f, greyscale %.2f", cool_upper.saturation,
+          grey.saturation);
+    QVERIFY(grey.pixels > 100);
+    QVERIFY(grey.saturation < 0.08);
+
+    // Viridis: purple-blue at the low-scalar top, yellow-green at the high-scalar bottom.
+    control->mapBox()->setCurrentIndex(static_cast<int>(ColorMap::Viridis));
+    image = grab("view3d_viridis");
+    const ModelColour v_upper = modelColour(image, top, middle), v_lower = modelColour(image, middle, bottom);
+    QVERIFY(v_upper.b > v_upper.g);
+    QVERIFY(v_lower.g > v_lower.b);
+
+    // A fixed range 100 … 200 above all the data: the whole tube takes the map's low end and the
+    // colour bar is labelled 100 … 200.
+    control->automaticBox()->setChecked(false);
+    control->minEdit()->setText(QStringLiteral("100"));
+    control->maxEdit()->setText(QStringLiteral("200"));
+    emit control->maxEdit()->editingFinished();
+    QCOMPARE(view.colorRange(), std::make_pair(100.0, 200.0));
+    QCOMPARE(colourBarRange(view), std::make_pair(100.0, 200.0));
+    image = grab("view3d_fixed_range");
+    const ModelColour f_lower = modelColour(image, middle, bottom);
+    QVERIFY(f_lower.b > f_lower.g);  // the lower half turned from yellow-green to viridis' purple
+    QVERIFY(f_lower.r > f_lower.g);
+
+    // A reversed range is refused with a message; the last good one stays.
+    control->minEdit()->setText(QStringLiteral("300"));
+    emit control->minEdit()->editingFinished();
+    QCOMPARE(view.colorRange(), std::make_pair(100.0, 200.0));
+
+    // Another quantity starts from the defaults; coming back restores Viridis 100 … 200.
+    auto other = std::make_shared<Results>(*tube);
+    other->view.scalar_name = "tension";
+    view.showResults(other);
+    QCOMPARE(view.colorSettings(), ColorSettings{});
+    QCOMPARE(colourBarRange(view), std::make_pair(0.0, 20.0));
+    view.showResults(tube);
+    QCOMPARE(view.colorSettings().map, ColorMap::Viridis);
+    QCOMPARE(view.colorRange(), std::make_pair(100.0, 200.0));
+    QCOMPARE(control->mapBox()->currentIndex(), static_cast<int>(ColorMap::Viridis));
+
+    // Back to the automatic range.
+    control->automaticBox()->setChecked(true);
+    QCOMPARE(view.colorRange(), std::make_pair(0.0, 20.0));
   }
 
   void everyShapeKindBecomesAnActor() {
