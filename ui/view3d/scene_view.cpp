@@ -55,6 +55,12 @@ SceneView::SceneView(QWidget* parent)
       triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
   vtkRenderer* renderer = gl_->renderer();
   renderer->GradientBackgroundOn();
+  // Translucent surfaces (still water, sea bed, a wave surface, a hull) are depth-peeled: without it
+  // VTK blends them by a weighted average in which the nearer layer does not dominate, so a wave
+  // surface seen through the still-water plane looked washed out. A few peels suffice here.
+  renderer->UseDepthPeelingOn();
+  renderer->SetMaximumNumberOfPeels(4);
+  renderer->SetOcclusionRatio(0.0);
 
   scalar_bar_->SetLookupTable(colors_);
   scalar_bar_->SetNumberOfLabels(5);

@@ -100,6 +100,8 @@ void VtkGlWidget::initializeGL() {
   window_->SetSupportsOpenGL(true);
   window_->SetIsDirect(true);
   window_->SetForceMaximumHardwareLineWidth(1);
+  window_->SetAlphaBitPlanes(1);  // depth peeling of translucent surfaces needs an alpha channel
+  window_->SetMultiSamples(0);
   window_->SetMapped(true);
   initialized_ = true;
   window_->OpenGLInitContext();
@@ -148,6 +150,7 @@ void VtkGlWidget::paintGL() {
   state->PopDrawFramebufferBinding();
   context()->functions()->glFinish();  // the clock must see the renderer's work, not its queueing
   last_paint_ms_ = clock.nsecsElapsed() * 1e-6;
+  ++paint_count_;
 }
 
 QImage VtkGlWidget::renderImage(int width_px, int height_px) {

@@ -34,6 +34,7 @@ class VtkGlWidget : public QOpenGLWidget {
   // Wall time of the last paint (VTK render and blit) in milliseconds: what a redraw costs the GUI
   // thread (with a software OpenGL renderer, far more than everything else the GUI does).
   double lastPaintMilliseconds() const { return last_paint_ms_; }
+  int paintCount() const { return paint_count_; }
 
  protected:
   void initializeGL() override;
@@ -58,6 +59,7 @@ class VtkGlWidget : public QOpenGLWidget {
   QMetaObject::Connection context_teardown_;  // context aboutToBeDestroyed -> release VTK's GL objects
   bool initialized_ = false;
   double last_paint_ms_ = 0.0;
+  int paint_count_ = 0;
 };
 
 }  // namespace maris::ui
