@@ -125,8 +125,11 @@ int cmdRun(const std::vector<std::string>& args, int argc, char** argv) {
     scenario = b.scenario;
     id = b.id;
   }
-  for (const auto& o : overrides) applyOverride(scenario, o);
   const auto& scene = requireScene(scenario.scene);
+  // Old field names first, so --set and the saved scenario.json use the current schema.
+  for (const auto& note : upgradeParameters(scene, scenario.parameters))
+    std::fprintf(stderr, "note: %s\n", note.c_str());
+  for (const auto& o : overrides) applyOverride(scenario, o);
   if (out_dir.empty()) out_dir = "maris-results/" + id;
 
   std::signal(SIGINT, onSigint);

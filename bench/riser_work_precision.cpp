@@ -9,16 +9,22 @@
 // Times are thread CPU times (the machine may be shared), integration only (statics excluded).
 //   bench_riser_work_precision [out.csv] [n_max (default 400; 1000 adds an implicit J3 run at n = 1000)]
 //                              [case5_end_time (default 36)] [cases: all | case5 | cable3d]
+//                              [cable_n_max (default n_max; the cable's torsion limit makes n = 100 costly)]
 // Integrators: RK4 at 0.9, 0.45, 0.225 x its stability estimate, DOPRI5 rtol 1e-3/1e-6/1e-8 (n <= 100), and
 // the scene's implicit generalized-alpha (riser_integration) at T/25, T/50, T/100 of the top-motion period.
 // Plot: bench/tools/work_precision_plot (built with the GUI) renders the CSV to PNG with the GUI's plot
-// code, e.g. --x cpu_time --y error_same_n --series variant,method --where case=case5 --where n=100;
-// docs/riser.md has the measured tables.
+// code, e.g. --x cpu_time --y error_same_n --series variant,method --where case=case5 --where n=100.
+// Besides the CSV it writes OUT.md (OUT without ".csv"): markdown tables of the right-hand-side cost
+// against n, case 5 at n = 100 and the error against n, headed by the load average during the run.
+// scripts/bench_riser.sh runs the set the docs quote (build, bench, tables, PNGs).
 #include <time.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -91,7 +97,7 @@ struct Run {
 Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSolution& s, double step) {
   p.integrator = "implicit";
   p.time_step = step;
-  p.probe_position = 0.5 * p.length;
+  p.probes = {{0.5 * p.length}};
   p.stress_times.clear();
   // Frames are the implicit integrator's chunk ends (Newton matrix refreshed per chunk); 2 per period
   // keeps them from capping the step.
@@ -99,7 +105,7 @@ Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSoluti
   RunContext ctx;
   Eigen::VectorXd y = restState(m, s.orientation, s.top);
   const IntegrationPlan plan = planIntegration(m, p);
-  RiserRecorder recorder(m, p, plan.stabilisation_rate);
+  RiserRecorder recorder(m, p);
   recorder.sample(0.0, y, true, std::string("profile_static"));
   Run run;
   const double t0 = cpuSeconds();
@@ -187,6 +193,64 @@ double rhsCost(RiserParameters p) {
   return (t1 - t0) / count;
 }
 
+// One CSV row, kept for the markdown summary.
+struct Row {
+  std::string case_name, variant, method;
+  int n = 0;
+  double setting = 0, cpu = 0, error_same_n = 0, error_finest_n = 0;
+  long steps = 0;
+};
+
+std::string loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  double one = 0;
+  return in >> one ? std::to_string(one).substr(0, 5) : std::string("unknown");
+}
+
+std::string fmt(const char* format, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+// Markdown tables of the rows: right-hand-side cost against n, case 5 at n = 100, error against n.
+std::string summary(const std::vector<Row>& rows, const std::string& load_start, const std::string& load_end,
+                    double case5_end) {
+  std::ostringstream md;
+  md << "Measured by bench_riser_work_precision; load average " << load_start << " at the start, " << load_end
+     << " at the end (2-core machine: above ~1 the times are upper bounds). CPU = thread CPU seconds of the\n"
+     << "integration only; error = max |r(L/2) − r_ref(L/2)| / max motion, against the same-n reference.\n\n";
+  md << "**Cost of one right-hand side** [µs] (per segment in brackets); linear growth means a constant bracket:\n\n"
+     << "| variant | n = 10 | 20 | 50 | 100 | 200 | 400 | 1000 |\n|---|---|---|---|---|---|---|---|\n";
+  for (const Variant& v : kVariants) {
+    md << "| " << v.name;
+    for (const Row& r : rows)
+      if (r.case_name == "rhs_cost" && r.variant == v.name)
+        md << " | " << fmt("%.1f", 1e6 * r.cpu) << " (" << fmt("%.2f", 1e6 * r.cpu / r.n) << ")";
+    md << " |\n";
+  }
+  md << "\n**Case 5, n = 100, " << case5_end << " s simulated:**\n\n"
+     << "| variant | method | step [s] or rtol | steps | CPU [s] | error (same n) | error (finest n) |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  for (const Row& r : rows)
+    if (r.case_name == "case5" && r.n == 100)
+      md << "| " << r.variant << " | " << r.method << " | " << fmt("%.3g", r.setting) << " | " << r.steps << " | "
+         << fmt("%.3f", r.cpu) << " | " << fmt("%.2e", r.error_same_n) << " | " << fmt("%.2e", r.error_finest_n) << " |\n";
+  md << "\n**Against n** (first stable RK4 row: 0.9 × the stability estimate, else 0.45 ×; error against the finest n):\n\n"
+     << "| case | variant | n | step [s] | steps | CPU [s] | CPU/(steps·n) [µs] | error (finest n) |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  std::map<std::string, bool> seen;
+  for (const Row& r : rows) {
+    const std::string key = r.case_name + r.variant + std::to_string(r.n);
+    if (r.method != "rk4" || r.case_name == "rhs_cost" || seen[key] || !std::isfinite(r.error_same_n)) continue;
+    seen[key] = true;
+    md << "| " << r.case_name << " | " << r.variant << " | " << r.n << " | " << fmt("%.3g", r.setting) << " | "
+       << r.steps << " | " << fmt("%.3f", r.cpu) << " | " << fmt("%.3f", 1e6 * r.cpu / (double(r.steps) * r.n))
+       << " | " << fmt("%.2e", r.error_finest_n) << " |\n";
+  }
+  return md.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -196,6 +260,8 @@ int main(int argc, char** argv) {
   std::string csv = "case,variant,n,method,setting,steps,rhs_evaluations,cpu_time,error_same_n,error_finest_n\n"
                     "-,-,-,-,s or -,-,-,s,-,-\n";
   char line[320];
+  std::vector<Row> rows;
+  const std::string load_start = loadAverage();
 
   // Part 1: cost of one right-hand side against n.
   std::printf("# rhs cost [us] per n: variant n cost cost/n\n");
@@ -208,6 +274,7 @@ int main(int argc, char** argv) {
       const double c = rhsCost(p);
       std::snprintf(line, sizeof line, "rhs_cost,%s,%d,rhs,0,0,1,%.6e,0,0\n", v.name, n, c);
       csv += line;
+      rows.push_back({"rhs_cost", v.name, "rhs", n, 0.0, c, 0.0, 0.0, 1});
       std::printf("%s %5d %9.2f %7.4f\n", v.name, n, 1e6 * c, 1e6 * c / n);
     }
 
@@ -222,11 +289,12 @@ int main(int argc, char** argv) {
   if (only == "all" || only == "cable3d") cases.push_back({"cable3d", cable3d()});
   for (auto& c : cases)
     if (c.name == std::string("case5")) c.p.end_time = case5_end;
-  std::vector<int> ns;
-  for (int n : {10, 20, 50, 100, 200, 400})
-    if (n <= n_max) ns.push_back(n);
-  const bool thousand = n_max >= 1000;  // n = 1000: implicit J3 only, error against the finest n only
+  const int cable_n_max = argc > 5 ? std::atoi(argv[5]) : n_max;
   for (auto& c : cases) {
+    std::vector<int> ns;
+    for (int n : {10, 20, 50, 100, 200, 400})
+      if (n <= (c.name == std::string("cable3d") ? cable_n_max : n_max)) ns.push_back(n);
+    const bool thousand = n_max >= 1000 && c.name == std::string("case5");  // implicit J3 only, error vs finest n
     // Finest-n reference: J3, DOPRI5 rtol 1e-10 (n ≤ 100) or RK4 at 0.2 × its limit (n ≥ 200, where
     // DOPRI5 is as stability-bound as RK4 but 3x dearer; RK4's time error there is < 1e-8).
     auto reference = [](const RiserParameters& p) {
@@ -266,12 +334,15 @@ int main(int argc, char** argv) {
           } catch (const SolverError& e) {  // RK4 above its stability limit: recorded, not plotted
             std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,0,0,0,inf,inf\n", c.name, v.name, n, method.c_str(), value);
             csv += line;
+            const double inf = std::numeric_limits<double>::infinity();
+            rows.push_back({c.name, v.name, method, n, value, 0.0, inf, inf, 0});
             std::printf("%s # %s\n", line, e.what());
             continue;
           }
           std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,%ld,%ld,%.4e,%.3e,%.3e\n", c.name, v.name, n,
                         method.c_str(), value, r.steps, r.rhs, r.cpu, relativeError(r, ref), relativeError(r, finest));
           csv += line;
+          rows.push_back({c.name, v.name, method, n, value, r.cpu, relativeError(r, ref), relativeError(r, finest), r.steps});
           writeFileAtomic(out, csv);  // after every row: a long run can be cut short and still plotted
           std::fputs(line, stdout);
           std::fflush(stdout);
@@ -280,6 +351,8 @@ int main(int argc, char** argv) {
     }
   }
   writeFileAtomic(out, csv);
-  std::printf("# written %s\n", out.c_str());
+  const std::string md = (out.size() > 4 && out.substr(out.size() - 4) == ".csv" ? out.substr(0, out.size() - 4) : out) + ".md";
+  writeFileAtomic(md, summary(rows, load_start, loadAverage(), case5_end));
+  std::printf("# written %s and %s\n", out.c_str(), md.c_str());
   return 0;
 }

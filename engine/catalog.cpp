@@ -35,7 +35,9 @@ const std::vector<BuiltinScenario>& builtinScenarios() {
       BuiltinScenario b;
       b.id = path.substr(slash + 1, path.size() - slash - 1 - 5);
       b.scenario = scenarioFromText(std::string(*builtinResource(path)), path);
-      if (!findScene(b.scenario.scene)) continue;  // a scene not built into this binary
+      const SceneDefinition* scene = findScene(b.scenario.scene);
+      if (!scene) continue;  // a scene not built into this binary
+      upgradeParameters(*scene, b.scenario.parameters);
       list.push_back(std::move(b));
     }
     // Order by the catalog's scene order, then by id.

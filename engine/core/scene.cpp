@@ -5,10 +5,17 @@
 
 namespace maris {
 
+std::vector<std::string> upgradeParameters(const SceneDefinition& scene, Json& parameters) {
+  if (!scene.upgrade || !parameters.is_object()) return {};
+  return scene.upgrade(parameters);
+}
+
 std::vector<FieldError> validateParameters(const SceneDefinition& scene, const Json& parameters) {
-  auto errors = validateAgainstSchema(scene.schema, parameters, "parameters");
+  Json upgraded = parameters;
+  upgradeParameters(scene, upgraded);
+  auto errors = validateAgainstSchema(scene.schema, upgraded, "parameters");
   if (!errors.empty() || !scene.check) return errors;
-  for (auto e : scene.check(parameters)) {
+  for (auto e : scene.check(upgraded)) {
     e.path = "parameters." + e.path;
     errors.push_back(std::move(e));
   }
@@ -18,10 +25,12 @@ std::vector<FieldError> validateParameters(const SceneDefinition& scene, const J
 Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunContext& context) {
   if (scenario.scene != scene.name)
     throw InputError("scene", "\"" + scenario.scene + "\"", "does not match the solver's scene \"" + scene.name + "\"");
-  auto errors = validateParameters(scene, scenario.parameters);
+  Json parameters = scenario.parameters;
+  for (auto& note : upgradeParameters(scene, parameters)) context.warn(std::move(note));
+  auto errors = validateParameters(scene, parameters);
   if (!errors.empty()) throw InputError(std::move(errors));
   const double t0 = context.elapsedSeconds();
-  Results r = scene.run(scenario.parameters, context);
+  Results r = scene.run(parameters, context);
   r.stats.wall_time_s = context.elapsedSeconds() - t0;
   for (auto& w : context.warnings()) r.warnings.push_back(std::move(w));
   return r;

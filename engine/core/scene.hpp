@@ -24,6 +24,10 @@ struct SceneDefinition {
   std::function<std::vector<FieldError>(const Json& parameters)> check;
   // Runs the solver on validated parameters. Throws SolverError or RunCancelled.
   std::function<Results(const Json& parameters, RunContext& context)> run;
+  // Optional: rewrites parameters written for an earlier version of this scene's schema (a renamed or
+  // replaced field) in place and returns one note per change. Scenario files keep loading after a
+  // schema change without a new "maris-scenario/N" format; empty when the schema never changed.
+  std::function<std::vector<std::string>(Json& parameters)> upgrade;
 };
 
 // Builds a type-erased scene from a typed parameter struct P, its binder, a checker and a solver.
@@ -41,10 +45,16 @@ SceneDefinition makeScene(std::string name, std::string title, std::string descr
   return s;
 }
 
-// Every error of the scenario's parameters (schema first, then the scene's cross-field checks).
+// Applies scene.upgrade to `parameters` (no-op without one). Returns the notes (what was rewritten).
+// Call it where a scenario is read (file, built-in, GUI document) so edits and saves see the new fields.
+std::vector<std::string> upgradeParameters(const SceneDefinition& scene, Json& parameters);
+
+// Every error of the scenario's parameters (schema first, then the scene's cross-field checks),
+// judged after upgradeParameters on a copy, so an old file is as valid as it runs.
 std::vector<FieldError> validateParameters(const SceneDefinition& scene, const Json& parameters);
 
-// Validates (throws InputError with every problem), then runs. Fills stats.wall_time_s and warnings.
+// Upgrades a copy of the parameters (notes become warnings), validates (throws InputError with every
+// problem), then runs. Fills stats.wall_time_s and warnings.
 Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunContext& context);
 
 // A scenario of `scene` with every parameter at its default.

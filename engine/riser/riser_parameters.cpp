@@ -49,6 +49,12 @@ SchemaBinder<TopMotionRow> topMotionBinder() {
   return b;
 }
 
+SchemaBinder<ProbeRow> probeBinder() {
+  SchemaBinder<ProbeRow> b;
+  b.real("arc_length", &ProbeRow::arc_length, "m", Range::nonNegative(), "Arc length of the probe from the top");
+  return b;
+}
+
 SchemaBinder<P> makeBinder() {
   SchemaBinder<P> b;
   b.real("geometry.length", &P::length, "m", Range::positive(1e5), "Length L of the riser or cable");
@@ -121,9 +127,15 @@ SchemaBinder<P> makeBinder() {
   b.real("solver.tolerance", &P::tolerance, "-", Range::closed(1e-12, 1e-1),
          "Relative local error tolerance of dopri5 and of the implicit Newton iteration");
   b.integer("output.frame_count", &P::frame_count, "-", Range::closed(1, 10000), "Stored frames");
-  b.real("output.probe_position", &P::probe_position, "m", Range::nonNegative(), "Arc length of the probe point");
+  b.table("output.probes", &P::probes, probeBinder(), 1, 20,
+          "Probe points (arc length from the top) whose displacement and stress histories are recorded");
   b.realList("output.stress_times", &P::stress_times, "s", Range::nonNegative(), 0, 100,
              "Times of the stress-along-the-riser tables");
+  b.realList("frequency_sweep.pretension_ratios", &P::sweep_pretension_ratios, "-", Range::closed(0.0, 1000.0), 0, 100,
+             "Pretension ratios i_T to sweep (tensioner: T = i_T g m', m' the submerged mass of riser and contents); "
+             "each gives the first two bending frequencies (table frequency_vs_pretension)");
+  b.realList("frequency_sweep.segment_counts", &P::sweep_segment_counts, "-", Range::closed(2.0, 200.0), 0, 100,
+             "Segment counts n to sweep at top.tension (whole numbers; table frequency_vs_segments)");
   return b;
 }
 
@@ -174,8 +186,10 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
         e.push_back({"top_motion_table[" + std::to_string(k) + "].time", num(p.top_motion_table[k].time),
                      "must be greater than the previous row's time " + num(p.top_motion_table[k - 1].time)});
   }
-  if (p.probe_position > p.length)
-    e.push_back({"output.probe_position", num(p.probe_position), "must be in [0, " + num(p.length) + "]"});
+  for (std::size_t k = 0; k < p.probes.size(); ++k)
+    if (p.probes[k].arc_length > p.length)
+      e.push_back({"output.probes[" + std::to_string(k) + "].arc_length", num(p.probes[k].arc_length),
+                   "must be in [0, " + num(p.length) + "] (geometry.length)"});
   // An inextensible chain cannot reach an anchor farther than its length; exactly L is a singular (taut) system.
   const bool fixed_bottom = p.bottom_condition == "pinned" || p.bottom_condition == "clamped";
   if (fixed_bottom && (p.top_condition == "pinned" || p.top_condition == "clamped")) {
@@ -197,7 +211,34 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
     e.push_back({"top.condition", "\"free\"", "both ends free with no gravity and no loads: nothing to compute"});
   if (p.top_condition == "clamped" && p.bottom_condition == "clamped" && p.segment_count < 3)
     e.push_back({"geometry.segment_count", std::to_string(p.segment_count), "must be >= 3 with both ends clamped"});
+  // Frequency sweeps: i_T scales the tensioner's pull; n must be whole.
+  if (!p.sweep_pretension_ratios.empty() && p.top_condition != "tensioner")
+    e.push_back({"frequency_sweep.pretension_ratios", std::to_string(p.sweep_pretension_ratios.size()) + " values",
+                 "a pretension sweep needs top.condition = tensioner (now \"" + p.top_condition + "\")"});
+  for (std::size_t k = 0; k < p.sweep_segment_counts.size(); ++k)
+    if (p.sweep_segment_counts[k] != std::round(p.sweep_segment_counts[k]))
+      e.push_back({"frequency_sweep.segment_counts[" + std::to_string(k) + "]", num(p.sweep_segment_counts[k]),
+                   "must be a whole number in [2, 200]"});
+  if ((!p.sweep_pretension_ratios.empty() || !p.sweep_segment_counts.empty()) && !p.solve_statics)
+    e.push_back({"initial.solve_statics", "false", "frequency sweeps linearise about the static state: must be true"});
   return e;
+}
+
+std::vector<std::string> upgradeRiserParameters(Json& parameters) {
+  std::vector<std::string> notes;
+  auto output = parameters.find("output");
+  if (output == parameters.end() || !output->is_object()) return notes;
+  auto old = output->find("probe_position");
+  if (old == output->end()) return notes;
+  if (output->contains("probes")) {
+    notes.push_back("output.probe_position = " + old->dump() + " ignored: output.probes is given");
+  } else {
+    (*output)["probes"] = Json::array({Json{{"arc_length", *old}}});
+    notes.push_back("output.probe_position = " + old->dump() + " read as output.probes = [{\"arc_length\": " +
+                    old->dump() + "}] (renamed in the riser schema; save the scenario to update it)");
+  }
+  output->erase(old);
+  return notes;
 }
 
 }  // namespace maris::riser

@@ -47,6 +47,11 @@ struct TopMotionRow {
   double z = 0.0;     // [m] (ignored for the tensioner, whose vertical motion is free)
 };
 
+// A point on the riser whose displacement and stresses are recorded over time.
+struct ProbeRow {
+  double arc_length = 50.0;  // [m] arc length from the top (0 = top end, L = bottom end)
+};
+
 struct RiserParameters {
   // geometry
   double length = 100.0;   // [m] unstretched length L
@@ -111,8 +116,11 @@ struct RiserParameters {
   double tolerance = 1e-6;  // [-] relative local error tolerance (dopri5, implicit Newton, auto's choice)
   // output
   int frame_count = 60;            // [-] View3D frames and position snapshots
-  double probe_position = 50.0;    // [m] arc length of the probe point whose history is recorded
+  std::vector<ProbeRow> probes = {{50.0}, {25.0}, {75.0}};  // recorded points: L/2 (the probe_* columns), L/4, 3L/4
   std::vector<double> stress_times = {12.0, 24.0};  // [s] times for the stress-along-the-riser table
+  // frequency sweeps (paper Sect. 8.2): first two bending frequencies for other pretensions and segment counts
+  std::vector<double> sweep_pretension_ratios;  // [-] i_T: top tension T = i_T g m′ (m′ submerged mass of riser + contents)
+  std::vector<double> sweep_segment_counts;     // [-] n (whole numbers) at the scenario's top tension
 };
 
 // The binder declaring path, unit, range and description of every field.
@@ -121,5 +129,9 @@ const SchemaBinder<RiserParameters>& riserBinder();
 // Cross-field checks (D_inn < D_out, section rows inside [0, L], nodes in range, reachable anchor, ...).
 // Paths are relative to "parameters". Returns every problem found.
 std::vector<FieldError> checkRiserParameters(const RiserParameters& p);
+
+// Rewrites parameters of earlier riser schemas in place (SceneDefinition::upgrade); one note per change:
+// output.probe_position [m] (one probe) became the table output.probes of rows {arc_length}.
+std::vector<std::string> upgradeRiserParameters(Json& parameters);
 
 }  // namespace maris::riser

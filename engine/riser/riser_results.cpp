@@ -16,17 +16,16 @@ int nearestJoint(const RiserModel& m, double s) {
   return std::clamp(static_cast<int>(std::lround(s / m.element_length + 0.5)), 1, m.n);
 }
 
-// The time-history plots (shared by the final and the partial results, so live plots keep their tabs).
-void addHistoryPlots(Results& out) {
-  out.plots.push_back(makePlot("probe_displacement", "Probe point displacement", "history", "time",
-                               {"probe_dx", "probe_dy", "probe_dz"}));
-  out.plots.push_back(makePlot("top_force", "Top reaction", "history", "time",
-                               {"top_force_x", "top_force_y", "top_force_z"}));
-  out.plots.push_back(makePlot(
-      "energy", "Energy and work", "history", "time",
-      {"kinetic_energy", "spring_energy", "work_drag", "work_boundary", "work_flow", "energy_balance_error"}));
-  out.plots.push_back(makePlot("probe_stress", "Stress at the probe", "history", "time",
-                               {"probe_bending_stress", "probe_torsional_stress"}));
+// History column of probe k (0-based): the first probe keeps the names probe_dx, ..., the others
+// are probe2_dx, probe3_dx, ...
+std::string probeColumn(std::size_t k, const char* quantity) {
+  return (k == 0 ? std::string("probe_") : "probe" + std::to_string(k + 1) + "_") + quantity;
+}
+
+std::string probeLabel(std::size_t k, double s) {
+  std::ostringstream label;
+  label << "Probe " << k + 1 << " (s = " << s << " m)";
+  return label.str();
 }
 
 }  // namespace
@@ -70,10 +69,40 @@ RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, 
   return p;
 }
 
-RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& parameters, double stabilisation_rate)
-    : m_(model), p_(parameters), ws_(makeWorkspace(model, stabilisation_rate)) {
+// The time-history plots (shared by the final and the partial results, so live plots keep their tabs).
+void RiserRecorder::addHistoryPlots(Results& out) const {
+  for (std::size_t k = 0; k < probes_.size(); ++k)
+    out.plots.push_back(makePlot(k == 0 ? "probe_displacement" : probeColumn(k, "displacement"),
+                                 probeLabel(k, probes_[k].arc_length) + ": displacement", "history", "time",
+                                 {probeColumn(k, "dx"), probeColumn(k, "dy"), probeColumn(k, "dz")}));
+  out.plots.push_back(makePlot("top_force", "Top reaction", "history", "time",
+                               {"top_force_x", "top_force_y", "top_force_z"}));
+  out.plots.push_back(makePlot(
+      "energy", "Energy and work", "history", "time",
+      {"kinetic_energy", "spring_energy", "work_drag", "work_boundary", "work_flow", "energy_balance_error"}));
+  std::vector<std::string> stresses;
+  for (std::size_t k = 0; k < probes_.size(); ++k) stresses.push_back(probeColumn(k, "bending_stress"));
+  for (std::size_t k = 0; k < probes_.size(); ++k) stresses.push_back(probeColumn(k, "torsional_stress"));
+  out.plots.push_back(makePlot("probe_stress", "Stress at the probes (nearest joint)", "history", "time", stresses));
+}
+
+// probe_max_displacement (first probe, kept for scripts), probe2_max_displacement, ...
+void RiserRecorder::addProbeScalars(Results& out) const {
+  for (std::size_t k = 0; k < probes_.size(); ++k)
+    out.addScalar(probeColumn(k, "max_displacement"), probes_[k].max_displacement, "m",
+                  "Largest displacement from its start of " + probeLabel(k, probes_[k].arc_length));
+}
+
+RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& parameters)
+    : m_(model), p_(parameters), ws_(makeWorkspace(model, 0.0)) {
+  for (const ProbeRow& row : parameters.probes) {
+    Probe probe;
+    probe.arc_length = row.arc_length;
+    probe.joint = nearestJoint(model, row.arc_length);
+    probes_.push_back(probe);
+  }
   history_.name = "history";
-  history_.title = "Probe point, end reactions and energies over time";
+  history_.title = "Probe points, end reactions and energies over time";
   for (const char* c : {"time"}) history_.add(c, "s");
   for (const char* c : {"probe_dx", "probe_dy", "probe_dz", "top_x", "top_y", "top_z", "end_x", "end_y", "end_z"})
     history_.add(c, "m");
@@ -86,6 +115,10 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
   history_.add("constraint_drift", "m");
   history_.add("probe_bending_stress", "Pa");
   history_.add("probe_torsional_stress", "Pa");
+  for (std::size_t k = 1; k < probes_.size(); ++k) {
+    for (const char* c : {"dx", "dy", "dz"}) history_.add(probeColumn(k, c), "m");
+    for (const char* c : {"bending_stress", "torsional_stress"}) history_.add(probeColumn(k, c), "Pa");
+  }
   nodes_.name = "node_positions";
   nodes_.title = "Node positions of every stored frame";
   nodes_.add("time", "s");
@@ -115,20 +148,36 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
                             std::abs(wd) + std::abs(wdamp) + std::abs(wb) + std::abs(wf), std::abs(total - energy0_)});
   balance_max_ = std::max(balance_max_, std::abs(balance));
   drift_max_ = std::max(drift_max_, ws_.constraint_drift);
-  const Vec3 probe = probePoint(m_, pose, p_.probe_position);
-  if (first_) probe_start_ = probe;
-  const Vec3 dp = probe - probe_start_;
+  // Probe displacements from their first sample and stresses at their nearest joints.
+  Vec3 first_d = Vec3::Zero();
+  double first_bending = 0.0, first_torsion = 0.0;
+  std::vector<double> extra;  // columns of probes 2, 3, ... (dx, dy, dz, bending, torsional)
+  for (std::size_t k = 0; k < probes_.size(); ++k) {
+    Probe& probe = probes_[k];
+    const Vec3 at = probePoint(m_, pose, probe.arc_length);
+    if (first_) probe.start = at;
+    const Vec3 d = at - probe.start;
+    probe.max_displacement = std::max(probe.max_displacement, d.norm());
+    probe.max_bending = std::max(probe.max_bending, prof.bending_stress[probe.joint]);
+    if (k == 0) {
+      first_d = d;
+      first_bending = prof.bending_stress[probe.joint];
+      first_torsion = prof.torsional_stress[probe.joint];
+    } else {
+      extra.insert(extra.end(), {d.x(), d.y(), d.z(), prof.bending_stress[probe.joint],
+                                 prof.torsional_stress[probe.joint]});
+    }
+  }
   pose_end_ = pose.end_position;
-  probe_max_ = std::max(probe_max_, dp.norm());
   const int f = m_.first_dynamic, last = m_.last_dynamic;
   const Vec3 bottom = (m_.bottom == BottomCondition::Free || m_.bottom == BottomCondition::Spring)
                           ? Vec3(-ws_.loads.support_force) : ws_.reaction[last + 1];
-  const int jp = nearestJoint(m_, p_.probe_position);
-  std::vector<double> row = {t, dp.x(), dp.y(), dp.z(), pose.node(0).x(), pose.node(0).y(), pose.node(0).z(),
+  std::vector<double> row = {t, first_d.x(), first_d.y(), first_d.z(), pose.node(0).x(), pose.node(0).y(), pose.node(0).z(),
                              pose.end_position.x(), pose.end_position.y(), pose.end_position.z(),
                              ws_.reaction[f].x(), ws_.reaction[f].y(), ws_.reaction[f].z(),
                              bottom.x(), bottom.y(), bottom.z(), kin, spr, grav, total, wd, wdamp, wb, wf, balance,
-                             ws_.constraint_drift, prof.bending_stress[jp], prof.torsional_stress[jp]};
+                             ws_.constraint_drift, first_bending, first_torsion};
+  row.insert(row.end(), extra.begin(), extra.end());
   for (std::size_t c = 0; c < row.size(); ++c) history_.columns[c].values.push_back(row[c]);
   for (int k = 0; k < nodes; ++k) {
     max_bending_ = std::max(max_bending_, prof.bending_stress[k]);
@@ -201,7 +250,7 @@ std::shared_ptr<const Results> RiserRecorder::partialResults() const {
   out->view.seabed_z = r_.view.seabed_z;
   if (!r_.view.frames.empty()) out->view.frames.push_back(r_.view.frames.back());
   out->addScalar("time", history_.columns.front().values.back(), "s", "Simulated time reached so far");
-  out->addScalar("probe_max_displacement", probe_max_, "m", "Largest displacement of the probe point so far");
+  addProbeScalars(*out);
   out->addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress so far");
   return out;
 }
@@ -250,12 +299,25 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
   const double scale = std::max(energy_scale_, 1e-300);
   out.tables.push_back(history_);
   out.tables.push_back(nodes_);
+  Table probes;
+  probes.name = "probes";
+  probes.title = "Probe points: largest displacement and bending stress over the run";
+  for (const char* c : {"probe", "joint"}) probes.add(c, "-");
+  probes.add("arc_length", "m");
+  probes.add("max_displacement", "m");
+  probes.add("max_bending_stress", "Pa");
+  for (std::size_t k = 0; k < probes_.size(); ++k) {
+    const double row[5] = {double(k + 1), double(probes_[k].joint), probes_[k].arc_length,
+                           probes_[k].max_displacement, probes_[k].max_bending};
+    for (int c = 0; c < 5; ++c) probes.columns[c].values.push_back(row[c]);
+  }
+  out.tables.push_back(std::move(probes));
   const auto& h = history_;
   const std::size_t last = h.rows() - 1;
   out.addScalar("end_x", h.find("end_x")->values[last], "m", "Bottom end position x at the end of the run");
   out.addScalar("end_y", h.find("end_y")->values[last], "m", "Bottom end position y at the end of the run");
   out.addScalar("end_z", h.find("end_z")->values[last], "m", "Bottom end position z at the end of the run");
-  out.addScalar("probe_max_displacement", probe_max_, "m", "Largest displacement of the probe point from its start");
+  addProbeScalars(out);
   out.addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress σ_b over joints and samples");
   out.addScalar("max_torsional_stress", max_torsion_, "Pa", "Largest |σ_t| over joints and samples");
   out.addScalar("max_tension", max_tension_, "N", "Largest tension over nodes and samples");

@@ -6,6 +6,7 @@
 
 #include "core/scene.hpp"
 #include "riser/riser_envelope.hpp"
+#include "riser/riser_frequency_sweep.hpp"
 #include "riser/riser_integration.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
@@ -20,7 +21,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   Eigen::VectorXd y = restState(model, statics.orientation, statics.top);
 
   const IntegrationPlan plan = planIntegration(model, p);
-  RiserRecorder recorder(model, p, plan.stabilisation_rate);
+  RiserRecorder recorder(model, p);
   recorder.publishPartialsTo(&context);  // live plots in the GUI (no-op without a partial sink)
   recorder.sample(0.0, y, true, std::string("profile_static"));
   // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).
@@ -37,6 +38,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   const SolverStats stats = integrateRiser(model, p, plan, y, recorder, context);
   Results results = recorder.finish(stats, statics.iterations, statics.residual);
   addEnvelope(model, results);
+  addFrequencySweeps(p, results, context);  // paper Sect. 8.2 tables (no-op without sweep lists)
   // Without a time history the 3D view animates the mode shapes instead (one period per mode).
   if (p.end_time <= 0 && !modes.frequencies.empty()) {
     results.view.frames.clear();
@@ -50,7 +52,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
 namespace maris {
 
 SceneDefinition makeRiserScene() {
-  return makeScene<riser::RiserParameters>(
+  SceneDefinition scene = makeScene<riser::RiserParameters>(
       "riser", "Riser / cable dynamics",
       "Risers, cables and mooring lines by the segment method (Adamiec-Wójcik, Brzozowska & Wojciech, "
       "Acta Mechanica 231, 2020): n+1 rigid segments joined by rotary spring-damping elements for bending "
@@ -59,6 +61,8 @@ SceneDefinition makeRiserScene() {
       "equilibrium by Newton's method, dynamics by RK4, DOPRI5 or implicit generalized-α with an O(n) "
       "block-tridiagonal reaction solve.",
       riser::riserBinder(), riser::checkRiserParameters, riser::solveRiser);
+  scene.upgrade = riser::upgradeRiserParameters;
+  return scene;
 }
 
 }  // namespace maris

@@ -40,7 +40,20 @@ inline RiserParameters tipLoadedCantilever(int n, double tip_force, double lengt
   load.node = n + 1;
   load.force_z = -tip_force;
   p.point_loads = {load};
-  p.probe_position = length;
+  p.probes = {{length}};
+  return p;
+}
+
+// The default top-tensioned riser (current, elliptical top motion) cut to a 3 s, n = 8 run with the
+// current turned off the x axis: a small 3D case with motion in every direction.
+inline RiserParameters shortMovingTopRun() {
+  RiserParameters p;
+  p.segment_count = 8;
+  p.end_time = 3.0;
+  p.motion_ramp_time = 1.0;
+  p.motion_period = 4.0;
+  p.current_direction = 0.6;
+  p.stress_times.clear();
   return p;
 }
 

@@ -41,7 +41,7 @@ TEST(RiserHardCases, SlackChainFallsSnapsTautAndWhipsConservingEnergy) {
   p.initial_inclination = kPi - 0.3;  // 17° from upright
   p.solve_statics = false;
   p.end_time = 2.5;  // the fall, the snap below the support (≈ 1.6 s) and the whip after it
-  p.probe_position = p.length;
+  p.probes = {{p.length}};
   double previous = 0;
   for (double h : {4e-4, 2e-4}) {
     p.time_step = h;

@@ -48,7 +48,7 @@ RiserParameters movingRiser() {
   p.motion_period = 4.0;
   p.motion_ramp_time = 2.0;
   p.stress_times = {2.0};
-  p.probe_position = 30.0;
+  p.probes = {{30.0}};
   return p;
 }
 

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Riser work-precision benchmark (issue 10), meant for a quiet machine: builds the Release bench (and
+# the PNG tool when the build has the GUI), runs it on one core, and writes
+#   docs/riser_work_precision.csv   every row (Maris CSV layout)
+#   docs/riser_work_precision.md    markdown tables: right-hand-side cost against n (linear growth),
+#                                   case 5 at n = 100, error and cost against n; load average noted
+#   docs/riser_work_precision.log   the bench's own output
+#   docs/images/riser_work_precision_case5.png, _cable3d.png, _case5_n.png   (GUI build only)
+# Usage: scripts/bench_riser.sh [quick]
+#   default: rhs cost for n = 10..1000; case 5 (36 s) for n = 10..100; the 3D cable (10 s) for n = 10, 20
+#            (its torsion limit makes each doubling of n cost 4x): ≈ 8-10 min on one core of a quiet machine
+#   quick:   case 5 over 3.6 s with n ≤ 20, cable n = 10, to check the pipeline (≈ 1 min; errors meaningless)
+# Environment: MARIS_BENCH_BUILD (default build/release; configured as Release if missing),
+#              MARIS_BENCH_OUT (default docs), MARIS_BENCH_NMAX (case 5, default 100; 200 adds J3/A2 rows
+#              at n = 200, roughly +4 min; 400: tens of minutes), MARIS_BENCH_CABLE_NMAX (default 20; 50: +5 min).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${MARIS_BENCH_BUILD:-build/release}
+out=${MARIS_BENCH_OUT:-docs}
+n_max=${MARIS_BENCH_NMAX:-100}
+cable_n_max=${MARIS_BENCH_CABLE_NMAX:-20}
+end_time=36
+if [ "${1:-}" = "quick" ]; then n_max=20; cable_n_max=10; end_time=3.6; fi
+
+[ -f "$build/CMakeCache.txt" ] || cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+grep -q "CMAKE_BUILD_TYPE:STRING=Release" "$build/CMakeCache.txt" || { echo "$build is not a Release build" >&2; exit 2; }
+targets=(bench_riser_work_precision)
+with_plot=0
+if grep -q "MARIS_BUILD_GUI:BOOL=ON" "$build/CMakeCache.txt"; then targets+=(work_precision_plot); with_plot=1; fi
+cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
+
+mkdir -p "$out/images"
+csv="$out/riser_work_precision.csv"
+start=$(date +%s)
+# One core: the bench is single-threaded; pinning keeps it from migrating between the two cores.
+runner=()
+command -v taskset > /dev/null && runner=(taskset -c 0)
+"${runner[@]}" "$build/bench/bench_riser_work_precision" "$csv" "$n_max" "$end_time" all "$cable_n_max" | tee "$out/riser_work_precision.log"
+echo "bench: $(( $(date +%s) - start )) s wall"
+
+if [ "$with_plot" = 1 ]; then
+  plot=("$build/bench/work_precision_plot")
+  export QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen}
+  "${plot[@]}" "$csv" "$out/images/riser_work_precision_case5.png" --x cpu_time --y error_same_n \
+    --series variant,method --where case=case5 --where n="$([ "$n_max" -ge 100 ] && echo 100 || echo "$n_max")" \
+    --title "Riser case 5: CPU time against error (same-n reference)"
+  "${plot[@]}" "$csv" "$out/images/riser_work_precision_cable3d.png" --x cpu_time --y error_same_n \
+    --series variant,method --where case=cable3d --where n="$cable_n_max" \
+    --title "3D cable, n = $cable_n_max: CPU time against error"
+  "${plot[@]}" "$csv" "$out/images/riser_work_precision_case5_n.png" --x cpu_time --y error_finest_n \
+    --series method,n --where case=case5 --where variant=J3 \
+    --title "Riser case 5, J3: CPU time against error to the finest n"
+else
+  echo "no GUI in $build: PNGs skipped (configure with -DMARIS_BUILD_GUI=ON for bench/tools/work_precision_plot)"
+fi
+echo "written: $csv, $out/riser_work_precision.md, $out/riser_work_precision.log"
