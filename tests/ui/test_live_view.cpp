@@ -22,6 +22,14 @@ using namespace maris::ui;
 
 namespace {
 
+// Simulated seconds of the live run: several 3D updates in Release; shorter under the sanitizers
+// (about 3x slower), which only need the code paths.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr double kLiveEndTime = 1.5;
+#else
+constexpr double kLiveEndTime = 4.0;
+#endif
+
 // The default riser, shortened: `end_time` seconds of simulated time, few frames, no profiles.
 Scenario shortRiser(double end_time) {
   Scenario scenario = findBuiltin("riser_default")->scenario;
@@ -100,7 +108,7 @@ class LiveViewTest : public QObject {
     runLive(*scene, shortRiser(0.2), warm_up, *view);
     QTRY_VERIFY(view->glWidget()->lastPaintMilliseconds() > 0.0);
     LiveResults live(plots, view);
-    const LiveRun run = runLive(*scene, shortRiser(4.0), live, *view);
+    const LiveRun run = runLive(*scene, shortRiser(kLiveEndTime), live, *view);
     qInfo("%.1f s run: %d plot updates (slowest %.1f ms), %d 3D updates (slowest rebuild %.1f ms), %zu 3D paints "
           "(median %.1f ms, slowest %.1f ms; interval now %.0f ms); longest GUI-thread gap %.1f ms",
           run.wall_s, run.stats.plot_updates, run.stats.slowest_plot_update_ms, run.stats.view_updates,
