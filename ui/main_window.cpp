@@ -5,7 +5,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
@@ -21,9 +20,11 @@
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
 #include "plots/plot_panel.hpp"
+#include "run/live_results.hpp"
 #include "run/results_summary.hpp"
 #include "run/run_panel.hpp"
 #include "scene_library.hpp"
+#include "themed_icon.hpp"
 #include "view3d/scene_view.hpp"
 
 namespace maris::ui {
@@ -67,15 +68,8 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
   connect(runs_, &RunController::finished, this, &MainWindow::onRunFinished);
   connect(runs_, &RunController::failed, this, &MainWindow::onRunFailed);
   connect(runs_, &RunController::cancelled, this, &MainWindow::onRunCancelled);
-  connect(runs_, &RunController::partialResults, this, [this](ResultsPtr partial) {
-    plots_->showResults(partial, tr("running"));
-    // Redrawing the 3D view costs far more than the plots (a software renderer needs ~0.2 s), so
-    // during a run it follows at most once a second; the finished run redraws it anyway.
-    if (!partial_view_clock_.isValid() || partial_view_clock_.elapsed() > 1000) {
-      view_->showResults(partial);
-      partial_view_clock_.start();
-    }
-  });
+  live_ = new LiveResults(plots_, view_, this);
+  connect(runs_, &RunController::partialResults, live_, &LiveResults::show);
   connect(plots_, &PlotPanel::message, this, [this](const QString& text) { status(text); });
   connect(view_, &SceneView::message, this, [this](const QString& text) { status(text); });
   connect(browser_, &ScenarioBrowser::exampleActivated, this, &MainWindow::openExample);
@@ -117,10 +111,10 @@ void MainWindow::createActions() {
   edit->addAction(redo);
 
   QMenu* run = menuBar()->addMenu(tr("&Run"));
-  run_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Run"), QKeySequence(Qt::CTRL | Qt::Key_R),
+  run_action_ = run->addAction(themedIcon(QStyle::SP_MediaPlay), tr("&Run"), QKeySequence(Qt::CTRL | Qt::Key_R),
                                this, [this] { startRun(); });
   run_action_->setToolTip(tr("Run the scenario (Ctrl+R)"));
-  cancel_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaStop), tr("&Cancel"),
+  cancel_action_ = run->addAction(themedIcon(QStyle::SP_MediaStop), tr("&Cancel"),
                                   QKeySequence(Qt::Key_Escape), this, &MainWindow::cancelRun);
   cancel_action_->setToolTip(tr("Cancel the running scenario (Esc)"));
   cancel_action_->setShortcutContext(Qt::WindowShortcut);

@@ -8,7 +8,6 @@
 #include <functional>
 #include <memory>
 
-#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QMessageBox>
 
@@ -30,6 +29,7 @@ class RunController;
 class RunPanel;
 class ResultsSummary;
 class PlotPanel;
+class LiveResults;
 class SceneView;
 
 class MainWindow : public QMainWindow {
@@ -113,7 +113,6 @@ class MainWindow : public QMainWindow {
   QString last_error_;
   QStringList recent_files_;
   UnsavedPrompt unsaved_prompt_;
-  QElapsedTimer partial_view_clock_;
   Theme theme_ = Theme::System;
   QMenu* theme_menu_ = nullptr;
 
@@ -123,6 +122,7 @@ class MainWindow : public QMainWindow {
   ResultsSummary* summary_ = nullptr;
   PlotPanel* plots_ = nullptr;
   SceneView* view_ = nullptr;
+  LiveResults* live_ = nullptr;
   QSplitter* central_ = nullptr;
   QLabel* validity_ = nullptr;
   QAction* run_action_ = nullptr;

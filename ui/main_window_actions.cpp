@@ -11,6 +11,7 @@
 #include "main_window.hpp"
 #include "plots/plot_export.hpp"
 #include "plots/plot_panel.hpp"
+#include "run/live_results.hpp"
 #include "run/results_summary.hpp"
 #include "run/run_panel.hpp"
 #include "scene_library.hpp"
@@ -137,6 +138,7 @@ bool MainWindow::startRun() {
     if (!document_->isValid()) status(tr("Fix the invalid values first (marked red in the parameter editor)."));
     return false;
   }
+  live_->restart();
   const quint64 id = runs_->start(*document_->scene(), document_->scenario());
   run_panel_->log(RunPanel::Level::Info,
                   tr("Run %1 started: %2").arg(id).arg(QString::fromStdString(document_->scenario().name)));

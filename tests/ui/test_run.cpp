@@ -16,6 +16,7 @@
 #include "run/run_history.hpp"
 #include "test_scene.hpp"
 #include "theme.hpp"
+#include "themed_icon.hpp"
 #include "ui_test_support.hpp"
 
 using namespace maris;
@@ -42,6 +43,33 @@ std::vector<std::vector<std::string>> readCsv(const QString& file) {
     rows.push_back(cells);
   }
   return rows;
+}
+
+// A table "line" of y = x² over x = 0 … n − 1 [m, N], as a live run's growing history would be.
+std::shared_ptr<const Results> growingLine(int n) {
+  auto r = std::make_shared<Results>();
+  Table& t = r->tables.emplace_back();
+  t.name = "line";
+  std::vector<double> x, y;
+  for (int i = 0; i < n; ++i) {
+    x.push_back(i);
+    y.push_back(double(i) * i);
+  }
+  t.add("x", "m", x);
+  t.add("y", "N", y);
+  return r;
+}
+
+// Alpha-weighted mean luminance (0 black … 1 white, Rec. 601 weights) of an icon's visible pixels.
+double glyphLuminance(const QImage& icon) {
+  double sum = 0.0, weight = 0.0;
+  for (int y = 0; y < icon.height(); ++y)
+    for (int x = 0; x < icon.width(); ++x) {
+      const QColor c = icon.pixelColor(x, y);
+      sum += c.alphaF() * qGray(c.rgb()) / 255.0;
+      weight += c.alphaF();
+    }
+  return weight > 0 ? sum / weight : -1.0;
 }
 
 }  // namespace
@@ -215,6 +243,75 @@ class RunTest : public QObject {
     for (int y = 0; y < dark.height(); y += 4)
       for (int x = 0; x < dark.width(); x += 4) darkPixels += dark.pixelColor(x, y).lightnessF() < 0.3;
     QVERIFY(darkPixels > 0.8 * (dark.width() / 4) * (dark.height() / 4));
+  }
+
+  // A zoom made during a run survives the live updates; an untouched plot follows the growing data;
+  // a double-click fits again and later updates rescale once more.
+  void userZoomSurvivesLiveUpdates() {
+    PlotSpec spec;
+    spec.name = spec.table = "line";
+    spec.x = "x";
+    spec.y = {"y"};
+    PlotView zoomed(spec), untouched(spec);
+    for (PlotView* v : {&zoomed, &untouched}) {
+      v->resize(600, 400);
+      v->show();
+      v->setSources({{QStringLiteral("running"), growingLine(50)}});
+    }
+    QVERIFY(QTest::qWaitForWindowExposed(&zoomed));
+    zoomed.plot()->replot();
+    auto xRange = [](PlotView& v) { return v.plot()->axisRect()->axis(QCPAxis::atBottom)->range(); };
+    auto yRange = [](PlotView& v) { return v.plot()->axisRect()->axis(QCPAxis::atLeft)->range(); };
+    QCOMPARE(xRange(zoomed).upper, 49.0);  // fitted to the data: x = 0 … 49
+    QVERIFY(!zoomed.keepsUserRange());
+
+    // The user zooms in with the wheel over the middle of the axes.
+    const QPointF centre = zoomed.plot()->axisRect()->rect().center();
+    QWheelEvent wheel(centre, zoomed.plot()->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(zoomed.plot(), &wheel);
+    const QCPRange x_zoom = xRange(zoomed), y_zoom = yRange(zoomed);
+    QVERIFY2(x_zoom.size() < 0.95 * 49.0, qPrintable(QString::number(x_zoom.size())));
+    QVERIFY(zoomed.keepsUserRange());
+
+    // A live update with twice the data: the zoomed plot keeps its ranges exactly (same doubles),
+    // the untouched one fits the new data (x up to 99, y up to 99² = 9801).
+    for (PlotView* v : {&zoomed, &untouched}) v->setSources({{QStringLiteral("running"), growingLine(100)}});
+    QCOMPARE(xRange(zoomed), x_zoom);
+    QCOMPARE(yRange(zoomed), y_zoom);
+    QCOMPARE(zoomed.pointCount(), 100);
+    QCOMPARE(xRange(untouched).upper, 99.0);
+    QCOMPARE(yRange(untouched).upper, 9801.0);
+
+    // A double-click fits the axes to the data and gives the plot back to autoscaling.
+    QMouseEvent click(QEvent::MouseButtonDblClick, centre, zoomed.plot()->mapToGlobal(centre), Qt::LeftButton,
+                      Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(zoomed.plot(), &click);
+    QVERIFY(!zoomed.keepsUserRange());
+    QCOMPARE(xRange(zoomed).upper, 99.0);
+    zoomed.setSources({{QStringLiteral("running"), growingLine(150)}});
+    QCOMPARE(xRange(zoomed).upper, 149.0);
+  }
+
+  // Toolbar icons in the dark theme: their glyphs must stand out from the window colour (a
+  // luminance difference of at least 0.4 of the full scale, about what black text on mid-grey
+  // has); in the light theme the style's own icon is shown unchanged.
+  void iconsStayReadableInTheDarkTheme() {
+    for (QStyle::StandardPixmap which : {QStyle::SP_MediaPlay, QStyle::SP_MediaStop, QStyle::SP_MediaPause,
+                                         QStyle::SP_BrowserReload}) {
+      const QIcon icon = themedIcon(which);
+      applyTheme(Theme::Dark);
+      const QImage dark = icon.pixmap(32, 32).toImage();
+      const QImage plain = QApplication::style()->standardIcon(which).pixmap(32, 32).toImage();
+      const double window = qGray(QApplication::palette().color(QPalette::Window).rgb()) / 255.0;
+      const double themed = glyphLuminance(dark);
+      qInfo("icon %d on the dark window (luminance %.2f): style's own %.2f, themed %.2f", int(which), window,
+            glyphLuminance(plain), themed);
+      QVERIFY2(std::abs(themed - window) > 0.4, qPrintable(QString::number(themed)));
+      applyTheme(Theme::Light);
+      QCOMPARE(icon.pixmap(32, 32).toImage(), QApplication::style()->standardIcon(which).pixmap(32, 32).toImage());
+    }
+    applyTheme(Theme::System);
   }
 
   void hoverShowsTheNearestValue() {

@@ -17,6 +17,7 @@
 
 #include "document/scenario_document.hpp"
 #include "editor/field_text.hpp"
+#include "themed_icon.hpp"
 #include "editor/table_editor.hpp"
 
 namespace maris::ui {
@@ -126,7 +127,7 @@ void ParameterEditor::rebuild() {
     if (spec.kind != ParamKind::Table) labels.push_back(label);
     units.push_back(unit);
     row.reset = new QToolButton(fields_host_);
-    row.reset->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
+    row.reset->setIcon(themedIcon(QStyle::SP_BrowserReload));
     row.reset->setToolTip(tr("Reset to default (%1)").arg(fieldText(spec.default_value, spec.kind)));
     row.reset->setAutoRaise(true);
     row.error = new QLabel(fields_host_);

@@ -64,10 +64,24 @@ void PlotView::redraw() {
   std::vector<PlotSource> drawn;
   for (const auto& s : sources_) drawn.push_back({s.label, s.results.get()});
   tracer_ = nullptr;
+  // fillPlot makes new axes: a user's zoom is read from the old ones and put back on the new.
+  const bool keep = user_range_ && has_data_ && plot_->axisRect();
+  QCPRange kept_x, kept_y;
+  if (keep) {
+    kept_x = plot_->axisRect()->axis(QCPAxis::atBottom)->range();
+    kept_y = plot_->axisRect()->axis(QCPAxis::atLeft)->range();
+  }
+  setting_range_ = true;
   has_data_ = !drawn.empty() && fillPlot(*plot_, drawn, spec_, references_);
   if (has_data_) {
     for (auto* axis : plot_->axisRect()->axes()) axis->grid()->setSubGridVisible(false);
     applyAxisScales();
+    if (keep) {
+      plot_->axisRect()->axis(QCPAxis::atBottom)->setRange(kept_x);
+      plot_->axisRect()->axis(QCPAxis::atLeft)->setRange(kept_y);
+      moveLegendToEmptiestCorner(*plot_);
+    }
+    watchUserRange();
     tracer_ = new QCPItemTracer(plot_);
     tracer_->setStyle(QCPItemTracer::tsCircle);
     tracer_->setSize(8);
@@ -76,10 +90,19 @@ void PlotView::redraw() {
     plot_->axisRect()->setRangeDrag(Qt::Horizontal | Qt::Vertical);
     plot_->axisRect()->setRangeZoom(Qt::Horizontal | Qt::Vertical);
   }
+  setting_range_ = false;
   plot_->setVisible(has_data_);
   empty_->setVisible(!has_data_);
   readout_->clear();
   plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotView::watchUserRange() {
+  // Wheel zoom, drag pan or a range set from outside: any range change that is not our own rescale.
+  for (QCPAxis* axis : {plot_->axisRect()->axis(QCPAxis::atBottom), plot_->axisRect()->axis(QCPAxis::atLeft)})
+    connect(axis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] {
+      if (!setting_range_) user_range_ = true;
+    });
 }
 
 void PlotView::changeEvent(QEvent* event) {
@@ -113,20 +136,22 @@ void PlotView::applyAxisScales() {
   moveLegendToEmptiestCorner(*plot_);
 }
 
+// A new axis scale fits the data again (a linear range rarely makes sense on a log axis).
 void PlotView::setLogX(bool on) {
   log_x_ = on;
-  if (has_data_) applyAxisScales();
-  plot_->replot();
+  resetZoom();
 }
 
 void PlotView::setLogY(bool on) {
   log_y_ = on;
-  if (has_data_) applyAxisScales();
-  plot_->replot();
+  resetZoom();
 }
 
 void PlotView::resetZoom() {
-  plot_->rescaleAxes();
+  user_range_ = false;
+  setting_range_ = true;
+  if (has_data_) applyAxisScales();
+  setting_range_ = false;
   plot_->replot();
 }
 

@@ -1,5 +1,5 @@
 // One plot tab: a QCustomPlot drawn from a PlotSpec and one or more runs, with zoom (wheel), pan
-// (drag), double-click to fit, log-axis toggles, a hover read-out of the nearest data point, and
+// (drag), double-click to fit, log-axis toggles, a zoom that survives live updates, a hover read-out of the nearest data point, and
 // export of the picture (PNG/PDF/SVG) and of the data behind it (CSV with a units row).
 #pragma once
 
@@ -50,7 +50,11 @@ class PlotView : public QWidget {
   void setLogY(bool on);
   bool logX() const { return log_x_; }
   bool logY() const { return log_y_; }
+  // Fits the axes to the data and lets later updates rescale again (Fit, double-click).
   void resetZoom();
+  // True once the user zoomed or panned (or the axes' range was set from outside): redraws with new
+  // data (live partial results, overlays) then keep the ranges instead of rescaling.
+  bool keepsUserRange() const { return user_range_; }
 
   // PNG/PDF/SVG by suffix, or CSV of the first source's data. Throws std::runtime_error on failure.
   void exportTo(const QString& file, int width_px = 1200, int height_px = 800);
@@ -64,6 +68,7 @@ class PlotView : public QWidget {
   void redraw();
   void ensureDrawn() const;
   void applyAxisScales();
+  void watchUserRange();
   void onMouseMove(QMouseEvent* event);
 
   PlotSpec spec_;
@@ -75,6 +80,8 @@ class PlotView : public QWidget {
   QCPItemTracer* tracer_ = nullptr;
   bool has_data_ = false;
   bool stale_ = false;  // sources changed while hidden
+  bool user_range_ = false;    // the user moved the axes: do not rescale on new data
+  bool setting_range_ = false;  // our own rescaling is under way (not a user's range change)
   bool log_x_;
   bool log_y_;
 };

@@ -26,6 +26,8 @@
 
 #include "plots/result_plot.hpp"
 #include "theme.hpp"
+#include "themed_icon.hpp"
+#include "view3d/color_map_control.hpp"
 #include "view3d/shape_actors.hpp"
 #include "view3d/vtk_gl_widget.hpp"
 
@@ -47,14 +49,19 @@ SceneView::SceneView(QWidget* parent)
     : QWidget(parent), gl_(new VtkGlWidget(this)), slider_(new QSlider(Qt::Horizontal, this)),
       play_(new QToolButton(this)), time_(new QLabel(this)),
       empty_(new QLabel(tr("No 3D view yet: run the scenario."), this)), timer_(new QTimer(this)),
+      color_control_(new ColorMapControl(this)),
       colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
       scalar_bar_(vtkSmartPointer<vtkScalarBarActor>::New()), caption_(vtkSmartPointer<vtkTextActor>::New()),
       triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
   vtkRenderer* renderer = gl_->renderer();
   renderer->GradientBackgroundOn();
+  // Translucent surfaces (still water, sea bed, a wave surface, a hull) are depth-peeled: without it
+  // VTK blends them by a weighted average in which the nearer layer does not dominate, so a wave
+  // surface seen through the still-water plane looked washed out. A few peels suffice here.
+  renderer->UseDepthPeelingOn();
+  renderer->SetMaximumNumberOfPeels(4);
+  renderer->SetOcclusionRatio(0.0);
 
-  // Cool-to-warm diverging map (Moreland 2009): readable, and equal steps look equal.
-  colors_->SetColorSpaceToDiverging();
   scalar_bar_->SetLookupTable(colors_);
   scalar_bar_->SetNumberOfLabels(5);
   // Vertical at the right edge, labels to its right: it stays clear of sea beds and long
@@ -90,7 +97,7 @@ SceneView::SceneView(QWidget* parent)
   triad_->SetEnabled(1);
   triad_->InteractiveOff();
 
-  play_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+  play_->setIcon(themedIcon(QStyle::SP_MediaPlay));
   play_->setToolTip(tr("Play / pause the animation"));
   play_->setCheckable(true);
   auto* reset = new QToolButton(this);
@@ -106,6 +113,7 @@ SceneView::SceneView(QWidget* parent)
   controls->addWidget(play_);
   controls->addWidget(slider_, 1);
   controls->addWidget(time_);
+  controls->addWidget(color_control_);
   controls->addWidget(reset);
   controls->addWidget(save);
   auto* layout = new QVBoxLayout(this);
@@ -121,6 +129,8 @@ SceneView::SceneView(QWidget* parent)
   });
   connect(play_, &QToolButton::toggled, this, &SceneView::setPlaying);
   connect(slider_, &QSlider::valueChanged, this, &SceneView::setFrame);
+  color_control_->setEnabled(false);
+  connect(color_control_, &ColorMapControl::settingsChanged, this, &SceneView::setColorSettings);
   connect(reset, &QToolButton::clicked, this, &SceneView::resetCamera);
   connect(save, &QToolButton::clicked, this, &SceneView::exportPngInteractive);
   applyPaletteColors();
@@ -194,13 +204,18 @@ void SceneView::rebuildStatic() {
   const Bounds3D bounds = viewBounds(view);
   // Thin members (a 0.5 m riser in a 1 km scene) are drawn at least 0.4 % of the scene size thick.
   min_tube_radius_ = 0.004 * bounds.diagonal();
-  double lo = 0.0, hi = 1.0;
-  have_scalars_ = scalarRange(view, lo, hi);
-  if (hi <= lo) hi = lo + (lo == 0.0 ? 1.0 : std::abs(lo) * 1e-6);
-  colors_->RemoveAllPoints();
-  colors_->AddRGBPoint(lo, 0.230, 0.299, 0.754);
-  colors_->AddRGBPoint(hi, 0.706, 0.016, 0.150);
-  colors_->Build();
+  data_lo_ = 0.0;
+  data_hi_ = 1.0;
+  have_scalars_ = scalarRange(view, data_lo_, data_hi_);
+  if (data_hi_ <= data_lo_) data_hi_ = data_lo_ + (data_lo_ == 0.0 ? 1.0 : std::abs(data_lo_) * 1e-6);
+  // Another quantity brings back what the user chose for it (or the defaults).
+  if (view.scalar_name != colored_quantity_) {
+    colored_quantity_ = view.scalar_name;
+    const auto kept = color_memory_.find(colored_quantity_);
+    color_settings_ = kept != color_memory_.end() ? kept->second : ColorSettings{};
+  }
+  applyColorSettings();
+  color_control_->setEnabled(have_scalars_);
   renderer->RemoveViewProp(scalar_bar_);
   if (have_scalars_) {
     scalar_bar_->SetTitle(axisLabel(view.scalar_name, view.scalar_unit).toStdString().c_str());
@@ -217,6 +232,25 @@ void SceneView::rebuildStatic() {
     renderer->AddActor(seabed);
     static_actors_.push_back(seabed);
   }
+}
+
+void SceneView::applyColorSettings() {
+  const auto [lo, hi] = colorRange();
+  fillColorMap(colors_, color_settings_.map, lo, hi);
+  color_control_->showSettings(color_settings_, data_lo_, data_hi_);
+}
+
+std::pair<double, double> SceneView::colorRange() const {
+  if (color_settings_.automatic || !(color_settings_.max > color_settings_.min)) return {data_lo_, data_hi_};
+  return {color_settings_.min, color_settings_.max};
+}
+
+void SceneView::setColorSettings(const ColorSettings& settings) {
+  color_settings_ = settings;
+  color_memory_[colored_quantity_] = settings;
+  applyColorSettings();
+  // Solids of one scalar take their colour when their actor is made: rebuild the frame.
+  drawFrame();
 }
 
 void SceneView::drawFrame() {
@@ -265,7 +299,7 @@ void SceneView::setPlaying(bool playing) {
     timer_->stop();
   const QSignalBlocker blocker(play_);
   play_->setChecked(timer_->isActive());
-  play_->setIcon(style()->standardIcon(timer_->isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+  play_->setIcon(themedIcon(timer_->isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
 }
 
 bool SceneView::isPlaying() const { return timer_->isActive(); }

@@ -1,10 +1,14 @@
 // The 3D tab: draws a run's View3D (shapes per animation frame, colour map with a colour bar,
 // still-water and sea-bed planes), an axes triad, a time slider with play/pause, reset camera and
-// PNG export at a chosen resolution. The first results reset the camera; later results (new runs,
-// live partial results) keep the user's view.
+// PNG export at a chosen resolution, and a "Colours" control (map, automatic or fixed range),
+// remembered per coloured quantity for the session. The first results reset the camera; later
+// results (new runs, live partial results) keep the user's view.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <QImage>
@@ -13,6 +17,7 @@
 #include <vtkSmartPointer.h>
 
 #include "core/results.hpp"
+#include "view3d/color_maps.hpp"
 
 class QLabel;
 class QSlider;
@@ -26,6 +31,7 @@ class vtkTextActor;
 
 namespace maris::ui {
 
+class ColorMapControl;
 class VtkGlWidget;
 
 class SceneView : public QWidget {
@@ -49,6 +55,13 @@ class SceneView : public QWidget {
   // Asks for a resolution and a file, then saves a PNG.
   void exportPngInteractive();
 
+  // Colour map and range of the coloured quantity (kept for that quantity's later results).
+  void setColorSettings(const ColorSettings& settings);
+  const ColorSettings& colorSettings() const { return color_settings_; }
+  // The range the colours and the colour bar span now (the data's or the user's).
+  std::pair<double, double> colorRange() const;
+  ColorMapControl* colorControl() const { return color_control_; }
+
   VtkGlWidget* glWidget() const { return gl_; }
   // Number of model actors in the current frame (planes, colour bar and triad not counted).
   int modelActorCount() const { return static_cast<int>(frame_actors_.size()); }
@@ -62,6 +75,7 @@ class SceneView : public QWidget {
  private:
   void applyPaletteColors();
   void rebuildStatic();
+  void applyColorSettings();
   void drawFrame();
   void updateTimeLabel();
 
@@ -71,6 +85,7 @@ class SceneView : public QWidget {
   QLabel* time_;
   QLabel* empty_;
   QTimer* timer_;
+  ColorMapControl* color_control_;
   std::shared_ptr<const Results> results_;
   int frame_ = 0;
   bool camera_placed_ = false;
@@ -82,6 +97,10 @@ class SceneView : public QWidget {
   std::vector<vtkSmartPointer<vtkActor>> frame_actors_;
   double min_tube_radius_ = 0.0;
   bool have_scalars_ = false;
+  double data_lo_ = 0.0, data_hi_ = 1.0;  // scalar range of all frames
+  std::string colored_quantity_;          // View3D::scalar_name of the shown results
+  ColorSettings color_settings_;
+  std::map<std::string, ColorSettings> color_memory_;  // by quantity, for this session
 };
 
 }  // namespace maris::ui

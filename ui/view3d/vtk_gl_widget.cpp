@@ -4,8 +4,10 @@
 
 #include <cstring>
 
+#include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <qopengl.h>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
@@ -98,6 +100,8 @@ void VtkGlWidget::initializeGL() {
   window_->SetSupportsOpenGL(true);
   window_->SetIsDirect(true);
   window_->SetForceMaximumHardwareLineWidth(1);
+  window_->SetAlphaBitPlanes(1);  // depth peeling of translucent surfaces needs an alpha channel
+  window_->SetMultiSamples(0);
   window_->SetMapped(true);
   initialized_ = true;
   window_->OpenGLInitContext();
@@ -126,6 +130,8 @@ void VtkGlWidget::renderVtk() {
 
 void VtkGlWidget::paintGL() {
   if (!initialized_) return;
+  QElapsedTimer clock;
+  clock.start();
   renderVtk();
   const int* size = window_->GetSize();
   vtkOpenGLState* state = window_->GetState();
@@ -142,6 +148,9 @@ void VtkGlWidget::paintGL() {
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->PopDrawFramebufferBinding();
+  context()->functions()->glFinish();  // the clock must see the renderer's work, not its queueing
+  last_paint_ms_ = clock.nsecsElapsed() * 1e-6;
+  ++paint_count_;
 }
 
 QImage VtkGlWidget::renderImage(int width_px, int height_px) {

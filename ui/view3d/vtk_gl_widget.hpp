@@ -31,6 +31,11 @@ class VtkGlWidget : public QOpenGLWidget {
   // and returns it; a null image if OpenGL is not initialised (widget never shown).
   QImage renderImage(int width_px, int height_px);
 
+  // Wall time of the last paint (VTK render and blit) in milliseconds: what a redraw costs the GUI
+  // thread (with a software OpenGL renderer, far more than everything else the GUI does).
+  double lastPaintMilliseconds() const { return last_paint_ms_; }
+  int paintCount() const { return paint_count_; }
+
  protected:
   void initializeGL() override;
   void resizeGL(int w, int h) override;
@@ -53,6 +58,8 @@ class VtkGlWidget : public QOpenGLWidget {
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
   QMetaObject::Connection context_teardown_;  // context aboutToBeDestroyed -> release VTK's GL objects
   bool initialized_ = false;
+  double last_paint_ms_ = 0.0;
+  int paint_count_ = 0;
 };
 
 }  // namespace maris::ui

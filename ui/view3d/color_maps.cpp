@@ -1,0 +1,67 @@
+#include "view3d/color_maps.hpp"
+
+#include <array>
+
+#include <QObject>
+
+#include <vtkColorTransferFunction.h>
+
+namespace maris::ui {
+
+namespace {
+
+// Viridis (van der Walt and Smith, matplotlib 2015) at eleven evenly spaced stops; linear RGB
+// interpolation between them stays within a few levels of the full 256-entry table.
+constexpr std::array<std::array<int, 3>, 11> kViridis{{{0x44, 0x01, 0x54},
+                                                       {0x48, 0x24, 0x75},
+                                                       {0x41, 0x44, 0x87},
+                                                       {0x35, 0x5f, 0x8d},
+                                                       {0x2a, 0x78, 0x8e},
+                                                       {0x21, 0x91, 0x8c},
+                                                       {0x22, 0xa8, 0x84},
+                                                       {0x44, 0xbf, 0x70},
+                                                       {0x7a, 0xd1, 0x51},
+                                                       {0xbd, 0xdf, 0x26},
+                                                       {0xfd, 0xe7, 0x25}}};
+
+}  // namespace
+
+QStringList colorMapNames() {
+  return {QObject::tr("Cool to warm"), QObject::tr("Viridis"), QObject::tr("Rainbow"), QObject::tr("Greyscale")};
+}
+
+void fillColorMap(vtkColorTransferFunction* colors, ColorMap map, double lo, double hi) {
+  colors->RemoveAllPoints();
+  switch (map) {
+    case ColorMap::CoolWarm:
+      // Moreland's end colours; the diverging space puts a neutral light grey in the middle.
+      colors->SetColorSpaceToDiverging();
+      colors->AddRGBPoint(lo, 0.230, 0.299, 0.754);
+      colors->AddRGBPoint(hi, 0.706, 0.016, 0.150);
+      break;
+    case ColorMap::Viridis:
+      colors->SetColorSpaceToRGB();
+      for (std::size_t i = 0; i < kViridis.size(); ++i) {
+        const double x = lo + (hi - lo) * static_cast<double>(i) / (kViridis.size() - 1);
+        colors->AddRGBPoint(x, kViridis[i][0] / 255.0, kViridis[i][1] / 255.0, kViridis[i][2] / 255.0);
+      }
+      break;
+    case ColorMap::Rainbow:
+      // Hue 2/3 (blue) down to 0 (red) the short way, through cyan, green and yellow.
+      colors->SetColorSpaceToHSV();
+      colors->HSVWrapOff();
+      colors->AddHSVPoint(lo, 0.667, 1.0, 1.0);
+      colors->AddHSVPoint(hi, 0.0, 1.0, 1.0);
+      break;
+    case ColorMap::Greyscale:
+      // Not black: the dark theme's background is nearly black.
+      colors->SetColorSpaceToRGB();
+      colors->AddRGBPoint(lo, 0.15, 0.15, 0.15);
+      colors->AddRGBPoint(hi, 0.95, 0.95, 0.95);
+      break;
+  }
+  colors->ClampingOn();
+  colors->Build();
+}
+
+}  // namespace maris::ui

@@ -1,0 +1,33 @@
+// Colour maps for the 3D view's per-point scalars and the settings a user picks for one quantity:
+// which map, and an automatic range (all frames' min … max) or a fixed min … max of their own.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+class vtkColorTransferFunction;
+
+namespace maris::ui {
+
+enum class ColorMap {
+  CoolWarm,   // diverging blue–white–red (Moreland 2009): signed quantities, deviations from a middle
+  Viridis,    // perceptually uniform dark blue → green → yellow: magnitudes, readable in grey print
+  Rainbow,    // hue from blue to red: familiar, but not uniform (bands appear at cyan and yellow)
+  Greyscale,  // dark grey → near-white: print, and for colour-blind readers
+};
+
+// Display names in enum order (the control's combo box lists these).
+QStringList colorMapNames();
+
+struct ColorSettings {
+  ColorMap map = ColorMap::CoolWarm;
+  bool automatic = true;  // range from the data; else [min, max]
+  double min = 0.0;       // [unit of the quantity] used when !automatic
+  double max = 1.0;
+  bool operator==(const ColorSettings&) const = default;
+};
+
+// Replaces the points of `colors` by `map` spread over [lo, hi] (hi > lo) and builds it.
+void fillColorMap(vtkColorTransferFunction* colors, ColorMap map, double lo, double hi);
+
+}  // namespace maris::ui
