@@ -38,7 +38,11 @@ bool MainWindow::loadScenario(const Scenario& scenario, const QString& path, con
     shown_run_ = 0;
   }
   example_id_ = example_id;
-  document_->reset(scene, scenario, path);
+  // Renamed fields of older files are rewritten before editing, so the editor shows them and Save writes them.
+  Scenario upgraded = scenario;
+  const std::vector<std::string> notes = upgradeParameters(*scene, upgraded.parameters);
+  document_->reset(scene, upgraded, path);
+  for (const std::string& note : notes) run_panel_->log(RunPanel::Level::Warning, QString::fromStdString(note));
   browser_->setCurrent(example_id, path);
   updateTitle();
   updateRunEnabled();

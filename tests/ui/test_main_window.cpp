@@ -196,6 +196,21 @@ class MainWindowTest : public QObject {
     QVERIFY(!QFileInfo::exists(file + ".tmp"));
   }
 
+  // A file written before a field was renamed opens with the new field filled in (SceneDefinition::upgrade),
+  // so the editor shows the value and Save writes the current spelling.
+  void olderFileIsUpgradedWhenOpened() {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("old_rod.json"));
+    Scenario s = test::rodLibrary()->examples.front().scenario;
+    s.parameters["geometry"]["span"] = 140.0;
+    s.parameters["geometry"].erase("length");
+    saveScenarioFile(s, file.toStdString());
+    QVERIFY(window_->openFile(file));
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 140.0);
+    QVERIFY(window_->document()->isValid());
+    QVERIFY(!window_->document()->scenario().parameters.at("geometry").contains("span"));
+  }
+
   void unsavedEditsAskBeforeBeingLost() {
     typeInto("geometry.length", QStringLiteral("130"));
     int asked = 0;

@@ -149,8 +149,20 @@ Results solveRod(const RodParameters& p, RunContext& ctx) {
 }  // namespace
 
 SceneDefinition makeRodScene() {
-  return makeScene<RodParameters>("rod", "Test rod", "A rod with a closed-form deflection, for UI tests.",
-                                  rodBinder(), checkRod, solveRod);
+  SceneDefinition scene = makeScene<RodParameters>("rod", "Test rod", "A rod with a closed-form deflection, for UI tests.",
+                                                   rodBinder(), checkRod, solveRod);
+  // An older spelling, so the UI tests exercise SceneDefinition::upgrade: geometry.span became geometry.length.
+  scene.upgrade = [](Json& parameters) {
+    std::vector<std::string> notes;
+    Json& geometry = parameters["geometry"];
+    if (geometry.is_object() && geometry.contains("span")) {
+      geometry["length"] = geometry["span"];
+      geometry.erase("span");
+      notes.push_back("geometry.span is now geometry.length");
+    }
+    return notes;
+  };
+  return scene;
 }
 
 std::shared_ptr<const ui::SceneLibrary> rodLibrary() {
