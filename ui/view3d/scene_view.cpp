@@ -43,6 +43,22 @@ bool nearModel(double z, const Bounds3D& model) {
   return z >= model.b[4] - reach && z <= model.b[5] + reach;
 }
 
+// The colour bar sits in a strip ~15 % of the view wide; a long quantity name ("modal amplitude
+// (displacement, or twist for torsion modes)") would run off the right edge, so it is broken at spaces.
+QString wrapTitle(const QString& title, int max_line = 22) {
+  QStringList lines;
+  QString line;
+  for (const QString& word : title.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+    if (!line.isEmpty() && line.size() + 1 + word.size() > max_line) {
+      lines << line;
+      line.clear();
+    }
+    line += (line.isEmpty() ? QString() : QStringLiteral(" ")) + word;
+  }
+  if (!line.isEmpty()) lines << line;
+  return lines.join(QLatin1Char('\n'));
+}
+
 }  // namespace
 
 SceneView::SceneView(QWidget* parent)
@@ -218,7 +234,7 @@ void SceneView::rebuildStatic() {
   color_control_->setEnabled(have_scalars_);
   renderer->RemoveViewProp(scalar_bar_);
   if (have_scalars_) {
-    scalar_bar_->SetTitle(axisLabel(view.scalar_name, view.scalar_unit).toStdString().c_str());
+    scalar_bar_->SetTitle(wrapTitle(axisLabel(view.scalar_name, view.scalar_unit)).toStdString().c_str());
     renderer->AddViewProp(scalar_bar_);
   }
   Bounds3D ground = bounds;
