@@ -11,7 +11,7 @@
 //                              [case5_end_time (default 36)] [cases: all | case5 | cable3d]
 //                              [cable_n_max (default n_max; the cable's torsion limit makes n = 100 costly)]
 // Integrators: RK4 at 0.9, 0.45, 0.225 x its stability estimate, DOPRI5 rtol 1e-3/1e-6/1e-8 (n <= 100), and
-// the scene's implicit generalized-alpha (riser_integration) at T/25, T/50, T/100 of the top-motion period.
+// the scene's implicit generalized-alpha (riser_integration) at T/25, T/50, T/100, T/200 of the top-motion period.
 // Plot: bench/tools/work_precision_plot (built with the GUI) renders the CSV to PNG with the GUI's plot
 // code, e.g. --x cpu_time --y error_same_n --series variant,method --where case=case5 --where n=100.
 // Besides the CSV it writes OUT.md (OUT without ".csv"): markdown tables of the right-hand-side cost
@@ -324,8 +324,8 @@ int main(int argc, char** argv) {
         if (!huge) settings = {{"rk4", 0.9 * limit}, {"rk4", 0.45 * limit}};
         if (!big) settings.insert(settings.end(), {{"rk4", 0.225 * limit}, {"dopri5", 1e-3}, {"dopri5", 1e-6}, {"dopri5", 1e-8}});
         if (c.name == std::string("case5") && n == 100) settings.push_back({"rk4", 0.002});  // the paper's step
-        // Implicit generalized-α of the scene at T/25, T/50, T/100 (T = top-motion period).
-        for (double k : {25.0, 50.0, 100.0})
+        // Implicit generalized-α of the scene at T/25, T/50, T/100, T/200 (T = top-motion period).
+        for (double k : {25.0, 50.0, 100.0, 200.0})
           if (!huge || k == 50.0) settings.push_back({"implicit", period / k});
         for (const auto& [method, value] : settings) {
           Run r;
