@@ -148,6 +148,7 @@ Run integrate(const RiserParameters& p, const std::string& method, double value)
   o.t0 = 0.0;
   o.t1 = p.end_time;
   o.output_interval = 0.2;
+  o.state_name = [&](Eigen::Index k) { return stateComponentName(m, k); };
   OdeStats st;
   if (method == "implicit") return integrateImplicit(m, p, s, value);
   const double t0 = cpuSeconds();
