@@ -43,6 +43,9 @@ class JointNewtonMatrix {
   // Overwrites rhs with (approximately) S_J⁻¹ rhs; matches SecondOrderSystem::solve_iteration_matrix.
   bool solve(const IterationMatrixRequest& request, Eigen::VectorXd& rhs);
 
+  // See ForceSpaceNewtonMatrix::useCoordinateSteps (statics by pseudo-time).
+  void useCoordinateSteps() { twin_newton_.useCoordinateSteps(); }
+
   long refreshes() const { return twin_newton_.refreshes(); }
   // Balance/residual evaluations of the twin (each O(n)): the cost of the refreshes.
   long balanceEvaluations() const { return twin_newton_.balanceEvaluations(); }

@@ -20,6 +20,9 @@ Eigen::Index chartIndex(int k) { return 3 + 6 * static_cast<Eigen::Index>(k); }
 // 1e-9 Δ is still far above the rounding of positions ~1e3 m (1e-13 m).
 constexpr double kLinearStep = 1e-6;
 constexpr double kCoordinateStep = 1e-9;
+// Statics (useCoordinateSteps): the balance is nonlinear in the coordinates only (shapes, loads), 1e-7 Δ leaves
+// a truncation of ~1e-7 relative, enough for a Newton iteration that converges at that rate.
+constexpr double kStaticCoordinateStep = 1e-7;
 
 }  // namespace
 
@@ -61,7 +64,10 @@ void ForceSpaceNewtonMatrix::refresh(const IterationMatrixRequest& request) {
     for (int c = 0; c < 6; ++c) {
       const double linear = kLinearStep * (1 + std::abs(acc_[chartIndex(k) + c]));
       const double scale = c < 3 ? length_scale : 1.0;
-      eps_[segmentIndex(k) + c] = dq > 0 ? std::max(linear, kCoordinateStep * scale / dq) : linear;
+      if (coordinate_steps_ && dq > 0)
+        eps_[segmentIndex(k) + c] = kStaticCoordinateStep * scale / dq;
+      else
+        eps_[segmentIndex(k) + c] = dq > 0 ? std::max(linear, kCoordinateStep * scale / dq) : linear;
     }
 
   // Grouped differences: columns 2·band + 1 apart touch disjoint rows.

@@ -33,6 +33,10 @@ class ForceSpaceNewtonMatrix {
   // β', γ' changed. Returns false if K is singular. Matches SecondOrderSystem::solve_iteration_matrix.
   bool solve(const IterationMatrixRequest& request, Eigen::VectorXd& rhs);
 
+  // For large β' (statics by pseudo-time, riser_statics): difference steps of the segment columns chosen for
+  // the coordinate change β'ε alone (1e-7 m or rad), not at least 1e-6 in acceleration.
+  void useCoordinateSteps() { coordinate_steps_ = true; }
+
   Eigen::Index bandwidth() const { return band_; }
   long refreshes() const { return refreshes_; }
   long balanceEvaluations() const { return evaluations_; }
@@ -47,6 +51,7 @@ class ForceSpaceNewtonMatrix {
   Eigen::Index size_ = 0, band_ = 0;
   BandedLu lu_;
   bool have_ = false;
+  bool coordinate_steps_ = false;
   double dq_ = -1.0, dv_ = -1.0;
   long refreshes_ = 0, evaluations_ = 0;
   std::vector<Mat3> turn_;  // R_i J_r(θ_i) at the last refresh (the ∂x/∂θ̈ block)

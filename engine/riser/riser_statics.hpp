@@ -16,9 +16,12 @@ struct StaticSolution {
   int iterations = 0;              // Newton iterations over all load steps
   int load_steps = 0;              // accepted load levels (1 when full load converged at once)
   double residual = 0.0;           // [-] final scaled residual (max norm)
+  bool banded = false;             // true: the O(n) Newton found it (no dense fallback)
 };
 
-// Newton's method on the generalised forces of joint coordinates: unknowns are a rotation
+// First an O(n) Newton at full load (pseudo-time steps with the joint Newton matrix of riser_joint_newton, see
+// riser_statics.cpp); only if that fails, the dense method below.
+// Dense: Newton's method on the generalised forces of joint coordinates: unknowns are a rotation
 // increment per dynamic segment (2 without torsion), the free top coordinates (tensioner: z) and,
 // for a pinned/clamped bottom, the end reaction as Lagrange multiplier. Residuals: for each segment
 // i the moment about A_i of everything from segment i down, n_i + d_i × Σ_{k>i} f_k = 0; the net
