@@ -167,7 +167,7 @@ void SceneView::applyPaletteColors() {
   for (vtkTextProperty* p : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty(),
                              caption_->GetTextProperty()})
     p->SetColor(text.redF(), text.greenF(), text.blueF());
-  gl_->update();
+  gl_->requestRender();
 }
 
 SceneView::~SceneView() {
@@ -285,7 +285,7 @@ void SceneView::drawFrame() {
   }
   renderer->ResetCameraClippingRange();
   updateTimeLabel();
-  gl_->update();
+  gl_->requestRender();
 }
 
 void SceneView::updateTimeLabel() {
@@ -342,7 +342,7 @@ void SceneView::resetCamera() {
   camera->Zoom(have_scalars_ ? 0.85 : 0.92);
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
-  gl_->update();
+  gl_->requestRender();
 }
 
 QImage SceneView::renderImage(int width_px, int height_px) { return gl_->renderImage(width_px, height_px); }

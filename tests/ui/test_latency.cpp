@@ -1,0 +1,194 @@
+// GUI-thread latency during a live run in the real main window (xvfb-run, Mesa's software OpenGL):
+// the default riser scenario runs while a 5 ms heartbeat timer records the longest gap between its
+// ticks, which is the longest time the GUI thread could not answer the user. A timing
+// QApplication::notify names the events that took longest (what blocks), and the live path reports
+// its plot, 3D-rebuild and 3D-paint times. The precise numbers go to docs/gui.md; the assertion is
+// a generous bound (see kGapBoundMs) that still fails if a whole-window OpenGL recomposition or an
+// unthrottled 3D paint comes back on every live update.
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QThread>
+#include <QtTest>
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include "main_window.hpp"
+#include "plots/plot_panel.hpp"
+#include "run/live_results.hpp"
+#include "run/run_controller.hpp"
+#include "scene_library.hpp"
+#include "ui_test_support.hpp"
+#include "view3d/scene_view.hpp"
+#include "view3d/vtk_gl_widget.hpp"
+
+using namespace maris;
+using namespace maris::ui;
+
+namespace {
+
+// An application that times every top-level event delivery and keeps the slowest per kind.
+class TimingApplication : public QApplication {
+ public:
+  using QApplication::QApplication;
+  bool notify(QObject* receiver, QEvent* event) override {
+    if (depth_ > 0 || !recording_ || QThread::currentThread() != thread()) return QApplication::notify(receiver, event);
+    ++depth_;
+    // The receiver may delete itself (DeferredDelete): name it first.
+    const std::string key = std::string(receiver->metaObject()->className()) + " event " +
+                            std::to_string(static_cast<int>(event->type()));
+    QElapsedTimer clock;
+    clock.start();
+    const bool result = QApplication::notify(receiver, event);
+    const double ms = clock.nsecsElapsed() * 1e-6;
+    --depth_;
+    busy_ms_ += ms;
+    if (ms > 1.0) timeline_.push_back({since_start_.nsecsElapsed() * 1e-6 - ms, ms, key});
+    {
+      Kind& kind = slowest_[key];
+      kind.slowest = std::max(kind.slowest, ms);
+      kind.total += ms;
+      ++kind.count;
+    }
+    return result;
+  }
+  void record(bool on) {
+    recording_ = on;
+    if (on) {
+      slowest_.clear();
+      busy_ms_ = 0.0;
+      timeline_.clear();
+      since_start_.start();
+    }
+  }
+  void report() const {
+    qInfo("  GUI thread busy in event deliveries: %.0f ms", busy_ms_);
+    for (const auto& [key, kind] : slowest_)
+      if (kind.total > 20.0 || kind.slowest > 10.0)
+        qInfo("  %s: %d deliveries, %.1f ms in all, slowest %.1f ms", key.c_str(), kind.count, kind.total,
+              kind.slowest);
+  }
+
+ private:
+  int depth_ = 0;
+  bool recording_ = false;
+  double busy_ms_ = 0.0;
+  QElapsedTimer since_start_;
+  struct Delivery {
+    double start_ms, ms;
+    std::string key;
+  };
+  std::vector<Delivery> timeline_;
+
+ public:
+  double now() const { return since_start_.nsecsElapsed() * 1e-6; }
+  // Deliveries of more than 1 ms that overlap [from, to] (ms since recording began).
+  void reportBetween(double from, double to) const {
+    for (const auto& d : timeline_)
+      if (d.start_ms + d.ms >= from && d.start_ms <= to)
+        qInfo("    at %.1f ms: %s %.1f ms", d.start_ms, d.key.c_str(), d.ms);
+  }
+  struct Kind {
+    int count = 0;
+    double total = 0.0, slowest = 0.0;
+  };
+  std::map<std::string, Kind> slowest_;
+};
+
+// The bound on the longest GUI-thread gap. The issue asks for ~50 ms; on this machine a quiet run
+// measures 20–40 ms (docs/gui.md). CI runs the Release and ASan builds and their tests on 2 shared
+// cores, where the solver thread competes with the GUI thread for a core and any slice can be
+// stretched 2–3x; 150 ms keeps that margin while failing clearly on the old behaviour (every live
+// update repainting the window through software OpenGL, 150–260 ms quiet, more loaded).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr double kGapBoundMs = 600.0;  // ASan makes Qt, VTK and the plots ~3x slower
+#else
+constexpr double kGapBoundMs = 150.0;
+#endif
+
+struct Probe {
+  double longest_gap_ms = 0.0;
+  int ticks = 0;
+  std::vector<double> paints_ms;
+  double wall_s = 0.0;
+  double gap_end_ms = 0.0;
+};
+
+}  // namespace
+
+class LatencyTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { test::isolateSettings(); }
+
+  void theGuiThreadAnswersDuringALiveRiserRun() {
+    auto library = SceneLibrary::fromEngine();
+    if (!library->findExample("riser_default")) QSKIP("this build has no riser scene");
+    auto* app = static_cast<TimingApplication*>(QCoreApplication::instance());
+    MainWindow window(library);
+    window.resize(1600, 1000);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openExample(QStringLiteral("riser_default")));
+#if defined(__SANITIZE_ADDRESS__)
+    // Under ASan the full 24 s would take minutes; the code paths are the same.
+    window.document()->edit("solver.end_time", 4.0);
+#endif
+    // A first run compiles Mesa's shaders (~1 s in one paint): not what a live update costs.
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.startRun());
+    QVERIFY(finished.wait(300000));
+
+    Probe probe;
+    QTimer heartbeat;
+    QElapsedTimer since_beat, wall;
+    VtkGlWidget* gl = window.sceneView()->glWidget();
+    int paints = gl->paintCount();
+    heartbeat.setInterval(5);
+    heartbeat.setTimerType(Qt::PreciseTimer);
+    QObject::connect(&heartbeat, &QTimer::timeout, [&] {
+      if (since_beat.isValid() && since_beat.nsecsElapsed() * 1e-6 > probe.longest_gap_ms) {
+        probe.longest_gap_ms = since_beat.nsecsElapsed() * 1e-6;
+        probe.gap_end_ms = app->now();
+      }
+      since_beat.start();
+      ++probe.ticks;
+      if (gl->paintCount() != paints) {
+        paints = gl->paintCount();
+        probe.paints_ms.push_back(gl->lastPaintMilliseconds());
+      }
+    });
+    app->record(true);
+    wall.start();
+    QVERIFY(window.startRun());
+    heartbeat.start();
+    QVERIFY(finished.wait(300000));
+    heartbeat.stop();
+    app->record(false);
+    probe.wall_s = wall.elapsed() / 1000.0;
+    std::sort(probe.paints_ms.begin(), probe.paints_ms.end());
+    qInfo("live riser_default run: %.2f s, %d heartbeats, longest GUI-thread gap %.1f ms; %zu 3D paints "
+          "(median %.1f ms, slowest %.1f ms)",
+          probe.wall_s, probe.ticks, probe.longest_gap_ms, probe.paints_ms.size(),
+          probe.paints_ms.empty() ? 0.0 : probe.paints_ms[probe.paints_ms.size() / 2],
+          probe.paints_ms.empty() ? 0.0 : probe.paints_ms.back());
+    app->report();
+    qInfo("  the longest gap:");
+    app->reportBetween(probe.gap_end_ms - probe.longest_gap_ms, probe.gap_end_ms);
+    QVERIFY(probe.ticks > 0);
+    QVERIFY2(probe.longest_gap_ms < kGapBoundMs,
+             qPrintable(QStringLiteral("longest GUI-thread gap %1 ms").arg(probe.longest_gap_ms)));
+  }
+};
+
+int main(int argc, char** argv) {
+  TimingApplication app(argc, argv);
+  LatencyTest test;
+  QTEST_SET_MAIN_SOURCE_PATH
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_latency.moc"
