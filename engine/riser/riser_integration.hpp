@@ -13,8 +13,9 @@
 // singularity), with velocities θ̇_i. The residual is r = q̈ − a(t, q, q̇), a = the accelerations of the
 // O(n) Newton–Euler/reaction solve mapped to θ̈ through the right Jacobian of SO(3). Work integrals ride
 // along as coordinates whose velocity is the work (q̈ = power). The iteration matrix of this residual is
-// dense (a depends on every segment through the reactions), so the implicit path forms it by n forward
-// differences and factorises it densely, kept across steps by the core integrator: O(N³) per refresh.
+// dense (a depends on every segment through the reactions), so it is never formed: absolute coordinates
+// solve with it through the banded unreduced equations (riser_newton), joint coordinates through an
+// absolute twin of the model (riser_joint_newton); both O(n) per refresh and per solve.
 #pragma once
 
 #include <string>

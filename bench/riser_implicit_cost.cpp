@@ -1,0 +1,146 @@
+// Cost of the riser's implicit integrator and statics against n (issue 3: O(n) per right-hand side in both
+// formulations), on the paper's case 5 (riser_paper_case5_j3: n = 100, torsion, 36 s, 72 frames).
+//   bench_riser_implicit_cost implicit VARIANT STEP [end_time] [reference.csv]
+//       VARIANT J3/J2/A3/A2; the scene's implicit path (riser_integration) at step STEP; prints CPU seconds of
+//       the integration, steps, residual evaluations and the probe error at L/2: max over the ≈ 2000 history
+//       samples of |r − r_ref| / max |r_ref(t) − r_ref(0)|, reference = J3 RK4 at the paper's h = 2 ms
+//       (computed once and cached in reference.csv, default /tmp/riser_case5_reference.csv).
+//   bench_riser_implicit_cost statics N [VARIANT]
+//       CPU seconds of solveStatics for case 5 (L = 500 m) with n = N elements.
+// Times are thread CPU seconds; on a shared machine they are upper bounds. Not a pass/fail test.
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/resources.hpp"
+#include "core/scenario.hpp"
+#include "riser/riser_dynamics.hpp"
+#include "riser/riser_integration.hpp"
+#include "riser/riser_results.hpp"
+#include "riser/riser_statics.hpp"
+
+using namespace maris;
+using namespace maris::riser;
+
+namespace {
+
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+RiserParameters case5(const std::string& variant) {
+  const auto text = builtinResource("scenarios/riser/riser_paper_case5_j3.json");
+  RiserParameters p = riserBinder().read(scenarioFromText(std::string(*text)).parameters);
+  p.formulation = variant[0] == 'A' ? "absolute" : "joint";
+  p.torsion = variant[1] == '3';
+  p.probes = {{0.5 * p.length}};
+  return p;
+}
+
+struct History {
+  std::vector<double> t;
+  std::vector<Vec3> probe;
+};
+
+struct Outcome {
+  History history;
+  SolverStats stats;
+  double cpu = 0.0;
+};
+
+Outcome run(const RiserParameters& p) {
+  const RiserModel m = buildRiserModel(p);
+  RunContext ctx;
+  const StaticSolution s = solveStatics(m, ctx);
+  Eigen::VectorXd y = restState(m, s.orientation, s.top);
+  const IntegrationPlan plan = planIntegration(m, p);
+  RiserRecorder recorder(m, p);
+  recorder.sample(0.0, y, true, std::string("profile_static"));
+  Outcome out;
+  const double t0 = cpuSeconds();
+  out.stats = integrateRiser(m, p, plan, y, recorder, ctx);
+  out.cpu = cpuSeconds() - t0;
+  const Results r = recorder.finish(out.stats, 0, 0.0);
+  const Table* h = r.findTable("history");
+  const auto& time = h->find("time")->values;
+  const Column* d[3] = {h->find("probe_dx"), h->find("probe_dy"), h->find("probe_dz")};
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    out.history.t.push_back(time[k]);
+    out.history.probe.emplace_back(d[0]->values[k], d[1]->values[k], d[2]->values[k]);
+  }
+  return out;
+}
+
+History reference(const std::string& path, double end_time) {
+  History h;
+  std::ifstream in(path);
+  double t, x, y, z;
+  char c;
+  while (in >> t >> c >> x >> c >> y >> c >> z) h.t.push_back(t), h.probe.emplace_back(x, y, z);
+  if (!h.t.empty() && std::abs(h.t.back() - end_time) < 1e-9) return h;
+  RiserParameters p = case5("J3");
+  p.integrator = "rk4";
+  p.time_step = 0.002;
+  p.end_time = end_time;
+  std::fprintf(stderr, "computing the RK4 reference (h = 2 ms) into %s\n", path.c_str());
+  h = run(p).history;
+  std::ofstream out(path);
+  out.precision(17);
+  for (std::size_t k = 0; k < h.t.size(); ++k)
+    out << h.t[k] << ',' << h.probe[k].x() << ',' << h.probe[k].y() << ',' << h.probe[k].z() << '\n';
+  return h;
+}
+
+// Largest deviation at the reference's samples (the run's history linearly interpolated), relative to the
+// largest reference displacement.
+double probeError(const History& a, const History& ref) {
+  double err = 0, scale = 0;
+  std::size_t j = 0;
+  for (std::size_t k = 0; k < ref.t.size(); ++k) {
+    const double t = ref.t[k];
+    while (j + 2 < a.t.size() && a.t[j + 1] < t) ++j;
+    const double w = std::clamp((t - a.t[j]) / (a.t[j + 1] - a.t[j]), 0.0, 1.0);
+    const Vec3 v = (1 - w) * a.probe[j] + w * a.probe[j + 1];
+    err = std::max(err, (v - ref.probe[k]).norm());
+    scale = std::max(scale, (ref.probe[k] - ref.probe[0]).norm());
+  }
+  return err / std::max(scale, 1e-300);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "implicit";
+  if (mode == "statics") {
+    const int n = argc > 2 ? std::atoi(argv[2]) : 100;
+    RiserParameters p = case5(argc > 3 ? argv[3] : "J3");
+    p.segment_count = n;
+    const RiserModel m = buildRiserModel(p);
+    RunContext ctx;
+    const double t0 = cpuSeconds();
+    const StaticSolution s = solveStatics(m, ctx);
+    std::printf("statics n=%d cpu=%.3f s iterations=%d load_steps=%d residual=%.2e\n", n, cpuSeconds() - t0,
+                s.iterations, s.load_steps, s.residual);
+    return 0;
+  }
+  const std::string variant = argc > 2 ? argv[2] : "J3";
+  const double step = argc > 3 ? std::atof(argv[3]) : 0.05;
+  RiserParameters p = case5(variant);
+  if (argc > 4) p.end_time = std::atof(argv[4]);
+  const History ref = reference(argc > 5 ? argv[5] : "/tmp/riser_case5_reference.csv", p.end_time);
+  p.integrator = "implicit";
+  p.time_step = step;
+  const Outcome o = run(p);
+  std::printf("%s h=%g cpu=%.3f s steps=%ld rejected=%ld residuals=%ld error=%.3e\n", variant.c_str(), step, o.cpu,
+              o.stats.steps, o.stats.rejected_steps, o.stats.rhs_evaluations, probeError(o.history, ref));
+  return 0;
+}

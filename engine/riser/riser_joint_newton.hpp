@@ -1,0 +1,60 @@
+// O(n) Newton matrix of the implicit integrator in joint coordinates (issue 3: no dense N×N work at run time).
+//
+// The joint chart residual r_J = q̈_J − a_J(q_J, v_J) has a dense iteration matrix S_J: a segment's position
+// depends on every rotation above it, so the loads (buoyancy, current, drag) of segment i depend on all
+// θ_j, j ≤ i. The force-space matrix of riser_newton is banded only because absolute coordinates keep the
+// positions as unknowns and tie them by local joint rows. So S_J y = b is solved through an absolute twin
+// of the model (the same RiserModel with formulation = Absolute, its own chart reset at the joint state):
+//   - the joint state P(q_J, v_J) is a consistent absolute state (Φ = Φ̇ = 0), where both formulations have
+//     the same accelerations: a_J = Π a_A(P(q_J, v_J)), Π = the joint-chart part (top, θ̈ through J_r⁻¹);
+//   - a joint motion u = T y (T: joint-chart accelerations to absolute-chart ones, O(n) recursion
+//     r̈_{i+1} = r̈_i + α_i × d_i) keeps the twin consistent to first order, and the twin's banded system
+//     K [u; μ] = ∂F/∂x · T b (riser_newton) enforces the joint rows Φ_q u ≈ 0 itself;
+//   - with δx = u − T b the linearised twin equations are exactly those of the joint residual, so
+//     y = Π u solves S_J y = b, up to the terms below.
+// Neglected (they only make Newton inexact, generalized-α converges with an approximate matrix): the
+// change of the joint-point velocities with the rotations at fixed joint rates (∂(T v_J)/∂q_J, relative
+// size ≈ ω h / 2) and the curvature terms that leave u off the joint manifold by O(β'(|α| + ω²)).
+// Cost per refresh: the twin's 2·(2b + 1) + 2 balance evaluations (b = 9s + 5, independent of n) and an
+// O(n) banded LU; per solve O(n).
+#pragma once
+
+#include <vector>
+
+#include "riser/riser_newton.hpp"
+
+namespace maris::riser {
+
+class JointNewtonMatrix {
+ public:
+  // `joint` must use joint coordinates (throws std::invalid_argument otherwise); keeps references to
+  // `joint` and `chart` (the joint chart the integrator iterates in).
+  JointNewtonMatrix(const RiserModel& joint, const RotationVectorChart& chart, double stabilisation_rate);
+  JointNewtonMatrix(const JointNewtonMatrix&) = delete;
+  JointNewtonMatrix& operator=(const JointNewtonMatrix&) = delete;
+
+  // Overwrites rhs with (approximately) S_J⁻¹ rhs; matches SecondOrderSystem::solve_iteration_matrix.
+  bool solve(const IterationMatrixRequest& request, Eigen::VectorXd& rhs);
+
+  long refreshes() const { return twin_newton_.refreshes(); }
+  // Balance evaluations of the twin (each O(n)): the cost of the refreshes.
+  long balanceEvaluations() const { return twin_newton_.balanceEvaluations(); }
+
+ private:
+  void refresh(const IterationMatrixRequest& request);
+
+  const RiserModel& m_;
+  const RotationVectorChart& chart_;
+  RiserModel twin_;                    // absolute twin (declared before the members that refer to it)
+  RotationVectorChart twin_chart_;
+  ForceSpaceNewtonMatrix twin_newton_;
+  RiserWorkspace pose_ws_;
+  int f_ = 0, segments_ = 0;
+  bool have_ = false;
+  double dq_ = -1.0, dv_ = -1.0;
+  std::vector<Mat3> jr_, jr_inverse_, rot_;  // J_r(θ_J,k), its inverse and R_k at the last refresh
+  std::vector<Vec3> arm_;              // d_k at the last refresh
+  Eigen::VectorXd y_joint_, y_twin_, q_twin_, v_twin_, acc_twin_, rhs_twin_;
+};
+
+}  // namespace maris::riser
