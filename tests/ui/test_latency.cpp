@@ -17,6 +17,7 @@
 #include <map>
 #include <string>
 
+#include "document/scenario_document.hpp"
 #include "main_window.hpp"
 #include "plots/plot_panel.hpp"
 #include "run/live_results.hpp"
