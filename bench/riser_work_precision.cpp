@@ -5,6 +5,7 @@
 //   error_same_n:   max over outputs (every 0.2 s) of |r_mid - r_mid,ref| / max |r_mid,ref(t) - r_mid,ref(0)|,
 //                   r_mid = the point at s = L/2, reference = DOPRI5 rtol 1e-10 at the same n and variant;
 //   error_finest_n: the same against the finest-n J3 reference (discretisation + time error).
+//   note:           why a run failed (the solver's message: time, step, quantity); its errors are then inf.
 // Also the CPU time of one right-hand side evaluation against n (must grow linearly).
 // Times are thread CPU times (the machine may be shared), integration only (statics excluded).
 //   bench_riser_work_precision [out.csv] [n_max (default 400; 1000 adds an implicit J3 run at n = 1000)]
@@ -147,6 +148,7 @@ Run integrate(const RiserParameters& p, const std::string& method, double value)
   o.t0 = 0.0;
   o.t1 = p.end_time;
   o.output_interval = 0.2;
+  o.state_name = [&](Eigen::Index k) { return stateComponentName(m, k); };
   OdeStats st;
   if (method == "implicit") return integrateImplicit(m, p, s, value);
   const double t0 = cpuSeconds();
@@ -199,7 +201,16 @@ struct Row {
   int n = 0;
   double setting = 0, cpu = 0, error_same_n = 0, error_finest_n = 0;
   long steps = 0;
+  std::string note;  // why the run failed ("" if it did not)
 };
+
+// A failure message as one CSV cell: commas and line breaks become semicolons and spaces.
+std::string csvCell(std::string text) {
+  for (char& c : text)
+    if (c == ',') c = ';';
+    else if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
 
 std::string loadAverage() {
   std::ifstream in("/proc/loadavg");
@@ -232,10 +243,15 @@ std::string summary(const std::vector<Row>& rows, const std::string& load_start,
   md << "\n**Case 5, n = 100, " << case5_end << " s simulated:**\n\n"
      << "| variant | method | step [s] or rtol | steps | CPU [s] | error (same n) | error (finest n) |\n"
      << "|---|---|---|---|---|---|---|\n";
-  for (const Row& r : rows)
-    if (r.case_name == "case5" && r.n == 100)
-      md << "| " << r.variant << " | " << r.method << " | " << fmt("%.3g", r.setting) << " | " << r.steps << " | "
-         << fmt("%.3f", r.cpu) << " | " << fmt("%.2e", r.error_same_n) << " | " << fmt("%.2e", r.error_finest_n) << " |\n";
+  for (const Row& r : rows) {
+    if (r.case_name != "case5" || r.n != 100) continue;
+    md << "| " << r.variant << " | " << r.method << " | " << fmt("%.3g", r.setting) << " | ";
+    if (!r.note.empty())
+      md << "failed: " << r.note << " | | | |\n";
+    else
+      md << r.steps << " | " << fmt("%.3f", r.cpu) << " | " << fmt("%.2e", r.error_same_n) << " | "
+         << fmt("%.2e", r.error_finest_n) << " |\n";
+  }
   md << "\n**Against n** (first stable RK4 row: 0.9 × the stability estimate, else 0.45 ×; error against the finest n):\n\n"
      << "| case | variant | n | step [s] | steps | CPU [s] | CPU/(steps·n) [µs] | error (finest n) |\n"
      << "|---|---|---|---|---|---|---|---|\n";
@@ -257,8 +273,8 @@ int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "riser_work_precision.csv";
   const int n_max = argc > 2 ? std::atoi(argv[2]) : 400;
   const double case5_end = argc > 3 ? std::atof(argv[3]) : 36.0;
-  std::string csv = "case,variant,n,method,setting,steps,rhs_evaluations,cpu_time,error_same_n,error_finest_n\n"
-                    "-,-,-,-,s or -,-,-,s,-,-\n";
+  std::string csv = "case,variant,n,method,setting,steps,rhs_evaluations,cpu_time,error_same_n,error_finest_n,note\n"
+                    "-,-,-,-,s or -,-,-,s,-,-,-\n";
   char line[320];
   std::vector<Row> rows;
   const std::string load_start = loadAverage();
@@ -272,9 +288,9 @@ int main(int argc, char** argv) {
       p.formulation = v.formulation;
       p.torsion = v.torsion;
       const double c = rhsCost(p);
-      std::snprintf(line, sizeof line, "rhs_cost,%s,%d,rhs,0,0,1,%.6e,0,0\n", v.name, n, c);
+      std::snprintf(line, sizeof line, "rhs_cost,%s,%d,rhs,0,0,1,%.6e,0,0,\n", v.name, n, c);
       csv += line;
-      rows.push_back({"rhs_cost", v.name, "rhs", n, 0.0, c, 0.0, 0.0, 1});
+      rows.push_back({"rhs_cost", v.name, "rhs", n, 0.0, c, 0.0, 0.0, 1, ""});
       std::printf("%s %5d %9.2f %7.4f\n", v.name, n, 1e6 * c, 1e6 * c / n);
     }
 
@@ -331,18 +347,19 @@ int main(int argc, char** argv) {
           Run r;
           try {
             r = integrate(p, method, value);
-          } catch (const SolverError& e) {  // RK4 above its stability limit: recorded, not plotted
-            std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,0,0,0,inf,inf\n", c.name, v.name, n, method.c_str(), value);
-            csv += line;
+          } catch (const SolverError& e) {  // e.g. RK4 above its stability limit: recorded with the reason, not plotted
+            std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,0,0,0,inf,inf,", c.name, v.name, n, method.c_str(), value);
+            const std::string reason = csvCell(e.what());
+            csv += line + reason + "\n";
             const double inf = std::numeric_limits<double>::infinity();
-            rows.push_back({c.name, v.name, method, n, value, 0.0, inf, inf, 0});
-            std::printf("%s # %s\n", line, e.what());
+            rows.push_back({c.name, v.name, method, n, value, 0.0, inf, inf, 0, reason});
+            std::printf("%s%s\n", line, reason.c_str());
             continue;
           }
-          std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,%ld,%ld,%.4e,%.3e,%.3e\n", c.name, v.name, n,
+          std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,%ld,%ld,%.4e,%.3e,%.3e,\n", c.name, v.name, n,
                         method.c_str(), value, r.steps, r.rhs, r.cpu, relativeError(r, ref), relativeError(r, finest));
           csv += line;
-          rows.push_back({c.name, v.name, method, n, value, r.cpu, relativeError(r, ref), relativeError(r, finest), r.steps});
+          rows.push_back({c.name, v.name, method, n, value, r.cpu, relativeError(r, ref), relativeError(r, finest), r.steps, ""});
           writeFileAtomic(out, csv);  // after every row: a long run can be cut short and still plotted
           std::fputs(line, stdout);
           std::fflush(stdout);

@@ -39,17 +39,8 @@ command -v taskset > /dev/null && runner=(taskset -c 0)
 echo "bench: $(( $(date +%s) - start )) s wall"
 
 if [ "$with_plot" = 1 ]; then
-  plot=("$build/bench/work_precision_plot")
   export QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen}
-  "${plot[@]}" "$csv" "$out/images/riser_work_precision_case5.png" --x cpu_time --y error_same_n \
-    --series variant,method --where case=case5 --where n="$([ "$n_max" -ge 100 ] && echo 100 || echo "$n_max")" \
-    --title "Riser case 5: CPU time against error (same-n reference)"
-  "${plot[@]}" "$csv" "$out/images/riser_work_precision_cable3d.png" --x cpu_time --y error_same_n \
-    --series variant,method --where case=cable3d --where n="$cable_n_max" \
-    --title "3D cable, n = $cable_n_max: CPU time against error"
-  "${plot[@]}" "$csv" "$out/images/riser_work_precision_case5_n.png" --x cpu_time --y error_finest_n \
-    --series method,n --where case=case5 --where variant=J3 \
-    --title "Riser case 5, J3: CPU time against error to the finest n"
+  scripts/riser_work_precision_plots.sh "$build" "$csv" "$out/images" "$n_max" "$cable_n_max"
 else
   echo "no GUI in $build: PNGs skipped (configure with -DMARIS_BUILD_GUI=ON for bench/tools/work_precision_plot)"
 fi

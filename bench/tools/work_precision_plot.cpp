@@ -1,16 +1,15 @@
 // work_precision_plot: turns a benchmark CSV (Maris layout: names row, units row, data rows; text
-// columns allowed) into a log–log PNG with the plot code the GUI and maris-cli use (ui/plots), one
-// curve per series. Only built with the GUI libraries (Qt 6); the benchmarks themselves need no Qt.
+// columns allowed) into a log–log work–precision PNG. Only built with the GUI libraries (Qt 6,
+// QCustomPlot); the benchmarks themselves need no Qt.
 //   work_precision_plot IN.csv OUT.png --x cpu_time --y error_same_n --series variant,method
-//                       [--where case=case5 --where n=100 ...] [--title "..."]
-// Rows whose x or y is not a finite positive number (unstable runs: "inf") are skipped; each series'
-// points are sorted by x and joined.
-#include <algorithm>
-#include <cmath>
+//       [--where case=case5 --where n=100 ...] [--title "..."] [--xlabel "CPU time [s]"] [--ylabel "error [-]"]
+//       [--detail setting] [--note note]
+// One series per distinct value of the --series columns (work_precision_series.hpp: points sorted by x),
+// each with its own colour and marker shape; the legend sits right of the axes. Rows whose x or y is not a
+// finite positive number (a failed run's "inf") are left out and listed in a note under the plot, with
+// the --detail columns and the reason from the --note column (default "note", if the CSV has it).
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
-#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,22 +17,50 @@
 #include <QApplication>
 
 #include "plots/result_plot.hpp"
+#include "work_precision_series.hpp"
 #include <qcustomplot.h>
 
 namespace {
 
-std::vector<std::string> splitCsv(const std::string& line) {
+int usage() {
+  std::fprintf(stderr, "usage: work_precision_plot IN.csv OUT.png --x COL --y COL --series COL[,COL...] "
+                       "[--where COL=VALUE ...] [--title TEXT] [--xlabel TEXT] [--ylabel TEXT] [--detail COL,...] "
+                       "[--note COL]\n");
+  return 2;
+}
+
+std::vector<std::string> splitList(const std::string& text) {
   std::vector<std::string> out;
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) out.push_back(cell);
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) out.push_back(item);
   return out;
 }
 
-int usage() {
-  std::fprintf(stderr, "usage: work_precision_plot IN.csv OUT.png --x COL --y COL --series COL[,COL...] "
-                       "[--where COL=VALUE ...] [--title TEXT]\n");
-  return 2;
+// Twelve colours that stay apart on white (Tableau 10 plus black and a dark gold) and twelve marker shapes:
+// series k gets colour and shape k mod 12, so up to twelve series differ in both.
+QColor seriesColor(int k) {
+  static const char* colors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
+                                 "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#b8860b"};
+  return QColor(colors[k % 12]);
+}
+
+QCPScatterStyle::ScatterShape seriesShape(int k) {
+  using S = QCPScatterStyle;
+  static const S::ScatterShape shapes[] = {S::ssCircle,      S::ssSquare,     S::ssTriangle,   S::ssDiamond,
+                                           S::ssCross,       S::ssTriangleInverted, S::ssPlus, S::ssStar,
+                                           S::ssCrossCircle, S::ssPlusSquare, S::ssCrossSquare, S::ssPlusCircle};
+  return shapes[k % 12];
+}
+
+void setLogAxis(QCPAxis* axis, const QString& label, double low, double high) {
+  axis->setScaleType(QCPAxis::stLogarithmic);
+  axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+  axis->setNumberFormat("eb");
+  axis->setNumberPrecision(0);
+  axis->setLabel(label);
+  // Half a decade of room on each side so that markers at the ends are not cut.
+  axis->setRange(low / std::sqrt(10.0), high * std::sqrt(10.0));
 }
 
 }  // namespace
@@ -41,83 +68,92 @@ int usage() {
 int main(int argc, char** argv) {
   if (argc < 3) return usage();
   const std::string input = argv[1], output = argv[2];
-  std::string x_name, y_name, title = "Work-precision";
-  std::vector<std::string> series_columns;
-  std::vector<std::pair<std::string, std::string>> filters;
+  std::string title = "Work-precision", x_label, y_label;
+  maris::bench::SeriesSelection selection;
+  selection.note_column = "note";
   for (int a = 3; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
-    if (key == "--x") x_name = value;
-    else if (key == "--y") y_name = value;
+    if (key == "--x") selection.x = value;
+    else if (key == "--y") selection.y = value;
     else if (key == "--title") title = value;
-    else if (key == "--series") series_columns = splitCsv(value);
+    else if (key == "--xlabel") x_label = value;
+    else if (key == "--ylabel") y_label = value;
+    else if (key == "--series") selection.series_columns = splitList(value);
+    else if (key == "--detail") selection.detail_columns = splitList(value);
+    else if (key == "--note") selection.note_column = value;
     else if (key == "--where" && value.find('=') != std::string::npos)
-      filters.push_back({value.substr(0, value.find('=')), value.substr(value.find('=') + 1)});
+      selection.where.push_back({value.substr(0, value.find('=')), value.substr(value.find('=') + 1)});
     else return usage();
   }
-  if (x_name.empty() || y_name.empty() || series_columns.empty()) return usage();
-  std::ifstream in(input);
-  std::string line;
-  std::vector<std::string> names, units;
-  if (!std::getline(in, line) || (names = splitCsv(line)).empty() || !std::getline(in, line)) {
-    std::fprintf(stderr, "work_precision_plot: %s is not a Maris CSV (names row, units row)\n", input.c_str());
+  if (selection.x.empty() || selection.y.empty() || selection.series_columns.empty()) return usage();
+
+  maris::bench::WorkPrecisionSet set;
+  try {
+    std::ifstream in(input);
+    if (!in) throw std::runtime_error("cannot be read");
+    std::stringstream text;
+    text << in.rdbuf();
+    set = maris::bench::groupWorkPrecision(maris::bench::parseTextCsv(text.str()), selection);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "work_precision_plot: %s: %s\n", input.c_str(), e.what());
     return 2;
   }
-  units = splitCsv(line);
-  auto index = [&](const std::string& name) {
-    for (std::size_t c = 0; c < names.size(); ++c)
-      if (names[c] == name) return static_cast<int>(c);
-    std::fprintf(stderr, "work_precision_plot: no column '%s' in %s\n", name.c_str(), input.c_str());
-    std::exit(2);
-  };
-  const int xc = index(x_name), yc = index(y_name);
-  std::map<std::string, std::vector<std::pair<double, double>>> series;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> row = splitCsv(line);
-    if (row.size() != names.size()) continue;
-    bool keep = true;
-    for (const auto& [column, value] : filters) keep = keep && row[index(column)] == value;
-    const double x = std::atof(row[xc].c_str()), y = std::atof(row[yc].c_str());
-    if (!keep || !(std::isfinite(x) && std::isfinite(y) && x > 0 && y > 0)) continue;
-    std::string label;
-    for (const auto& column : series_columns) label += (label.empty() ? "" : " ") + row[index(column)];
-    series[label].push_back({x, y});
-  }
-  if (series.empty()) {
-    std::fprintf(stderr, "work_precision_plot: no rows left after the filters\n");
+  if (set.series.empty()) {
+    std::fprintf(stderr, "work_precision_plot: no plottable rows left after the filters in %s\n", input.c_str());
     return 2;
   }
-  // One Results per series (the plot code overlays several runs' tables with the same PlotSpec).
-  std::vector<maris::Results> runs;
-  std::vector<QString> labels;
-  for (auto& [label, points] : series) {
-    std::sort(points.begin(), points.end());
-    maris::Table t;
-    t.name = "points";
-    auto& cx = t.add(x_name, units.size() > std::size_t(xc) ? units[xc] : "-");
-    auto& cy = t.add(y_name, units.size() > std::size_t(yc) ? units[yc] : "-");
-    (void)cx;
-    (void)cy;
-    for (const auto& [x, y] : points) {
-      t.columns[0].values.push_back(x);
-      t.columns[1].values.push_back(y);
-    }
-    maris::Results r;
-    r.tables.push_back(std::move(t));
-    runs.push_back(std::move(r));
-    labels.push_back(QString::fromStdString(label));
-  }
-  std::vector<maris::ui::PlotSource> sources;
-  for (std::size_t k = 0; k < runs.size(); ++k) sources.push_back({labels[k], &runs[k]});
-  maris::PlotSpec spec = maris::makePlot("work_precision", title, "points", x_name, {y_name}, true);
-  spec.log_x = true;
-  qputenv("QT_QPA_PLATFORM", "offscreen");
+
+  qputenv("QT_QPA_PLATFORM", qgetenv("QT_QPA_PLATFORM").isEmpty() ? "offscreen" : qgetenv("QT_QPA_PLATFORM"));
   QApplication app(argc, argv);
   QCustomPlot plot;
   plot.resize(1200, 800);
-  if (!maris::ui::fillPlot(plot, sources, spec) || !maris::ui::savePlotWidget(plot, QString::fromStdString(output), 1200, 800)) {
+  double x_low = 1e300, x_high = 0, y_low = 1e300, y_high = 0;
+  for (std::size_t k = 0; k < set.series.size(); ++k) {
+    const auto& series = set.series[k];
+    QCPGraph* graph = plot.addGraph();
+    graph->setName(QString::fromStdString(series.label));
+    const QColor color = seriesColor(static_cast<int>(k));
+    graph->setPen(QPen(color, 1.6));
+    // Shapes 7–12 are drawn hollow (their inner cross or plus would vanish under a fill).
+    graph->setScatterStyle(QCPScatterStyle(seriesShape(static_cast<int>(k)), color, k % 12 < 6 ? color : Qt::white, 8));
+    for (const auto& [x, y] : series.points) {
+      graph->addData(x, y);
+      x_low = std::min(x_low, x), x_high = std::max(x_high, x), y_low = std::min(y_low, y), y_high = std::max(y_high, y);
+    }
+  }
+  setLogAxis(plot.xAxis, QString::fromStdString(x_label.empty() ? selection.x + " [" + set.x_unit + "]" : x_label),
+             x_low, x_high);
+  setLogAxis(plot.yAxis, QString::fromStdString(y_label.empty() ? selection.y + " [" + set.y_unit + "]" : y_label),
+             y_low, y_high);
+  plot.xAxis2->setVisible(true);
+  plot.yAxis2->setVisible(true);
+  plot.xAxis2->setTicks(false);
+  plot.yAxis2->setTicks(false);
+
+  // Title above, the legend in a column right of the axes (it never covers points), the note below.
+  plot.plotLayout()->insertRow(0);
+  plot.plotLayout()->addElement(0, 0, new QCPTextElement(&plot, QString::fromStdString(title), QFont("sans", 12, QFont::Bold)));
+  plot.legend->setVisible(true);
+  plot.axisRect()->insetLayout()->take(plot.legend);
+  auto* side = new QCPLayoutGrid;  // legend on top, empty space below it
+  plot.plotLayout()->addElement(1, 1, side);
+  plot.plotLayout()->setColumnStretchFactor(1, 0.001);
+  side->addElement(0, 0, plot.legend);
+  side->addElement(1, 0, new QCPLayoutElement(&plot));
+  side->setRowStretchFactor(0, 0.001);
+  side->setMargins(QMargins(4, 0, 10, 0));
+  plot.legend->setMargins(QMargins(6, 4, 6, 4));
+  const std::string note = maris::bench::leftOutNote(set.left_out, 6);
+  if (!note.empty()) {
+    auto* text = new QCPTextElement(&plot, QString::fromStdString(note), QFont("sans", 8));
+    text->setTextFlags(Qt::AlignLeft | Qt::TextWordWrap);
+    plot.plotLayout()->addElement(2, 0, text);
+    std::printf("%s\n", note.c_str());
+  }
+  if (!maris::ui::savePlotWidget(plot, QString::fromStdString(output), 1200, 800)) {
     std::fprintf(stderr, "work_precision_plot: could not write %s\n", output.c_str());
     return 3;
   }
-  std::printf("written %s (%zu series)\n", output.c_str(), series.size());
+  std::printf("written %s (%zu series, %zu left out)\n", output.c_str(), set.series.size(), set.left_out.size());
   return 0;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/LU>
 
@@ -125,10 +126,16 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
     const Eigen::Index o = segmentStateOffset(m_, i);
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
     const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
-    if (!(theta.norm() < kLargestChartRotation))
-      throw SolverError("segment " + std::to_string(i) + " rotation", t, -1,
-                        "rotated " + std::to_string(theta.norm()) +
-                            " rad within one chunk of the implicit integrator: raise output.frame_count");
+    // An iterate beyond the chart (a Newton iteration running away at too long a step, or a chunk longer
+    // than the segment's turning allows): a non-finite residual makes the integrator halve the step;
+    // the note names the segment if the halving runs out (chartOverflow).
+    if (!(theta.norm() < kLargestChartRotation)) {
+      overflow_ = {t, "segment " + std::to_string(i) + " rotation vector",
+                   "reached |θ| = " + std::to_string(theta.norm()) + " rad, beyond the chart's limit of " +
+                       std::to_string(kLargestChartRotation) + " rad"};
+      r.setConstant(std::numeric_limits<double>::quiet_NaN());
+      return;
+    }
     const Mat3 rot = reference_[k] * expMap(theta), jr = rightJacobian(theta);
     // θ̈ = J_r⁻¹ (Rᵀ α − J̇_r θ̇).
     const Vec3 jdot_rate = rightJacobianRate(theta, rate);

@@ -8,6 +8,7 @@
 //   work integrals (4): q = ∫W dt (unused), v = W           (q̈ = power)
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,13 @@ class RotationVectorChart {
   double largestRotation(const Eigen::VectorXd& q) const;
   // Name of coordinate k for error messages.
   std::string name(Eigen::Index k) const;
+  // The last residual() call whose iterate left the chart (|θ_i| ≥ 5 rad; the residual is then NaN):
+  // at time t [s], which quantity, by how much. t is NaN if none did.
+  struct ChartOverflow {
+    double t = std::numeric_limits<double>::quiet_NaN();
+    std::string quantity, detail;
+  };
+  const ChartOverflow& chartOverflow() const { return overflow_; }
 
  private:
   const RiserModel& m_;
@@ -58,6 +66,7 @@ class RotationVectorChart {
   Eigen::Index size_ = 0;
   int per_segment_ = 3;          // J: θ; A: r, θ
   Eigen::Index work_ = 0;        // offset of the work coordinates in q
+  ChartOverflow overflow_;       // written by residual()
 };
 
 }  // namespace maris::riser

@@ -169,7 +169,19 @@ void integrateImplicit(const RiserModel& m, const RiserParameters& p, const Inte
       chart.toState(qo, vo, state);
       recorder.sample(to, state, false, std::nullopt);
     };
-    const OdeStats st = integrateGeneralizedAlpha(system, q, v, options, alpha, chunk, observer);
+    OdeStats st;
+    try {
+      st = integrateGeneralizedAlpha(system, q, v, options, alpha, chunk, observer);
+    } catch (const SolverError& e) {
+      // Step counted from the start of the run; an iterate beyond the rotation-vector chart at the failing
+      // time is named as the quantity (the core only sees its NaN residual).
+      const auto& overflow = chart.chartOverflow();
+      const bool off_chart = overflow.t == e.time();
+      throw SolverError(off_chart ? overflow.quantity : e.quantity(), e.time(), stats.steps + std::max(e.step(), 0L),
+                        off_chart ? overflow.detail + " in every Newton iteration down to the smallest step (" +
+                                        e.detail() + "); shorten the chunks (raise output.frame_count) or the step"
+                                  : e.detail());
+    }
     accumulate(stats, st);
     chart.toState(q, v, y);
     normaliseState(m, y);
