@@ -225,9 +225,23 @@ std::string fmt(const char* format, double v) {
 }
 
 // Markdown tables of the rows: right-hand-side cost against n, case 5 at n = 100, error against n.
+// Settings of the run, for the header: case 5 n ≤ n_max, cable n ≤ cable_n_max.
+struct RunSettings {
+  int n_max = 0, cable_n_max = 0;
+  double case5_end = 0;
+};
+
 std::string summary(const std::vector<Row>& rows, const std::string& load_start, const std::string& load_end,
-                    double case5_end) {
+                    const RunSettings& run) {
+  const double case5_end = run.case5_end;
   std::ostringstream md;
+  md << "Written by `scripts/bench_riser.sh` (bench_riser_work_precision; do not edit by hand). This run: case 5 over "
+     << case5_end << " s for n ≤ " << run.n_max << ", the 3D cable for n ≤ " << run.cable_n_max << ".\n"
+     << "Default: n ≤ 100 and cable n ≤ 20 (≈ 8–10 min on one quiet core). Opt-in rows: `MARIS_BENCH_NMAX=200` adds "
+     << "case 5 at n = 200 (J3 and A2, references by RK4 at 0.2 × its limit; ≈ +4 min), `MARIS_BENCH_CABLE_NMAX=50` "
+     << "the cable at n = 50 (≈ +5 min: its torsion limit makes each doubling of n ≈ 4x dearer), e.g. "
+     << "`MARIS_BENCH_NMAX=200 MARIS_BENCH_CABLE_NMAX=50 scripts/bench_riser.sh`. Failed runs show the solver's "
+     << "message (column `note` of the CSV).\n\n";
   md << "Measured by bench_riser_work_precision; load average " << load_start << " at the start, " << load_end
      << " at the end (2-core machine: above ~1 the times are upper bounds). CPU = thread CPU seconds of the\n"
      << "integration only; error = max |r(L/2) − r_ref(L/2)| / max motion, against the same-n reference.\n\n";
@@ -369,7 +383,7 @@ int main(int argc, char** argv) {
   }
   writeFileAtomic(out, csv);
   const std::string md = (out.size() > 4 && out.substr(out.size() - 4) == ".csv" ? out.substr(0, out.size() - 4) : out) + ".md";
-  writeFileAtomic(md, summary(rows, load_start, loadAverage(), case5_end));
+  writeFileAtomic(md, summary(rows, load_start, loadAverage(), RunSettings{n_max, cable_n_max, case5_end}));
   std::printf("# written %s and %s\n", out.c_str(), md.c_str());
   return 0;
 }

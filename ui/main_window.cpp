@@ -69,7 +69,7 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
   connect(runs_, &RunController::failed, this, &MainWindow::onRunFailed);
   connect(runs_, &RunController::cancelled, this, &MainWindow::onRunCancelled);
   live_ = new LiveResults(plots_, view_, this);
-  connect(runs_, &RunController::partialResults, live_, &LiveResults::show);
+  live_->follow(runs_);
   connect(plots_, &PlotPanel::message, this, [this](const QString& text) { status(text); });
   connect(view_, &SceneView::message, this, [this](const QString& text) { status(text); });
   connect(browser_, &ScenarioBrowser::exampleActivated, this, &MainWindow::openExample);

@@ -65,6 +65,7 @@ class MainWindow : public QMainWindow {
   RunPanel* runPanel() const { return run_panel_; }
   PlotPanel* plots() const { return plots_; }
   SceneView* sceneView() const { return view_; }
+  LiveResults* liveResults() const { return live_; }
   ResultsSummary* summary() const { return summary_; }
   ScenarioBrowser* browser() const { return browser_; }
   const RunHistory& history() const { return history_; }

@@ -32,10 +32,10 @@ std::size_t columnIndex(const TextTable& table, const std::string& name) {
   return static_cast<std::size_t>(it - table.names.begin());
 }
 
-// A failure note cut to its first clause (up to ':'), at most 60 characters.
+// A failure note cut before " has " (keeping time, step and quantity), at most 90 characters.
 std::string shortNote(const std::string& note) {
-  std::string out = note.substr(0, note.find(':'));
-  if (out.size() > 60) out = out.substr(0, 57) + "...";
+  std::string out = note.substr(0, note.find(" has "));
+  if (out.size() > 90) out = out.substr(0, 87) + "...";
   return out;
 }
 

@@ -1,6 +1,7 @@
 // Registry entry of the "fiv" scene: flow-induced vibration (VIV + galloping) of a square cylinder
 // near a free surface, for hydrokinetic energy conversion.
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "core/scene.hpp"
@@ -80,7 +81,15 @@ Results solveFiv(const FivParameters& input, RunContext& ctx) {
   addModelScalars(r, model);
   // Sweep over U for every h*, up then down.
   const SweepSettings settings = sweepSettingsFrom(p);
-  const SweepResult sweep = runSweep(model, settings, ctx);
+  // Partial results: the sweep's curves so far, so a GUI's plots grow during the run.
+  const SweepObserver publish = [&](const SweepResult& so_far) {
+    auto partial = std::make_shared<Results>();
+    addModelScalars(*partial, model);
+    addReferenceTables(*partial, model, references);
+    addSweepResults(*partial, model, so_far, true);
+    ctx.publishPartial(std::move(partial));
+  };
+  const SweepResult sweep = runSweep(model, settings, ctx, publish);
   addReferenceTables(r, model, references);
   addSweepResults(r, model, sweep, true);
   // Detail point: converge from the seed, then record.

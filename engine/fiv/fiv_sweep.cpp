@@ -1,5 +1,6 @@
 #include "fiv/fiv_sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -55,9 +56,21 @@ LimitCycle solvePoint(const FivModel& model, double speed, double h_star, const 
   return runToLimitCycle(rhs, state, settings.cycle, &context);
 }
 
+// The sweep so far (see SweepObserver): finished branches, or the first branch's up-sweep.
+SweepResult sweepSoFar(const SweepResult& finished, const SweepBranch& current) {
+  SweepResult out = finished;
+  if (!out.branches.empty()) return out;
+  out.speeds.resize(std::min(out.speeds.size(), current.up.size()));
+  SweepBranch climbing = current;
+  climbing.down.clear();
+  out.branches.push_back(std::move(climbing));
+  return out;
+}
+
 }  // namespace
 
-SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunContext& context) {
+SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunContext& context,
+                     const SweepObserver& observe) {
   SweepResult result;
   result.speeds = settings.speeds;
   const std::size_t n_speed = settings.speeds.size();
@@ -85,6 +98,7 @@ SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunCo
       applySeedFloor(model, settings.seed_amplitude_ratio, state);
       branch.up.push_back(solvePoint(model, speed, h_star, settings, state, context));
       account(branch.up.back());
+      if (observe && context.wantsPartialResults()) observe(sweepSoFar(result, branch));
     }
     // Down-sweep continues from the top state.
     if (settings.sweep_down) {
@@ -92,6 +106,11 @@ SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunCo
       for (std::size_t i = n_speed; i-- > 0;) {
         branch.down[i] = solvePoint(model, settings.speeds[i], h_star, settings, state, context);
         account(branch.down[i]);
+        if (observe && result.branches.empty() && context.wantsPartialResults()) {
+          SweepBranch up_only = branch;  // the first branch's up-sweep is complete
+          up_only.down.clear();
+          observe(sweepSoFar(result, up_only));
+        }
       }
     }
     // Onset: lowest speed from which every higher up-sweep amplitude is at least the threshold.
@@ -100,6 +119,7 @@ SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunCo
       branch.onset_speed = settings.speeds[i];
     }
     result.branches.push_back(std::move(branch));
+    if (observe && context.wantsPartialResults()) observe(result);
   }
   return result;
 }

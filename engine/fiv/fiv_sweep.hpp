@@ -3,6 +3,7 @@
 // back down from the top, so that coexisting branches (hysteresis) show.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "core/run_context.hpp"
@@ -45,7 +46,14 @@ struct SweepResult {
 // Seeds a state with a small displacement and wake variable (the rest state plus a perturbation).
 State seedState(const FivModel& model, double amplitude_ratio);
 
+// Sees the sweep so far, for partial results: while the first h* climbs, its up-sweep over the
+// speeds done (speeds truncated to them); later, every finished h* over all speeds (a branch in
+// progress and an unfinished down-sweep are left out). Called only when the context wants partial
+// results (throttled), so building Results from it costs little.
+using SweepObserver = std::function<void(const SweepResult& so_far)>;
+
 // Runs the sweep. Throws SolverError (non-finite state) or RunCancelled.
-SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunContext& context);
+SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunContext& context,
+                     const SweepObserver& observe = {});
 
 }  // namespace maris::fiv

@@ -52,12 +52,15 @@ SweepRow solveRow(RiserParameters p, double top_tension, int segment_count, RunC
   return row;
 }
 
-// A row whose linearisation has unstable modes has no trustworthy ω₁, ω₂: warn and leave it out.
+// A row whose linearisation has unstable modes has no trustworthy ω₁, ω₂: warn and leave it out. Slowly
+// growing modes keep their frequencies; the warning gives their growth.
 bool unstable(const BendingPair& sm, const std::string& label, RunContext& context) {
+  if (sm.slowly_growing_count > 0)
+    context.warn("frequency sweep, " + label + ": " +
+                 slowGrowthNote(sm.slowly_growing_count, sm.growth_rate, sm.growth_per_radian));
   if (sm.unstable_count == 0 && sm.second > 0) return false;
   context.warn("frequency sweep, " + label + ": " + std::to_string(sm.unstable_count) +
-               " linearised modes are unstable (flow past divergence, or flutter of a coarse chain with fast flow): "
-               "row left out");
+               " linearised modes are unstable (flow past divergence, or flutter): row left out");
   return true;
 }
 
@@ -104,6 +107,9 @@ BendingPair firstTwoBendingFrequencies(const RiserModel& m, RunContext& context)
   }
   BendingPair out;
   out.unstable_count = modes.unstable_count;
+  out.slowly_growing_count = modes.slowly_growing_count;
+  out.growth_rate = modes.largest_growth_rate;
+  out.growth_per_radian = modes.largest_growth_per_radian;
   if (distinct.size() > 0) out.first = distinct[0];
   if (distinct.size() > 1) out.second = distinct[1];
   return out;

@@ -26,19 +26,23 @@ std::optional<ConveyingPipe> conveyingPipeOf(const RiserParameters& p, const Ris
 
 // Lowest two distinct bending frequencies [rad/s] (torsion-dominated modes skipped; in 3D each bending
 // frequency comes twice, once per transverse plane). When some linearised modes are unstable (flow past
-// divergence, or the spurious flutter of a coarse chain with fast flow, docs/riser.md) the lowest stable
-// ones need not be ω₁ and ω₂: check unstable_count.
+// divergence, flutter) the lowest stable ones need not be ω₁ and ω₂: check unstable_count. Slowly growing
+// modes (a coarse chain with fast flow, docs/riser.md) keep their frequencies.
 struct BendingPair {
   double first = 0.0;      // [rad/s] ω₁ (0 when missing)
   double second = 0.0;     // [rad/s] ω₂ (0 when missing)
-  int unstable_count = 0;  // [-] linearised modes with Re λ > 0
+  int unstable_count = 0;  // [-] linearised modes with Re λ > 1e-3 |λ| (RiserModes)
+  int slowly_growing_count = 0;      // [-] RiserModes::slowly_growing_count
+  double growth_rate = 0.0;          // [1/s] RiserModes::largest_growth_rate
+  double growth_per_radian = 0.0;    // [-] RiserModes::largest_growth_per_radian
 };
 BendingPair firstTwoBendingFrequencies(const RiserModel& m, RunContext& context);
 
 // Runs the sweeps listed in p.sweep_pretension_ratios and p.sweep_segment_counts (either may be empty)
 // and appends tables "frequency_vs_pretension" and "frequency_vs_segments" with their plots and the
 // scalar "sweep_max_difference" (largest |ω − ω_ref|/ω_ref over the pretension rows, when a reference
-// exists). A row with unstable linearised modes is left out with a warning. Reports progress per row
+// exists). A row with unstable linearised modes is left out with a warning; a row with slowly growing
+// modes is kept, with a warning giving the growth. Reports progress per row
 // and honours cancellation between rows; throws SolverError when a statics solve fails (naming the row).
 void addFrequencySweeps(const RiserParameters& p, Results& results, RunContext& context);
 

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "core/results.hpp"
@@ -28,7 +29,14 @@ struct RiserModes {
                                              //     (all zero for a pure torsion mode)
   std::vector<std::vector<double>> twists;   // [-] rotation of segment i about its own axis (n+1), largest = 1
   std::vector<double> torsion_share;         // [-] Σ twist² / Σ |rotation|² of the mode (1 = pure torsion)
-  int unstable_count = 0;                    // [-] eigenvalues with Re λ > 0 (internal flow past divergence/flutter)
+  int unstable_count = 0;                    // [-] eigenvalues with Re λ > 1e-3 |λ| (flow past divergence, flutter)
+  // Oscillatory eigenvalues with 1e-6 |λ| < Re λ ≤ 1e-3 |λ| (amplitude growth < 0.6 % per period): kept as
+  // frequencies (Im λ). With internal flow on a coarse chain this is the discretisation's slight
+  // non-conservativeness (curvature fit of eqs 47–49 with the Coriolis coupling), O(u³Δ³), docs/riser.md.
+  int slowly_growing_count = 0;              // [-]
+  double largest_growth_rate = 0.0;          // [1/s] largest Re λ > 0 of the kept (oscillatory) eigenvalues, also
+                                             //       below 1e-6 |λ| (≈ 1e-14 |λ| round-off when conservative)
+  double largest_growth_per_radian = 0.0;    // [-] its Re λ / |λ|
   double divergence_flow_speed = std::numeric_limits<double>::infinity();  // [m/s] |u| at which ω_1 → 0; ∞ without contents
 };
 
@@ -43,8 +51,8 @@ struct RiserModes {
 // then G = ∂(accelerations)/∂q̇ is differentiated too (drag off) and the first-order (state-space)
 // eigenproblem of size 2N′ is solved on the N′ directions that keep the chain connected (null space of
 // the constraint Jacobian, so no zero-eigenvalue Jordan blocks blur small frequencies). Frequencies are
-// the imaginary parts of the eigenvalues on the imaginary axis; modes past divergence or in flutter are
-// counted in unstable_count. Shapes: the real part of the complex mode at the phase that makes it most real.
+// the imaginary parts of the eigenvalues on (|Re λ| ≤ 1e-6 |λ|) or slowly growing off (≤ 1e-3 |λ|, counted in
+// slowly_growing_count) the imaginary axis; modes past divergence or in flutter are counted in unstable_count. Shapes: the real part of the complex mode at the phase that makes it most real.
 RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count,
                         Formulation linearisation = Formulation::Joint);
 
@@ -55,6 +63,10 @@ RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, 
 // (exact for a straight riser; for a riser bent by current the shape itself changes with u). Returns
 // +∞ without contents (m_f = 0) or when no positive u² exists (joint coordinates).
 double divergenceFlowSpeed(const RiserModel& model, const StaticSolution& statics);
+
+// Warning text for slowly growing modes: "2 linearised modes grow slowly (largest Re λ = 3.9e-06 1/s,
+// 4.5e-06 per radian, e-folding time 2.5e+05 s): …artefact… (docs/riser.md)".
+std::string slowGrowthNote(int count, double growth_rate, double growth_per_radian);
 
 // Animation of the modes for the 3D view: for each mode, `frames_per_mode` frames over one period,
 // the static shape plus amplitude·sin(phase)·shape, amplitude = 5 % of L (torsion modes: the tube

@@ -30,6 +30,8 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
     context.progress(0.0, "natural frequencies");
     modes = computeModes(model, statics, 6);
     recorder.addModes(modes);
+    if (modes.slowly_growing_count > 0)
+      context.warn(slowGrowthNote(modes.slowly_growing_count, modes.largest_growth_rate, modes.largest_growth_per_radian));
     if (modes.unstable_count > 0)
       context.warn(std::to_string(modes.unstable_count) + " linearised modes are unstable: internal flow speed " +
                    std::to_string(std::abs(model.flow_speed)) + " m/s is beyond the divergence speed " +

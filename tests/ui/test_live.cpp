@@ -1,5 +1,6 @@
-// Live plots of a real scene: the riser publishes partial results while it integrates, and the plot
-// tabs fed by them (wired as in the main window) grow before the run finishes. Offscreen platform.
+// Live plots of real scenes: the riser publishes partial results while it integrates, the FIV sweep
+// its table so far, and the plot tabs fed by them (wired as in the main window) grow before the run
+// finishes. Offscreen platform.
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QtTest>
@@ -82,6 +83,39 @@ class LiveTest : public QObject {
     for (int i = 0; i < plots.count(); ++i)
       if (plots.view(i)->spec().name == "probe_displacement")
         QCOMPARE(plots.view(i)->pointCount(), static_cast<int>(3 * final_rows));
+  }
+
+  // A sweep scene: the FIV sweep publishes its table so far, so the amplitude plot gains points
+  // from update to update before the run ends, and the finished run has at least as many.
+  void fivSweepPlotGrowsWhileTheRunGoes() {
+    const SceneDefinition* scene = findScene("fiv");
+    if (!scene) QSKIP("this build has no fiv scene");
+    Scenario scenario = findBuiltin("fiv_default")->scenario;
+    scenario.parameters["sweep"]["speed_count"] = 20;
+    RunController controller;
+    controller.setPartialInterval(0.01);
+    PlotPanel plots;
+    plots.resize(800, 600);
+    plots.show();
+    std::vector<int> live_points;  // points of the amplitude plot after each partial update
+    QObject::connect(&controller, &RunController::partialResults, &plots, [&](ResultsPtr partial) {
+      plots.showResults(partial, QStringLiteral("running"));
+      for (int i = 0; i < plots.count(); ++i)
+        if (plots.view(i)->spec().name == "amplitude_ratio") live_points.push_back(plots.view(i)->pointCount());
+    });
+    QSignalSpy finished(&controller, &RunController::finished);
+    QVERIFY(controller.start(*scene, scenario) != 0);
+    QVERIFY(finished.wait(120000));
+    const RunRecord record = finished.takeFirst().at(0).value<RunRecord>();
+    QString counts;
+    for (int n : live_points) counts += QString::number(n) + QLatin1Char(' ');
+    qInfo("amplitude plot points after each partial update: %s", qPrintable(counts));
+    QVERIFY2(live_points.size() >= 2, qPrintable(counts));
+    QVERIFY(std::is_sorted(live_points.begin(), live_points.end()));
+    QVERIFY(live_points.back() > live_points.front());
+    plots.showResults(record.results, record.label);
+    for (int i = 0; i < plots.count(); ++i)
+      if (plots.view(i)->spec().name == "amplitude_ratio") QVERIFY(plots.view(i)->pointCount() >= live_points.back());
   }
 };
 

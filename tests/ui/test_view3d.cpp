@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QLineEdit>
 #include <QSlider>
+#include <QSettings>
 #include <QtTest>
 
 #include <vtkCamera.h>
@@ -146,7 +147,12 @@ class View3dTest : public QObject {
   Q_OBJECT
 
  private slots:
-  void initTestCase() { test::isolateSettings(); }
+  void initTestCase() {
+    test::isolateSettings();
+    QSettings().remove(QStringLiteral("colorMaps"));  // choices saved by an earlier run of this test
+  }
+  // The other UI tests share the settings: leave them no colour choices.
+  void cleanupTestCase() { QSettings().remove(QStringLiteral("colorMaps")); }
 
   void tubeIsDrawnWhereItIsWithItsColours() {
     SceneView view;
@@ -212,6 +218,28 @@ class View3dTest : public QObject {
     view.glWidget()->renderer()->GetBackground(bottom);
     QVERIFY(QColor::fromRgbF(bottom[0], bottom[1], bottom[2]).lightnessF() > 0.8);
     applyTheme(Theme::System);
+  }
+
+  // A colour choice is saved with QSettings: a new view (as in the next session) shows the same
+  // quantity with it; a quantity whose name holds '/' round-trips; an unchosen one has the defaults.
+  void colourChoicesAreKeptAcrossSessions() {
+    auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
+    tube->view.scalar_name = "stress / yield";
+    const ColorSettings chosen{ColorMap::Rainbow, false, -5.0, 42.5};
+    {
+      SceneView first;
+      first.showResults(tube);
+      first.setColorSettings(chosen);
+    }
+    SceneView next;
+    next.showResults(tube);
+    QCOMPARE(next.colorSettings(), chosen);
+    QCOMPARE(next.colorRange(), std::make_pair(-5.0, 42.5));
+    QCOMPARE(next.colorControl()->mapBox()->currentIndex(), static_cast<int>(ColorMap::Rainbow));
+    auto other = std::make_shared<Results>(*tube);
+    other->view.scalar_name = "stress";
+    next.showResults(other);
+    QCOMPARE(next.colorSettings(), ColorSettings{});
   }
 
   // The Colours control, driven as a user would: another map or a fixed range changes the colours

@@ -1,8 +1,11 @@
 #include "view3d/color_maps.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include <QObject>
+#include <QSettings>
+#include <QUrl>
 
 #include <vtkColorTransferFunction.h>
 
@@ -24,7 +27,44 @@ constexpr std::array<std::array<int, 3>, 11> kViridis{{{0x44, 0x01, 0x54},
                                                        {0xbd, 0xdf, 0x26},
                                                        {0xfd, 0xe7, 0x25}}};
 
+// Stable names in the settings file (the display names are translated).
+constexpr std::array<const char*, 4> kMapKeys{"coolwarm", "viridis", "rainbow", "greyscale"};
+
+// A quantity's name may hold '/', which QSettings reads as a group separator.
+QString settingsGroup(const std::string& quantity) {
+  return QStringLiteral("colorMaps/") + QString::fromLatin1(QUrl::toPercentEncoding(QString::fromStdString(quantity)));
+}
+
 }  // namespace
+
+std::optional<ColorSettings> loadColorSettings(const std::string& quantity) {
+  QSettings settings;
+  settings.beginGroup(settingsGroup(quantity));
+  const QString key = settings.value(QStringLiteral("map")).toString();
+  const auto found = std::find(kMapKeys.begin(), kMapKeys.end(), key.toStdString());
+  if (found == kMapKeys.end()) return std::nullopt;  // none saved, or a map this version lacks
+  ColorSettings out;
+  out.map = static_cast<ColorMap>(found - kMapKeys.begin());
+  out.automatic = settings.value(QStringLiteral("automatic"), true).toBool();
+  bool min_ok = false, max_ok = false;
+  out.min = settings.value(QStringLiteral("min")).toDouble(&min_ok);
+  out.max = settings.value(QStringLiteral("max")).toDouble(&max_ok);
+  if (!min_ok || !max_ok || !(out.max > out.min)) {  // a damaged range falls back to automatic
+    out.automatic = true;
+    out.min = ColorSettings{}.min;
+    out.max = ColorSettings{}.max;
+  }
+  return out;
+}
+
+void saveColorSettings(const std::string& quantity, const ColorSettings& settings) {
+  QSettings store;
+  store.beginGroup(settingsGroup(quantity));
+  store.setValue(QStringLiteral("map"), QString::fromLatin1(kMapKeys[static_cast<std::size_t>(settings.map)]));
+  store.setValue(QStringLiteral("automatic"), settings.automatic);
+  store.setValue(QStringLiteral("min"), settings.min);
+  store.setValue(QStringLiteral("max"), settings.max);
+}
 
 QStringList colorMapNames() {
   return {QObject::tr("Cool to warm"), QObject::tr("Viridis"), QObject::tr("Rainbow"), QObject::tr("Greyscale")};

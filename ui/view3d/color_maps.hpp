@@ -2,6 +2,9 @@
 // which map, and an automatic range (all frames' min … max) or a fixed min … max of their own.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include <QString>
 #include <QStringList>
 
@@ -26,6 +29,11 @@ struct ColorSettings {
   double max = 1.0;
   bool operator==(const ColorSettings&) const = default;
 };
+
+// The user's choice for a coloured quantity (View3D::scalar_name), kept across sessions with
+// QSettings under "colorMaps/<quantity, percent-encoded>"; nullopt if none was saved.
+std::optional<ColorSettings> loadColorSettings(const std::string& quantity);
+void saveColorSettings(const std::string& quantity, const ColorSettings& settings);
 
 // Replaces the points of `colors` by `map` spread over [lo, hi] (hi > lo) and builds it.
 void fillColorMap(vtkColorTransferFunction* colors, ColorMap map, double lo, double hi);

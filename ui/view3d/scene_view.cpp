@@ -167,7 +167,7 @@ void SceneView::applyPaletteColors() {
   for (vtkTextProperty* p : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty(),
                              caption_->GetTextProperty()})
     p->SetColor(text.redF(), text.greenF(), text.blueF());
-  gl_->update();
+  gl_->requestRender();
 }
 
 SceneView::~SceneView() {
@@ -179,6 +179,7 @@ int SceneView::frameCount() const { return results_ ? static_cast<int>(results_-
 
 void SceneView::clear() {
   setPlaying(false);
+  gl_->setRenderScale(1.0);
   results_.reset();
   vtkRenderer* renderer = gl_->renderer();
   for (auto& a : frame_actors_) renderer->RemoveActor(a);
@@ -193,7 +194,13 @@ void SceneView::clear() {
   time_->clear();
 }
 
+void SceneView::showLiveResults(std::shared_ptr<const Results> partial) {
+  showResults(std::move(partial));
+  gl_->setRenderScale(kLiveRenderScale);
+}
+
 void SceneView::showResults(std::shared_ptr<const Results> results) {
+  gl_->setRenderScale(1.0);
   if (!results || results->view.empty()) {
     if (!results_) clear();
     return;
@@ -228,7 +235,10 @@ void SceneView::rebuildStatic() {
   if (view.scalar_name != colored_quantity_) {
     colored_quantity_ = view.scalar_name;
     const auto kept = color_memory_.find(colored_quantity_);
-    color_settings_ = kept != color_memory_.end() ? kept->second : ColorSettings{};
+    if (kept != color_memory_.end())
+      color_settings_ = kept->second;
+    else
+      color_settings_ = loadColorSettings(colored_quantity_).value_or(ColorSettings{});
   }
   applyColorSettings();
   color_control_->setEnabled(have_scalars_);
@@ -264,6 +274,7 @@ std::pair<double, double> SceneView::colorRange() const {
 void SceneView::setColorSettings(const ColorSettings& settings) {
   color_settings_ = settings;
   color_memory_[colored_quantity_] = settings;
+  saveColorSettings(colored_quantity_, settings);
   applyColorSettings();
   // Solids of one scalar take their colour when their actor is made: rebuild the frame.
   drawFrame();
@@ -285,7 +296,7 @@ void SceneView::drawFrame() {
   }
   renderer->ResetCameraClippingRange();
   updateTimeLabel();
-  gl_->update();
+  gl_->requestRender();
 }
 
 void SceneView::updateTimeLabel() {
@@ -342,7 +353,7 @@ void SceneView::resetCamera() {
   camera->Zoom(have_scalars_ ? 0.85 : 0.92);
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
-  gl_->update();
+  gl_->requestRender();
 }
 
 QImage SceneView::renderImage(int width_px, int height_px) { return gl_->renderImage(width_px, height_px); }

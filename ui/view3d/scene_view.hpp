@@ -1,7 +1,7 @@
 // The 3D tab: draws a run's View3D (shapes per animation frame, colour map with a colour bar,
 // still-water and sea-bed planes), an axes triad, a time slider with play/pause, reset camera and
 // PNG export at a chosen resolution, and a "Colours" control (map, automatic or fixed range),
-// remembered per coloured quantity for the session. The first results reset the camera; later
+// remembered per coloured quantity (across sessions, QSettings). The first results reset the camera; later
 // results (new runs, live partial results) keep the user's view.
 #pragma once
 
@@ -40,7 +40,13 @@ class SceneView : public QWidget {
   explicit SceneView(QWidget* parent = nullptr);
   ~SceneView() override;
 
+  // A finished run's results, drawn at full resolution.
   void showResults(std::shared_ptr<const Results> results);
+  // A running run's partial results, drawn at kLiveRenderScale of the resolution: with a software
+  // OpenGL renderer a full-resolution paint of a ~600 × 700 view takes ~50–70 ms, a quarter of the
+  // pixels ~15–25 ms (docs/gui.md). The finished run's showResults draws it sharp again.
+  void showLiveResults(std::shared_ptr<const Results> partial);
+  static constexpr double kLiveRenderScale = 0.5;
   void clear();
 
   int frameCount() const;
@@ -100,7 +106,7 @@ class SceneView : public QWidget {
   double data_lo_ = 0.0, data_hi_ = 1.0;  // scalar range of all frames
   std::string colored_quantity_;          // View3D::scalar_name of the shown results
   ColorSettings color_settings_;
-  std::map<std::string, ColorSettings> color_memory_;  // by quantity, for this session
+  std::map<std::string, ColorSettings> color_memory_;  // by quantity; also saved with QSettings
 };
 
 }  // namespace maris::ui

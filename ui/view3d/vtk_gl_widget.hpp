@@ -1,15 +1,22 @@
 // A Qt 6 widget showing a VTK renderer. Debian's VTK Qt module is built for Qt 5, so this is the
-// bridge: a QOpenGLWidget (OpenGL 3.2 core) owns a vtkGenericOpenGLRenderWindow that renders into
-// its own framebuffers inside Qt's context; paintGL blits VTK's display framebuffer into the
-// widget's framebuffer. Mouse and wheel events go to a vtkGenericRenderWindowInteractor with a
-// trackball-camera style (left: rotate, middle/shift+left: pan, right/wheel: zoom).
+// bridge. VTK renders with its own framebuffers inside an offscreen OpenGL context of ours
+// (QOpenGLContext on a QOffscreenSurface, OpenGL 3.2 core); the picture is read back into a QImage
+// that a plain raster widget paints. Why not a QOpenGLWidget: a window holding one composes every
+// repaint of every widget (a progress bar, a plot) through OpenGL, which with a software renderer
+// cost 25–140 ms per repaint and stalled the GUI thread during live runs (docs/gui.md). Here only
+// a 3D redraw touches OpenGL. Mouse and wheel events go to a vtkGenericRenderWindowInteractor with
+// a trackball-camera style (left: rotate, middle/shift+left: pan, right/wheel: zoom).
 #pragma once
 
+#include <memory>
+
 #include <QImage>
-#include <QOpenGLWidget>
+#include <QWidget>
 
 #include <vtkSmartPointer.h>
 
+class QOffscreenSurface;
+class QOpenGLContext;
 class vtkGenericOpenGLRenderWindow;
 class vtkGenericRenderWindowInteractor;
 class vtkObject;
@@ -17,7 +24,7 @@ class vtkRenderer;
 
 namespace maris::ui {
 
-class VtkGlWidget : public QOpenGLWidget {
+class VtkGlWidget : public QWidget {
   Q_OBJECT
  public:
   explicit VtkGlWidget(QWidget* parent = nullptr);
@@ -27,19 +34,30 @@ class VtkGlWidget : public QOpenGLWidget {
   vtkGenericOpenGLRenderWindow* renderWindow() const;
   vtkGenericRenderWindowInteractor* interactor() const;
 
-  // Renders the current scene at width × height pixels (any size, independent of the widget's)
-  // and returns it; a null image if OpenGL is not initialised (widget never shown).
-  QImage renderImage(int width_px, int height_px);
+  // The scene changed: render it anew at the next paint (the widget's repaints otherwise reuse
+  // the last picture).
+  void requestRender();
 
-  // Wall time of the last paint (VTK render and blit) in milliseconds: what a redraw costs the GUI
-  // thread (with a software OpenGL renderer, far more than everything else the GUI does).
+  // Fraction of the widget's resolution the view renders at (1 = full). A live run draws at a
+  // lower one: a software renderer's cost grows with the pixel count, and the picture is redrawn
+  // at full resolution when the run has finished.
+  void setRenderScale(double scale);
+  double renderScale() const { return render_scale_; }
+
+  // Renders the current scene at width × height pixels (any size, independent of the widget's)
+  // and returns it; a null image if no OpenGL context can be made.
+  QImage renderImage(int width_px, int height_px);
+  // Renders the scene at the widget's size in device pixels times the render scale and returns the
+  // picture (what the widget shows, stretched to its size).
+  QImage grabFramebuffer();
+
+  // Wall time of the last render for the widget (VTK render and read-back) in milliseconds: what a
+  // redraw costs the GUI thread (with a software OpenGL renderer, far more than anything else).
   double lastPaintMilliseconds() const { return last_paint_ms_; }
   int paintCount() const { return paint_count_; }
 
  protected:
-  void initializeGL() override;
-  void resizeGL(int w, int h) override;
-  void paintGL() override;
+  void paintEvent(QPaintEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
@@ -47,17 +65,24 @@ class VtkGlWidget : public QOpenGLWidget {
   void mouseDoubleClickEvent(QMouseEvent* event) override;
 
  private:
+  bool makeCurrent();
   void forwardMouse(QMouseEvent* event, unsigned long vtk_event);
   void onMakeCurrent(vtkObject*, unsigned long, void*);
   void onIsCurrent(vtkObject*, unsigned long, void* call_data);
-  void releaseGraphics();
-  void renderVtk();
+  QSize devicePixelSize() const;
+  QSize renderSize() const;
+  QImage renderAt(int width_px, int height_px);  // context current, VTK initialised
 
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
-  QMetaObject::Connection context_teardown_;  // context aboutToBeDestroyed -> release VTK's GL objects
-  bool initialized_ = false;
+  std::unique_ptr<QOffscreenSurface> surface_;
+  std::unique_ptr<QOpenGLContext> context_;
+  bool initialized_ = false;      // VTK's OpenGL state set up in our context
+  bool context_failed_ = false;   // no OpenGL here: the widget says so instead of drawing
+  bool stale_ = true;             // the scene changed since image_ was rendered
+  QImage image_;                  // the last picture, device pixels
+  double render_scale_ = 1.0;
   double last_paint_ms_ = 0.0;
   int paint_count_ = 0;
 };

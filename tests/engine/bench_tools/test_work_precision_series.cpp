@@ -60,7 +60,7 @@ TEST(WorkPrecisionSeries, PointsAreSortedByCostNotByRunOrder) {
 TEST(WorkPrecisionSeries, FailedRowsAreLeftOutWithTheirReason) {
   const WorkPrecisionSet set = groupWorkPrecision(parseTextCsv(kCsv), caseFiveAtHundred());
   ASSERT_EQ(set.left_out.size(), 1u);
-  EXPECT_EQ(set.left_out[0], "A2 rk4 setting 0.024: solver failed at t = 1.25 s (step 3)");
+  EXPECT_EQ(set.left_out[0], "A2 rk4 setting 0.024: solver failed at t = 1.25 s (step 3): state component 9");
   const std::string note = leftOutNote(set.left_out, 6);
   EXPECT_NE(note.find("1 row left out"), std::string::npos) << note;
   EXPECT_EQ(leftOutNote({}, 6), "");

@@ -70,6 +70,38 @@ TEST(FivScene, DefaultSweepReportsEveryCurveFiniteWithTheEnergyBalanceOnConverge
   EXPECT_GT(checked, 20);
 }
 
+// Partial results (for live plots): the sweep table grows row by row while the first h* climbs,
+// every partial table is rectangular, and each partial row equals the finished run's row (the
+// same continuation computed once: bit for bit).
+TEST(FivScene, SweepPublishesGrowingPartialResultsWhoseRowsMatchTheFinishedRun) {
+  const Scenario s = builtin("fiv_default", {"sweep.speed_count=12"});
+  std::vector<std::shared_ptr<const Results>> partials;
+  RunContext ctx;
+  ctx.setPartialSink([&](std::shared_ptr<const Results> r) { partials.push_back(std::move(r)); }, 0.0);
+  const Results final_results = runScenario(requireScene("fiv"), s, ctx);
+  const Table* final_sweep = final_results.findTable("sweep");
+  ASSERT_NE(final_sweep, nullptr);
+  ASSERT_GE(partials.size(), 3u);
+  std::size_t previous_rows = 0, grew = 0;
+  for (const auto& partial : partials) {
+    const Table* sweep = partial->findTable("sweep");
+    ASSERT_NE(sweep, nullptr);
+    for (const auto& c : sweep->columns) ASSERT_EQ(c.values.size(), sweep->rows()) << c.name;
+    EXPECT_GE(sweep->rows(), previous_rows);
+    grew += sweep->rows() > previous_rows ? 1 : 0;
+    previous_rows = sweep->rows();
+    for (const auto& c : sweep->columns) {
+      const Column* whole = final_sweep->find(c.name);
+      ASSERT_NE(whole, nullptr) << c.name;
+      for (std::size_t i = 0; i < c.values.size(); ++i) ASSERT_EQ(c.values[i], whole->values[i]) << c.name << " row " << i;
+    }
+    EXPECT_FALSE(partial->plots.empty());
+  }
+  EXPECT_EQ(partials.front()->findTable("sweep")->rows(), 1u);  // published after the first point
+  EXPECT_GE(grew, 3u);
+  EXPECT_EQ(previous_rows, final_sweep->rows());
+}
+
 TEST(FivScene, ReynoldsNumbersReproduceThePapersPairsWithinOnePercent) {
   // Brief T1: Re = UD/ν, D = 0.09 m, ν = 1.118e-6 m²/s; paper pairs (U [m/s], Re) from its text.
   const Results r = run(builtin("fiv_default", {"sweep.speed_count=24", "free_surface.submergence_ratios=[]",

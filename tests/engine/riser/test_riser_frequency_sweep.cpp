@@ -99,21 +99,50 @@ TEST(RiserFrequencySweep, CaseThreeConvergesAtSecondOrderInSegmentCount) {
   EXPECT_LT(e2.values[1], 8e-4);
 }
 
-// Hard case: at n = 10 the linearised chain with 10 m/s flow has unstable (flutter) pairs that the
-// continuous pipe does not have (its divergence speed is ≈ 60 m/s). Such a row must not report the
-// lowest stable pair as ω₁, ω₂: it is left out with a warning naming it.
-TEST(RiserFrequencySweep, CoarseChainWithFastFlowRowIsLeftOutWithAWarning) {
+// Hard case: at n = 10 the linearised chain with 10 m/s flow has slowly growing modes that the continuous
+// pipe (conservative, divergence only at ≈ 62 m/s) does not have (growth 4.5e-6 per radian, see below).
+// The row is kept: ω₁, ω₂ are within the O(1/n²) error of the Galerkin pipe (error·n² ≈ 0.37 and 0.95
+// measured at n ≥ 20, so ≤ 1.5e-2 at n = 10), and the warning names the row and the growth.
+TEST(RiserFrequencySweep, CoarseChainWithFastFlowKeepsItsRowAndNamesTheSlowGrowth) {
   RiserParameters p = caseThree();
   p.sweep_segment_counts = {10, 20};
   Results r;
   RunContext context;
   addFrequencySweeps(p, r, context);
   const Column& n = column(r, "frequency_vs_segments", "segment_count");
-  ASSERT_EQ(n.values.size(), 1u);
-  EXPECT_EQ(n.values[0], 20.0);
+  ASSERT_EQ(n.values.size(), 2u);
+  EXPECT_EQ(n.values[0], 10.0);
+  EXPECT_LT(column(r, "frequency_vs_segments", "error_1").values[0], 1.5e-2);
+  EXPECT_LT(column(r, "frequency_vs_segments", "error_2").values[0], 1.5e-2);
   bool warned = false;
-  for (const std::string& w : context.warnings()) warned = warned || w.find("n = 10") != std::string::npos;
+  for (const std::string& w : context.warnings())
+    warned = warned || (w.find("n = 10") != std::string::npos && w.find("grow slowly") != std::string::npos);
   EXPECT_TRUE(warned);
+}
+
+// The slow growth is a discretisation artefact: the continuous pipe with supported ends is conservative, and
+// either flow term alone leaves the chain's eigenvalues on the imaginary axis to ≈ 1e-14 (checked by hand).
+// Its size per radian must fall like Δ³ (measured ÷10.3 from n = 10 to 20; accepted 6–16, Δ² would be 4) and
+// grow like u³ (Coriolis ∝ u times the curvature fit's non-symmetric part ∝ u²: measured ×8.2 from 5 to
+// 10 m/s; accepted 6–10), and stay far below a meaningful growth: < 1e-5 per radian at n = 10 (measured 4.5e-6).
+TEST(RiserFrequencySweep, CoarseChainGrowthIsAThirdOrderArtefactOfTheFlowTerms) {
+  auto growth = [](int n, double u) {
+    RiserParameters p = caseThree();
+    p.segment_count = n;
+    p.internal_flow_speed = u;
+    RunContext context;
+    const BendingPair b = firstTwoBendingFrequencies(buildRiserModel(p), context);
+    EXPECT_EQ(b.unstable_count, 0) << "n = " << n << ", u = " << u;
+    return b.growth_per_radian;
+  };
+  const double coarse = growth(10, 10.0), fine = growth(20, 10.0), slow = growth(10, 5.0);
+  ASSERT_GT(fine, 0.0);
+  ASSERT_GT(slow, 0.0);
+  EXPECT_LT(coarse, 1e-5);
+  EXPECT_GT(coarse / fine, 6.0);
+  EXPECT_LT(coarse / fine, 16.0);
+  EXPECT_GT(coarse / slow, 6.0);
+  EXPECT_LT(coarse / slow, 10.0);
 }
 
 // Bad input: a pretension sweep needs a tensioner; counts must be whole numbers.
