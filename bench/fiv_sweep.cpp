@@ -5,20 +5,18 @@
 // period matter less than the tolerance. Writes fiv_sweep.csv.
 //   usage: bench_fiv_sweep [output.csv]
 #include <cmath>
-#include <ctime>
 #include <fstream>
 #include <iostream>
 
 #include "core/ode.hpp"
 #include "core/run_context.hpp"
 #include "fiv/fiv_sweep.hpp"
+#include "bench_clock.hpp"
 
 namespace {
 
 using namespace maris;
 using namespace maris::fiv;
-
-double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 struct Run {
   SweepResult sweep;
@@ -31,10 +29,10 @@ Run sweepWith(const FivParameters& p, int steps_per_period, double tolerance) {
   s.cycle.steps_per_period = steps_per_period;
   s.cycle.tolerance = tolerance;
   RunContext ctx;
-  const double t0 = cpuSeconds();
+  const double t0 = bench::threadCpuSeconds();
   Run r;
   r.sweep = runSweep(model, s, ctx);
-  r.cpu_s = cpuSeconds() - t0;
+  r.cpu_s = bench::threadCpuSeconds() - t0;
   return r;
 }
 
@@ -60,9 +58,9 @@ void compareWithCoreRk4(std::ostream& out) {
   const long steps = 2'000'000;
   const double h = 1e-3;
   State s = seedState(model, 0.5);
-  double t0 = cpuSeconds();
+  double t0 = bench::threadCpuSeconds();
   for (long i = 0; i < steps; ++i) rhs.step(s, h);
-  const double own = (cpuSeconds() - t0) / steps;
+  const double own = (bench::threadCpuSeconds() - t0) / steps;
   const State start = seedState(model, 0.5);
   Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(start.data(), kStateSize);
   OdeOptions options;
@@ -75,9 +73,9 @@ void compareWithCoreRk4(std::ostream& out) {
     rhs.derivative(a, da);
     for (int i = 0; i < kStateSize; ++i) dx[i] = da[i];
   };
-  t0 = cpuSeconds();
+  t0 = bench::threadCpuSeconds();
   integrateRk4(f, y, options, ctx);
-  const double core = (cpuSeconds() - t0) / steps;
+  const double core = (bench::threadCpuSeconds() - t0) / steps;
   out << "RK4 step: scene loop " << own * 1e9 << " ns, core integrateRk4 " << core * 1e9 << " ns (final y "
       << s[0] << " vs " << y[0] << " m)\n";
 }

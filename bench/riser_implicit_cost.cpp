@@ -10,7 +10,6 @@
 //   bench_riser_implicit_cost statics N [VARIANT]
 //       CPU seconds of solveStatics for case 5 (L = 500 m) with n = N elements.
 // Times are thread CPU seconds; on a shared machine they are upper bounds. Not a pass/fail test.
-#include <time.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,17 +26,12 @@
 #include "riser/riser_integration.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
+#include "bench_clock.hpp"
 
 using namespace maris;
 using namespace maris::riser;
 
 namespace {
-
-double cpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 RiserParameters case5(const std::string& variant) {
   const auto text = builtinResource("scenarios/riser/riser_paper_case5_j3.json");
@@ -69,9 +63,9 @@ Outcome run(const RiserParameters& p) {
   RiserRecorder recorder(m, p);
   recorder.sample(0.0, y, true, std::string("profile_static"));
   Outcome out;
-  const double t0 = cpuSeconds();
+  const double t0 = bench::threadCpuSeconds();
   out.stats = integrateRiser(m, p, plan, y, recorder, ctx);
-  out.cpu = cpuSeconds() - t0;
+  out.cpu = bench::threadCpuSeconds() - t0;
   const Results r = recorder.finish(out.stats, 0, 0.0);
   const Table* h = r.findTable("history");
   const auto& time = h->find("time")->values;
@@ -129,9 +123,9 @@ int main(int argc, char** argv) {
     p.segment_count = n;
     const RiserModel m = buildRiserModel(p);
     RunContext ctx;
-    const double t0 = cpuSeconds();
+    const double t0 = bench::threadCpuSeconds();
     const StaticSolution s = solveStatics(m, ctx);
-    std::printf("statics n=%d cpu=%.3f s iterations=%d load_steps=%d residual=%.2e\n", n, cpuSeconds() - t0,
+    std::printf("statics n=%d cpu=%.3f s iterations=%d load_steps=%d residual=%.2e\n", n, bench::threadCpuSeconds() - t0,
                 s.iterations, s.load_steps, s.residual);
     return 0;
   }

@@ -18,7 +18,6 @@
 // Besides the CSV it writes OUT.md (OUT without ".csv"): markdown tables of the right-hand-side cost
 // against n, case 5 at n = 100 and the error against n, headed by the load average during the run.
 // scripts/bench_riser.sh runs the set the docs quote (build, bench, tables, PNGs).
-#include <time.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,17 +37,12 @@
 #include "riser/riser_integration.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
+#include "bench_clock.hpp"
 
 using namespace maris;
 using namespace maris::riser;
 
 namespace {
-
-double cpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 RiserParameters builtin(const std::string& id) {
   const auto text = builtinResource("scenarios/riser/" + id + ".json");
@@ -109,9 +103,9 @@ Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSoluti
   RiserRecorder recorder(m, p);
   recorder.sample(0.0, y, true, std::string("profile_static"));
   Run run;
-  const double t0 = cpuSeconds();
+  const double t0 = bench::threadCpuSeconds();
   const SolverStats st = integrateRiser(m, p, plan, y, recorder, ctx);
-  run.cpu = cpuSeconds() - t0;
+  run.cpu = bench::threadCpuSeconds() - t0;
   run.rhs = st.rhs_evaluations;
   run.steps = st.steps;
   const Results r = recorder.finish(st, 0, 0.0);
@@ -151,7 +145,7 @@ Run integrate(const RiserParameters& p, const std::string& method, double value)
   o.state_name = [&](Eigen::Index k) { return stateComponentName(m, k); };
   OdeStats st;
   if (method == "implicit") return integrateImplicit(m, p, s, value);
-  const double t0 = cpuSeconds();
+  const double t0 = bench::threadCpuSeconds();
   if (method == "rk4") {
     o.step = value;
     st = integrateRk4(rhs, y, o, ctx, observe);
@@ -161,7 +155,7 @@ Run integrate(const RiserParameters& p, const std::string& method, double value)
     o.atol = value * 1e-3;
     st = integrateDopri5(rhs, y, o, ctx, observe);
   }
-  run.cpu = cpuSeconds() - t0;
+  run.cpu = bench::threadCpuSeconds() - t0;
   run.rhs = st.rhs_evaluations;
   run.steps = st.steps;
   for (std::size_t k = run.mid.size(); k-- > 0;) run.mid[k] -= run.mid[0];  // displacement, as the implicit path
@@ -185,12 +179,12 @@ double rhsCost(RiserParameters p) {
   Eigen::VectorXd y = restState(m, m.initial_orientation, m.initial_top), dy(y.size());
   RiserWorkspace ws = makeWorkspace(m, kBaumgarte);
   long count = 0;
-  const double t0 = cpuSeconds();
+  const double t0 = bench::threadCpuSeconds();
   double t1 = t0;
   do {
     for (int k = 0; k < 20; ++k) evaluateRhs(m, ws, 1.0, y, dy);
     count += 20;
-    t1 = cpuSeconds();
+    t1 = bench::threadCpuSeconds();
   } while (t1 - t0 < 0.05);
   return (t1 - t0) / count;
 }
