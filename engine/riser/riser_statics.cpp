@@ -305,6 +305,10 @@ StaticSolution solveStatics(const RiserModel& m, RunContext& context) {
       done = 1.0;
       out.load_steps = 1;
       out.banded = true;
+    } else {
+      // Say so: the fallback is O(n³) per iteration, minutes at n ≈ 1000.
+      context.warn("statics: the O(n) Newton did not converge at full load (" + std::to_string(out.iterations) +
+                   " iterations); used the dense Newton with load continuation, O(n³) per iteration");
     }
   }
   while (done < 1.0) {
