@@ -32,10 +32,6 @@ Vec3 bottomHoldPoint(const RiserModel& m) {
 
 }  // namespace
 
-bool topForceKnown(const RiserModel& m, int c) {
-  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
-}
-
 RiserWorkspace makeWorkspace(const RiserModel& m, double stabilisation_rate) {
   RiserWorkspace ws;
   const int s = m.segmentCount();
@@ -183,7 +179,7 @@ ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& po
     out.position[k] = pose.position[j - 1] + dp - pose.position[j];
     out.velocity[k] = pose.velocity[j - 1] + pose.omega[j - 1].cross(dp) - pose.velocity[j];
   }
-  if (m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped) {
+  if (bottomHeld(m)) {
     const Vec3 dl = m.segments[last].length * pose.rotation[last].col(0);
     out.position[nb - 1] = pose.position[last] + dl - bottomHoldPoint(m);
     out.velocity[nb - 1] = pose.velocity[last] + pose.omega[last].cross(dl);
@@ -220,7 +216,7 @@ void assembleReactionMatrix(const RiserModel& m, RiserWorkspace& ws) {
   }
   const int k = nb - 1;
   ws.upper[k].setZero();
-  if (m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped) {
+  if (bottomHeld(m)) {
     const auto wd_last = wd(last);
     ws.lower[k] = -wd_last.topRows<3>().transpose();
     ws.diag[k] = wd_last.topRows<3>() - skew(d(last)) * wd_last.bottomRows<3>();
@@ -277,7 +273,7 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
     const int j = f + k;
     ws.rhs[k] = kappa(j - 1) + stabilisation(m, phi, k, alpha) + farEnd(wb(j - 1), d(j - 1)) - wb(j).head<3>();
   }
-  const bool held = m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+  const bool held = bottomHeld(m);
   ws.rhs[nb - 1] = held ? Vec3(farEnd(wb(last), d(last)) + kappa(last) + stabilisation(m, phi, nb - 1, alpha))
                         : Vec3::Zero();
   solveReactionSystem(m, ws);
@@ -344,7 +340,7 @@ void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, co
     const int j = f + k;
     row_residual[k] = x[j].head<3>() - farEnd(x[j - 1], d(j - 1)) - kappa(j - 1) - stabilisation(m, phi, k, alpha);
   }
-  const bool held = m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+  const bool held = bottomHeld(m);
   row_residual[nb - 1] = held ? Vec3(farEnd(x[last], d(last)) + kappa(last) + stabilisation(m, phi, nb - 1, alpha))
                               : Vec3(reaction[last + 1]);
 }

@@ -88,9 +88,6 @@ void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, co
 // velocities. O(n). Returns the largest |Φ| [m] after the projection. Joint coordinates: no-op, returns 0.
 double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, int iterations = 2);
 
-// Top components whose force is known (free top: all; tensioner: z) instead of their motion.
-bool topForceKnown(const RiserModel& m, int c);
-
 // Renormalises the quaternions of y (after a step) and, without torsion, removes spin about the axes.
 void normaliseState(const RiserModel& m, Eigen::VectorXd& y);
 

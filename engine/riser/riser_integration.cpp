@@ -111,12 +111,14 @@ void integrateImplicit(const RiserModel& m, const RiserParameters& p, const Inte
   RotationVectorChart chart(m, plan.stabilisation_rate);
   SecondOrderSystem system;
   system.size = chart.size();
-  Eigen::VectorXd last_residual, shifted_residual, direction, right_side;  // for the work rows below
+  // Joint coordinates keep the last residual for their work rows (below); absolute coordinates need no copy.
+  const bool joint = m.formulation == Formulation::Joint;
+  Eigen::VectorXd last_residual, shifted_residual, direction, right_side;
   system.residual = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
                         Eigen::VectorXd& r) {
     context.throwIfCancelled();
     chart.residual(t, q, v, acc, r);
-    last_residual = r;
+    if (joint) last_residual = r;
   };
   // The O(n) Newton matrices give the work-integral rows the identity (the powers feed back into nothing), so
   // their corrections lag one iteration behind. On the first iteration of a step, where the correction is
@@ -150,7 +152,7 @@ void integrateImplicit(const RiserModel& m, const RiserParameters& p, const Inte
   std::optional<JointNewtonMatrix> joint_newton;
   RiserWorkspace projection_ws = makeWorkspace(m, 0.0);
   Eigen::VectorXd projected;
-  if (m.formulation == Formulation::Joint) {
+  if (joint) {
     joint_newton.emplace(m, chart, plan.stabilisation_rate);
     system.solve_iteration_matrix = [&](const IterationMatrixRequest& request, Eigen::VectorXd& rhs) {
       context.throwIfCancelled();

@@ -161,6 +161,14 @@ std::pair<int, double> RiserModel::locate(double s) const {
   return {i, std::clamp(s - segments[i].arc_start, 0.0, segments[i].length)};
 }
 
+bool topForceKnown(const RiserModel& m, int c) {
+  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
+}
+
+bool bottomHeld(const RiserModel& m) {
+  return m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+}
+
 RiserModel buildRiserModel(const RiserParameters& p) {
   RiserModel m;
   m.n = p.segment_count;
@@ -240,7 +248,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   for (int i = 0; i <= m.n; ++i) s[i] = m.segments[i].arc_start;
   s[m.n + 1] = m.length;
   Vec3 top(p.top_x, p.top_y, p.top_z);
-  const bool fixed_bottom = m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+  const bool fixed_bottom = bottomHeld(m);
   std::vector<Vec3> points;
   if (m.top == TopCondition::Tensioner) {
     const double h = std::hypot(top.x() - m.anchor.x(), top.y() - m.anchor.y());

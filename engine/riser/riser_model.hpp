@@ -114,6 +114,11 @@ struct RiserModel {
   std::pair<int, double> locate(double s) const;
 };
 
+// Top components whose force is known (free top: all; tensioner: z) instead of their motion.
+bool topForceKnown(const RiserModel& m, int c);
+// Bottom end held at a point (pinned or clamped): its position is a constraint with a reaction.
+bool bottomHeld(const RiserModel& m);
+
 // Derived quantities from validated parameters: segments, mass matrices, stiffnesses, initial shape.
 RiserModel buildRiserModel(const RiserParameters& p);
 

@@ -23,10 +23,6 @@ constexpr double kOnAxis = 1e-6;
 // counts as slowly growing; the coarse chain with internal flow has such modes (4.5e-6 at n = 10, 10 m/s).
 constexpr double kSlowGrowth = 1e-3;
 
-bool topFree(const RiserModel& m, int c) {
-  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
-}
-
 // Perturbation coordinates at the equilibrium, each dimensionless (lengths divided by `scale`):
 // J: free top axes (scale L) and rotation increments; A: segment origin positions (scale Δ) and rotations.
 struct Coordinates {
@@ -55,7 +51,7 @@ Coordinates makeCoordinates(const RiserModel& m, const StaticSolution& statics) 
   Coordinates q;
   const bool joint = m.formulation == Formulation::Joint;
   for (int c = 0; c < 3 && joint; ++c)
-    if (topFree(m, c)) q.top_axes.push_back(c);
+    if (topForceKnown(m, c)) q.top_axes.push_back(c);
   for (int i = m.first_dynamic; i <= m.last_dynamic && !joint; ++i)
     for (int c = 0; c < 3; ++c) q.positions.push_back({i, c});
   for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
@@ -212,7 +208,7 @@ Eigen::MatrixXd connectedBasis(const RiserModel& m, const StaticSolution& static
   RiserPose pose;
   pose.resize(m.segmentCount());
   const int f = m.first_dynamic, last = m.last_dynamic;
-  const bool bottom_held = m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
+  const bool bottom_held = bottomHeld(m);
   auto gaps = [&](const Eigen::VectorXd& y) {
     poseFromState(m, 0.0, y, pose);
     std::vector<double> g;
@@ -220,7 +216,7 @@ Eigen::MatrixXd connectedBasis(const RiserModel& m, const StaticSolution& static
     Vec3 hold = m.topAt(0.0).position;
     if (f == 1) hold += m.segments[0].length * pose.tangent(0);
     for (int c = 0; c < 3; ++c)
-      if (!topFree(m, c)) g.push_back((pose.position[f][c] - hold[c]) / m.element_length);
+      if (!topForceKnown(m, c)) g.push_back((pose.position[f][c] - hold[c]) / m.element_length);
     for (int j = f + 1; j <= last; ++j)
       push(pose.position[j - 1] + m.segments[j - 1].length * pose.tangent(j - 1) - pose.position[j]);
     if (bottom_held) {

@@ -125,7 +125,7 @@ bool ForceSpaceNewtonMatrix::solve(const IterationMatrixRequest& request, Eigen:
   for (int c = 0; c < 3; ++c)
     if (!topForceKnown(m_, c)) z_[c] = rhs[chartIndex(0) + c];
   for (int k = 1; k < segments_; ++k) z_.segment<3>(reactionIndex(k)) = rhs.segment<3>(chartIndex(k)) - far(k - 1);
-  if (m_.bottom == BottomCondition::Pinned || m_.bottom == BottomCondition::Clamped)
+  if (bottomHeld(m_))
     z_.segment<3>(reactionIndex(segments_)) = far(segments_ - 1);
   lu_.solve(z_);
   for (int k = 0; k < segments_; ++k) rhs.segment<6>(chartIndex(k)) = z_.segment<6>(segmentIndex(k));

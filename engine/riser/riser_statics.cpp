@@ -20,19 +20,12 @@ struct Configuration {
   Vec3 end_reaction = Vec3::Zero();
 };
 
-bool topFree(const RiserModel& m, int c) {
-  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
-}
-bool bottomHeld(const RiserModel& m) {
-  return m.bottom == BottomCondition::Pinned || m.bottom == BottomCondition::Clamped;
-}
-
 class StaticProblem {
  public:
   explicit StaticProblem(const RiserModel& model) : m_(model), ws_(makeWorkspace(model, 0.0)) {
     m_.formulation = Formulation::Joint;  // statics always in joint coordinates
     for (int c = 0; c < 3; ++c)
-      if (topFree(m_, c)) top_free_.push_back(c);
+      if (topForceKnown(m_, c)) top_free_.push_back(c);
     rotation_dofs_ = m_.torsion ? 3 : 2;
     size_ = static_cast<int>(top_free_.size()) + rotation_dofs_ * (m_.last_dynamic - m_.first_dynamic + 1) +
             (bottomHeld(m_) ? 3 : 0);
@@ -212,7 +205,7 @@ Configuration configurationOf(const RiserModel& m, const Eigen::VectorXd& y, con
     out.orientation[i] = Eigen::Quaterniond(y[o], y[o + 1], y[o + 2], y[o + 3]).normalized();
   }
   for (int c = 0; c < 3; ++c)
-    if (topFree(m, c)) out.top[c] = y[c];
+    if (topForceKnown(m, c)) out.top[c] = y[c];
   return out;
 }
 
