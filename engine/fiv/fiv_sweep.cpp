@@ -106,11 +106,9 @@ SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunCo
       for (std::size_t i = n_speed; i-- > 0;) {
         branch.down[i] = solvePoint(model, settings.speeds[i], h_star, settings, state, context);
         account(branch.down[i]);
-        if (observe && result.branches.empty() && context.wantsPartialResults()) {
-          SweepBranch up_only = branch;  // the first branch's up-sweep is complete
-          up_only.down.clear();
-          observe(sweepSoFar(result, up_only));
-        }
+        // The first branch's complete up-sweep (sweepSoFar leaves the unfinished down-sweep out), in case
+        // the throttle dropped its last up point.
+        if (observe && result.branches.empty() && context.wantsPartialResults()) observe(sweepSoFar(result, branch));
       }
     }
     // Onset: lowest speed from which every higher up-sweep amplitude is at least the threshold.
