@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <numbers>
 #include <sstream>
 
@@ -19,6 +18,7 @@
 #include "core/scenario.hpp"
 #include "seismic/free_field.hpp"
 #include "seismic/seismic_solve.hpp"
+#include "bench_clock.hpp"
 
 using namespace maris;
 using namespace maris::seismic;
@@ -29,8 +29,6 @@ double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Process CPU time [s]: on a shared machine the wall time mostly measures the other jobs.
-double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 double peakError(const std::vector<double>& fe, const std::vector<double>& ff) {
   double a = 0.0, b = 0.0;
@@ -54,7 +52,7 @@ int main(int argc, char** argv) {
     const ElasticMaterial seabed{2700.0, 4500.0, 1800.0};
     const WaterLayer water{1025.0, 1450.0, 600.0};
     const auto t0 = std::chrono::steady_clock::now();
-    const double c0 = cpuSeconds();
+    const double c0 = maris::bench::processCpuSeconds();
     double worst = 0.0, checksum = 0.0;
     for (int a = 0; a < 100; ++a) {
       const FreeField ff(seabed, water, WaveType::P, a * 0.75 * std::numbers::pi / 180.0);
@@ -65,7 +63,7 @@ int main(int argc, char** argv) {
         worst = std::max(worst, std::abs(ff.energyResidual(amp)));
       }
     }
-    const double t = seconds(t0), c = cpuSeconds() - c0;
+    const double t = seconds(t0), c = maris::bench::processCpuSeconds() - c0;
     std::printf("free field: 1e5 transfer functions in %.4f s wall, %.4f s CPU, worst energy residual %.2e (checksum %.6f)\n",
                 t, c, worst, checksum);
     csv << "free_field_transfer,P 0-74.25 deg x 0.02-20 Hz,100000,0," << t << "," << c << "," << worst << ",,\n";
@@ -84,9 +82,9 @@ int main(int argc, char** argv) {
     p.cutoff_frequency = f_cut;
     RunContext ctx;
     const auto t0 = std::chrono::steady_clock::now();
-    const double c0 = cpuSeconds();
+    const double c0 = maris::bench::processCpuSeconds();
     const FeCase c = runFeCase(p, p.angle_deg, true, false, ctx);
-    const double t = seconds(t0), cpu = cpuSeconds() - c0;
+    const double t = seconds(t0), cpu = maris::bench::processCpuSeconds() - c0;
     const double eb_x = peakError(c.seabed_fe_ux, c.seabed_ff_ux), eb_y = peakError(c.seabed_fe_uy, c.seabed_ff_uy);
     const double ea_y = peakError(c.probe_fe_uy, c.probe_ff_uy);
     std::printf("verification box f_cut %4.1f Hz: %6d cells, %5ld steps, %7.2f s wall, %6.2f s CPU; peak errors B ux %.4f "
@@ -109,9 +107,9 @@ int main(int argc, char** argv) {
   for (double f_cut : cutoffs) {
     reef.cutoff_frequency = f_cut;
     RunContext ctx;
-    const double c0 = cpuSeconds();
+    const double c0 = maris::bench::processCpuSeconds();
     cases.push_back(runFeCase(reef, 30.0, true, false, ctx));
-    cpu_times.push_back(cpuSeconds() - c0);
+    cpu_times.push_back(maris::bench::processCpuSeconds() - c0);
     ratios.push_back(amplificationRatios(cases.back()));
   }
   const PeakRatios& best = ratios.back();

@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <string>
 #include <vector>
 
@@ -17,6 +16,7 @@
 #include "ship/hull_offsets.hpp"
 #include "ship/michell_resistance.hpp"
 #include "ship/resistance_sweep.hpp"
+#include "bench_clock.hpp"
 
 using namespace maris::ship;
 
@@ -35,8 +35,6 @@ double exactResistance(double fn) {
   return michellWaveResistance(k, fn * std::sqrt(kG * kL), kG, kRho, s).resistance;
 }
 
-// Process CPU time [s]: the machine is shared, so wall time overstates the cost of single-threaded work.
-double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 }  // namespace
 
@@ -56,7 +54,7 @@ int main(int argc, char** argv) {
         s.relative_tolerance = rtol;
         int repeats = 0;
         WaveResistance r;
-        const double c0 = cpuSeconds();
+        const double c0 = maris::bench::processCpuSeconds();
         const auto t0 = std::chrono::steady_clock::now();
         auto t1 = t0;
         do {
@@ -65,7 +63,7 @@ int main(int argc, char** argv) {
           t1 = std::chrono::steady_clock::now();
         } while (seconds(t0, t1) < 0.05);
         std::snprintf(line, sizeof line, "single,%.2f,%d,%d,%.0e,%.6e,%.6e,%.4e,%.4e,%ld\n", fn, nx, nz, rtol,
-                      seconds(t0, t1) / repeats, (cpuSeconds() - c0) / repeats, (r.resistance - exact) / exact, r.error_estimate / r.resistance,
+                      seconds(t0, t1) / repeats, (maris::bench::processCpuSeconds() - c0) / repeats, (r.resistance - exact) / exact, r.error_estimate / r.resistance,
                       r.evaluations);
         csv += line;
         std::fputs(line, stdout);
@@ -85,12 +83,12 @@ int main(int argc, char** argv) {
       const HullGrid grid = sampleHull(makeParametricHull(kL, kB, kT), nx, nz);
       MichellSettings s;
       s.relative_tolerance = rtol;
-      const double c0 = cpuSeconds();
+      const double c0 = maris::bench::processCpuSeconds();
       const auto t0 = std::chrono::steady_clock::now();
       const auto r = waveResistanceSweep([&] { return std::make_unique<GridKochin>(grid); }, speeds, kG, kRho, s, 1,
                                          nullptr, "sweep");
       const auto t1 = std::chrono::steady_clock::now();
-      const double cpu = cpuSeconds() - c0;
+      const double cpu = maris::bench::processCpuSeconds() - c0;
       double worst = 0, worst_estimate = 0;
       long evaluations = 0;
       for (std::size_t i = 0; i < r.size(); ++i) {
@@ -118,12 +116,12 @@ int main(int argc, char** argv) {
         GridKochin kochin(sampleHull(s60, nx, nz));
         MichellSettings s;
         s.relative_tolerance = 1e-4;
-        const double c0 = cpuSeconds();
+        const double c0 = maris::bench::processCpuSeconds();
         const auto t0 = std::chrono::steady_clock::now();
         const WaveResistance r = michellWaveResistance(kochin, U, kG, kRho, s);
         const auto t1 = std::chrono::steady_clock::now();
         std::snprintf(line, sizeof line, "series60,%.2f,%d,%d,1e-04,%.6e,%.6e,%.4e,%.4e,%ld\n", fn, nx, nz,
-                      seconds(t0, t1), cpuSeconds() - c0, (r.resistance - reference) / reference, r.error_estimate / r.resistance,
+                      seconds(t0, t1), maris::bench::processCpuSeconds() - c0, (r.resistance - reference) / reference, r.error_estimate / r.resistance,
                       r.evaluations);
         csv += line;
         std::fputs(line, stdout);

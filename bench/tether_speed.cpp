@@ -3,7 +3,6 @@
 // and its time-discretisation error against the cable time step. Writes CSVs into the folder given as argv[1]
 // (default: bench-results/tether).
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +12,7 @@
 #include "core/scenario.hpp"
 #include "tether/tether_parameters.hpp"
 #include "tether/tether_simulation.hpp"
+#include "bench_clock.hpp"
 
 using namespace maris;
 using namespace maris::tether;
@@ -22,8 +22,6 @@ namespace {
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Process CPU time [s]: the build machine is shared, so wall time overstates the cost under load.
-double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 TetherParameters builtinParameters(const std::string& id) {
   return tetherBinder().read(findBuiltin(id)->scenario.parameters);
@@ -38,9 +36,9 @@ std::string catenarySolveTimes() {
     const double span = L / (1.0 + std::pow(10.0, e));
     const int reps = 200000;
     double sink = 0.0;
-    const double cpu0 = cpuSeconds();
+    const double cpu0 = maris::bench::processCpuSeconds();
     for (int i = 0; i < reps; ++i) sink += catenaryFromSpan(span * (1.0 + 1e-12 * (i & 7)), 0.0, L).sag;
-    const double ns = 1e9 * (cpuSeconds() - cpu0) / reps;
+    const double ns = 1e9 * (maris::bench::processCpuSeconds() - cpu0) / reps;
     const Catenary c = catenaryFromSpan(span, 0.0, L);
     const Catenary back = catenaryFromShape(c.sag, 0.0, L);
     const Catenary again = catenaryFromSpan(back.span, 0.0, L);
@@ -64,9 +62,9 @@ std::string closedLoopSpeed() {
       p.cable_enabled = cable;
       RunContext context;
       const auto start = Clock::now();
-      const double cpu0 = cpuSeconds();
+      const double cpu0 = maris::bench::processCpuSeconds();
       simulateTether(p, context);
-      const double wall = secondsSince(start), cpu = cpuSeconds() - cpu0;
+      const double wall = secondsSince(start), cpu = maris::bench::processCpuSeconds() - cpu0;
       std::printf("%-28s %6s %10.3f %10.3f %12.1f\n", id, cable ? "150" : "off", wall, cpu, 60.0 / cpu);
       char row[200];
       std::snprintf(row, sizeof row, "%s,%d,60,%.4f,%.4f,%.1f\n", id, cable ? 150 : 0, wall, cpu, 60.0 / cpu);
@@ -89,7 +87,7 @@ std::string cableTimeStep() {
   for (int substeps : {finest, 12, 20, 40, 80, 160}) {
     p.cable_substeps = substeps;
     RunContext context;
-    const double cpu0 = cpuSeconds();
+    const double cpu0 = maris::bench::processCpuSeconds();
     double max_dev = 0.0, diff = 0.0;
     std::string status;
     try {
@@ -102,7 +100,7 @@ std::string cableTimeStep() {
     } catch (const SolverError& e) {
       status = std::string(" unstable: ") + e.what();
     }
-    const double wall = cpuSeconds() - cpu0;
+    const double wall = maris::bench::processCpuSeconds() - cpu0;
     const double dt = 1.0 / (p.control_rate * substeps);
     std::printf("%9d %10.2e %14.3e %14.3e %8.3f%s\n", substeps, dt, max_dev, diff, wall, status.c_str());
     char row[200];

@@ -3,9 +3,8 @@
 //  2. one float, 600 s of regular waves (H = 2 m, ω = 1 rad/s): state-space memory vs direct convolution at
 //     several time steps; time, real-time factor and max |θ − θ_ref| against a state-space run at h = 0.005 s,
 //     plus the state-space/direct difference at equal step.
-// Times are process CPU seconds (std::clock), so a loaded machine does not inflate them.
+// Times are process CPU seconds (bench_clock.hpp), so a loaded machine does not inflate them.
 // Writes wec_speed.csv (or argv[1]).
-#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -14,10 +13,10 @@
 #include "wec/wec_frequency.hpp"
 #include "wec/wec_model.hpp"
 #include "wec/wec_time.hpp"
+#include "bench_clock.hpp"
 
 using namespace maris::wec;
 namespace {
-double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 double maxDifference(const TimeDomainResult& a, const TimeDomainResult& b) {
   // Compare at common instants (b may be finer by an integer factor).
@@ -40,10 +39,10 @@ int main(int argc, char** argv) {
   buildRadiation(model, p.kernel_duration, 0.005);
   const int repeats = 20;
   double sink = 0.0;
-  const double t0 = cpuSeconds();
+  const double t0 = maris::bench::processCpuSeconds();
   for (int r = 0; r < repeats; ++r)
     for (int i = 0; i < 500; ++i) sink += std::abs(solveFrequency(model, model.floats[0], 0.1 + 0.01 * i).pitch);
-  const double sweep = (cpuSeconds() - t0) / repeats;
+  const double sweep = (maris::bench::processCpuSeconds() - t0) / repeats;
   std::printf("frequency-domain sweep of 500 frequencies: %.3f ms (checksum %.6g)\n", 1e3 * sweep, sink);
   csv += "fd_sweep_500," + std::to_string(0.0) + "," + std::to_string(sweep) + ",,,\n";
 
@@ -65,9 +64,9 @@ int main(int argc, char** argv) {
       o.duration = 600.0;
       o.time_step = h;
       o.state_space = direct == 0;
-      const double a = cpuSeconds();
+      const double a = maris::bench::processCpuSeconds();
       runs[direct] = simulateTimeDomain(m, waves, o, nullptr);
-      const double wall = cpuSeconds() - a;
+      const double wall = maris::bench::processCpuSeconds() - a;
       const double err = maxDifference(runs[direct], reference);
       const char* name = direct ? "direct" : "state_space";
       const double between = direct ? maxDifference(runs[0], runs[1]) : 0.0;
@@ -80,9 +79,9 @@ int main(int argc, char** argv) {
     o.duration = 600.0;
     o.time_step = h;
     o.augmented = o.newmark = true;
-    const double a = cpuSeconds();
+    const double a = maris::bench::processCpuSeconds();
     const TimeDomainResult nm = simulateTimeDomain(m, waves, o, nullptr);
-    const double wall = cpuSeconds() - a;
+    const double wall = maris::bench::processCpuSeconds() - a;
     const double err = maxDifference(nm, reference);
     std::printf("%-12s %8.3f %10.4f %12.0f %14.3e\n", "newmark_aug", h, wall, 600.0 / wall, err);
     csv += "newmark_augmented," + std::to_string(h) + "," + std::to_string(wall) + "," + std::to_string(600.0 / wall) +
