@@ -53,21 +53,6 @@ QCPScatterStyle::ScatterShape seriesShape(int k) {
   return shapes[k % 12];
 }
 
-// Breaks text into lines of at most `width` characters at spaces (QCPTextElement does not wrap, and an
-// unbroken note would widen the layout column and squeeze the legend).
-std::string wrapped(const std::string& text, std::size_t width) {
-  std::string out, line, word;
-  std::stringstream in(text);
-  while (in >> word) {
-    if (!line.empty() && line.size() + 1 + word.size() > width) {
-      out += line + "\n";
-      line.clear();
-    }
-    line += (line.empty() ? "" : " ") + word;
-  }
-  return out + line;
-}
-
 void setLogAxis(QCPAxis* axis, const QString& label, double low, double high) {
   axis->setScaleType(QCPAxis::stLogarithmic);
   axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
@@ -160,7 +145,8 @@ int main(int argc, char** argv) {
   plot.legend->setMargins(QMargins(6, 4, 6, 4));
   const std::string note = maris::bench::leftOutNote(set.left_out, 6);
   if (!note.empty()) {
-    auto* text = new QCPTextElement(&plot, QString::fromStdString(wrapped(note, 150)), QFont("sans", 8));
+    // Wrapped: QCPTextElement does not wrap, and an unbroken note would widen the column and squeeze the legend.
+    auto* text = new QCPTextElement(&plot, maris::ui::wrapAtSpaces(QString::fromStdString(note), 150), QFont("sans", 8));
     text->setTextFlags(Qt::AlignLeft);
     plot.plotLayout()->addElement(2, 0, text);
     std::printf("%s\n", note.c_str());

@@ -16,6 +16,10 @@ namespace maris::ui {
 // Axis label "name [unit]".
 QString axisLabel(const std::string& name, const std::string& unit);
 
+// `text` broken at spaces into lines of at most `max_line` characters (a longer word keeps its own
+// line): for titles and notes in places that do not wrap (a VTK colour bar, a QCPTextElement).
+QString wrapAtSpaces(const QString& text, int max_line);
+
 // One run's results drawn in a plot; `label` prefixes its legend entries when several are shown.
 struct PlotSource {
   QString label;

@@ -43,22 +43,6 @@ bool nearModel(double z, const Bounds3D& model) {
   return z >= model.b[4] - reach && z <= model.b[5] + reach;
 }
 
-// The colour bar sits in a strip ~15 % of the view wide; a long quantity name ("modal amplitude
-// (displacement, or twist for torsion modes)") would run off the right edge, so it is broken at spaces.
-QString wrapTitle(const QString& title, int max_line = 22) {
-  QStringList lines;
-  QString line;
-  for (const QString& word : title.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
-    if (!line.isEmpty() && line.size() + 1 + word.size() > max_line) {
-      lines << line;
-      line.clear();
-    }
-    line += (line.isEmpty() ? QString() : QStringLiteral(" ")) + word;
-  }
-  if (!line.isEmpty()) lines << line;
-  return lines.join(QLatin1Char('\n'));
-}
-
 }  // namespace
 
 SceneView::SceneView(QWidget* parent)
@@ -195,12 +179,13 @@ void SceneView::clear() {
 }
 
 void SceneView::showLiveResults(std::shared_ptr<const Results> partial) {
-  showResults(std::move(partial));
-  gl_->setRenderScale(kLiveRenderScale);
+  display(std::move(partial), kLiveRenderScale);
 }
 
-void SceneView::showResults(std::shared_ptr<const Results> results) {
-  gl_->setRenderScale(1.0);
+void SceneView::showResults(std::shared_ptr<const Results> results) { display(std::move(results), 1.0); }
+
+void SceneView::display(std::shared_ptr<const Results> results, double render_scale) {
+  gl_->setRenderScale(render_scale);
   if (!results || results->view.empty()) {
     if (!results_) clear();
     return;
@@ -244,7 +229,9 @@ void SceneView::rebuildStatic() {
   color_control_->setEnabled(have_scalars_);
   renderer->RemoveViewProp(scalar_bar_);
   if (have_scalars_) {
-    scalar_bar_->SetTitle(wrapTitle(axisLabel(view.scalar_name, view.scalar_unit)).toStdString().c_str());
+    // The colour bar sits in a strip ~15 % of the view wide; a long quantity name ("modal amplitude
+    // (displacement, or twist for torsion modes)") would run off the right edge.
+    scalar_bar_->SetTitle(wrapAtSpaces(axisLabel(view.scalar_name, view.scalar_unit), 22).toStdString().c_str());
     renderer->AddViewProp(scalar_bar_);
   }
   Bounds3D ground = bounds;

@@ -79,6 +79,8 @@ class SceneView : public QWidget {
   void changeEvent(QEvent* event) override;  // a new palette (theme) recolours background and text
 
  private:
+  // showResults / showLiveResults: the results drawn at `render_scale` of the view's resolution.
+  void display(std::shared_ptr<const Results> results, double render_scale);
   void applyPaletteColors();
   void rebuildStatic();
   void applyColorSettings();
