@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 
 #include "riser/riser_parameters.hpp"
 
@@ -54,6 +55,24 @@ inline RiserParameters shortMovingTopRun() {
   p.motion_period = 4.0;
   p.current_direction = 0.6;
   p.stress_times.clear();
+  return p;
+}
+
+// 60 m riser from a tensioned top (1e6 N) to a pinned bottom 5 m off the vertical, 2 m above the sea bed,
+// starting inclined at 0.3 rad without statics, internal flow 10 m/s or none: the moving states of the
+// Newton-matrix tests are built on it.
+inline RiserParameters inclinedTensionedRiser(int n, const std::string& formulation, bool flow) {
+  RiserParameters p;
+  p.length = 60.0;
+  p.segment_count = n;
+  p.bottom_z = -58.0;
+  p.bottom_x = 5.0;
+  p.seabed_level = -60.0;
+  p.top_tension = 1e6;
+  p.formulation = formulation;
+  p.internal_flow_speed = flow ? 10.0 : 0.0;
+  p.solve_statics = false;
+  p.initial_inclination = 0.3;
   return p;
 }
 

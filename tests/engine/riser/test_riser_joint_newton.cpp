@@ -27,18 +27,9 @@ struct JointCase {
 
 JointCase movingJointModel(int n, bool torsion, bool flow) {
   JointCase c;
-  c.p.length = 60.0;
-  c.p.segment_count = n;
-  c.p.bottom_z = -58.0;
-  c.p.bottom_x = 5.0;
-  c.p.seabed_level = -60.0;
-  c.p.top_tension = 1e6;
-  c.p.formulation = "joint";
+  c.p = test::inclinedTensionedRiser(n, "joint", flow);
   c.p.torsion = torsion;
   c.p.current_direction = 0.6;
-  c.p.internal_flow_speed = flow ? 10.0 : 0.0;
-  c.p.solve_statics = false;
-  c.p.initial_inclination = 0.3;
   c.m = buildRiserModel(c.p);
   c.y = restState(c.m, c.m.initial_orientation, c.m.initial_top);
   std::mt19937 rng(5);

@@ -26,16 +26,7 @@ struct MovingModel {
 
 MovingModel movingAbsoluteModel(bool flow) {
   MovingModel c;
-  c.p.length = 60.0;
-  c.p.segment_count = 6;
-  c.p.bottom_z = -58.0;
-  c.p.bottom_x = 5.0;
-  c.p.seabed_level = -60.0;
-  c.p.top_tension = 1e6;
-  c.p.formulation = "absolute";
-  c.p.internal_flow_speed = flow ? 10.0 : 0.0;
-  c.p.solve_statics = false;
-  c.p.initial_inclination = 0.3;
+  c.p = test::inclinedTensionedRiser(6, "absolute", flow);
   c.m = buildRiserModel(c.p);
   c.y = restState(c.m, c.m.initial_orientation, c.m.initial_top);
   std::mt19937 rng(7);
