@@ -110,7 +110,7 @@ class HistoryRecorder {
 // (β = 0, γ = ½) on θ, Newton–Raphson on the position constraints for (x, z), velocities from C_q q̇ = 0,
 // accelerations and multipliers from the KKT system; the implicit velocity update is iterated to convergence.
 TimeDomainResult simulateNewmark(const WecModel& model, const WaveField& waves, const TimeDomainOptions& options,
-                                 RunContext* context);
+                                 RunContext* context, const TimeDomainObserver& observe = {});
 // Stability limit of the explicit Newmark (central-difference) scheme: h ω_max ≤ 2, ω_max the highest undamped
 // pitch frequency [s].
 double newmarkStabilityStep(const WecModel& model);

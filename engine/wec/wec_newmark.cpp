@@ -58,7 +58,7 @@ double newmarkStabilityStep(const WecModel& model) {
 }
 
 TimeDomainResult simulateNewmark(const WecModel& model, const WaveField& waves, const TimeDomainOptions& options,
-                                 RunContext* context) {
+                                 RunContext* context, const TimeDomainObserver& observe) {
   TimeDomainOptions o = options;
   o.augmented = true;
   o.projection = false;  // WecDynamics::project only measures the drift
@@ -86,7 +86,10 @@ TimeDomainResult simulateNewmark(const WecModel& model, const WaveField& waves, 
   for (long n = 0;; ++n) {
     const double t = h * static_cast<double>(n);
     recorder.accumulate(loads, n > 0 ? h : 0.0);
-    if (n % o.output_stride == 0 || n == n_steps) recorder.record(t, waves.elevation(0.0, t), loads);
+    if (n % o.output_stride == 0 || n == n_steps) {
+      recorder.record(t, waves.elevation(0.0, t), loads);
+      if (observe && context && n < n_steps && context->wantsPartialResults()) observe(r);
+    }
     if (n == n_steps) break;
     y_n = y;
     dy_n = dy;

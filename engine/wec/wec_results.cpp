@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace maris::wec {
@@ -84,6 +85,38 @@ void appendHistory(Table& table, const TimeDomainResult& td, const std::vector<d
     table.add(col("pto_power", i) + suffix, "W", h.pto_power);
     table.add(col("pto_energy", i) + suffix, "J", h.pto_energy);
   }
+}
+
+Table historyTable(const TimeDomainResult& main, const TimeDomainResult* augmented, const std::vector<double>& theta0,
+                   std::size_t rows) {
+  // The first `rows` instants of a run (copies: the partial and the final table hold the same numbers).
+  auto cut = [rows](const std::vector<double>& v) {
+    return std::vector<double>(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(rows));
+  };
+  auto head = [&cut](const TimeDomainResult& td) {
+    TimeDomainResult out;
+    out.time = cut(td.time);
+    out.wave_at_origin = cut(td.wave_at_origin);
+    for (const auto& h : td.floats) {
+      FloatHistory c;
+      c.theta = cut(h.theta);
+      c.theta_dt = cut(h.theta_dt);
+      c.theta_dtdt = cut(h.theta_dtdt);
+      c.hinge_fx = cut(h.hinge_fx);
+      c.hinge_fz = cut(h.hinge_fz);
+      c.moment_y = cut(h.moment_y);
+      c.pto_power = cut(h.pto_power);
+      c.pto_energy = cut(h.pto_energy);
+      out.floats.push_back(std::move(c));
+    }
+    return out;
+  };
+  Table t;
+  t.name = "time_history";
+  t.title = "Time histories (" + main.method + ")";
+  appendHistory(t, head(main), theta0, "", true);
+  if (augmented) appendHistory(t, head(*augmented), theta0, "_aug", false);
+  return t;
 }
 
 Table kernelTable(const FloatModel& f) {
@@ -180,6 +213,37 @@ std::vector<PlotSpec> wecPlots(std::size_t n, bool have_td_points, bool have_aug
   return p;
 }
 
+std::string powerMatrixColumn(double hs) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "power_hs_%gm", hs);
+  std::string name = buf;
+  std::replace(name.begin(), name.end(), '.', 'p');
+  return name;
+}
+
+PlotSpec powerMatrixPlot(const std::vector<double>& hs, const std::string& spectrum) {
+  PlotSpec plot;
+  plot.name = "power_matrix";
+  plot.title = "Mean PTO power of all floats in irregular seas (" + spectrum + ")";
+  plot.table = "power_matrix";
+  plot.x = "peak_period";
+  for (double h : hs) plot.y.push_back(powerMatrixColumn(h));
+  return plot;
+}
+
+PlotSpec responseSpectraPlot(std::size_t float_count) {
+  PlotSpec plot;
+  plot.name = "hinge_reaction_spectra";
+  plot.title = "Hinge reaction spectra S_F = |F_h/a|^2 S_eta";
+  plot.table = "response_spectra";
+  plot.x = "omega";
+  for (std::size_t i = 0; i < float_count; ++i) {
+    plot.y.push_back(col("hinge_fx_spectrum", i));
+    plot.y.push_back(col("hinge_fz_spectrum", i));
+  }
+  return plot;
+}
+
 View3D wecView(const WecModel& model, const WaveField& waves, const TimeDomainResult& td, int frames) {
   View3D v;
   v.scalar_name = "wave elevation";
@@ -242,12 +306,17 @@ View3D wecView(const WecModel& model, const WaveField& waves, const TimeDomainRe
     sea.grid_u = nu;
     sea.grid_v = nv;
     sea.opacity = 0.5;
+    // Long-crested waves along x: η depends on x only, so each column of the grid is evaluated once.
+    std::vector<double> x(nu), eta(nu);
+    for (int i = 0; i < nu; ++i) {
+      x[i] = x_lo + (x_hi - x_lo) * i / (nu - 1);
+      eta[i] = waves.elevation(x[i], frame.time);
+    }
     for (int j = 0; j < nv; ++j)
       for (int i = 0; i < nu; ++i) {
-        const double x = x_lo + (x_hi - x_lo) * i / (nu - 1), y = -y_half + 2.0 * y_half * j / (nv - 1);
-        const double eta = waves.elevation(x, frame.time);
-        sea.points.emplace_back(x, y, eta);
-        sea.scalars.push_back(eta);
+        const double y = -y_half + 2.0 * y_half * j / (nv - 1);
+        sea.points.emplace_back(x[i], y, eta[i]);
+        sea.scalars.push_back(eta[i]);
       }
     frame.shapes.push_back(std::move(sea));
     v.frames.push_back(std::move(frame));

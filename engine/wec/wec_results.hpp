@@ -19,12 +19,22 @@ Table timeDomainRaoTable(const std::vector<SteadyResponse>& points, std::size_t 
 // Time histories; `suffix` distinguishes formulations ("" classical, "_aug" augmented).
 void appendHistory(Table& table, const TimeDomainResult& td, const std::vector<double>& theta0, const std::string& suffix,
                    bool with_time);
+// The "time_history" table of the first `rows` recorded instants of `main` and, if given, of the augmented run
+// (columns with suffix "_aug"); rows ≤ the length of each run. A partial table's rows equal the final one's.
+Table historyTable(const TimeDomainResult& main, const TimeDomainResult* augmented, const std::vector<double>& theta0,
+                   std::size_t rows);
 // Kernels and their modal fits for float 1.
 Table kernelTable(const FloatModel& f);
 // A(ω), B(ω), |X(ω)| of float 1 on the sweep.
 Table hydroTable(const WecModel& model, const std::vector<double>& omega);
 
 std::vector<PlotSpec> wecPlots(std::size_t float_count, bool have_td_points, bool have_augmented);
+// Column of the power matrix for significant height hs [m]: "power_hs_1p5m".
+std::string powerMatrixColumn(double hs);
+// Power matrix against peak period, one curve per significant height.
+PlotSpec powerMatrixPlot(const std::vector<double>& hs, const std::string& spectrum);
+// Hinge reaction spectra of every float (table "response_spectra").
+PlotSpec responseSpectraPlot(std::size_t float_count);
 
 // Jacket legs (boxes), hinges (spheres), arms (tubes), hemispheres moving with θ(t), wave surface.
 View3D wecView(const WecModel& model, const WaveField& waves, const TimeDomainResult& td, int frames);

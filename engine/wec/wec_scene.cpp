@@ -24,20 +24,52 @@ std::string fmt(const char* format, double a, double b = 0.0) {
   return buf;
 }
 
-// Frequency sweep, flags where the deep-water coefficients are approximate.
-void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& res, RunContext& ctx) {
-  std::vector<double> omega;
-  for (int i = 0; i < p.frequency_count; ++i)
-    omega.push_back(p.omega_min + (p.omega_max - p.omega_min) * i / (p.frequency_count - 1));
-  std::vector<std::vector<FrequencyResponse>> resp(model.floats.size());
-  for (std::size_t f = 0; f < model.floats.size(); ++f)
-    for (double w : omega) resp[f].push_back(solveFrequency(model, model.floats[f], w));
+// Partial results for live plots: the finished part of the results, the tables being filled and the radiation
+// kernel table, with the final plot list, so a GUI draws them as it will draw the finished run (only fewer rows).
+struct LivePublisher {
+  RunContext& ctx;
+  const Results& finished;
+  std::vector<PlotSpec> plots;
+  Table kernel;
+  bool wanted() const { return ctx.wantsPartialResults(); }
+  void publish(std::vector<Table> growing) const {
+    auto partial = std::make_shared<Results>();
+    partial->scalars = finished.scalars;
+    partial->tables = finished.tables;
+    for (auto& t : growing) partial->tables.push_back(std::move(t));
+    partial->tables.push_back(kernel);
+    partial->plots = plots;
+    ctx.publishPartial(std::move(partial));
+  }
+};
+
+// The frequency-response table of the frequencies done so far, with the deep-water flag.
+Table sweepTable(const std::vector<double>& omega, const std::vector<std::vector<FrequencyResponse>>& resp,
+                 double omega_deep) {
   Table t = frequencyTable(omega, resp);
-  const double omega_deep = std::sqrt(std::numbers::pi * p.gravity / p.depth);  // kh = π
   std::vector<double> flag;
   for (double w : omega) flag.push_back(w >= omega_deep ? 1.0 : 0.0);
   t.add("deep_water", "-", flag);
-  res.tables.push_back(std::move(t));
+  return t;
+}
+
+// Frequency sweep, flags where the deep-water coefficients are approximate.
+void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& res, RunContext& ctx,
+                        const LivePublisher& live) {
+  std::vector<double> omega;
+  for (int i = 0; i < p.frequency_count; ++i)
+    omega.push_back(p.omega_min + (p.omega_max - p.omega_min) * i / (p.frequency_count - 1));
+  const double omega_deep = std::sqrt(std::numbers::pi * p.gravity / p.depth);  // kh = π
+  std::vector<std::vector<FrequencyResponse>> resp(model.floats.size());
+  for (std::size_t k = 0; k < omega.size(); ++k) {
+    for (std::size_t f = 0; f < model.floats.size(); ++f) resp[f].push_back(solveFrequency(model, model.floats[f], omega[k]));
+    ctx.throwIfCancelled();
+    if (k + 1 < omega.size() && live.wanted()) {
+      const std::vector<double> done(omega.begin(), omega.begin() + static_cast<std::ptrdiff_t>(k + 1));
+      live.publish({sweepTable(done, resp, omega_deep), hydroTable(model, done)});
+    }
+  }
+  res.tables.push_back(sweepTable(omega, resp, omega_deep));
   res.tables.push_back(hydroTable(model, omega));
   if (p.omega_min < omega_deep && p.hydro_source == "hemisphere_hulme")
     ctx.warn(fmt("below %.3g rad/s kh < pi at %.3g m depth: the deep-water Hulme coefficients are approximate there "
@@ -57,25 +89,17 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
     pm.name = "power_matrix";
     pm.title = "Mean PTO power of all floats in irregular seas (" + p.spectrum + ")";
     pm.add("peak_period", "s", p.power_tp);
-    PlotSpec plot;
-    plot.name = "power_matrix";
-    plot.title = pm.title;
-    plot.table = "power_matrix";
-    plot.x = "peak_period";
     for (double hs : p.power_hs) {
       std::vector<double> row;
       for (double tp : p.power_tp) {
+        ctx.throwIfCancelled();
         double total = 0.0;
         for (const auto& f : model.floats) total += irregularMeanPower(model, f, p.spectrum, hs, tp, p.peak_enhancement);
         row.push_back(total);
       }
-      std::string name = fmt("power_hs_%gm", hs);
-      for (auto& c : name) if (c == '.') c = 'p';
-      pm.add(name, "W", row);
-      plot.y.push_back(name);
+      pm.add(powerMatrixColumn(hs), "W", row);
     }
     res.tables.push_back(std::move(pm));
-    res.plots.push_back(std::move(plot));
   }
 }
 
@@ -120,7 +144,7 @@ void addRadiationScalars(const WecModel& model, Results& res, RunContext& ctx) {
 }
 
 void addTimeDomainChecks(const WecParameters& p, const WecModel& model, const TimeDomainOptions& base, Results& res,
-                         RunContext& ctx) {
+                         RunContext& ctx, const LivePublisher& live) {
   if (p.check_frequencies.empty()) return;
   std::vector<SteadyResponse> points;
   double err_amp = 0.0, err_phase = 0.0;
@@ -133,6 +157,7 @@ void addTimeDomainChecks(const WecParameters& p, const WecModel& model, const Ti
       err_amp = std::max(err_amp, std::abs(std::abs(td) / std::abs(fd) - 1.0));
       err_phase = std::max(err_phase, std::abs(std::arg(td / fd)) * 180.0 / std::numbers::pi);
     }
+    if (k + 1 < p.check_frequencies.size() && live.wanted()) live.publish({timeDomainRaoTable(points, model.floats.size())});
   }
   res.tables.push_back(timeDomainRaoTable(points, model.floats.size()));
   res.addScalar("td_fd_rao_amplitude_error", err_amp, "-", "max relative |RAO| difference, time vs frequency domain");
@@ -149,11 +174,6 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
   t.name = "response_spectra";
   t.title = "Response spectra in the irregular sea (" + p.spectrum + ", frequency domain)";
   t.add("omega", "rad/s", omega);
-  PlotSpec plot;
-  plot.name = "hinge_reaction_spectra";
-  plot.title = "Hinge reaction spectra S_F = |F_h/a|^2 S_eta";
-  plot.table = t.name;
-  plot.x = "omega";
   const double settle = p.ramp_duration + settlingTime(model);
   std::size_t k0 = 0;
   while (k0 + 1 < td.time.size() && td.time[k0] < settle) ++k0;
@@ -173,8 +193,6 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
     t.add("hinge_fx_spectrum_" + n, "N^2*s/rad", s.hinge_fx);
     t.add("hinge_fz_spectrum_" + n, "N^2*s/rad", s.hinge_fz);
     t.add("moment_spectrum_" + n, "N^2*m^2*s/rad", s.moment_y);
-    plot.y.push_back("hinge_fx_spectrum_" + n);
-    plot.y.push_back("hinge_fz_spectrum_" + n);
     res.addScalar("sd_pitch_fd_" + n, s.sd_pitch * 180.0 / std::numbers::pi, "deg", "Std of pitch, frequency domain");
     res.addScalar("sd_hinge_fx_fd_" + n, s.sd_fx, "N", "Std of the horizontal hinge reaction, frequency domain");
     res.addScalar("sd_hinge_fz_fd_" + n, s.sd_fz, "N", "Std of the vertical hinge reaction, frequency domain");
@@ -186,7 +204,14 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
     res.addScalar("sd_hinge_fz_td_" + n, deviation(h.hinge_fz), "N", "Std of the vertical hinge reaction, time domain");
   }
   res.tables.push_back(std::move(t));
-  res.plots.push_back(std::move(plot));
+}
+
+// Every plot of the finished run, in order (partial results carry the same list).
+std::vector<PlotSpec> allPlots(const WecParameters& p, std::size_t float_count) {
+  std::vector<PlotSpec> plots = wecPlots(float_count, !p.check_frequencies.empty(), p.formulation == "both");
+  if (!p.power_hs.empty()) plots.push_back(powerMatrixPlot(p.power_hs, p.spectrum));
+  if (p.wave_type == "irregular") plots.push_back(responseSpectraPlot(float_count));
+  return plots;
 }
 
 Results solveWec(const WecParameters& p, RunContext& ctx) {
@@ -196,9 +221,13 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   WecModel model = buildWecModel(p);
   buildRadiation(model, p.kernel_duration, p.time_step);
   addRadiationScalars(model, res, ctx);
+  const std::size_t nf = model.floats.size();
+  const bool both = p.formulation == "both";
+  const LivePublisher live{ctx, res, allPlots(p, nf), kernelTable(model.floats.front())};
+  if (live.wanted()) live.publish({});
   ctx.throwIfCancelled();
   ctx.progress(0.1, "frequency domain");
-  addFrequencyDomain(p, model, res, ctx);
+  addFrequencyDomain(p, model, res, ctx, live);
 
   TimeDomainOptions base;
   base.state_space = p.radiation == "state_space";
@@ -213,7 +242,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   res.addScalar("rk4_stability_step", h_lim, "s", "Estimated RK4 stability limit of the fastest mode");
   if (p.time_step > 0.8 * h_lim)
     ctx.warn(fmt("time step %.3g s is close to or above the RK4 stability limit %.3g s", p.time_step, h_lim));
-  addTimeDomainChecks(p, model, base, res, ctx);
+  addTimeDomainChecks(p, model, base, res, ctx, live);
 
   // Main run(s).
   WaveField waves;
@@ -227,12 +256,14 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   std::vector<double> theta0;
   for (const auto& f : model.floats) theta0.push_back(f.theta0);
   ctx.progress(0.6, "time integration");
-  const TimeDomainResult main = simulateTimeDomain(model, waves, base, &ctx);
-  Table hist;
-  hist.name = "time_history";
-  hist.title = "Time histories (" + main.method + ")";
-  appendHistory(hist, main, theta0, "", true);
-  const bool both = p.formulation == "both";
+  // Live time histories: of the main run alone, or, comparing formulations, rows the second run has reached
+  // (the table needs both runs' columns to the same length).
+  TimeDomainObserver observe_main;
+  if (!both)
+    observe_main = [&](const TimeDomainResult& so_far) {
+      live.publish({historyTable(so_far, nullptr, theta0, so_far.time.size())});
+    };
+  const TimeDomainResult main = simulateTimeDomain(model, waves, base, &ctx, observe_main);
   res.stats.method = main.method;
   res.stats.steps = main.steps;
   res.stats.rhs_evaluations = main.rhs_evaluations;
@@ -241,8 +272,10 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   if (both) {
     TimeDomainOptions aug = base;
     aug.augmented = true;
-    const TimeDomainResult second = simulateTimeDomain(model, waves, aug, &ctx);
-    appendHistory(hist, second, theta0, "_aug", false);
+    const TimeDomainResult second = simulateTimeDomain(model, waves, aug, &ctx, [&](const TimeDomainResult& so_far) {
+      live.publish({historyTable(main, &so_far, theta0, so_far.time.size())});
+    });
+    res.tables.push_back(historyTable(main, &second, theta0, main.time.size()));
     double d_theta = 0.0, amp = 0.0, d_f = 0.0, amp_f = 0.0;
     for (std::size_t i = 0; i < model.floats.size(); ++i)
       for (std::size_t k = 0; k < main.time.size(); ++k) {
@@ -269,9 +302,10 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
     res.stats.rhs_evaluations += second.rhs_evaluations;
     res.addScalar("error_estimate_augmented", second.error_estimate, "rad",
                   "Sum of local-error estimates of theta, augmented run (RK4 embedded pair or Newmark h^2/6 |dtheta_dd|)");
+  } else {
+    res.tables.push_back(historyTable(main, nullptr, theta0, main.time.size()));
   }
-  res.tables.push_back(std::move(hist));
-  for (std::size_t i = 0; i < model.floats.size(); ++i) {
+  for (std::size_t i = 0; i < nf; ++i) {
     const auto& h = main.floats[i];
     const std::string n = std::to_string(i + 1);
     double amp = 0.0, fx = 0.0, fz = 0.0;
@@ -293,9 +327,8 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
     }
   }
   if (p.wave_type == "irregular") addIrregularStatistics(p, model, main, res);
-  res.tables.push_back(kernelTable(model.floats.front()));
-  auto plots = wecPlots(model.floats.size(), !p.check_frequencies.empty(), both);
-  res.plots.insert(res.plots.begin(), plots.begin(), plots.end());
+  res.tables.push_back(live.kernel);
+  res.plots = live.plots;
   ctx.progress(0.95, "3D view");
   res.view = wecView(model, waves, main, p.animation_frames);
   ctx.progress(1.0, "done");

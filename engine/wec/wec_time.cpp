@@ -60,8 +60,8 @@ double rk4StabilityStep(const WecModel& model, const TimeDomainOptions& options)
 }
 
 TimeDomainResult simulateTimeDomain(const WecModel& model, const WaveField& waves, const TimeDomainOptions& o,
-                                    RunContext* context) {
-  if (o.augmented && o.newmark) return simulateNewmark(model, waves, o, context);
+                                    RunContext* context, const TimeDomainObserver& observe) {
+  if (o.augmented && o.newmark) return simulateNewmark(model, waves, o, context, observe);
   WecDynamics sim(model, waves, o);
   const std::size_t nf = model.floats.size();
   TimeDomainResult r;
@@ -87,7 +87,10 @@ TimeDomainResult simulateTimeDomain(const WecModel& model, const WaveField& wave
       r.error_estimate += h / 6.0 * local;
     }
     recorder.accumulate(loads, n > 0 ? h : 0.0);
-    if (n % o.output_stride == 0 || n == n_steps) recorder.record(t, waves.elevation(0.0, t), loads);
+    if (n % o.output_stride == 0 || n == n_steps) {
+      recorder.record(t, waves.elevation(0.0, t), loads);
+      if (observe && context && n < n_steps && context->wantsPartialResults()) observe(r);
+    }
     if (n == n_steps) break;
     // One RK4 step.
     tmp = y + 0.5 * h * k1;

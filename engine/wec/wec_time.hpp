@@ -21,6 +21,7 @@
 // the constraints at position, velocity and acceleration level with no drift.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -73,10 +74,14 @@ struct TimeDomainResult {
   std::string method;
 };
 
+// Sees the run so far (every history the same length) so a caller can publish partial results.
+using TimeDomainObserver = std::function<void(const TimeDomainResult& so_far)>;
+
 // Runs the simulation. Throws SolverError naming float, quantity, time and step if the state becomes
-// non-finite, and RunCancelled when the context asks (context may be null).
+// non-finite, and RunCancelled when the context asks (context may be null). `observe` (optional) is called
+// after a recorded step whenever context->wantsPartialResults(); it only reads, so the result does not depend on it.
 TimeDomainResult simulateTimeDomain(const WecModel& model, const WaveField& waves, const TimeDomainOptions& options,
-                                    RunContext* context);
+                                    RunContext* context, const TimeDomainObserver& observe = {});
 
 // Estimated RK4 stability limit of the linearised system [s]: 2.78/|λ| over the radiation poles,
 // the Baumgarte rate (augmented) and the undamped pitch frequency (2.83/ω).
