@@ -20,7 +20,8 @@
 // which a run (estimated from the measured right-hand-side cost) is skipped with a note (default 180),
 // MARIS_BENCH_REFERENCE_BUDGET = the same for the choice of the same-n reference (default: the row budget),
 // MARIS_BENCH_VARIANTS / MARIS_BENCH_METHODS = comma lists restricting (and ordering) variants and methods,
-// MARIS_BENCH_ESTIMATE_ONLY=1 prints the estimates and runs nothing.
+// MARIS_BENCH_ESTIMATE_ONLY=1 prints the estimates and runs nothing, MARIS_BENCH_SKIPPED_ONLY=1 writes only the
+// rows skipped for their estimated cost (their notes), without integrating anything.
 // Integrators: RK4 at 0.9, 0.45, 0.225 x its stability estimate, DOPRI5 rtol 1e-3/1e-6/1e-8, and the scene's
 // implicit generalized-alpha (riser_integration) at T/25, T/50, T/100, T/200 of the top-motion period.
 // Plot: bench/tools/work_precision_plot (built with the GUI) renders the CSV to PNG with the GUI's plot
@@ -239,6 +240,7 @@ struct Options {
   bool thousand = false;              // an implicit J3 run of case 5 at n = 1000 (error against the finest n)
   bool merge = false;                 // merge the rows into an existing `out` (replacing rows of the same key)
   bool estimate_only = false;         // print the estimated cost of every run, run nothing
+  bool skipped_only = false;          // write only the rows skipped for their estimated cost (no integration)
   double budget = 180.0;              // [s] CPU: runs estimated above it are skipped with a note
   double reference_budget = 180.0;    // [s] CPU: the most accurate same-n reference estimated within it is taken
   std::vector<std::string> variants = {"J2", "J3", "A2", "A3"};  // in run order
@@ -282,6 +284,7 @@ Options parseOptions(int argc, char** argv) {
   if (const char* b = std::getenv("MARIS_BENCH_ROW_BUDGET")) o.budget = o.reference_budget = std::atof(b);
   if (const char* b = std::getenv("MARIS_BENCH_REFERENCE_BUDGET")) o.reference_budget = std::atof(b);
   if (const char* e = std::getenv("MARIS_BENCH_ESTIMATE_ONLY")) o.estimate_only = std::string(e) == "1";
+  if (const char* e = std::getenv("MARIS_BENCH_SKIPPED_ONLY")) o.skipped_only = std::string(e) == "1";
   if (const char* v = std::getenv("MARIS_BENCH_VARIANTS")) o.variants = parseNames(v);
   if (const char* m = std::getenv("MARIS_BENCH_METHODS")) o.methods = parseNames(m);
   return o;
@@ -406,7 +409,7 @@ int main(int argc, char** argv) {
     pf.torsion = true;
     const Reference finest_how = chooseReference(pf, limitOf(pf), costOf(kVariants[1], ns.back()));
     Run finest;
-    if (!opt.estimate_only && !finest_how.method.empty()) {
+    if (!opt.estimate_only && !opt.skipped_only && !finest_how.method.empty()) {
       finest = integrate(pf, finest_how.method, finest_how.value);
       std::printf("# %s finest reference n = %d (%s): %.2f s CPU, %ld steps\n", c.name, ns.back(), finest_how.how.c_str(),
                   finest.cpu, finest.steps);
@@ -457,7 +460,7 @@ int main(int argc, char** argv) {
         }
         Run ref;
         if (is_finest) ref = finest;
-        else if (!ref_how.method.empty()) ref = integrate(p, ref_how.method, ref_how.value);
+        else if (!ref_how.method.empty() && !opt.skipped_only) ref = integrate(p, ref_how.method, ref_how.value);
         const int finest_n = huge || !finest_how.method.empty() ? ns.back() : 0;
         for (const auto& [method, value] : settings) {
           Row row{c.name, v.name, method, n, value, 0, 0, 0.0, inf, inf, finest_n, ref_how.how, ""};
@@ -472,6 +475,8 @@ int main(int argc, char** argv) {
             std::snprintf(why, sizeof why, "skipped: estimated %.0f s CPU (%s) > budget %.0f s", e.cpu, e.text.c_str(),
                           opt.budget);
             row.note = why;
+          } else if (opt.skipped_only) {
+            continue;  // a row that would run: left to a run without MARIS_BENCH_SKIPPED_ONLY
           } else {
             try {
               const Run r = same_as_ref ? ref : integrate(p, method, value);
