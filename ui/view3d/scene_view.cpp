@@ -161,6 +161,10 @@ SceneView::~SceneView() {
 
 int SceneView::frameCount() const { return results_ ? static_cast<int>(results_->view.frames.size()) : 0; }
 
+double SceneView::frameTime(int index) const {
+  return index >= 0 && index < frameCount() ? results_->view.frames[index].time : 0.0;
+}
+
 void SceneView::clear() {
   setPlaying(false);
   results_.reset();

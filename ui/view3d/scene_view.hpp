@@ -47,6 +47,7 @@ class SceneView : public QWidget {
 
   int frameCount() const;
   int currentFrame() const { return frame_; }
+  double frameTime(int index) const;  // [s] (or mode phase) of frame `index`; 0 outside [0, frameCount())
   void setFrame(int index);
   void setPlaying(bool playing);
   bool isPlaying() const;
