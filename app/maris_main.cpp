@@ -1,11 +1,5 @@
-// maris: the desktop application.
-//   maris [SCENARIO]                        open a scenario file or a built-in scenario
-//   maris --screenshot FILE [--scenario NAME] [--size WxH]
-//                                           open, run to completion, save a picture of the window, exit
-//   maris --help
+// maris: the desktop application (options: ui/command_line.hpp, `maris --help`).
 #include <cstdio>
-#include <cstring>
-#include <string>
 
 #include <QApplication>
 #include <QFileInfo>
@@ -13,62 +7,12 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include "command_line.hpp"
 #include "document/scenario_document.hpp"
 #include "main_window.hpp"
 #include "scene_library.hpp"
 
 namespace {
-
-const char* kHelp =
-    "usage: maris [SCENARIO]\n"
-    "       maris --screenshot FILE [--scenario SCENARIO] [--size WxH] [--theme light|dark]\n"
-    "\n"
-    "The Maris desktop application: pick a scenario, edit its parameters, run it, and see the\n"
-    "results as plots and in 3D.\n"
-    "\n"
-    "  SCENARIO               a scenario file (*.json) or a built-in scenario name (see `maris-cli list`)\n"
-    "  --screenshot FILE      open SCENARIO (default: the default built-in), run it to completion,\n"
-    "                         save a PNG of the main window with its results, and exit\n"
-    "                         (exit code 0 on success, 3 if the run failed, 1 on other errors)\n"
-    "  --size WxH             window size for --screenshot (default 1600x1000)\n"
-    "  --theme NAME           light, dark or system (the platform's palette); remembered\n"
-    "  --help                 this text\n";
-
-struct Options {
-  QString scenario;
-  QString screenshot;
-  QString theme;
-  int width = 1600, height = 1000;
-};
-
-bool parse(int argc, char** argv, Options& options) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto next = [&](QString& out) {
-      if (i + 1 >= argc) return false;
-      out = QString::fromLocal8Bit(argv[++i]);
-      return true;
-    };
-    if (arg == "--screenshot") {
-      if (!next(options.screenshot)) return false;
-    } else if (arg == "--scenario") {
-      if (!next(options.scenario)) return false;
-    } else if (arg == "--theme") {
-      QString theme;
-      if (!next(theme) || (theme != "light" && theme != "dark" && theme != "system")) return false;
-      options.theme = theme;
-    } else if (arg == "--size") {
-      QString size;
-      if (!next(size) || std::sscanf(size.toLatin1().constData(), "%dx%d", &options.width, &options.height) != 2)
-        return false;
-    } else if (!arg.empty() && arg[0] != '-') {
-      options.scenario = QString::fromLocal8Bit(argv[i]);
-    } else {
-      return false;
-    }
-  }
-  return true;
-}
 
 bool openScenario(maris::ui::MainWindow& window, const QString& scenario) {
   if (scenario.isEmpty()) return !window.document()->isEmpty();
@@ -79,17 +23,19 @@ bool openScenario(maris::ui::MainWindow& window, const QString& scenario) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // --help must work without a display, so it is answered before Qt starts.
-  for (int i = 1; i < argc; ++i)
-    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
-      std::fputs(kHelp, stdout);
-      return 0;
-    }
-  Options options;
-  if (!parse(argc, argv, options)) {
-    std::fputs(kHelp, stderr);
-    return 1;
+  // --help and mistakes in the options are answered before Qt starts: they need no display.
+  QStringList arguments;
+  for (int i = 1; i < argc; ++i) arguments << QString::fromLocal8Bit(argv[i]);
+  const maris::ui::ParsedCommandLine parsed = maris::ui::parseCommandLine(arguments);
+  if (parsed.options.help) {
+    std::fputs(maris::ui::commandLineHelp().toLocal8Bit().constData(), stdout);
+    return 0;
   }
+  if (!parsed.error.isEmpty()) {
+    std::fprintf(stderr, "maris: %s\n", parsed.error.toLocal8Bit().constData());
+    return 2;
+  }
+  const maris::ui::CommandLine& options = parsed.options;
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("Maris"));
   QApplication::setApplicationName(QStringLiteral("maris"));
@@ -114,6 +60,13 @@ int main(int argc, char** argv) {
   // Screenshot mode: run, let the views paint, grab the window, exit.
   int exit_code = 1;
   QObject::connect(&window, &maris::ui::MainWindow::runFinished, &app, [&] {
+    const QString problem = maris::ui::applyViewOptions(window, options);
+    if (!problem.isEmpty()) {
+      std::fprintf(stderr, "maris: %s\n", problem.toLocal8Bit().constData());
+      exit_code = 2;
+      app.quit();
+      return;
+    }
     QTimer::singleShot(800, &app, [&] {
       const QImage shot = window.grab().toImage();
       if (shot.save(options.screenshot, "PNG")) {

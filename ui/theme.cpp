@@ -101,11 +101,14 @@ DrawingColors drawingColors(const QPalette& palette) {
 }
 
 QColor seriesColor(int index, const QPalette& palette) {
-  static const QColor colors[] = {QColor(31, 119, 180), QColor(214, 39, 40),  QColor(44, 160, 44),
-                                  QColor(255, 127, 14), QColor(148, 103, 189), QColor(140, 86, 75),
-                                  QColor(227, 119, 194), QColor(23, 190, 207)};
-  const QColor c = colors[((index % 8) + 8) % 8];
-  return isDark(palette) ? c.lighter(135) : c;
+  static const QColor colors[kSeriesColorCount] = {
+      QColor(31, 119, 180), QColor(214, 39, 40),   QColor(44, 160, 44),  QColor(255, 127, 14),
+      QColor(148, 103, 189), QColor(140, 86, 75),  QColor(227, 119, 194), QColor(23, 190, 207),
+      QColor(127, 127, 127), QColor(188, 189, 34), QColor(0, 0, 0),       QColor(184, 134, 11)};
+  const QColor c = colors[((index % kSeriesColorCount) + kSeriesColorCount) % kSeriesColorCount];
+  if (!isDark(palette)) return c;
+  // Lighter on a dark background; black (which no lightening lifts) becomes near-white.
+  return c.value() < 40 ? QColor(230, 230, 230) : c.lighter(135);
 }
 
 }  // namespace maris::ui

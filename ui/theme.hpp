@@ -31,7 +31,11 @@ struct DrawingColors {
 };
 DrawingColors drawingColors(const QPalette& palette);
 
-// A qualitative series colour (Tableau 10), lightened on dark backgrounds to keep its contrast.
+// Qualitative series colours that stay apart: Tableau 10 (blue, red, green, orange, purple, brown,
+// pink, cyan first, then grey and olive), black and dark gold; index k gets colour k mod 12. On a
+// dark palette they are lightened to keep their contrast. The plot tabs (runs or columns, then
+// reference markers) and the benchmarks' work-precision plots use this one list.
+constexpr int kSeriesColorCount = 12;
 QColor seriesColor(int index, const QPalette& palette);
 
 }  // namespace maris::ui

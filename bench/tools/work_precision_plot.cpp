@@ -17,6 +17,7 @@
 #include <QApplication>
 
 #include "plots/result_plot.hpp"
+#include "theme.hpp"
 #include "work_precision_series.hpp"
 #include <qcustomplot.h>
 
@@ -37,14 +38,8 @@ std::vector<std::string> splitList(const std::string& text) {
   return out;
 }
 
-// Twelve colours that stay apart on white (Tableau 10 plus black and a dark gold) and twelve marker shapes:
-// series k gets colour and shape k mod 12, so up to twelve series differ in both.
-QColor seriesColor(int k) {
-  static const char* colors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
-                                 "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#b8860b"};
-  return QColor(colors[k % 12]);
-}
-
+// Twelve marker shapes: series k gets shape k mod 12 and colour k mod 12 (maris::ui::seriesColor,
+// the GUI's palette), so up to twelve series differ in both.
 QCPScatterStyle::ScatterShape seriesShape(int k) {
   using S = QCPScatterStyle;
   static const S::ScatterShape shapes[] = {S::ssCircle,      S::ssSquare,     S::ssTriangle,   S::ssDiamond,
@@ -112,7 +107,7 @@ int main(int argc, char** argv) {
     const auto& series = set.series[k];
     QCPGraph* graph = plot.addGraph();
     graph->setName(QString::fromStdString(series.label));
-    const QColor color = seriesColor(static_cast<int>(k));
+    const QColor color = maris::ui::seriesColor(static_cast<int>(k), QPalette(Qt::white));  // drawn on white
     graph->setPen(QPen(color, 1.6));
     // Shapes 7–12 are drawn hollow (their inner cross or plus would vanish under a fill).
     graph->setScatterStyle(QCPScatterStyle(seriesShape(static_cast<int>(k)), color, k % 12 < 6 ? color : Qt::white, 8));

@@ -19,6 +19,14 @@
 
 namespace maris::ui {
 
+namespace {
+bool sameSpec(const PlotSpec& a, const PlotSpec& b) {
+  return a.name == b.name && a.title == b.title && a.table == b.table && a.x == b.x && a.y == b.y &&
+         a.log_x == b.log_x && a.log_y == b.log_y && a.reference_table == b.reference_table &&
+         a.reference_y == b.reference_y;
+}
+}  // namespace
+
 PlotPanel::PlotPanel(QWidget* parent)
     : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new QTabWidget(this)),
       overlay_menu_(new QMenu(tr("Overlay runs"), this)) {
@@ -92,6 +100,8 @@ void PlotPanel::clear() {
   tabs_->clear();
   qDeleteAll(views_);
   views_.clear();
+  for (auto& [name, view] : spare_views_) delete view;
+  spare_views_.clear();
   syncToolbar();
 }
 
@@ -104,22 +114,51 @@ void PlotPanel::showResults(std::shared_ptr<const Results> results, const QStrin
 }
 
 void PlotPanel::rebuildTabs(const Results& results) {
-  bool same = static_cast<int>(results.plots.size()) == count();
-  for (int i = 0; same && i < count(); ++i) same = views_[i]->spec().name == results.plots[i].name;
+  const std::vector<PlotSpec>& specs = results.plots;
+  bool same = static_cast<int>(specs.size()) == count();
+  for (int i = 0; same && i < count(); ++i) same = sameSpec(views_[i]->spec(), specs[i]);
   if (same) return;
-  const int current = tabs_->currentIndex();
-  tabs_->clear();
-  qDeleteAll(views_);
-  views_.clear();
-  for (const auto& spec : results.plots) {
-    auto* view = new PlotView(spec, tabs_);
-    if (auto it = references_.find(spec.name); it != references_.end()) view->setReferences(it->second);
-    view->setObjectName(QString::fromStdString("plot:" + spec.name));
-    views_.push_back(view);
-    tabs_->addTab(view, QString::fromStdString(spec.title.empty() ? spec.name : spec.title));
+  // Tabs are removed and inserted one by one, not cleared and added again: each change of the
+  // current tab shows a view, and a shown view with new data redraws (~8 ms each).
+  auto wanted = [&](const PlotView* view) {
+    return std::any_of(specs.begin(), specs.end(), [&](const PlotSpec& s) { return sameSpec(view->spec(), s); });
+  };
+  for (int i = count() - 1; i >= 0; --i)
+    if (!wanted(views_[i])) {
+      tabs_->removeTab(i);
+      views_[i]->hide();
+      spare_views_[views_[i]->spec().name] = views_[i];
+      views_.erase(views_.begin() + i);
+    }
+  for (int i = 0; i < static_cast<int>(specs.size()); ++i) {
+    const PlotSpec& spec = specs[i];
+    if (i < count() && sameSpec(views_[i]->spec(), spec)) continue;
+    // A kept tab further on (plots in another order): take it out and put it here.
+    PlotView* view = nullptr;
+    for (int j = i + 1; j < count() && !view; ++j)
+      if (sameSpec(views_[j]->spec(), spec)) {
+        view = views_[j];
+        tabs_->removeTab(j);
+        views_.erase(views_.begin() + j);
+      }
+    if (!view) view = takeSpareView(spec);
+    views_.insert(views_.begin() + i, view);
+    tabs_->insertTab(i, view, QString::fromStdString(spec.title.empty() ? spec.name : spec.title));
   }
-  if (current >= 0 && current < count()) tabs_->setCurrentIndex(current);
   syncToolbar();
+}
+
+PlotView* PlotPanel::takeSpareView(const PlotSpec& spec) {
+  if (auto it = spare_views_.find(spec.name); it != spare_views_.end()) {
+    PlotView* view = it->second;
+    spare_views_.erase(it);
+    if (sameSpec(view->spec(), spec)) return view;
+    delete view;  // a plot of the same name with another table or columns is a new plot
+  }
+  auto* view = new PlotView(spec, tabs_);
+  if (auto it = references_.find(spec.name); it != references_.end()) view->setReferences(it->second);
+  view->setObjectName(QString::fromStdString("plot:" + spec.name));
+  return view;
 }
 
 void PlotPanel::setAvailableRuns(const std::vector<RunRecord>& runs, quint64 shown_run) {

@@ -47,7 +47,7 @@ void LiveResults::showInView() {
   if (!pending_view_) return;
   QElapsedTimer clock;
   clock.start();
-  view_->showLiveResults(std::move(pending_view_));
+  view_->showResults(std::move(pending_view_));
   pending_view_.reset();
   stats_.slowest_view_update_ms = std::max(stats_.slowest_view_update_ms, clock.nsecsElapsed() * 1e-6);
   ++stats_.view_updates;

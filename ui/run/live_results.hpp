@@ -2,9 +2,8 @@
 // the GUI thread for long (issue: ~50 ms). The plots take every update (the run controller already
 // throttles them to one per partial interval, only the visible tab redraws, and the replot is
 // queued to its own event-loop turn). The 3D view costs more: its actors are rebuilt in a later
-// event-loop turn than the plots (so the two never add up to one stall), it renders at
-// SceneView::kLiveRenderScale of its resolution, and it is redrawn at most once per interval, that
-// interval being the larger of a floor (1 s) and 10 × the last paint's cost, so 3D redraws never
+// event-loop turn than the plots (so the two never add up to one stall), and it is redrawn at
+// most once per interval, that interval being the larger of a floor (1 s) and 10 × the last paint's cost, so 3D redraws never
 // take more than ~10 % of the GUI thread; a hidden 3D view is not redrawn at all. The finished run
 // is shown by the caller as usual; a deferred 3D update still pending then is dropped.
 #pragma once
@@ -41,7 +40,7 @@ class LiveResults : public QObject {
     int plot_updates = 0;
     int view_updates = 0;
     double slowest_plot_update_ms = 0.0;  // PlotPanel::showResults in the GUI thread
-    double slowest_view_update_ms = 0.0;  // SceneView::showLiveResults (actors rebuilt), paint excluded
+    double slowest_view_update_ms = 0.0;  // SceneView::showResults (actors rebuilt), paint excluded
   };
   const Stats& stats() const { return stats_; }
 

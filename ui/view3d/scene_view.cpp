@@ -161,9 +161,12 @@ SceneView::~SceneView() {
 
 int SceneView::frameCount() const { return results_ ? static_cast<int>(results_->view.frames.size()) : 0; }
 
+double SceneView::frameTime(int index) const {
+  return index >= 0 && index < frameCount() ? results_->view.frames[index].time : 0.0;
+}
+
 void SceneView::clear() {
   setPlaying(false);
-  gl_->setRenderScale(1.0);
   results_.reset();
   vtkRenderer* renderer = gl_->renderer();
   for (auto& a : frame_actors_) renderer->RemoveActor(a);
@@ -178,14 +181,7 @@ void SceneView::clear() {
   time_->clear();
 }
 
-void SceneView::showLiveResults(std::shared_ptr<const Results> partial) {
-  display(std::move(partial), kLiveRenderScale);
-}
-
-void SceneView::showResults(std::shared_ptr<const Results> results) { display(std::move(results), 1.0); }
-
-void SceneView::display(std::shared_ptr<const Results> results, double render_scale) {
-  gl_->setRenderScale(render_scale);
+void SceneView::showResults(std::shared_ptr<const Results> results) {
   if (!results || results->view.empty()) {
     if (!results_) clear();
     return;

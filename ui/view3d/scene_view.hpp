@@ -40,17 +40,14 @@ class SceneView : public QWidget {
   explicit SceneView(QWidget* parent = nullptr);
   ~SceneView() override;
 
-  // A finished run's results, drawn at full resolution.
+  // A run's results, finished or partial (a live run's): the frame shown stays, the camera is placed
+  // for the first results only.
   void showResults(std::shared_ptr<const Results> results);
-  // A running run's partial results, drawn at kLiveRenderScale of the resolution: with a software
-  // OpenGL renderer a full-resolution paint of a ~600 × 700 view takes ~50–70 ms, a quarter of the
-  // pixels ~15–25 ms (docs/gui.md). The finished run's showResults draws it sharp again.
-  void showLiveResults(std::shared_ptr<const Results> partial);
-  static constexpr double kLiveRenderScale = 0.5;
   void clear();
 
   int frameCount() const;
   int currentFrame() const { return frame_; }
+  double frameTime(int index) const;  // [s] (or mode phase) of frame `index`; 0 outside [0, frameCount())
   void setFrame(int index);
   void setPlaying(bool playing);
   bool isPlaying() const;
@@ -79,8 +76,6 @@ class SceneView : public QWidget {
   void changeEvent(QEvent* event) override;  // a new palette (theme) recolours background and text
 
  private:
-  // showResults / showLiveResults: the results drawn at `render_scale` of the view's resolution.
-  void display(std::shared_ptr<const Results> results, double render_scale);
   void applyPaletteColors();
   void rebuildStatic();
   void applyColorSettings();

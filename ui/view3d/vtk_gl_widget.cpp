@@ -138,19 +138,6 @@ QSize VtkGlWidget::devicePixelSize() const {
   return {std::max(1, static_cast<int>(width() * dpr)), std::max(1, static_cast<int>(height() * dpr))};
 }
 
-QSize VtkGlWidget::renderSize() const {
-  const QSize full = devicePixelSize();
-  return {std::max(1, static_cast<int>(full.width() * render_scale_)),
-          std::max(1, static_cast<int>(full.height() * render_scale_))};
-}
-
-void VtkGlWidget::setRenderScale(double scale) {
-  scale = std::clamp(scale, 0.1, 1.0);
-  if (scale == render_scale_) return;
-  render_scale_ = scale;
-  requestRender();
-}
-
 QImage VtkGlWidget::renderAt(int width_px, int height_px) {
   window_->SetSize(width_px, height_px);
   vtkOpenGLState* state = window_->GetState();
@@ -184,7 +171,7 @@ QImage VtkGlWidget::renderImage(int width_px, int height_px) {
 }
 
 QImage VtkGlWidget::grabFramebuffer() {
-  const QSize size = renderSize();
+  const QSize size = devicePixelSize();
   if (!makeCurrent()) return {};
   QElapsedTimer clock;
   clock.start();
@@ -194,12 +181,12 @@ QImage VtkGlWidget::grabFramebuffer() {
   last_paint_ms_ = clock.nsecsElapsed() * 1e-6;
   ++paint_count_;
   stale_ = false;
-  image_.setDevicePixelRatio(devicePixelRatioF() * render_scale_);
+  image_.setDevicePixelRatio(devicePixelRatioF());
   return image_;
 }
 
 void VtkGlWidget::paintEvent(QPaintEvent*) {
-  if (stale_ || image_.isNull() || image_.size() != renderSize()) grabFramebuffer();
+  if (stale_ || image_.isNull() || image_.size() != devicePixelSize()) grabFramebuffer();
   QPainter painter(this);
   if (image_.isNull()) {
     painter.fillRect(rect(), palette().window());
@@ -209,12 +196,16 @@ void VtkGlWidget::paintEvent(QPaintEvent*) {
   painter.drawImage(rect(), image_);
 }
 
-void VtkGlWidget::forwardMouse(QMouseEvent* event, unsigned long vtk_event) {
-  // VTK's pixels: device pixels times the render scale.
-  const QPointF p = event->position() * (devicePixelRatioF() * render_scale_);
+void VtkGlWidget::setEventPosition(const QPointF& position, Qt::KeyboardModifiers modifiers) {
+  // VTK's pixels are device pixels, counted from the bottom.
+  const QPointF p = position * devicePixelRatioF();
   interactor_->SetEventInformationFlipY(static_cast<int>(p.x()), static_cast<int>(p.y()),
-                                        (event->modifiers() & Qt::ControlModifier) ? 1 : 0,
-                                        (event->modifiers() & Qt::ShiftModifier) ? 1 : 0);
+                                        (modifiers & Qt::ControlModifier) ? 1 : 0,
+                                        (modifiers & Qt::ShiftModifier) ? 1 : 0);
+}
+
+void VtkGlWidget::forwardMouse(QMouseEvent* event, unsigned long vtk_event) {
+  setEventPosition(event->position(), event->modifiers());
   interactor_->InvokeEvent(vtk_event, event);
 }
 
@@ -247,9 +238,7 @@ void VtkGlWidget::mouseDoubleClickEvent(QMouseEvent* event) {
 }
 
 void VtkGlWidget::wheelEvent(QWheelEvent* event) {
-  // VTK's pixels: device pixels times the render scale.
-  const QPointF p = event->position() * (devicePixelRatioF() * render_scale_);
-  interactor_->SetEventInformationFlipY(static_cast<int>(p.x()), static_cast<int>(p.y()), 0, 0);
+  setEventPosition(event->position(), event->modifiers());
   const int delta = event->angleDelta().y();
   if (delta > 0) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent, event);
   if (delta < 0) interactor_->InvokeEvent(vtkCommand::MouseWheelBackwardEvent, event);

@@ -38,17 +38,13 @@ class VtkGlWidget : public QWidget {
   // the last picture).
   void requestRender();
 
-  // Fraction of the widget's resolution the view renders at (1 = full). A live run draws at a
-  // lower one: a software renderer's cost grows with the pixel count, and the picture is redrawn
-  // at full resolution when the run has finished.
-  void setRenderScale(double scale);
-  double renderScale() const { return render_scale_; }
-
   // Renders the current scene at width × height pixels (any size, independent of the widget's)
   // and returns it; a null image if no OpenGL context can be made.
   QImage renderImage(int width_px, int height_px);
-  // Renders the scene at the widget's size in device pixels times the render scale and returns the
-  // picture (what the widget shows, stretched to its size).
+  // Renders the scene at the widget's size in device pixels and returns the picture (what the
+  // widget shows). The size stays the same from one redraw to the next: a change of size makes VTK
+  // allocate its framebuffers and depth-peeling textures anew, which with a software renderer cost
+  // more than the redraw itself (docs/gui.md), so the view has one resolution, live runs included.
   QImage grabFramebuffer();
 
   // Wall time of the last render for the widget (VTK render and read-back) in milliseconds: what a
@@ -67,10 +63,11 @@ class VtkGlWidget : public QWidget {
  private:
   bool makeCurrent();
   void forwardMouse(QMouseEvent* event, unsigned long vtk_event);
+  // Hands a widget position (logical pixels, y down) and the modifier keys to the interactor.
+  void setEventPosition(const QPointF& position, Qt::KeyboardModifiers modifiers);
   void onMakeCurrent(vtkObject*, unsigned long, void*);
   void onIsCurrent(vtkObject*, unsigned long, void* call_data);
   QSize devicePixelSize() const;
-  QSize renderSize() const;
   QImage renderAt(int width_px, int height_px);  // context current, VTK initialised
 
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
@@ -82,7 +79,6 @@ class VtkGlWidget : public QWidget {
   bool context_failed_ = false;   // no OpenGL here: the widget says so instead of drawing
   bool stale_ = true;             // the scene changed since image_ was rendered
   QImage image_;                  // the last picture, device pixels
-  double render_scale_ = 1.0;
   double last_paint_ms_ = 0.0;
   int paint_count_ = 0;
 };

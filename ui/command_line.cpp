@@ -1,0 +1,185 @@
+#include "command_line.hpp"
+
+#include <cmath>
+
+#include <QTabWidget>
+
+#include "main_window.hpp"
+#include "plots/plot_panel.hpp"
+#include "view3d/scene_view.hpp"
+
+namespace maris::ui {
+
+namespace {
+
+constexpr int kMinSide = 200, kMaxSide = 8000;  // [px] window sizes a screenshot may ask for
+
+const ColorMap kColorMaps[] = {ColorMap::CoolWarm, ColorMap::Viridis, ColorMap::Rainbow, ColorMap::Greyscale};
+
+QString invalid(const QString& option, const QString& value, const QString& allowed) {
+  return QStringLiteral("%1 %2: %3").arg(option, value, allowed);
+}
+
+// One option's value, checked; an empty error when it is fine.
+QString parseValue(const QString& option, const QString& value, CommandLine& out) {
+  bool ok = false;
+  if (option == QLatin1String("--screenshot")) {
+    out.screenshot = value;
+  } else if (option == QLatin1String("--scenario")) {
+    out.scenario = value;
+  } else if (option == QLatin1String("--theme")) {
+    if (value != QLatin1String("light") && value != QLatin1String("dark") && value != QLatin1String("system"))
+      return invalid(option, value, QStringLiteral("must be one of light, dark, system"));
+    out.theme = value;
+  } else if (option == QLatin1String("--size")) {
+    const QStringList parts = value.split(QLatin1Char('x'));
+    bool ok_w = false, ok_h = false;
+    const int w = parts.value(0).toInt(&ok_w), h = parts.value(1).toInt(&ok_h);
+    if (parts.size() != 2 || !ok_w || !ok_h || w < kMinSide || w > kMaxSide || h < kMinSide || h > kMaxSide)
+      return invalid(option, value,
+                     QStringLiteral("must be WIDTHxHEIGHT in pixels, each in [%1, %2], e.g. 1600x1000").arg(kMinSide).arg(kMaxSide));
+    out.width = w;
+    out.height = h;
+  } else if (option == QLatin1String("--frame")) {
+    const int frame = value.toInt(&ok);
+    if (!ok || frame < 1) return invalid(option, value, QStringLiteral("must be a frame number from 1"));
+    out.frame = frame;
+  } else if (option == QLatin1String("--time")) {
+    const double t = value.toDouble(&ok);
+    if (!ok || !std::isfinite(t)) return invalid(option, value, QStringLiteral("must be a time in seconds"));
+    out.time = t;
+  } else if (option == QLatin1String("--tab")) {
+    out.tab = value;
+  } else if (option == QLatin1String("--colormap")) {
+    for (ColorMap map : kColorMaps)
+      if (value == colorMapKey(map)) out.color_map = map;
+    if (!out.color_map)
+      return invalid(option, value, QStringLiteral("must be one of %1").arg(colorMapKeys().join(QStringLiteral(", "))));
+  } else {
+    return QStringLiteral("unknown option %1 (see maris --help)").arg(option);
+  }
+  return {};
+}
+
+}  // namespace
+
+QString colorMapKey(ColorMap map) {
+  switch (map) {
+    case ColorMap::CoolWarm: return QStringLiteral("cool-warm");
+    case ColorMap::Viridis: return QStringLiteral("viridis");
+    case ColorMap::Rainbow: return QStringLiteral("rainbow");
+    case ColorMap::Greyscale: return QStringLiteral("greyscale");
+  }
+  return {};
+}
+
+QStringList colorMapKeys() {
+  QStringList keys;
+  for (ColorMap map : kColorMaps) keys << colorMapKey(map);
+  return keys;
+}
+
+ParsedCommandLine parseCommandLine(const QStringList& arguments) {
+  ParsedCommandLine parsed;
+  CommandLine& out = parsed.options;
+  for (int i = 0; i < arguments.size(); ++i) {
+    const QString& arg = arguments[i];
+    if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
+      out.help = true;
+    } else if (arg.startsWith(QLatin1Char('-'))) {
+      if (i + 1 >= arguments.size()) {
+        parsed.error = QStringLiteral("%1 needs a value (see maris --help)").arg(arg);
+        return parsed;
+      }
+      parsed.error = parseValue(arg, arguments[++i], out);
+      if (!parsed.error.isEmpty()) return parsed;
+    } else if (out.scenario.isEmpty()) {
+      out.scenario = arg;
+    } else {
+      parsed.error = QStringLiteral("%1: only one scenario can be opened (%2 was given before)").arg(arg, out.scenario);
+      return parsed;
+    }
+  }
+  if (out.frame && out.time) parsed.error = QStringLiteral("--frame and --time: give one of them, not both");
+  const bool view_options = out.frame || out.time || !out.tab.isEmpty() || out.color_map;
+  if (parsed.error.isEmpty() && view_options && out.screenshot.isEmpty())
+    parsed.error = QStringLiteral("--frame, --time, --tab and --colormap choose what a --screenshot shows: give --screenshot FILE too");
+  return parsed;
+}
+
+QString commandLineHelp() {
+  return QStringLiteral(
+             "usage: maris [SCENARIO] [--theme light|dark|system]\n"
+             "       maris --screenshot FILE [--scenario SCENARIO] [--size WxH] [--theme NAME]\n"
+             "             [--frame K | --time T] [--tab PLOT] [--colormap MAP]\n"
+             "\n"
+             "The Maris desktop application: pick a scenario, edit its parameters, run it, and see the\n"
+             "results as plots and in 3D.\n"
+             "\n"
+             "  SCENARIO               a scenario file (*.json) or a built-in scenario name (see `maris-cli list`)\n"
+             "  --theme NAME           light, dark or system (the platform's palette); remembered\n"
+             "  --screenshot FILE      open SCENARIO (default: the default built-in), run it to completion,\n"
+             "                         save a PNG of the main window with its results, and exit\n"
+             "                         (exit code 0 on success, 2 for a bad option or value, 3 if the run\n"
+             "                         failed, 1 on other errors)\n"
+             "  --scenario SCENARIO    the same as SCENARIO\n"
+             "  --size WxH             window size for --screenshot in pixels (default 1600x1000; %1 to %2)\n"
+             "  --frame K              3D view: show frame K (1 = the first; default: the last)\n"
+             "  --time T               3D view: show the frame nearest to time T [s]\n"
+             "  --tab PLOT             the plot tab shown: a plot's name (as in its exported file name,\n"
+             "                         e.g. top_force) or its tab title (default: the first)\n"
+             "  --colormap MAP         3D colour map: %3\n"
+             "  --help                 this text\n")
+      .arg(kMinSide)
+      .arg(kMaxSide)
+      .arg(colorMapKeys().join(QStringLiteral(", ")));
+}
+
+QString applyViewOptions(MainWindow& window, const CommandLine& options) {
+  SceneView* view = window.sceneView();
+  const int frames = view->frameCount();
+  if ((options.frame || options.time) && frames == 0)
+    return QStringLiteral("%1: this run has no 3D view").arg(options.frame ? "--frame" : "--time");
+  if (options.frame) {
+    if (*options.frame > frames)
+      return invalid(QStringLiteral("--frame"), QString::number(*options.frame),
+                     QStringLiteral("must be in [1, %1] (this run's 3D frames)").arg(frames));
+    view->setPlaying(false);
+    view->setFrame(*options.frame - 1);
+  }
+  if (options.time) {
+    const double first = view->frameTime(0), last = view->frameTime(frames - 1);
+    const double slack = frames > 1 ? 0.5 * (last - first) / (frames - 1) : 0.0;  // half a frame
+    if (*options.time < first - slack || *options.time > last + slack)
+      return invalid(QStringLiteral("--time"), QString::number(*options.time),
+                     QStringLiteral("must be in [%1, %2] s (this run's 3D frames)").arg(first).arg(last));
+    int nearest = 0;
+    for (int k = 1; k < frames; ++k)
+      if (std::abs(view->frameTime(k) - *options.time) < std::abs(view->frameTime(nearest) - *options.time)) nearest = k;
+    view->setPlaying(false);
+    view->setFrame(nearest);
+  }
+  if (options.color_map) {
+    ColorSettings settings = view->colorSettings();
+    settings.map = *options.color_map;
+    view->setColorSettings(settings);
+  }
+  if (!options.tab.isEmpty()) {
+    PlotPanel* plots = window.plots();
+    QStringList names;
+    for (int i = 0; i < plots->count(); ++i) {
+      const PlotSpec& spec = plots->view(i)->spec();
+      names << QString::fromStdString(spec.name);
+      if (options.tab == names.back() || options.tab == plots->tabs()->tabText(i)) {
+        plots->tabs()->setCurrentIndex(i);
+        return {};
+      }
+    }
+    return invalid(QStringLiteral("--tab"), options.tab,
+                   names.isEmpty() ? QStringLiteral("this run has no plots")
+                                   : QStringLiteral("no such plot; this run's plots are %1").arg(names.join(QStringLiteral(", "))));
+  }
+  return {};
+}
+
+}  // namespace maris::ui
