@@ -3,29 +3,41 @@
 // on the paper's case 5 (riser_paper_case5_j3: 500 m riser, elliptical top motion, 1 m/s current,
 // 36 s) and on a 3D cable case (a 30 m cable whose top whirls on a circle in a current, 10 s).
 //   error_same_n:   max over outputs (every 0.2 s) of |r_mid - r_mid,ref| / max |r_mid,ref(t) - r_mid,ref(0)|,
-//                   r_mid = the point at s = L/2, reference = DOPRI5 rtol 1e-10 at the same n and variant;
-//   error_finest_n: the same against the finest-n J3 reference (discretisation + time error).
-//   note:           why a run failed (the solver's message: time, step, quantity); its errors are then inf.
+//                   r_mid = the point at s = L/2, reference = the same n and variant integrated by the most
+//                   accurate method within the budget (column `reference`: DOPRI5 rtol 1e-10, RK4 at 0.2 or
+//                   0.45 x its limit, implicit at T/3200);
+//   error_finest_n: the same against the J3 reference at the run's finest n (column finest_n).
+//   note:           why a run failed (the solver's message: time, step, quantity) or was skipped (estimated CPU
+//                   above the budget); its errors are then inf.
 // Also the CPU time of one right-hand side evaluation against n (must grow linearly).
 // Times are thread CPU times (the machine may be shared), integration only (statics excluded).
 //   bench_riser_work_precision [out.csv] [n_max (default 400; 1000 adds an implicit J3 run at n = 1000)]
 //                              [case5_end_time (default 36)] [cases: all | case5 | cable3d]
 //                              [cable_n_max (default n_max; the cable's torsion limit makes n = 100 costly)]
-// Integrators: RK4 at 0.9, 0.45, 0.225 x its stability estimate, DOPRI5 rtol 1e-3/1e-6/1e-8 (n <= 100), and
-// the scene's implicit generalized-alpha (riser_integration) at T/25, T/50, T/100, T/200 of the top-motion period.
+// Environment: MARIS_BENCH_NLIST / MARIS_BENCH_CABLE_NLIST = comma lists of n to run (instead of n ≤ n_max);
+// either one merges the rows into an existing out.csv (rows of the same case, variant, n, method and setting
+// are replaced, the others kept; MARIS_BENCH_MERGE=0/1 overrides), MARIS_BENCH_ROW_BUDGET = CPU seconds above
+// which a run (estimated from the measured right-hand-side cost) is skipped with a note (default 180),
+// MARIS_BENCH_REFERENCE_BUDGET = the same for the choice of the same-n reference (default: the row budget),
+// MARIS_BENCH_VARIANTS / MARIS_BENCH_METHODS = comma lists restricting (and ordering) variants and methods,
+// MARIS_BENCH_ESTIMATE_ONLY=1 prints the estimates and runs nothing, MARIS_BENCH_SKIPPED_ONLY=1 writes only the
+// rows skipped for their estimated cost (their notes), without integrating anything.
+// Integrators: RK4 at 0.9, 0.45, 0.225 x its stability estimate, DOPRI5 rtol 1e-3/1e-6/1e-8, and the scene's
+// implicit generalized-alpha (riser_integration) at T/25, T/50, T/100, T/200 of the top-motion period.
 // Plot: bench/tools/work_precision_plot (built with the GUI) renders the CSV to PNG with the GUI's plot
 // code, e.g. --x cpu_time --y error_same_n --series variant,method --where case=case5 --where n=100.
-// Besides the CSV it writes OUT.md (OUT without ".csv"): markdown tables of the right-hand-side cost
-// against n, case 5 at n = 100 and the error against n, headed by the load average during the run.
+// Besides the CSV it writes OUT.md (OUT without ".csv"), from the whole (merged) CSV: markdown tables of the
+// right-hand-side cost against n, case 5 at n = 100, RK4 and implicit against n, skipped and failed rows.
 // scripts/bench_riser.sh runs the set the docs quote (build, bench, tables, PNGs).
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -38,6 +50,8 @@
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 #include "bench_clock.hpp"
+#include "tools/riser_work_precision_summary.hpp"
+#include "tools/work_precision_rows.hpp"
 
 using namespace maris;
 using namespace maris::riser;
@@ -89,9 +103,11 @@ struct Run {
 // The scene's implicit generalized-α path (riser_integration: chart, Newton, recorder), step `step`:
 // the probe at L/2 from the recorder's history (≈ 2000 samples), interpolated linearly to the 0.2 s
 // output times (interpolation error ≈ (ωΔt)²/8 ≈ 1e-5 of the motion at Δt = 0.018 s, T = 10 s).
-Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSolution& s, double step) {
-  p.integrator = "implicit";
-  p.time_step = step;
+// "auto" (scene's choice): integrator "auto" at tolerance `step`, the step its plan picks.
+Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSolution& s, double step, bool automatic) {
+  p.integrator = automatic ? "auto" : "implicit";
+  p.time_step = automatic ? 0.0 : step;
+  if (automatic) p.tolerance = step;
   p.probes = {{0.5 * p.length}};
   p.stress_times.clear();
   // Frames are the implicit integrator's chunk ends (Newton matrix refreshed per chunk); 2 per period
@@ -144,7 +160,7 @@ Run integrate(const RiserParameters& p, const std::string& method, double value)
   o.output_interval = 0.2;
   o.state_name = [&](Eigen::Index k) { return stateComponentName(m, k); };
   OdeStats st;
-  if (method == "implicit") return integrateImplicit(m, p, s, value);
+  if (method == "implicit" || method == "auto") return integrateImplicit(m, p, s, value, method == "auto");
   const double t0 = bench::threadCpuSeconds();
   if (method == "rk4") {
     o.step = value;
@@ -172,7 +188,7 @@ double relativeError(const Run& a, const Run& ref) {
   return err / std::max(scale, 1e-300);
 }
 
-// CPU time of one right-hand side at the static state, averaged over ≥ 0.05 s of evaluations.
+// CPU time of one right-hand side at a straight rest state, averaged over ≥ 0.05 s of evaluations.
 double rhsCost(RiserParameters p) {
   p.current_speed_surface = p.current_speed_seabed = 0.0;  // straight start: no statics needed
   const RiserModel m = buildRiserModel(p);
@@ -189,105 +205,144 @@ double rhsCost(RiserParameters p) {
   return (t1 - t0) / count;
 }
 
-// One CSV row, kept for the markdown summary.
-struct Row {
-  std::string case_name, variant, method;
-  int n = 0;
-  double setting = 0, cpu = 0, error_same_n = 0, error_finest_n = 0;
-  long steps = 0;
-  std::string note;  // why the run failed ("" if it did not)
-};
-
-// A failure message as one CSV cell: commas and line breaks become semicolons and spaces.
-std::string csvCell(std::string text) {
-  for (char& c : text)
-    if (c == ',') c = ';';
-    else if (c == '\n' || c == '\r') c = ' ';
-  return text;
-}
-
 std::string loadAverage() {
   std::ifstream in("/proc/loadavg");
   double one = 0;
   return in >> one ? std::to_string(one).substr(0, 5) : std::string("unknown");
 }
 
-std::string fmt(const char* format, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
-
-// Markdown tables of the rows: right-hand-side cost against n, case 5 at n = 100, error against n.
-// Settings of the run, for the header: case 5 n ≤ n_max, cable n ≤ cable_n_max.
-struct RunSettings {
-  int n_max = 0, cable_n_max = 0;
-  double case5_end = 0;
+// Estimated CPU seconds of one run, from the measured cost c of one right-hand side at this n (the bench
+// skips runs above its budget instead of leaving their rows silently absent). Factors from the n ≤ 200 rows:
+// RK4 4 right-hand sides per step plus ≈ 20 % bookkeeping (CPU/(steps·n) 2.2–3.0 µs against 4c/n = 2.0–2.6);
+// DOPRI5 is stability-bound like RK4 (1.5–2.5x the steps of RK4 at its limit, 6 evaluations per step);
+// the implicit step costs 10–56 c (Newton residuals, O(n) matrix refreshes, step halvings: 60 c taken).
+struct Estimate {
+  double cpu = 0;    // [s]
+  std::string text;  // "N steps × k c, c = X µs"
 };
 
-std::string summary(const std::vector<Row>& rows, const std::string& load_start, const std::string& load_end,
-                    const RunSettings& run) {
-  const double case5_end = run.case5_end;
-  std::ostringstream md;
-  md << "Written by `scripts/bench_riser.sh` (bench_riser_work_precision; do not edit by hand). This run: case 5 over "
-     << case5_end << " s for n ≤ " << run.n_max << ", the 3D cable for n ≤ " << run.cable_n_max << ".\n"
-     << "Default: n ≤ 100 and cable n ≤ 20 (≈ 8–10 min on one quiet core). Opt-in rows: `MARIS_BENCH_NMAX=200` adds "
-     << "case 5 at n = 200 (J3 and A2, references by RK4 at 0.2 × its limit; ≈ +4 min), `MARIS_BENCH_CABLE_NMAX=50` "
-     << "the cable at n = 50 (≈ +5 min: its torsion limit makes each doubling of n ≈ 4x dearer), e.g. "
-     << "`MARIS_BENCH_NMAX=200 MARIS_BENCH_CABLE_NMAX=50 scripts/bench_riser.sh`. Failed runs show the solver's "
-     << "message (column `note` of the CSV).\n\n";
-  md << "Measured by bench_riser_work_precision; load average " << load_start << " at the start, " << load_end
-     << " at the end (2-core machine: above ~1 the times are upper bounds). CPU = thread CPU seconds of the\n"
-     << "integration only; error = max |r(L/2) − r_ref(L/2)| / max motion, against the same-n reference.\n\n";
-  md << "**Cost of one right-hand side** [µs] (per segment in brackets); linear growth means a constant bracket:\n\n"
-     << "| variant | n = 10 | 20 | 50 | 100 | 200 | 400 | 1000 |\n|---|---|---|---|---|---|---|---|\n";
-  for (const Variant& v : kVariants) {
-    md << "| " << v.name;
-    for (const Row& r : rows)
-      if (r.case_name == "rhs_cost" && r.variant == v.name)
-        md << " | " << fmt("%.1f", 1e6 * r.cpu) << " (" << fmt("%.2f", 1e6 * r.cpu / r.n) << ")";
-    md << " |\n";
-  }
-  md << "\n**Case 5, n = 100, " << case5_end << " s simulated:**\n\n"
-     << "| variant | method | step [s] or rtol | steps | CPU [s] | error (same n) | error (finest n) |\n"
-     << "|---|---|---|---|---|---|---|\n";
-  for (const Row& r : rows) {
-    if (r.case_name != "case5" || r.n != 100) continue;
-    md << "| " << r.variant << " | " << r.method << " | " << fmt("%.3g", r.setting) << " | ";
-    if (!r.note.empty())
-      md << "failed: " << r.note << " | | | |\n";
-    else
-      md << r.steps << " | " << fmt("%.3f", r.cpu) << " | " << fmt("%.2e", r.error_same_n) << " | "
-         << fmt("%.2e", r.error_finest_n) << " |\n";
-  }
-  md << "\n**Against n** (first stable RK4 row: 0.9 × the stability estimate, else 0.45 ×; error against the finest n):\n\n"
-     << "| case | variant | n | step [s] | steps | CPU [s] | CPU/(steps·n) [µs] | error (finest n) |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
-  std::map<std::string, bool> seen;
-  for (const Row& r : rows) {
-    const std::string key = r.case_name + r.variant + std::to_string(r.n);
-    if (r.method != "rk4" || r.case_name == "rhs_cost" || seen[key] || !std::isfinite(r.error_same_n)) continue;
-    seen[key] = true;
-    md << "| " << r.case_name << " | " << r.variant << " | " << r.n << " | " << fmt("%.3g", r.setting) << " | "
-       << r.steps << " | " << fmt("%.3f", r.cpu) << " | " << fmt("%.3f", 1e6 * r.cpu / (double(r.steps) * r.n))
-       << " | " << fmt("%.2e", r.error_finest_n) << " |\n";
-  }
-  return md.str();
+Estimate estimate(const std::string& method, double value, double end_time, double limit, double c, double period) {
+  char b[160];
+  double steps = 0, per_step = 0;
+  if (method == "rk4") steps = std::ceil(end_time / value), per_step = 4 * 1.2;
+  else if (method == "dopri5") steps = 2.5 * end_time / limit, per_step = 6 * 1.2;
+  else if (method == "auto") steps = std::ceil(end_time / implicitStepForTolerance(Formulation::Joint, period, value)), per_step = 60;
+  else steps = std::ceil(end_time / value), per_step = 60;
+  std::snprintf(b, sizeof b, "%.0f steps × %.3g right-hand sides of %.1f µs", steps, per_step, 1e6 * c);
+  return {steps * per_step * c, b};
 }
+
+struct Options {
+  std::string out = "riser_work_precision.csv";
+  double case5_end = 36.0;
+  std::string only = "all";
+  std::vector<int> case5_n, cable_n;  // n to run per case
+  bool thousand = false;              // an implicit J3 run of case 5 at n = 1000 (error against the finest n)
+  bool merge = false;                 // merge the rows into an existing `out` (replacing rows of the same key)
+  bool estimate_only = false;         // print the estimated cost of every run, run nothing
+  bool skipped_only = false;          // write only the rows skipped for their estimated cost (no integration)
+  double budget = 180.0;              // [s] CPU: runs estimated above it are skipped with a note
+  double reference_budget = 180.0;    // [s] CPU: the most accurate same-n reference estimated within it is taken
+  std::vector<std::string> variants = {"J2", "J3", "A2", "A3"};  // in run order
+  std::vector<std::string> methods;   // only these methods (rk4, dopri5, implicit, auto); empty = all
+};
+
+std::vector<std::string> parseNames(const char* text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+std::vector<int> parseList(const char* text) {
+  std::vector<int> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) out.push_back(std::atoi(item.c_str()));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Options parseOptions(int argc, char** argv) {
+  Options o;
+  if (argc > 1) o.out = argv[1];
+  const int n_max = argc > 2 ? std::atoi(argv[2]) : 400;
+  if (argc > 3) o.case5_end = std::atof(argv[3]);
+  if (argc > 4) o.only = argv[4];
+  const int cable_n_max = argc > 5 ? std::atoi(argv[5]) : n_max;
+  for (int n : {10, 20, 50, 100, 200, 400}) {
+    if (n <= n_max) o.case5_n.push_back(n);
+    if (n <= cable_n_max) o.cable_n.push_back(n);
+  }
+  o.thousand = n_max >= 1000;
+  if (const char* list = std::getenv("MARIS_BENCH_NLIST")) o.case5_n = parseList(list), o.merge = true;
+  if (const char* list = std::getenv("MARIS_BENCH_CABLE_NLIST")) o.cable_n = parseList(list), o.merge = true;
+  if (const char* m = std::getenv("MARIS_BENCH_MERGE")) o.merge = std::string(m) == "1";
+  if (const char* b = std::getenv("MARIS_BENCH_ROW_BUDGET")) o.budget = o.reference_budget = std::atof(b);
+  if (const char* b = std::getenv("MARIS_BENCH_REFERENCE_BUDGET")) o.reference_budget = std::atof(b);
+  if (const char* e = std::getenv("MARIS_BENCH_ESTIMATE_ONLY")) o.estimate_only = std::string(e) == "1";
+  if (const char* e = std::getenv("MARIS_BENCH_SKIPPED_ONLY")) o.skipped_only = std::string(e) == "1";
+  if (const char* v = std::getenv("MARIS_BENCH_VARIANTS")) o.variants = parseNames(v);
+  if (const char* m = std::getenv("MARIS_BENCH_METHODS")) o.methods = parseNames(m);
+  return o;
+}
+
+// The CSV and the markdown tables, merged with the rows already in `out` when merging.
+class RowWriter {
+ public:
+  explicit RowWriter(const Options& o) : out_(o.out) {
+    if (!o.merge) return;
+    std::ifstream in(out_);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (in) old_ = bench::parseWorkPrecisionRows(text.str());
+  }
+  void add(const bench::WorkPrecisionRow& row) {
+    rows_.push_back(row);
+    write(loadAverage() + " (still running)");
+  }
+  void finish() { write(loadAverage()); }
+  void setHeader(const std::string& header) { header_ = header; }
+
+ private:
+  void write(const std::string& load_now) {
+    const auto merged = bench::mergeWorkPrecisionRows(old_, rows_);
+    std::string csv = bench::workPrecisionHeader();
+    for (const auto& r : merged) csv += bench::workPrecisionLine(r);
+    writeFileAtomic(out_, csv);  // after every row: a long run can be cut short and still plotted
+    const std::string md = (out_.size() > 4 && out_.substr(out_.size() - 4) == ".csv" ? out_.substr(0, out_.size() - 4) : out_) + ".md";
+    writeFileAtomic(md, bench::riserWorkPrecisionSummary(merged, header_ + " Load average " + load_start_ +
+                                                                     " at the start, " + load_now + " at the end (2-core machine: above ~1 the times may be upper bounds)."));
+  }
+  std::string out_, header_, load_start_ = loadAverage();
+  std::vector<bench::WorkPrecisionRow> old_, rows_;
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = argc > 1 ? argv[1] : "riser_work_precision.csv";
-  const int n_max = argc > 2 ? std::atoi(argv[2]) : 400;
-  const double case5_end = argc > 3 ? std::atof(argv[3]) : 36.0;
-  std::string csv = "case,variant,n,method,setting,steps,rhs_evaluations,cpu_time,error_same_n,error_finest_n,note\n"
-                    "-,-,-,-,s or -,-,-,s,-,-,-\n";
-  char line[320];
-  std::vector<Row> rows;
-  const std::string load_start = loadAverage();
+  const Options opt = parseOptions(argc, argv);
+  RowWriter writer(opt);
+  std::ostringstream header;
+  header << "Last run: case 5 (" << opt.case5_end << " s) n = ";
+  for (int n : opt.case5_n) header << n << " ";
+  header << "; cable n = ";
+  for (int n : opt.cable_n) header << n << " ";
+  header << "(" << (opt.merge ? "merged" : "full run") << "; budget " << opt.budget << " s CPU per run, "
+         << opt.reference_budget << " s for the reference; variants";
+  for (const auto& v : opt.variants) header << " " << v;
+  header << "; methods " << (opt.methods.empty() ? std::string("all") : "");
+  for (const auto& m : opt.methods) header << m << " ";
+  header << ").";
+  writer.setHeader(header.str());
+  const double inf = std::numeric_limits<double>::infinity();
+  using Row = bench::WorkPrecisionRow;
 
-  // Part 1: cost of one right-hand side against n.
+  // Part 1: cost of one right-hand side against n (rows only in a full run; merged runs keep the committed ones).
+  std::map<std::string, double> rhs_cost;  // variant + n -> [s]
   std::printf("# rhs cost [us] per n: variant n cost cost/n\n");
   for (const Variant& v : kVariants)
     for (int n : {10, 20, 50, 100, 200, 400, 1000}) {
@@ -296,9 +351,11 @@ int main(int argc, char** argv) {
       p.formulation = v.formulation;
       p.torsion = v.torsion;
       const double c = rhsCost(p);
-      std::snprintf(line, sizeof line, "rhs_cost,%s,%d,rhs,0,0,1,%.6e,0,0,\n", v.name, n, c);
-      csv += line;
-      rows.push_back({"rhs_cost", v.name, "rhs", n, 0.0, c, 0.0, 0.0, 1, ""});
+      rhs_cost[std::string(v.name) + std::to_string(n)] = c;
+      if (!opt.merge && !opt.estimate_only) {
+        Row r{"rhs_cost", v.name, "rhs", n, 0.0, 0, 1, c, 0.0, 0.0, 0, "", ""};
+        writer.add(r);
+      }
       std::printf("%s %5d %9.2f %7.4f\n", v.name, n, 1e6 * c, 1e6 * c / n);
     }
 
@@ -306,33 +363,66 @@ int main(int argc, char** argv) {
   struct Case {
     const char* name;
     RiserParameters p;
-  };
-  const std::string only = argc > 4 ? argv[4] : "all";
-  std::vector<Case> cases;
-  if (only == "all" || only == "case5") cases.push_back({"case5", builtin("riser_paper_case5_j3")});
-  if (only == "all" || only == "cable3d") cases.push_back({"cable3d", cable3d()});
-  for (auto& c : cases)
-    if (c.name == std::string("case5")) c.p.end_time = case5_end;
-  const int cable_n_max = argc > 5 ? std::atoi(argv[5]) : n_max;
-  for (auto& c : cases) {
     std::vector<int> ns;
-    for (int n : {10, 20, 50, 100, 200, 400})
-      if (n <= (c.name == std::string("cable3d") ? cable_n_max : n_max)) ns.push_back(n);
-    const bool thousand = n_max >= 1000 && c.name == std::string("case5");  // implicit J3 only, error vs finest n
-    // Finest-n reference: J3, DOPRI5 rtol 1e-10 (n ≤ 100) or RK4 at 0.2 × its limit (n ≥ 200, where
-    // DOPRI5 is as stability-bound as RK4 but 3x dearer; RK4's time error there is < 1e-8).
-    auto reference = [](const RiserParameters& p) {
-      if (p.segment_count <= 100) return integrate(p, "dopri5", 1e-10);
-      return integrate(p, "rk4", 0.2 * 2.8 / highestFrequencyEstimate(buildRiserModel(p)));
+  };
+  std::vector<Case> cases;
+  if ((opt.only == "all" || opt.only == "case5") && !opt.case5_n.empty())
+    cases.push_back({"case5", builtin("riser_paper_case5_j3"), opt.case5_n});
+  if ((opt.only == "all" || opt.only == "cable3d") && !opt.cable_n.empty())
+    cases.push_back({"cable3d", cable3d(), opt.cable_n});
+  for (auto& c : cases)
+    if (c.name == std::string("case5")) c.p.end_time = opt.case5_end;
+  for (auto& c : cases) {
+    const std::vector<int>& ns = c.ns;
+    const bool thousand = opt.thousand && c.name == std::string("case5");
+    const double period = c.p.motion_period, end = c.p.end_time;
+    // Same-n reference, the most accurate one within the budget: DOPRI5 rtol 1e-10 (n ≤ 100); RK4 at 0.2 × its
+    // limit (time error < 1e-8 at n = 200); RK4 at 0.45 × (3.1e-8 against 0.2 × for case 5 J3 at n = 200); at 0.9 ×
+    // (3.1e-7 there: enough for the implicit rows, ≥ 5e-4); the implicit integrator at T/3200 (error ≈ 43 (h/T)²
+    // of the motion: ≤ 4.2e-6).
+    struct Reference {
+      std::string how, method;
+      double value = 0;
+      Estimate cost;
+    };
+    auto chooseReference = [&](const RiserParameters& p, double limit, double c) {
+      std::vector<Reference> tiers;
+      if (p.segment_count <= 100) tiers.push_back({"dopri5 1e-10", "dopri5", 1e-10, {}});
+      tiers.push_back({"rk4 0.2x limit", "rk4", 0.2 * limit, {}});
+      tiers.push_back({"rk4 0.45x limit", "rk4", 0.45 * limit, {}});
+      tiers.push_back({"rk4 0.9x limit", "rk4", 0.9 * limit, {}});
+      tiers.push_back({"implicit T/3200", "implicit", period / 3200, {}});
+      for (auto& t : tiers) {
+        t.cost = estimate(t.method, t.value, end, limit, c, period);
+        if (t.cost.cpu <= opt.reference_budget) return t;
+      }
+      return Reference{"", "", 0.0, {}};
+    };
+    auto limitOf = [](const RiserParameters& p) { return 2.8 / highestFrequencyEstimate(buildRiserModel(p)); };
+    auto costOf = [&](const Variant& v, int n) {
+      const auto it = rhs_cost.find(std::string(v.name) + std::to_string(n));
+      return it != rhs_cost.end() ? it->second : rhs_cost.at(std::string(v.name) + "1000") * n / 1000.0;
     };
     RiserParameters pf = c.p;
     pf.segment_count = ns.back();
     pf.formulation = "joint";
     pf.torsion = true;
-    const Run finest = reference(pf);
-    std::printf("# %s finest reference n = %d: %.2f s CPU, %ld steps\n", c.name, ns.back(), finest.cpu, finest.steps);
-    const double period = c.p.motion_period;
-    for (const Variant& v : kVariants) {
+    const Reference finest_how = chooseReference(pf, limitOf(pf), costOf(kVariants[1], ns.back()));
+    Run finest;
+    if (!opt.estimate_only && !opt.skipped_only && !finest_how.method.empty()) {
+      finest = integrate(pf, finest_how.method, finest_how.value);
+      std::printf("# %s finest reference n = %d (%s): %.2f s CPU, %ld steps\n", c.name, ns.back(), finest_how.how.c_str(),
+                  finest.cpu, finest.steps);
+    }
+    for (const std::string& variant_name : opt.variants) {
+      const Variant* chosen = nullptr;
+      for (const Variant& candidate : kVariants)
+        if (variant_name == candidate.name) chosen = &candidate;
+      if (!chosen) {
+        std::fprintf(stderr, "unknown variant %s (J2, J3, A2, A3)\n", variant_name.c_str());
+        return 2;
+      }
+      const Variant& v = *chosen;
       std::vector<int> sizes = ns;
       if (thousand && std::string(v.name) == "J3") sizes.push_back(1000);
       for (int n : sizes) {
@@ -340,44 +430,72 @@ int main(int argc, char** argv) {
         p.segment_count = n;
         p.formulation = v.formulation;
         p.torsion = v.torsion;
-        const bool big = n >= 200, huge = n > ns.back();
-        if (big && std::string(v.name) != "J3" && std::string(v.name) != "A2") continue;  // keep the bench in minutes
-        const Run ref = huge ? Run{} : (n == ns.back() && std::string(v.name) == "J3") ? finest : reference(p);
-        const double limit = 2.8 / highestFrequencyEstimate(buildRiserModel(p));  // RK4 stability estimate
+        const bool huge = n > ns.back();
+        const double limit = limitOf(p);  // RK4 stability estimate
+        const double cost = costOf(v, n);
+        const bool is_finest = n == ns.back() && std::string(v.name) == "J3";
+        const Reference ref_how = huge ? Reference{} : is_finest ? finest_how : chooseReference(p, limit, cost);
         std::vector<std::pair<std::string, double>> settings;
-        if (!huge) settings = {{"rk4", 0.9 * limit}, {"rk4", 0.45 * limit}};
-        if (!big) settings.insert(settings.end(), {{"rk4", 0.225 * limit}, {"dopri5", 1e-3}, {"dopri5", 1e-6}, {"dopri5", 1e-8}});
+        if (!huge)
+          settings = {{"rk4", 0.9 * limit},    {"rk4", 0.45 * limit}, {"rk4", 0.225 * limit},
+                      {"dopri5", 1e-3},        {"dopri5", 1e-6},      {"dopri5", 1e-8}};
         if (c.name == std::string("case5") && n == 100) settings.push_back({"rk4", 0.002});  // the paper's step
         // Implicit generalized-α of the scene at T/25, T/50, T/100, T/200 (T = top-motion period).
         for (double k : {25.0, 50.0, 100.0, 200.0})
           if (!huge || k == 50.0) settings.push_back({"implicit", period / k});
-        for (const auto& [method, value] : settings) {
-          Run r;
-          try {
-            r = integrate(p, method, value);
-          } catch (const SolverError& e) {  // e.g. RK4 above its stability limit: recorded with the reason, not plotted
-            std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,0,0,0,inf,inf,", c.name, v.name, n, method.c_str(), value);
-            const std::string reason = csvCell(e.what());
-            csv += line + reason + "\n";
-            const double inf = std::numeric_limits<double>::infinity();
-            rows.push_back({c.name, v.name, method, n, value, 0.0, inf, inf, 0, reason});
-            std::printf("%s%s\n", line, reason.c_str());
-            continue;
+        // The scene's default choice ("auto") at the tolerance 1e-3 (issue 10's target accuracy).
+        if (!huge) settings.push_back({"auto", 1e-3});
+        if (!opt.methods.empty())
+          std::erase_if(settings, [&](const auto& m) {
+            return std::find(opt.methods.begin(), opt.methods.end(), m.first) == opt.methods.end();
+          });
+        if (opt.estimate_only) {
+          std::printf("# %s %s n = %d reference %s: %.0f s (%s)\n", c.name, v.name, n, ref_how.how.c_str(),
+                      ref_how.cost.cpu, ref_how.cost.text.c_str());
+          for (const auto& [method, value] : settings) {
+            const Estimate e = estimate(method, value, end, limit, cost, period);
+            std::printf("  %s %.3e: %.1f s%s\n", method.c_str(), value, e.cpu, e.cpu > opt.budget ? "  SKIP" : "");
           }
-          std::snprintf(line, sizeof line, "%s,%s,%d,%s,%.3e,%ld,%ld,%.4e,%.3e,%.3e,\n", c.name, v.name, n,
-                        method.c_str(), value, r.steps, r.rhs, r.cpu, relativeError(r, ref), relativeError(r, finest));
-          csv += line;
-          rows.push_back({c.name, v.name, method, n, value, r.cpu, relativeError(r, ref), relativeError(r, finest), r.steps, ""});
-          writeFileAtomic(out, csv);  // after every row: a long run can be cut short and still plotted
-          std::fputs(line, stdout);
+          continue;
+        }
+        Run ref;
+        if (is_finest) ref = finest;
+        else if (!ref_how.method.empty() && !opt.skipped_only) ref = integrate(p, ref_how.method, ref_how.value);
+        const int finest_n = huge || !finest_how.method.empty() ? ns.back() : 0;
+        for (const auto& [method, value] : settings) {
+          Row row{c.name, v.name, method, n, value, 0, 0, 0.0, inf, inf, finest_n, ref_how.how, ""};
+          const Estimate e = estimate(method, value, end, limit, cost, period);
+          const bool same_as_ref = method == ref_how.method && value == ref_how.value;
+          char why[320];
+          if (ref_how.method.empty() && !huge) {
+            std::snprintf(why, sizeof why, "skipped: no same-n reference within the budget of %.0f s CPU",
+                          opt.reference_budget);
+            row.note = why;
+          } else if (e.cpu > opt.budget && !same_as_ref) {
+            std::snprintf(why, sizeof why, "skipped: estimated %.0f s CPU (%s) > budget %.0f s", e.cpu, e.text.c_str(),
+                          opt.budget);
+            row.note = why;
+          } else if (opt.skipped_only) {
+            continue;  // a row that would run: left to a run without MARIS_BENCH_SKIPPED_ONLY
+          } else {
+            try {
+              const Run r = same_as_ref ? ref : integrate(p, method, value);
+              row.steps = r.steps, row.rhs_evaluations = r.rhs, row.cpu = r.cpu;
+              row.error_same_n = huge ? inf : relativeError(r, ref);
+              row.error_finest_n = relativeError(r, finest);
+              if (same_as_ref) row.reference += " (this run)";
+            } catch (const SolverError& ex) {  // e.g. RK4 above its stability limit: recorded with the reason
+              row.note = ex.what();
+            }
+          }
+          writer.add(row);
+          std::fputs(bench::workPrecisionLine(row).c_str(), stdout);
           std::fflush(stdout);
         }
       }
     }
   }
-  writeFileAtomic(out, csv);
-  const std::string md = (out.size() > 4 && out.substr(out.size() - 4) == ".csv" ? out.substr(0, out.size() - 4) : out) + ".md";
-  writeFileAtomic(md, summary(rows, load_start, loadAverage(), RunSettings{n_max, cable_n_max, case5_end}));
-  std::printf("# written %s and %s\n", out.c_str(), md.c_str());
+  if (!opt.estimate_only) writer.finish();
+  std::printf("# written %s and its .md\n", opt.out.c_str());
   return 0;
 }

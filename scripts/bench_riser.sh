@@ -11,8 +11,15 @@
 #            (its torsion limit makes each doubling of n cost 4x): ≈ 8-10 min on one core of a quiet machine
 #   quick:   case 5 over 3.6 s with n ≤ 20, cable n = 10, to check the pipeline (≈ 1 min; errors meaningless)
 # Environment: MARIS_BENCH_BUILD (default build/release; configured as Release if missing),
-#              MARIS_BENCH_OUT (default docs), MARIS_BENCH_NMAX (case 5, default 100; 200 adds J3/A2 rows
-#              at n = 200, roughly +4 min; 400: tens of minutes), MARIS_BENCH_CABLE_NMAX (default 20; 50: +5 min).
+#              MARIS_BENCH_OUT (default docs), MARIS_BENCH_NMAX (case 5, default 100; 200 adds the n = 200
+#              rows, several minutes), MARIS_BENCH_CABLE_NMAX (default 20; 50: +5 min),
+#              MARIS_BENCH_NLIST / MARIS_BENCH_CABLE_NLIST: comma lists of n to run instead (e.g. 400); then
+#              only those rows are (re)computed and merged into the existing CSV (same key replaced), the .md
+#              tables and PNGs are redrawn from the whole CSV and the log is appended to,
+#              MARIS_BENCH_ROW_BUDGET: CPU seconds per run above which a run is skipped with a note giving
+#              its estimated cost (default 180), MARIS_BENCH_ESTIMATE_ONLY=1: print the estimates only,
+#              MARIS_BENCH_PLOT_CASE5_N / MARIS_BENCH_PLOT_CABLE_N: n of the per-n PNGs (default 100 and 50).
+# Example (the n = 400 rows): MARIS_BENCH_NLIST=400 MARIS_BENCH_CABLE_NLIST=100,200,400 scripts/bench_riser.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${MARIS_BENCH_BUILD:-build/release}
@@ -35,13 +42,24 @@ start=$(date +%s)
 # One core: the bench is single-threaded; pinning keeps it from migrating between the two cores.
 runner=()
 command -v taskset > /dev/null && runner=(taskset -c 0)
-"${runner[@]}" "$build/bench/bench_riser_work_precision" "$csv" "$n_max" "$end_time" all "$cable_n_max" | tee "$out/riser_work_precision.log"
+log=("$out/riser_work_precision.log")
+tee_args=()
+if [ -n "${MARIS_BENCH_NLIST:-}${MARIS_BENCH_CABLE_NLIST:-}" ]; then
+  tee_args=(-a)  # a merged run: earlier runs' logs stay
+  # Only the listed cases run (an empty list leaves that case's rows as they are).
+  [ -n "${MARIS_BENCH_NLIST:-}" ] || export MARIS_BENCH_NLIST=""
+  [ -n "${MARIS_BENCH_CABLE_NLIST:-}" ] || export MARIS_BENCH_CABLE_NLIST=""
+fi
+{ echo "# $(date -u '+%Y-%m-%d %H:%M UTC') run: NMAX=$n_max CABLE_NMAX=$cable_n_max NLIST=${MARIS_BENCH_NLIST-} CABLE_NLIST=${MARIS_BENCH_CABLE_NLIST-} budget=${MARIS_BENCH_ROW_BUDGET:-180} s; load average $(cut -d' ' -f1-3 /proc/loadavg)"
+  "${runner[@]}" "$build/bench/bench_riser_work_precision" "$csv" "$n_max" "$end_time" all "$cable_n_max"
+  echo "# load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"; } | tee "${tee_args[@]}" "${log[@]}"
 echo "bench: $(( $(date +%s) - start )) s wall"
 
 if [ "$with_plot" = 1 ]; then
   export QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen}
-  scripts/riser_work_precision_plots.sh "$build" "$csv" "$out/images" "$n_max" "$cable_n_max"
+  scripts/riser_work_precision_plots.sh "$build" "$csv" "$out/images" "${MARIS_BENCH_PLOT_CASE5_N:-100}" \
+    "${MARIS_BENCH_PLOT_CABLE_N:-50}"
 else
-  echo "no GUI in $build: PNGs skipped (configure with -DMARIS_BUILD_GUI=ON for bench/tools/work_precision_plot)"
+  echo "no GUI in $build: PNGs skipped (scripts/riser_work_precision_plots.sh GUI_BUILD redraws them from the CSV)"
 fi
 echo "written: $csv, $out/riser_work_precision.md, $out/riser_work_precision.log"

@@ -34,12 +34,22 @@ struct IntegrationPlan {
   double stabilisation_rate = 0.0;  // [1/s] Baumgarte α of the constraints
   double highest_frequency = 0.0;   // [rad/s] ω_max estimate (bending, torsion, tension)
   std::string reason;               // why this integrator (auto) and step
+  double expected_error = 0.0;      // [-] implicit with harmonic top motion: probe error / motion from
+                                    // implicitErrorModel (0 if no estimate)
 };
+
+// Error model of generalized-α on a riser driven by a harmonic top motion of period T: probe error ≈ C (h/T)²
+// of the motion, C measured on case 5 (absolute 22, joint 43: J builds positions from integrated rotations).
+double implicitErrorModel(Formulation formulation);
+
+// The automatic implicit step for a relative tolerance: 0.8 T √(tol/C) (so the expected error is 0.64 tol).
+double implicitStepForTolerance(Formulation formulation, double period, double tolerance);
 
 // Chooses integrator, step and stabilisation from solver.integrator, solver.time_step and solver.tolerance.
 // "auto": implicit when the explicit stability limit would need more than 2e6 steps (stiff torsion of fine
-// discretisations) or when solver.tolerance >= 1e-3 and the implicit run is estimated cheaper; else RK4 at
-// half its stability limit (see docs/riser.md for the measured costs of the three).
+// discretisations) or when solver.tolerance >= 1e-3 (any tolerance in absolute coordinates) and the implicit
+// run is estimated cheaper, at the step implicitStepForTolerance (at most T/50); else RK4 at half its stability
+// limit (see docs/riser.md for the measured costs of the three).
 IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p);
 
 // Integrates y (at t = 0) to p.end_time, sampling `recorder` at ≈ 2000 history points, p.frame_count frames

@@ -141,6 +141,7 @@ FeRunResult runExplicit(const FeModel& model, BoundaryDrive* drive, FeState s, c
     if (!finite) throwNonFinite(model, s, (n + 1) * dt, n + 1, dt);
     record();
     if ((n + 1) % snap_every == 0) snapshot(n + 1);
+    if (settings.after_step) settings.after_step(n + 1, s, out);
   }
   ctx.progress(1.0, "time integration");
   out.final_state = std::move(s);

@@ -25,6 +25,8 @@ struct FeState {
   static FeState zero(int node_count);
 };
 
+struct FeRunResult;
+
 struct FeRunSettings {
   double time_step = 0.0;             // [s] Δt
   long steps = 0;                     // number of steps
@@ -33,6 +35,9 @@ struct FeRunSettings {
   int snapshot_count = 0;             // frames of |u| over the grid, evenly spaced
   // Optional extra solid loads at step n, added into per-node (fx, fy) [N/m] (e.g. a Lysmer-boundary input).
   std::function<void(long, std::vector<double>&, std::vector<double>&)> extra_solid_forces;
+  // Optional read-only look at the run after step n (state u^n, samples 0..n recorded), e.g. to hand
+  // the histories so far to a partial-results publisher. Must not change anything the run uses.
+  std::function<void(long, const FeState&, const FeRunResult&)> after_step;
 };
 
 struct FeSnapshot {

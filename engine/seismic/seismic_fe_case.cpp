@@ -5,6 +5,7 @@
 
 #include "seismic/fe_drive.hpp"
 #include "seismic/fe_solver.hpp"
+#include "seismic/seismic_live.hpp"
 #include "seismic/seismic_solve.hpp"
 
 namespace maris::seismic {
@@ -22,7 +23,7 @@ int topSolidNode(const FeModel& model, int i) {
 }  // namespace
 
 FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx,
-                 bool coarse_companion) {
+                 bool coarse_companion, FeCaseHandOver* live) {
   SeismicParameters q = p;
   q.include_water = water;
   const FeModel model = buildFeModel(buildMesh(q, water, coarse_companion));
@@ -68,25 +69,54 @@ FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool 
   const auto incident = incidentFunction(q, arrival);
   ctx.progress(0.0, "free field on the boundary");
   BoundaryDrive drive(model, field, incident, out.time_step, out.steps, &ctx);
-  const FeRunResult run = runExplicit(model, &drive, FeState::zero(m.nodeCount()), settings, ctx);
-
-  for (int k = 0; k < p.station_count; ++k) {
-    out.ux.push_back(run.ux[k]);
-    out.uy.push_back(run.uy[k]);
-  }
-  for (long n = 0; n <= out.steps; ++n) out.incident.push_back(incident(n * out.time_step));
-  if (probes) {
-    const std::size_t b = p.station_count, a = b + 1;
-    out.seabed_fe_ux = run.ux[b];
-    out.seabed_fe_uy = run.uy[b];
-    out.probe_fe_uy = run.uy[a];
-    for (long n = 0; n <= out.steps; ++n) {
-      const Eigen::Vector2d ub = drive.freeFieldDisplacement(seabed_node, n);
-      out.seabed_ff_ux.push_back(ub.x());
-      out.seabed_ff_uy.push_back(ub.y());
-      out.probe_ff_uy.push_back(water ? drive.freeFieldDisplacement(surface_node, n).y() : ub.y());
+  // What `run` recorded so far (samples 0..n): stations, the incident displacement at the same times
+  // and, for the box, FE and free field at B and A. Used for the finished run and for the copies
+  // handed to the partial results, so both hold the same numbers. `drawn_only`: of the stations only
+  // those in table "station_histories" (edges and centre); the others stay empty (a 13th of the copy).
+  auto collect = [&](const FeRunResult& run, FeCase& c, bool drawn_only) {
+    const long last = static_cast<long>(run.ux.front().size()) - 1;
+    const int last_station = p.station_count - 1;
+    c.ux.resize(p.station_count);
+    c.uy.resize(p.station_count);
+    for (int k = 0; k <= last_station; ++k) {
+      if (drawn_only && k != 0 && k != last_station / 2 && k != last_station) continue;
+      c.ux[k] = run.ux[k];
+      c.uy[k] = run.uy[k];
     }
+    for (long n = 0; n <= last; ++n) c.incident.push_back(incident(n * out.time_step));
+    if (!probes) return;
+    const std::size_t b = p.station_count, a = b + 1;
+    c.seabed_fe_ux = run.ux[b];
+    c.seabed_fe_uy = run.uy[b];
+    c.probe_fe_uy = run.uy[a];
+    for (long n = 0; n <= last; ++n) {
+      const Eigen::Vector2d ub = drive.freeFieldDisplacement(seabed_node, n);
+      c.seabed_ff_ux.push_back(ub.x());
+      c.seabed_ff_uy.push_back(ub.y());
+      c.probe_ff_uy.push_back(water ? drive.freeFieldDisplacement(surface_node, n).y() : ub.y());
+    }
+  };
+  if (live) {
+    // Runs in this case's worker thread; reads only. The frame is the wave field at step n.
+    settings.after_step = [&](long n, const FeState& s, const FeRunResult& so_far) {
+      if (!live->requested()) return;
+      FeCase copy = out;  // the case's description (stations, grid); its records are still empty
+      collect(so_far, copy, true);
+      if (snapshots && p.snapshot_count > 0) {
+        // Only at the nodes the frame draws (the snapshots' expression): the rest stays 0, unused.
+        std::vector<double> magnitude(m.nodeCount(), 0.0);
+        const FrameStride stride = frameStride(m.nx, m.ny);
+        for (int j = 0; j <= m.ny; j += stride.j)
+          for (int i = 0; i <= m.nx; i += stride.i)
+            magnitude[m.node(i, j)] = nodalDisplacement(model, s, m.node(i, j)).norm();
+        copy.snapshot_time.push_back(n * out.time_step);
+        copy.snapshot_magnitude.push_back(std::move(magnitude));
+      }
+      live->deliver(std::move(copy));
+    };
   }
+  const FeRunResult run = runExplicit(model, &drive, FeState::zero(m.nodeCount()), settings, ctx);
+  collect(run, out, false);
   for (const auto& s : run.snapshots) {
     out.snapshot_time.push_back(s.time);
     out.snapshot_magnitude.push_back(s.magnitude);

@@ -96,20 +96,8 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   results.plots.push_back({"amplification", "Peak ratios R along the flat", "amplification", "x_over_L", amp_y, false,
                            false, "", {}});
 
-  // Histories at the upstream edge, centre and downstream edge.
+  addStationHistories(c, results);
   const std::size_t last = c.ux.size() - 1, mid = last / 2;
-  Table hist{"station_histories", "Displacement at the flat's edges and centre", {}};
-  std::vector<double> t(c.incident.size());
-  for (std::size_t k = 0; k < t.size(); ++k) t[k] = k * dt;
-  hist.add("time", "s", t);
-  hist.add("incident", "m", c.incident);
-  for (auto [name, s] : {std::pair{"left", std::size_t{0}}, std::pair{"centre", mid}, std::pair{"right", last}}) {
-    hist.add(std::string("ux_") + name, "m", c.ux[s]);
-    hist.add(std::string("uy_") + name, "m", c.uy[s]);
-  }
-  results.tables.push_back(std::move(hist));
-  results.plots.push_back({"station_histories", "Displacement histories on the flat", "station_histories", "time",
-                           {"incident", "ux_centre", "uy_centre", "ux_right", "uy_right"}, false, false, "", {}});
 
   // Fourier spectral ratios H_a = |A(f)| / (2|A_0(f)|) (paper eq 30), up to f_cut where the input has energy.
   const std::size_t n_fft = std::bit_ceil(c.incident.size());
@@ -173,14 +161,6 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
 
   // Box: FE against the analytic free field at B (seabed) and A (water surface).
   if (!c.probe_fe_uy.empty()) {
-    Table v{"verification", "FE vs analytic free field at B (seabed) and A (water surface)", {}};
-    v.add("time", "s", t);
-    v.add("fe_B_ux", "m", c.seabed_fe_ux);
-    v.add("free_B_ux", "m", c.seabed_ff_ux);
-    v.add("fe_B_uy", "m", c.seabed_fe_uy);
-    v.add("free_B_uy", "m", c.seabed_ff_uy);
-    v.add("fe_A_uy", "m", c.probe_fe_uy);
-    v.add("free_A_uy", "m", c.probe_ff_uy);
     double worst = 0.0;
     auto compare = [&](const std::vector<double>& fe, const std::vector<double>& ff, const char* name, const char* what) {
       const double e = std::abs(peak(fe) - peak(ff)) / peak(ff);
@@ -192,9 +172,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
     compare(c.probe_fe_uy, c.probe_ff_uy, "peak_error_A_uy", "|peak FE − peak free field|/peak free field, A u_y");
     results.stats.error_estimate = worst;
     results.stats.error_unit = "relative peak error vs analytic free field";
-    results.tables.push_back(std::move(v));
-    results.plots.push_back({"verification", "FE vs free field", "verification", "time",
-                             {"fe_B_uy", "free_B_uy", "fe_A_uy", "free_A_uy"}, false, false, "", {}});
+    addVerificationHistories(c, results);
   }
 
   // Angle sweep (main angle included).
@@ -227,30 +205,68 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
                              {"max_R_ax", "max_R_ay", "mean_R_ax", "mean_R_ay"}, false, false, "", {}});
   }
 
-  // Wave-field frames: the x–y section drawn in the x–z plane, coloured by |u|, decimated to ≤ 160 × 80.
-  if (!c.snapshot_magnitude.empty()) {
-    const int step_i = std::max(1, (c.nx + 159) / 160), step_j = std::max(1, (c.ny + 79) / 80);
-    const int gu = c.nx / step_i + 1, gv = c.ny / step_j + 1;
-    const double delta = c.element_size;
-    for (std::size_t f = 0; f < c.snapshot_magnitude.size(); ++f) {
-      Shape3D surf;
-      surf.kind = Shape3D::Kind::Surface;
-      surf.name = "displacement magnitude";
-      surf.grid_u = gu;
-      surf.grid_v = gv;
-      for (int jj = 0; jj < gv; ++jj)
-        for (int ii = 0; ii < gu; ++ii) {
-          const int i = ii * step_i, j = jj * step_j;
-          surf.points.emplace_back(c.x0 + i * delta, 0.0, c.y0 + j * delta);
-          surf.scalars.push_back(c.snapshot_magnitude[f][j * (c.nx + 1) + i]);
-        }
-      results.view.frames.push_back({c.snapshot_time[f], {std::move(surf)}});
-    }
-    results.view.scalar_name = "displacement magnitude";
-    results.view.scalar_unit = "m";
-    if (c.water) results.view.water_level_z = p.water_depth;
-    results.view.seabed_z = 0.0;
+  addWaveFieldFrames(p, c, results);
+}
+
+void addStationHistories(const FeCase& c, Results& results) {
+  const std::size_t last = c.ux.size() - 1, mid = last / 2;
+  Table hist{"station_histories", "Displacement at the flat's edges and centre", {}};
+  std::vector<double> t(c.incident.size());
+  for (std::size_t k = 0; k < t.size(); ++k) t[k] = k * c.time_step;
+  hist.add("time", "s", t);
+  hist.add("incident", "m", c.incident);
+  for (auto [name, s] : {std::pair{"left", std::size_t{0}}, std::pair{"centre", mid}, std::pair{"right", last}}) {
+    hist.add(std::string("ux_") + name, "m", c.ux[s]);
+    hist.add(std::string("uy_") + name, "m", c.uy[s]);
   }
+  results.tables.push_back(std::move(hist));
+  results.plots.push_back({"station_histories", "Displacement histories on the flat", "station_histories", "time",
+                           {"incident", "ux_centre", "uy_centre", "ux_right", "uy_right"}, false, false, "", {}});
+}
+
+void addVerificationHistories(const FeCase& c, Results& results) {
+  if (c.probe_fe_uy.empty()) return;
+  std::vector<double> t(c.incident.size());
+  for (std::size_t k = 0; k < t.size(); ++k) t[k] = k * c.time_step;
+  Table v{"verification", "FE vs analytic free field at B (seabed) and A (water surface)", {}};
+  v.add("time", "s", t);
+  v.add("fe_B_ux", "m", c.seabed_fe_ux);
+  v.add("free_B_ux", "m", c.seabed_ff_ux);
+  v.add("fe_B_uy", "m", c.seabed_fe_uy);
+  v.add("free_B_uy", "m", c.seabed_ff_uy);
+  v.add("fe_A_uy", "m", c.probe_fe_uy);
+  v.add("free_A_uy", "m", c.probe_ff_uy);
+  results.tables.push_back(std::move(v));
+  results.plots.push_back({"verification", "FE vs free field", "verification", "time",
+                           {"fe_B_uy", "free_B_uy", "fe_A_uy", "free_A_uy"}, false, false, "", {}});
+}
+
+FrameStride frameStride(int nx, int ny) { return {std::max(1, (nx + 159) / 160), std::max(1, (ny + 79) / 80)}; }
+
+// Wave-field frames: the x–y section drawn in the x–z plane, coloured by |u|, decimated to ≤ 160 × 80.
+void addWaveFieldFrames(const SeismicParameters& p, const FeCase& c, Results& results) {
+  if (c.snapshot_magnitude.empty()) return;
+  const auto [step_i, step_j] = frameStride(c.nx, c.ny);
+  const int gu = c.nx / step_i + 1, gv = c.ny / step_j + 1;
+  const double delta = c.element_size;
+  for (std::size_t f = 0; f < c.snapshot_magnitude.size(); ++f) {
+    Shape3D surf;
+    surf.kind = Shape3D::Kind::Surface;
+    surf.name = "displacement magnitude";
+    surf.grid_u = gu;
+    surf.grid_v = gv;
+    for (int jj = 0; jj < gv; ++jj)
+      for (int ii = 0; ii < gu; ++ii) {
+        const int i = ii * step_i, j = jj * step_j;
+        surf.points.emplace_back(c.x0 + i * delta, 0.0, c.y0 + j * delta);
+        surf.scalars.push_back(c.snapshot_magnitude[f][j * (c.nx + 1) + i]);
+      }
+    results.view.frames.push_back({c.snapshot_time[f], {std::move(surf)}});
+  }
+  results.view.scalar_name = "displacement magnitude";
+  results.view.scalar_unit = "m";
+  if (c.water) results.view.water_level_z = p.water_depth;
+  results.view.seabed_z = 0.0;
 }
 
 void addDiscretisationEstimate(const FeCase& main, const FeCase& coarse, Results& results) {

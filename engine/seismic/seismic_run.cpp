@@ -1,13 +1,16 @@
 // The scene's solve: free field, then the FE runs (main model, dry comparison, sweep angles), which are
-// independent and run on std::threads, at most one per hardware thread.
+// independent and run on std::threads, at most one per hardware thread. While they run, this thread
+// reports progress and, when the context wants them, publishes partial results of the main case.
 #include <atomic>
 #include <chrono>
 #include <exception>
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <optional>
 #include <thread>
 
+#include "seismic/seismic_live.hpp"
 #include "seismic/seismic_solve.hpp"
 
 namespace maris::seismic {
@@ -22,6 +25,7 @@ struct Job {
   FeCase result;
   std::atomic<double> progress{0.0};
   std::atomic<bool> done{false};
+  std::atomic<bool> failed{false};
 };
 
 }  // namespace
@@ -49,6 +53,19 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
   if (compare) add(p.angle_deg, false, false, false);
   for (double a : p.sweep_angles_deg) add(a, p.include_water, false, false);
 
+  // Partial results come from the main case only (jobs[0]): its worker hands over copies on request.
+  FeCaseHandOver live;
+  bool final_partial_sent = false;  // the main case's complete records, once, while the others still run
+  auto publishPartial = [&]() {
+    if (!jobs[0]->done) {
+      if (std::optional<FeCase> so_far = live.take()) ctx.publishPartial(partialSeismicResults(p, results, *so_far));
+      if (ctx.wantsPartialResults()) live.request();  // delivered at the worker's next step
+    } else if (!jobs[0]->failed && !final_partial_sent && ctx.wantsPartialResults()) {
+      ctx.publishPartial(partialSeismicResults(p, results, jobs[0]->result));
+      final_partial_sent = true;
+    }
+  };
+
   // Each worker has its own RunContext whose cancel flag the calling thread raises on request.
   std::atomic<bool> cancel{false};
   std::mutex error_mutex;
@@ -59,11 +76,13 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
       Job& job = *jobs[k];
       RunContext local([&job](double f, const std::string&) { job.progress = f; }, &cancel);
       try {
-        job.result = runFeCase(p, job.angle_deg, job.water, job.snapshots, local, job.coarse_companion);
+        job.result = runFeCase(p, job.angle_deg, job.water, job.snapshots, local, job.coarse_companion,
+                               k == 0 ? &live : nullptr);
       } catch (...) {
         std::lock_guard lock(error_mutex);
         if (!first_error) first_error = std::current_exception();
         cancel = true;  // one failure ends the batch
+        job.failed = true;
       }
       job.done = true;
     }
@@ -81,6 +100,7 @@ Results solveSeismic(const SeismicParameters& p, RunContext& ctx) {
     }
     if (all_done) break;
     if (ctx.cancelRequested()) cancel = true;
+    if (!cancel) publishPartial();
     ctx.progress(0.05 + 0.9 * total / jobs.size(), "finite-element runs");
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }

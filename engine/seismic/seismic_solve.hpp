@@ -45,10 +45,13 @@ struct FeCase {
   double x0 = 0.0, y0 = 0.0;                        // [m] grid corner
 };
 
+class FeCaseHandOver;  // seismic_live.hpp
+
 // Runs one case (throws SolverError, RunCancelled, InputError).
 // `coarse_companion`: on the mesh about twice as coarse used for the discretisation-error estimate.
+// `live`: hands copies of the records so far (and the current wave field) over for partial results.
 FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool snapshots, RunContext& ctx,
-                 bool coarse_companion = false);
+                 bool coarse_companion = false, FeCaseHandOver* live = nullptr);
 
 // Peak ratios along the stations (paper eq 29): peak |u|, |v|, |a| over twice the incident peak (the
 // surface of a homogeneous half-space under the same wave at vertical incidence); v and a by central
@@ -73,6 +76,18 @@ SpectralRatioMap spectralRatioMap(const FeCase& c, double cutoff_frequency, doub
 // Tables "spectral_ratio_map" (long format, heat-map data) and "spectral_ratio_lines" (H_a(f) at five
 // points of the flat) with their plots.
 void addSpectralMap(const SeismicParameters& p, const FeCase& c, Results& results);
+
+// Pieces of the FE report that need only the records so far (shared by the final and the partial
+// results): table "station_histories" (flat's edges and centre), the box's table "verification"
+// (FE vs free field at B and A), each with its plot, and the wave-field frames of c's snapshots.
+void addStationHistories(const FeCase& c, Results& results);
+void addVerificationHistories(const FeCase& c, Results& results);
+void addWaveFieldFrames(const SeismicParameters& p, const FeCase& c, Results& results);
+// The frames draw every `i`-th column and `j`-th row of nodes of an nx × ny grid (≤ 160 × 80 cells).
+struct FrameStride {
+  int i = 1, j = 1;
+};
+FrameStride frameStride(int nx, int ny);
 
 // Amplification, spectral ratios, histories, the water's effect, snapshots and the angle sweep.
 void addFeResults(const SeismicParameters& p, const FeCase& main, const FeCase* dry, const std::vector<FeCase>& sweep,

@@ -66,15 +66,34 @@ Shape3D hullSurface(const HullForm& hull, double side) {
   return s;
 }
 
-}  // namespace
+// The hull, both sides.
+Frame3D hullFrame(const HullForm& hull) {
+  Frame3D frame;
+  frame.shapes.push_back(hullSurface(hull, 1.0));
+  frame.shapes.push_back(hullSurface(hull, -1.0));
+  return frame;
+}
 
-Results buildShipResults(const ShipParameters& p, const ShipModel& m, const ResistanceCurves& c, RunContext& context) {
-  Results r;
+PlotSpec waveSpectrumPlot(bool corrected) {
+  return makePlot("wave_spectrum", "Wave-angle spectrum of R_W", "wave_spectrum", "theta_deg",
+                  corrected ? std::vector<std::string>{"dr_dtheta", "dr_dtheta_corrected"}
+                            : std::vector<std::string>{"dr_dtheta"});
+}
+
+PlotSpec boundaryLayerPlot() {
+  return makePlot("boundary_layer", "Boundary layer on the waterline at 0.2 T", "boundary_layer", "x",
+                  {"half_breadth", "corrected_half_breadth", "displacement_thickness"});
+}
+
+// The resistance-curve table of the rows in `c`, the measured points and the curve plots, followed by the specs of
+// the design-speed plots (their tables come with the final results). Row i depends on row i of `c` only, so a
+// partial sweep's rows equal the finished sweep's bit for bit.
+void addResistanceCurves(Results& r, const ShipParameters& p, const ShipModel& m, const ResistanceCurves& c,
+                         const MeasuredPoints* measured) {
   const std::size_t n = c.froude.size();
   const double S = m.wetted_surface, rho = m.water.density;
   auto q = [&](std::size_t i) { return 0.5 * rho * c.speed[i] * c.speed[i] * S; };
   const bool corrected = !c.corrected.empty(), exact = !c.exact.empty();
-
   // Resistance curve table.
   Table t;
   t.name = "resistance_curve";
@@ -143,8 +162,8 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   rt_cols.push_back("r_total_holtrop");
   r.plots.push_back(makePlot("wave_resistance_coefficient", "Wave resistance coefficient C_W", "resistance_curve", "froude", cw_cols));
   PlotSpec ct_plot = makePlot("total_resistance_coefficient", "Total resistance coefficient C_T", "resistance_curve", "froude", ct_cols);
-  if (!p.measured_file.empty()) {
-    const MeasuredPoints mp = readMeasuredPoints(p.measured_file);
+  if (measured) {
+    const MeasuredPoints& mp = *measured;
     Table mt;
     mt.name = "measured";
     mt.title = "Measured points (" + p.measured_file + ")";
@@ -161,18 +180,34 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     r.plots.push_back(makePlot("ship_total_resistance", "Full-scale total resistance (uncorrected Michell)",
                                "resistance_curve", "ship_speed", {"r_total_ship"}));
 
+  r.plots.push_back(waveSpectrumPlot(corrected));
+  if (m.tangency) r.plots.push_back(boundaryLayerPlot());
+}
+
+}  // namespace
+
+Results buildShipResults(const ShipParameters& p, const ShipModel& m, const ResistanceCurves& c, RunContext& context) {
+  Results r;
+  const std::size_t n = c.froude.size();
+  const double rho = m.water.density;
+  const bool corrected = !c.corrected.empty();
+  const MeasuredPoints measured = p.measured_file.empty() ? MeasuredPoints{} : readMeasuredPoints(p.measured_file);
+  addResistanceCurves(r, p, m, c, p.measured_file.empty() ? nullptr : &measured);
+  const Table& t = *r.findTable("resistance_curve");
+  auto at = [&](const char* column, std::size_t i) { return t.find(column)->values[i]; };
+
   // Design speed: scalars and the wave-angle spectrum.
   const std::size_t d = designIndex(c, p.design_froude);
   addParticulars(r, m);
   r.addScalar("design_froude", c.froude[d], "-", "Froude number of the design-speed results");
   r.addScalar("design_speed", c.speed[d], "m/s", "Speed at the design Froude number");
-  r.addScalar("c_wave", cw[d], "-", "Michell wave resistance coefficient at the design speed");
-  r.addScalar("c_wave_error", cw_err[d], "-", "Error estimate of c_wave (quadrature + tail + grid)");
-  if (corrected) r.addScalar("c_wave_corrected", cwc[d], "-", "Corrected wave resistance coefficient");
+  r.addScalar("c_wave", at("c_wave", d), "-", "Michell wave resistance coefficient at the design speed");
+  r.addScalar("c_wave_error", at("c_wave_error", d), "-", "Error estimate of c_wave (quadrature + tail + grid)");
+  if (corrected) r.addScalar("c_wave_corrected", at("c_wave_corrected", d), "-", "Corrected wave resistance coefficient");
   r.addScalar("c_friction", c.c_friction[d], "-", "ITTC-57 friction coefficient at the design speed");
-  r.addScalar("c_total", ct[d], "-", "C_T = C_W + (1+k) C_F + C_A (uncorrected Michell)");
-  r.addScalar("r_total", rt[d], "N", "Total resistance at the design speed (uncorrected Michell)");
-  r.addScalar("r_total_holtrop", rth[d], "N", "Holtrop-Mennen total resistance at the design speed");
+  r.addScalar("c_total", at("c_total", d), "-", "C_T = C_W + (1+k) C_F + C_A (uncorrected Michell)");
+  r.addScalar("r_total", at("r_total", d), "N", "Total resistance at the design speed (uncorrected Michell)");
+  r.addScalar("r_total_holtrop", at("r_total_holtrop", d), "N", "Holtrop-Mennen total resistance at the design speed");
   context.progress(0.95, "wave spectrum");
   {
     std::vector<double> theta, theta_deg;
@@ -192,9 +227,6 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
             waveSpectrum(*corrected_kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, true), theta));
     }
     r.tables.push_back(std::move(s));
-    r.plots.push_back(makePlot("wave_spectrum", "Wave-angle spectrum of R_W", "wave_spectrum", "theta_deg",
-                               corrected ? std::vector<std::string>{"dr_dtheta", "dr_dtheta_corrected"}
-                                         : std::vector<std::string>{"dr_dtheta"}));
   }
 
   // Boundary layer at the design speed on the waterline nearest 0.2 T (the depth of the paper's Fig. 4).
@@ -216,14 +248,10 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     b.add("displacement_thickness", "m", dstar);
     b.add("corrected_half_breadth", "m", ye);
     r.tables.push_back(std::move(b));
-    r.plots.push_back(makePlot("boundary_layer", "Boundary layer on the waterline at 0.2 T", "boundary_layer", "x",
-                               {"half_breadth", "corrected_half_breadth", "displacement_thickness"}));
   }
 
   // 3-D view: the hull, both sides, with the still waterline.
-  Frame3D frame;
-  frame.shapes.push_back(hullSurface(m.hull, 1.0));
-  frame.shapes.push_back(hullSurface(m.hull, -1.0));
+  Frame3D frame = hullFrame(m.hull);
   {
     // Far-field Kelvin pattern behind the stern at the design speed (elevation exaggerated ×10 for display).
     context.progress(0.97, "wave pattern");
@@ -265,6 +293,24 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
                    std::to_string(p.waterlines) + ", adaptive Gauss-Kronrod 7/15 in lambda = cosh u, rtol " +
                    std::to_string(p.relative_tolerance);
   for (const auto& note : m.notes) context.warn(note);
+  return r;
+}
+
+PartialShipResults::PartialShipResults(const ShipParameters& p, const ShipModel& m) : p_(p), m_(m) {
+  if (!p.measured_file.empty()) measured_ = readMeasuredPoints(p.measured_file);
+  addParticulars(fixed_, m);
+  fixed_.view.frames.push_back(hullFrame(m.hull));
+  fixed_.view.water_level_z = 0.0;
+}
+
+std::shared_ptr<const Results> PartialShipResults::build(const ResistanceCurves& rows_so_far) const {
+  auto r = std::make_shared<Results>();
+  addResistanceCurves(*r, p_, m_, rows_so_far, p_.measured_file.empty() ? nullptr : &measured_);
+  r->scalars = fixed_.scalars;
+  r->view = fixed_.view;
+  r->stats.steps = static_cast<long>(rows_so_far.froude.size());
+  r->stats.method = "Michell sweep running: " + std::to_string(rows_so_far.froude.size()) + " of " +
+                    std::to_string(p_.froude_count) + " speeds finished";
   return r;
 }
 

@@ -1,4 +1,6 @@
 // Registry entry of the ship resistance scene.
+#include <optional>
+
 #include "core/scene.hpp"
 #include "ship/ship_study.hpp"
 
@@ -15,7 +17,13 @@ SceneDefinition makeShipScene() {
       ship::shipSchemaBinder(), ship::checkShipParameters,
       [](const ShipParameters& p, RunContext& context) {
         const ship::ShipModel model = ship::buildShipModel(p, context);
-        const ship::ResistanceCurves curves = ship::computeResistanceCurves(p, model, context);
+        // Live plots: the rows finished so far, whenever the context wants partial results (else nothing is built).
+        std::optional<ship::PartialShipResults> partial;
+        const auto publish = [&](const ship::ResistanceCurves& rows_so_far) {
+          if (!partial) partial.emplace(p, model);
+          context.publishPartial(partial->build(rows_so_far));
+        };
+        const ship::ResistanceCurves curves = ship::computeResistanceCurves(p, model, context, publish);
         Results results = ship::buildShipResults(p, model, curves, context);
         context.progress(1.0, "done");
         return results;

@@ -107,7 +107,25 @@ MichellSettings michellSettings(const ShipParameters& p, const ShipModel& m, boo
   return s;
 }
 
-ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipModel& m, RunContext& context) {
+ResistanceCurves ResistanceCurves::rows(const std::vector<bool>& keep) const {
+  ResistanceCurves r;
+  auto copy = [&](const auto& from, auto& to) {
+    if (from.empty()) return;
+    for (std::size_t i = 0; i < keep.size(); ++i)
+      if (keep[i]) to.push_back(from[i]);
+  };
+  copy(froude, r.froude);
+  copy(speed, r.speed);
+  copy(michell, r.michell);
+  copy(corrected, r.corrected);
+  copy(exact, r.exact);
+  copy(c_friction, r.c_friction);
+  copy(holtrop, r.holtrop);
+  return r;
+}
+
+ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipModel& m, RunContext& context,
+                                         const CurvesObserver& observe) {
   ResistanceCurves c;
   const int n = p.froude_count;
   const double L = m.hull.length_pp, g = p.gravity, rho = m.water.density;
@@ -116,26 +134,39 @@ ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipMode
     c.froude.push_back(fn);
     c.speed.push_back(fn * std::sqrt(g * L));
   }
-  // Michell, uncorrected and corrected (grid path), and the closed form for the Wigley hull.
-  const HullGrid& grid = m.grid;
-  c.michell = waveResistanceSweep([&] { return std::make_unique<GridKochin>(grid); }, c.speed, g, rho,
-                                  michellSettings(p, m, false), p.threads, &context, "Michell wave resistance");
-  if (m.any_correction) {
-    c.corrected = waveResistanceSweep([&] { return correctedKochin(m); }, c.speed, g, rho,
-                                      michellSettings(p, m, true), p.threads, &context, "corrected wave resistance");
-  }
-  if (m.hull.isWigley()) {
-    const HullForm& h = m.hull;
-    c.exact = waveResistanceSweep([&] { return std::make_unique<WigleyKochin>(h.length_pp, h.beam, h.draft); },
-                                  c.speed, g, rho, michellSettings(p, m, false), p.threads, &context,
-                                  "exact Wigley wave resistance");
-  }
-  // Friction (Re on the waterline length) and the Holtrop–Mennen comparison.
+  // Friction (Re on the waterline length) and the Holtrop–Mennen comparison: cheap, so before the sweep,
+  // which lets partial results carry whole rows.
   for (double U : c.speed) {
     c.c_friction.push_back(ittc57FrictionCoefficient(U * m.particulars.length_wl / m.water.kinematic_viscosity));
     c.holtrop.push_back(holtropMennen(m.holtrop_hull, U, rho, m.water.kinematic_viscosity, g,
                                       p.holtrop_correlation_allowance, m.holtrop_edition));
   }
+  // Michell, uncorrected and corrected (grid path), and the closed form for the Wigley hull: one task per
+  // speed computes all of them, so rows finish whole.
+  const HullGrid& grid = m.grid;
+  std::vector<WaveResistanceCurve> curves{
+      {[&] { return std::make_unique<GridKochin>(grid); }, michellSettings(p, m, false)}};
+  if (m.any_correction) curves.push_back({[&] { return correctedKochin(m); }, michellSettings(p, m, true)});
+  if (m.hull.isWigley()) {
+    const HullForm& h = m.hull;
+    curves.push_back({[&] { return std::make_unique<WigleyKochin>(h.length_pp, h.beam, h.draft); },
+                      michellSettings(p, m, false)});
+  }
+  // Which curve is which in the sweep's output.
+  auto assign = [&](ResistanceCurves& to, std::vector<std::vector<WaveResistance>>&& values) {
+    std::size_t k = 0;
+    to.michell = std::move(values[k++]);
+    if (m.any_correction) to.corrected = std::move(values[k++]);
+    if (m.hull.isWigley()) to.exact = std::move(values[k++]);
+  };
+  SweepObserver show;
+  if (observe)
+    show = [&](const std::vector<std::vector<WaveResistance>>& values, const std::vector<bool>& finished) {
+      ResistanceCurves so_far = c;
+      assign(so_far, std::vector<std::vector<WaveResistance>>(values));
+      observe(so_far.rows(finished));
+    };
+  assign(c, waveResistanceSweep(curves, c.speed, g, rho, p.threads, &context, "Michell wave resistance", show));
   return c;
 }
 

@@ -4,6 +4,7 @@
 //   buildShipResults      tables, plots, 3-D view and scalars.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,7 +49,13 @@ struct ResistanceCurves {
   std::vector<WaveResistance> exact;          // closed-form Wigley Kochin function (empty for other hulls)
   std::vector<double> c_friction;             // [-] ITTC-57
   std::vector<HoltropResistance> holtrop;
+
+  // The rows i with keep[i] (keep.size() == froude.size()), in the same order.
+  ResistanceCurves rows(const std::vector<bool>& keep) const;
 };
+
+// Sees the rows finished so far (whole rows, in Froude-number order) while the sweep runs.
+using CurvesObserver = std::function<void(const ResistanceCurves& rows_so_far)>;
 
 // Kochin function of the corrected hull (tangency-corrected when enabled, else the plain grid).
 std::unique_ptr<KochinFunction> correctedKochin(const ShipModel& m);
@@ -56,8 +63,28 @@ std::unique_ptr<KochinFunction> correctedKochin(const ShipModel& m);
 // Michell settings of the corrected computation (wave-number factor, cutoff) or of the plain one.
 MichellSettings michellSettings(const ShipParameters& p, const ShipModel& m, bool corrected);
 
-ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipModel& m, RunContext& context);
+// The sweep over Froude numbers. `observe` (optional) is called from the calling thread with the rows finished
+// so far whenever the context wants partial results; the curves returned do not depend on it.
+ResistanceCurves computeResistanceCurves(const ShipParameters& p, const ShipModel& m, RunContext& context,
+                                         const CurvesObserver& observe = {});
 
 Results buildShipResults(const ShipParameters& p, const ShipModel& m, const ResistanceCurves& c, RunContext& context);
+
+// Partial results while the sweep runs, for live plots: the resistance-curve table of the rows finished so far
+// (its rows equal the finished run's bit for bit), the measured points, every plot of buildShipResults (the
+// design-speed tables, wave spectrum and boundary layer, come only with the final results, so those plots stay
+// empty until then), the particulars and the hull in the 3-D view (without the wave pattern). Construct once per
+// run: it reads the measured file and samples the hull for display. Keeps references to `p` and `m`.
+class PartialShipResults {
+ public:
+  PartialShipResults(const ShipParameters& p, const ShipModel& m);
+  std::shared_ptr<const Results> build(const ResistanceCurves& rows_so_far) const;
+
+ private:
+  const ShipParameters& p_;
+  const ShipModel& m_;
+  MeasuredPoints measured_;
+  Results fixed_;  // scalars and 3-D view, the same in every partial
+};
 
 }  // namespace maris::ship
