@@ -210,15 +210,19 @@ Configuration configurationOf(const RiserModel& m, const Eigen::VectorXd& y, con
 }
 
 // O(n) Newton at full load (issue 3: no dense factorisation at run time). At rest the accelerations a(q) of
-// the joint chart vanish exactly at equilibrium (the bottom row reads α²Φ = 0 there, so the bottom is held
-// too). Each iteration resets the chart to the current shape (θ = 0, ω = 0, where the neglected terms of the
-// twin matrix vanish up to β'|a|) and solves (I − β'∂a/∂q) y = a with the O(n) joint Newton matrix
-// (riser_joint_newton), moving q by β'y: pseudo-time stepping whose mass term I/β' regularises soft and
-// singular directions (slack cables, spin without torsion). β' grows ×10 after every accepted step (Newton as
-// β' → ∞) and shrinks ×10 when the backtracking line search on the scaled joint residual (the dense path's
-// merit) fails or the band LU is singular (then β' stays below that value). Converged 1e-3 below the dense
-// path's tolerance; false (the caller then runs the dense Newton with load continuation) when β' falls below
-// its floor or after 100 iterations.
+// the joint chart vanish exactly at equilibrium (the bottom row reads α²Φ = 0, so the bottom is held too;
+// the model must be at rest, see atRest). Each iteration resets the chart to the current shape (θ = 0,
+// ω = 0, where the neglected terms of the twin matrix vanish up to β'|a|) and solves (I − β'∂a/∂q) y = a with
+// the O(n) joint Newton matrix (riser_joint_newton), Δq = β'y: pseudo-time stepping whose mass term I/β'
+// regularises soft and singular directions (slack cables, spin without torsion).
+// Damping by Deuflhard's natural monotonicity test, not by the residual norm: a chain started on a circular
+// arc must pass through shapes of larger moment residual on its way to the catenary (measured: every
+// backtracked step of the old residual test failed, down to β' = 1e-4 s²), while the simplified step
+// Δq̄ = β'S⁻¹a(q + λΔq) (same factorisation, O(n)) shrinks. Accepted when |Δq̄| ≤ (1 − λ/10)|Δq|
+// (Deuflhard uses λ/4; pseudo-time steps contract only by S⁻¹, 0.79 on case 5 at β' = 1 s²). β' grows ×10 after
+// a full step, stays after a damped one, shrinks ×10 when no λ ≥ 1e-3 passes or the band LU is singular (then
+// β' stays below that value). Converged 1e-3 below the dense path's tolerance; false (the caller then runs
+// the dense Newton with load continuation) when β' falls below its floor or after 100 iterations.
 bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration& x, int& iterations,
                   double& residual_norm, RunContext& context) {
   RiserModel m = model;
@@ -228,7 +232,7 @@ bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration
   RotationVectorChart chart(m, kRate);
   JointNewtonMatrix newton(m, chart, kRate);
   newton.useCoordinateSteps();
-  Eigen::VectorXd y = restState(m, x.orientation, x.top), q, v, acc, res, step, trial_q, zero, trial_y;
+  Eigen::VectorXd y = restState(m, x.orientation, x.top), q, v, acc, res, step, simplified, trial_q, trial_y;
   problem.fitEndReaction(x, 1.0);
   Eigen::VectorXd r = problem.residual(x, 1.0);
   double dq = kFirst, ceiling = kLargest;
@@ -243,7 +247,6 @@ bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration
     chart.reset(y, q, v);
     v.setZero();
     acc.setZero(chart.size());
-    zero.setZero(chart.size());
     chart.residual(0.0, q, v, acc, res);
     step = -res;
     if (!newton.solve({0.0, q, v, acc, 0.0, dq, true}, step) || !step.allFinite()) {
@@ -256,42 +259,55 @@ bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration
     }
     step *= dq;
     step.tail<kWorkIntegrals>().setZero();
-    // Rotations at most 0.5 rad per iteration (as the dense path), then backtracking.
+    const double full = step.norm();
+    // Rotations at most 0.5 rad per iteration (as the dense path): λ starts below 1 then.
     const double biggest = step.segment(3, step.size() - 3 - kWorkIntegrals).lpNorm<Eigen::Infinity>();
-    if (biggest > 0.5) step *= 0.5 / biggest;
-    bool accepted = false;
-    const double merit = r.norm();
-    for (double length = 1.0; length > 1e-2 && !accepted; length *= 0.5) {
-      trial_q = q + length * step;
-      chart.toState(trial_q, zero, trial_y);
+    const double first = biggest > 0.5 ? 0.5 / biggest : 1.0;
+    double taken = 0.0;
+    for (double lambda = first; lambda > 1e-3 && taken == 0.0; lambda *= 0.5) {
+      trial_q = q + lambda * step;
+      chart.residual(0.0, trial_q, v, acc, res);
+      simplified = -res;
+      if (!res.allFinite() || !newton.solve({0.0, q, v, acc, 0.0, dq, false}, simplified)) continue;
+      simplified.tail<kWorkIntegrals>().setZero();
+      if (!(dq * simplified.norm() <= (1 - lambda / 10) * full)) continue;
+      chart.toState(trial_q, v, trial_y);
       normaliseState(m, trial_y);
-      Configuration trial = configurationOf(m, trial_y, x);
-      problem.fitEndReaction(trial, 1.0);
-      Eigen::VectorXd rt = problem.residual(trial, 1.0);
-      if (rt.allFinite() && rt.norm() < (1 - 1e-4 * length) * merit) {
-        x = std::move(trial);
-        r = std::move(rt);
-        y = trial_y;
-        accepted = true;
-      }
+      x = configurationOf(m, trial_y, x);
+      problem.fitEndReaction(x, 1.0);
+      r = problem.residual(x, 1.0);
+      y = trial_y;
+      taken = lambda;
     }
-    if (!accepted && residual_norm < kTolerance) return true;  // round-off floor below the tolerance
-    dq = accepted ? std::min(10 * dq, ceiling) : 0.1 * dq;
+    if (taken == 0.0 && residual_norm < kTolerance) return true;  // round-off floor below the tolerance
+    dq = taken == 1.0 ? std::min(10 * dq, ceiling) : taken > 0.0 ? dq : 0.1 * dq;
     if (dq < kSmallest) break;
   }
   residual_norm = r.lpNorm<Eigen::Infinity>();
   return residual_norm < kTolerance;
 }
 
+// The model held at its t = 0 top position with no top motion: a prescribed top acceleration at t = 0 (a
+// clamped spline table, or harmonic motion without a ramp) would otherwise enter a(q) and no shape would
+// have a(q) = 0 (riser_top_motion_table fell back to the dense path for this), and a top velocity the drag.
+RiserModel atRest(const RiserModel& model) {
+  RiserModel m = model;
+  m.top_mean = model.topAt(0.0).position;
+  m.top_table = TopMotionSpline{};
+  m.motion_amplitude.setZero();
+  return m;
+}
+
 }  // namespace
 
-StaticSolution solveStatics(const RiserModel& m, RunContext& context) {
+StaticSolution solveStatics(const RiserModel& model, RunContext& context, StaticMethod method) {
+  const RiserModel m = atRest(model);
   StaticProblem problem(m);
   Configuration x{m.initial_orientation, m.initial_top, Vec3::Zero()};
   StaticSolution out;
   double done = 0.0, increment = 1.0, residual = 0.0;
   // O(n) first; the dense Newton with load continuation only if that fails (from the initial shape again).
-  {
+  if (method == StaticMethod::Automatic) {
     Configuration fast = x;
     if (bandedNewton(m, problem, fast, out.iterations, residual, context)) {
       x = std::move(fast);

@@ -19,8 +19,14 @@ struct StaticSolution {
   bool banded = false;             // true: the O(n) Newton found it (no dense fallback)
 };
 
-// First an O(n) Newton at full load (pseudo-time steps with the joint Newton matrix of riser_joint_newton, see
-// riser_statics.cpp); only if that fails, the dense method below.
+enum class StaticMethod {
+  Automatic,  // O(n) Newton first, the dense method only if it fails (with a warning)
+  Dense,      // the dense method only (reference for tests; O(n³) per iteration)
+};
+
+// Statics of the model at rest at its t = 0 top position (prescribed top motion removed).
+// First an O(n) Newton at full load (pseudo-time steps with the joint Newton matrix of riser_joint_newton, damped
+// by the natural monotonicity test, see riser_statics.cpp); only if that fails, the dense method below.
 // Dense: Newton's method on the generalised forces of joint coordinates: unknowns are a rotation
 // increment per dynamic segment (2 without torsion), the free top coordinates (tensioner: z) and,
 // for a pinned/clamped bottom, the end reaction as Lagrange multiplier. Residuals: for each segment
@@ -29,6 +35,6 @@ struct StaticSolution {
 // statics runs once); backtracking line search on the scaled residual; if Newton fails at full
 // load, the external loads are applied in steps (halved on failure).
 // Starts from m.initial_orientation. Throws SolverError if no equilibrium is found.
-StaticSolution solveStatics(const RiserModel& m, RunContext& context);
+StaticSolution solveStatics(const RiserModel& m, RunContext& context, StaticMethod method = StaticMethod::Automatic);
 
 }  // namespace maris::riser
