@@ -4,11 +4,22 @@
 #include <cmath>
 #include <string>
 
+#include "core/resources.hpp"
+#include "core/scenario.hpp"
 #include "riser/riser_parameters.hpp"
 
 namespace maris::riser::test {
 
 inline constexpr double kPi = 3.14159265358979323846;
+
+// The parameters of a built-in scenario as the CLI and GUI run it ("scenarios/riser/<id>.json").
+inline RiserParameters builtinParameters(const std::string& path) {
+  const Scenario s = scenarioFromText(std::string(*builtinResource(path)), path);
+  return riserBinder().read(s.parameters);
+}
+
+// The paper's case 5 (n = 100, elliptical top motion of period 10 s, 1 m/s current).
+inline RiserParameters paperCaseFive() { return builtinParameters("scenarios/riser/riser_paper_case5_j3.json"); }
 
 // A calm, dry set-up: no current, no top motion, no drag, water far below, nothing moving.
 inline RiserParameters calmInAir() {

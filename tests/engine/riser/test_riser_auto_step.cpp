@@ -8,19 +8,12 @@
 #include <cmath>
 #include <string>
 
-#include "core/resources.hpp"
-#include "core/scenario.hpp"
 #include "riser/riser_integration.hpp"
 #include "riser/riser_scene.hpp"
+#include "riser_test_cases.hpp"
 
 namespace maris::riser {
 namespace {
-
-RiserParameters caseFive() {
-  const std::string path = "scenarios/riser/riser_paper_case5_j3.json";
-  const Scenario s = scenarioFromText(std::string(*builtinResource(path)), path);
-  return riserBinder().read(s.parameters);
-}
 
 Results run(const RiserParameters& p) {
   RunContext context;
@@ -63,7 +56,7 @@ double relativeProbeError(const ProbePath& run, const ProbePath& ref) {
 // [0.5, 1.1] × that estimate (measured 5.3e-4 A, 5.6e-4 J: 0.83 and 0.87 ×), hence below the tolerance.
 TEST(RiserAutoStep, ImplicitStepFromTheToleranceMeetsItOnCaseFiveInBothFormulations) {
   for (const char* formulation : {"joint", "absolute"}) {
-    RiserParameters p = caseFive();
+    RiserParameters p = test::paperCaseFive();
     p.segment_count = 10;
     p.formulation = formulation;
     p.torsion = true;
@@ -87,7 +80,7 @@ TEST(RiserAutoStep, ImplicitStepFromTheToleranceMeetsItOnCaseFiveInBothFormulati
 
 // The estimate follows a user's step (error ∝ h²) and is absent for explicit integrators.
 TEST(RiserAutoStep, ExpectedErrorScalesWithTheSquareOfAGivenStep) {
-  RiserParameters p = caseFive();
+  RiserParameters p = test::paperCaseFive();
   p.integrator = "implicit";
   p.time_step = 0.05;
   const RiserModel m = buildRiserModel(p);

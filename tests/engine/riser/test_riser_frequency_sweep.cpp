@@ -5,10 +5,9 @@
 
 #include <cmath>
 
-#include "core/resources.hpp"
-#include "core/scenario.hpp"
 #include "core/scene.hpp"
 #include "riser/riser_frequency_sweep.hpp"
+#include "riser_test_cases.hpp"
 
 namespace maris {
 SceneDefinition makeRiserScene();
@@ -19,9 +18,7 @@ namespace {
 
 // The built-in case 3 scenario, as the CLI and GUI run it, without its own sweep lists.
 RiserParameters caseThree() {
-  const std::string path = "scenarios/riser/riser_paper_case3_pretensioned.json";
-  const Scenario s = scenarioFromText(std::string(*builtinResource(path)), path);
-  RiserParameters p = riserBinder().read(s.parameters);
+  RiserParameters p = test::builtinParameters("scenarios/riser/riser_paper_case3_pretensioned.json");
   p.sweep_pretension_ratios.clear();
   p.sweep_segment_counts.clear();
   return p;

@@ -6,20 +6,12 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "core/resources.hpp"
-#include "core/scenario.hpp"
 #include "riser/riser_implicit.hpp"
 #include "riser/riser_scene.hpp"
+#include "riser_test_cases.hpp"
 
 namespace maris::riser {
 namespace {
-
-// The paper's case 5 as the CLI runs it (n = 100, elliptical top motion of period 10 s, 1 m/s current).
-RiserParameters caseFive() {
-  const std::string path = "scenarios/riser/riser_paper_case5_j3.json";
-  const Scenario s = scenarioFromText(std::string(*builtinResource(path)), path);
-  return riserBinder().read(s.parameters);
-}
 
 // Probe displacement at the last history sample.
 double finalProbeX(const Results& r) {
@@ -56,7 +48,7 @@ TEST(RiserImplicitFailures, ResidualBeyondTheChartIsNonFiniteAndNamed) {
 // h = T/200 within 5 % of the motion amplitude (generalized-α's measured error on this case is ≈ 20 (h/T)²
 // of the motion, 3 % at T/25 and less where the step was halved).
 TEST(RiserImplicitFailures, StepTooLongForNewtonIsHalvedNotFatal) {
-  RiserParameters p = caseFive();
+  RiserParameters p = test::paperCaseFive();
   p.formulation = "absolute";
   p.torsion = false;
   p.integrator = "implicit";

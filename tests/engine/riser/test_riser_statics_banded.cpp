@@ -6,18 +6,13 @@
 #include <string>
 
 #include "core/resources.hpp"
-#include "core/scenario.hpp"
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
+#include "riser_test_cases.hpp"
 
 namespace maris::riser {
 namespace {
-
-RiserParameters builtinParameters(const std::string& path) {
-  const Scenario s = scenarioFromText(std::string(*builtinResource(path)), path);
-  return riserBinder().read(s.parameters);
-}
 
 // Joint positions A_0 .. A_n and the bottom end of a static solution.
 std::vector<Vec3> jointPositions(const RiserModel& m, const StaticSolution& s) {
@@ -34,7 +29,7 @@ TEST(RiserStaticsBanded, EveryBuiltInScenarioSolvesStaticsOnTheOrderNPath) {
   int solved = 0;
   for (const auto& path : builtinResourcePaths()) {
     if (path.rfind("scenarios/riser/", 0) != 0) continue;
-    const RiserParameters p = builtinParameters(path);
+    const RiserParameters p = test::builtinParameters(path);
     if (!p.solve_statics) continue;
     const RiserModel m = buildRiserModel(p);
     RunContext context;
@@ -52,7 +47,7 @@ TEST(RiserStaticsBanded, EveryBuiltInScenarioSolvesStaticsOnTheOrderNPath) {
 // scaled residuals ≤ 1e-11 (moment residual ≤ 1e-11 · F_ref L ≈ 2e-3 N·m against a chain stiffness w L² ≈ 1e6
 // N·m per radian: ≤ 1e-9 rad, 1e-7 m at most; measured 5e-11 m).
 TEST(RiserStaticsBanded, BandedAndDensePathsAgreeOnTheCatenary) {
-  const RiserParameters p = builtinParameters("scenarios/riser/riser_catenary.json");
+  const RiserParameters p = test::builtinParameters("scenarios/riser/riser_catenary.json");
   const RiserModel m = buildRiserModel(p);
   RunContext banded_context, dense_context;
   const StaticSolution banded = solveStatics(m, banded_context);
@@ -74,7 +69,7 @@ struct ChainErrors {
 };
 
 ChainErrors hangingChainErrors(int n) {
-  RiserParameters p = builtinParameters("scenarios/riser/riser_catenary.json");
+  RiserParameters p = test::builtinParameters("scenarios/riser/riser_catenary.json");
   p.segment_count = n;
   const RiserModel m = buildRiserModel(p);
   RunContext context;

@@ -14,6 +14,7 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/run_context.hpp"
+#include "engine/results_identity.hpp"
 
 namespace maris {
 namespace {
@@ -103,27 +104,6 @@ void expectGrowingPrefixes(const LiveRun& run, const std::vector<std::string>& h
   }
 }
 
-// The finished run with a partial sink equals the run without one, number for number.
-void expectIdentical(const Results& a, const Results& b) {
-  ASSERT_EQ(a.scalars.size(), b.scalars.size());
-  for (std::size_t i = 0; i < a.scalars.size(); ++i) {
-    EXPECT_EQ(a.scalars[i].name, b.scalars[i].name);
-    EXPECT_EQ(a.scalars[i].value, b.scalars[i].value) << a.scalars[i].name;
-  }
-  ASSERT_EQ(a.tables.size(), b.tables.size());
-  for (std::size_t t = 0; t < a.tables.size(); ++t) {
-    ASSERT_EQ(a.tables[t].name, b.tables[t].name);
-    ASSERT_EQ(a.tables[t].columns.size(), b.tables[t].columns.size());
-    for (std::size_t c = 0; c < a.tables[t].columns.size(); ++c)
-      EXPECT_TRUE(a.tables[t].columns[c].values == b.tables[t].columns[c].values)
-          << a.tables[t].name << " " << a.tables[t].columns[c].name;
-  }
-  ASSERT_EQ(a.view.frames.size(), b.view.frames.size());
-  for (std::size_t f = 0; f < a.view.frames.size(); ++f)
-    EXPECT_TRUE(a.view.frames[f].shapes.front().scalars == b.view.frames[f].shapes.front().scalars) << "frame " << f;
-  EXPECT_EQ(a.stats.error_estimate, b.stats.error_estimate);
-}
-
 TEST(SeismicLive, BoxPublishesGrowingHistoriesWhoseRowsMatchTheFinishedRun) {
   const LiveRun run = runWithSink(coarseBox());
   // ~700 steps over a few hundred ms: the 10 ms poll gets several partials through.
@@ -137,7 +117,7 @@ TEST(SeismicLive, BoxPublishesGrowingHistoriesWhoseRowsMatchTheFinishedRun) {
                       *run.final_results.findTable("free_field_histories"));
 
   RunContext plain;
-  expectIdentical(requireScene("seismic").run(coarseBox(), plain), run.final_results);
+  test::expectIdenticalResults(requireScene("seismic").run(coarseBox(), plain), run.final_results);
 }
 
 TEST(SeismicLive, ReefWithThreadedJobsPublishesPrefixesAndLeavesTheRunUnchanged) {
@@ -150,7 +130,7 @@ TEST(SeismicLive, ReefWithThreadedJobsPublishesPrefixesAndLeavesTheRunUnchanged)
     EXPECT_EQ(partial->findTable("amplification"), nullptr);
   }
   RunContext plain;
-  expectIdentical(requireScene("seismic").run(coarseReef(), plain), run.final_results);
+  test::expectIdenticalResults(requireScene("seismic").run(coarseReef(), plain), run.final_results);
 }
 
 TEST(SeismicLive, LiveFrameIsTheWaveFieldAtItsStep) {

@@ -10,6 +10,7 @@
 #include "catalog.hpp"
 #include "core/errors.hpp"
 #include "core/scene.hpp"
+#include "engine/results_identity.hpp"
 
 using namespace maris;
 
@@ -35,35 +36,6 @@ Results runKcs(const Scenario& s, Partials* partials) {
   RunContext ctx;
   if (partials) ctx.setPartialSink([partials](std::shared_ptr<const Results> r) { partials->push_back(r); }, 0.0);
   return runScenario(requireScene("ship"), s, ctx);
-}
-
-// Every number and name of two results, except the wall time.
-void expectIdentical(const Results& a, const Results& b) {
-  ASSERT_EQ(a.tables.size(), b.tables.size());
-  for (std::size_t t = 0; t < a.tables.size(); ++t) {
-    ASSERT_EQ(a.tables[t].columns.size(), b.tables[t].columns.size()) << a.tables[t].name;
-    for (std::size_t c = 0; c < a.tables[t].columns.size(); ++c) {
-      EXPECT_EQ(a.tables[t].columns[c].name, b.tables[t].columns[c].name);
-      EXPECT_EQ(a.tables[t].columns[c].values, b.tables[t].columns[c].values) << a.tables[t].columns[c].name;
-    }
-  }
-  ASSERT_EQ(a.scalars.size(), b.scalars.size());
-  for (std::size_t k = 0; k < a.scalars.size(); ++k) {
-    EXPECT_EQ(a.scalars[k].name, b.scalars[k].name);
-    EXPECT_EQ(a.scalars[k].value, b.scalars[k].value) << a.scalars[k].name;
-  }
-  ASSERT_EQ(a.plots.size(), b.plots.size());
-  ASSERT_EQ(a.view.frames.size(), b.view.frames.size());
-  for (std::size_t f = 0; f < a.view.frames.size(); ++f) {
-    ASSERT_EQ(a.view.frames[f].shapes.size(), b.view.frames[f].shapes.size());
-    for (std::size_t k = 0; k < a.view.frames[f].shapes.size(); ++k) {
-      EXPECT_EQ(a.view.frames[f].shapes[k].points, b.view.frames[f].shapes[k].points);
-      EXPECT_EQ(a.view.frames[f].shapes[k].scalars, b.view.frames[f].shapes[k].scalars);
-    }
-  }
-  EXPECT_EQ(a.stats.steps, b.stats.steps);
-  EXPECT_EQ(a.stats.rhs_evaluations, b.stats.rhs_evaluations);
-  EXPECT_EQ(a.stats.error_estimate, b.stats.error_estimate);
 }
 
 }  // namespace
@@ -107,7 +79,7 @@ TEST(ShipLive, SweepPublishesGrowingPartialResultsWhoseRowsMatchTheFinishedRun) 
   EXPECT_LT(partials.front()->findTable("resistance_curve")->rows(), all.rows());
 
   // A listener does not change the finished run.
-  expectIdentical(finished, runKcs(s, nullptr));
+  test::expectIdenticalResults(finished, runKcs(s, nullptr));
 }
 
 TEST(ShipLive, CancellationAtTheFirstPartialStopsTheSweep) {

@@ -9,6 +9,7 @@
 
 #include "catalog.hpp"
 #include "core/errors.hpp"
+#include "engine/results_identity.hpp"
 
 using namespace maris;
 
@@ -27,41 +28,6 @@ Scenario coarse(const std::string& id) {
   if (!s.parameters["frequency"]["check_frequencies"].empty())
     s.parameters["frequency"]["check_frequencies"] = Json::array({0.8, 1.2, 1.6});
   return s;
-}
-
-void expectSameValues(const std::vector<double>& a, const std::vector<double>& b, const std::string& what) {
-  ASSERT_EQ(a.size(), b.size()) << what;
-  for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << what << " row " << i;  // bit for bit
-}
-
-// Two finished runs agree bit for bit: scalars, tables, plots and the 3D view.
-void expectIdentical(const Results& a, const Results& b) {
-  ASSERT_EQ(a.scalars.size(), b.scalars.size());
-  for (std::size_t i = 0; i < a.scalars.size(); ++i) {
-    EXPECT_EQ(a.scalars[i].name, b.scalars[i].name);
-    EXPECT_EQ(a.scalars[i].value, b.scalars[i].value) << a.scalars[i].name;
-  }
-  ASSERT_EQ(a.tables.size(), b.tables.size());
-  for (std::size_t t = 0; t < a.tables.size(); ++t) {
-    ASSERT_EQ(a.tables[t].columns.size(), b.tables[t].columns.size()) << a.tables[t].name;
-    for (std::size_t c = 0; c < a.tables[t].columns.size(); ++c)
-      expectSameValues(a.tables[t].columns[c].values, b.tables[t].columns[c].values,
-                       a.tables[t].name + "." + a.tables[t].columns[c].name);
-  }
-  ASSERT_EQ(a.plots.size(), b.plots.size());
-  ASSERT_EQ(a.view.frames.size(), b.view.frames.size());
-  for (std::size_t f = 0; f < a.view.frames.size(); ++f) {
-    const auto& sa = a.view.frames[f].shapes;
-    const auto& sb = b.view.frames[f].shapes;
-    ASSERT_EQ(sa.size(), sb.size());
-    for (std::size_t s = 0; s < sa.size(); ++s) {
-      ASSERT_EQ(sa[s].points.size(), sb[s].points.size());
-      for (std::size_t k = 0; k < sa[s].points.size(); ++k) ASSERT_EQ(sa[s].points[k], sb[s].points[k]) << sa[s].name;
-      expectSameValues(sa[s].scalars, sb[s].scalars, sa[s].name);
-    }
-  }
-  EXPECT_EQ(a.stats.steps, b.stats.steps);
-  EXPECT_EQ(a.stats.error_estimate, b.stats.error_estimate);
 }
 
 // Checks each partial as it arrives against the finished run without a listener.
@@ -112,7 +78,7 @@ PartialChecker runBoth(const Scenario& s, Results& finished) {
   RunContext live;
   live.setPartialSink([&](std::shared_ptr<const Results> r) { checker.check(*r); }, 0.0);
   const Results with_sink = runScenario(scene(), s, live);
-  expectIdentical(with_sink, finished);
+  test::expectIdenticalResults(with_sink, finished);
   return checker;
 }
 
