@@ -38,14 +38,17 @@ std::vector<std::string> splitList(const std::string& text) {
   return out;
 }
 
-// Twelve marker shapes: series k gets shape k mod 12 and colour k mod 12 (maris::ui::seriesColor,
-// the GUI's palette), so up to twelve series differ in both.
+// Twelve marker shapes: series k gets colour k mod 12 (maris::ui::seriesColor, the GUI's palette) and shape
+// (k + k / 12) mod 12, so the first twelve differ in both and later ones (case 5 has 16: four variants × four
+// methods) never repeat an earlier colour-and-shape pair.
+int shapeIndex(int k) { return (k + k / 12) % 12; }
+
 QCPScatterStyle::ScatterShape seriesShape(int k) {
   using S = QCPScatterStyle;
   static const S::ScatterShape shapes[] = {S::ssCircle,      S::ssSquare,     S::ssTriangle,   S::ssDiamond,
                                            S::ssCross,       S::ssTriangleInverted, S::ssPlus, S::ssStar,
                                            S::ssCrossCircle, S::ssPlusSquare, S::ssCrossSquare, S::ssPlusCircle};
-  return shapes[k % 12];
+  return shapes[shapeIndex(k)];
 }
 
 void setLogAxis(QCPAxis* axis, const QString& label, double low, double high) {
@@ -110,7 +113,8 @@ int main(int argc, char** argv) {
     const QColor color = maris::ui::seriesColor(static_cast<int>(k), QPalette(Qt::white));  // drawn on white
     graph->setPen(QPen(color, 1.6));
     // Shapes 7–12 are drawn hollow (their inner cross or plus would vanish under a fill).
-    graph->setScatterStyle(QCPScatterStyle(seriesShape(static_cast<int>(k)), color, k % 12 < 6 ? color : Qt::white, 8));
+    const int index = static_cast<int>(k);
+    graph->setScatterStyle(QCPScatterStyle(seriesShape(index), color, shapeIndex(index) < 6 ? color : Qt::white, 8));
     for (const auto& [x, y] : series.points) {
       graph->addData(x, y);
       x_low = std::min(x_low, x), x_high = std::max(x_high, x), y_low = std::min(y_low, y), y_high = std::max(y_high, y);
