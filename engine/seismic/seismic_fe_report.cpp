@@ -23,6 +23,13 @@ double peak(const std::vector<double>& v) {
 
 double mean(const std::vector<double>& v) { return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
 
+// The time column of c's records: one sample per step, t_k = k Δt.
+std::vector<double> sampleTimes(const FeCase& c) {
+  std::vector<double> t(c.incident.size());
+  for (std::size_t k = 0; k < t.size(); ++k) t[k] = k * c.time_step;
+  return t;
+}
+
 }  // namespace
 
 PeakRatios amplificationRatios(const FeCase& c) {
@@ -211,9 +218,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
 void addStationHistories(const FeCase& c, Results& results) {
   const std::size_t last = c.ux.size() - 1, mid = last / 2;
   Table hist{"station_histories", "Displacement at the flat's edges and centre", {}};
-  std::vector<double> t(c.incident.size());
-  for (std::size_t k = 0; k < t.size(); ++k) t[k] = k * c.time_step;
-  hist.add("time", "s", t);
+  hist.add("time", "s", sampleTimes(c));
   hist.add("incident", "m", c.incident);
   for (auto [name, s] : {std::pair{"left", std::size_t{0}}, std::pair{"centre", mid}, std::pair{"right", last}}) {
     hist.add(std::string("ux_") + name, "m", c.ux[s]);
@@ -226,10 +231,8 @@ void addStationHistories(const FeCase& c, Results& results) {
 
 void addVerificationHistories(const FeCase& c, Results& results) {
   if (c.probe_fe_uy.empty()) return;
-  std::vector<double> t(c.incident.size());
-  for (std::size_t k = 0; k < t.size(); ++k) t[k] = k * c.time_step;
   Table v{"verification", "FE vs analytic free field at B (seabed) and A (water surface)", {}};
-  v.add("time", "s", t);
+  v.add("time", "s", sampleTimes(c));
   v.add("fe_B_ux", "m", c.seabed_fe_ux);
   v.add("free_B_ux", "m", c.seabed_ff_ux);
   v.add("fe_B_uy", "m", c.seabed_fe_uy);
