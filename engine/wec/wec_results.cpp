@@ -89,33 +89,13 @@ void appendHistory(Table& table, const TimeDomainResult& td, const std::vector<d
 
 Table historyTable(const TimeDomainResult& main, const TimeDomainResult* augmented, const std::vector<double>& theta0,
                    std::size_t rows) {
-  // The first `rows` instants of a run (copies: the partial and the final table hold the same numbers).
-  auto cut = [rows](const std::vector<double>& v) {
-    return std::vector<double>(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(rows));
-  };
-  auto head = [&cut](const TimeDomainResult& td) {
-    TimeDomainResult out;
-    out.time = cut(td.time);
-    out.wave_at_origin = cut(td.wave_at_origin);
-    for (const auto& h : td.floats) {
-      FloatHistory c;
-      c.theta = cut(h.theta);
-      c.theta_dt = cut(h.theta_dt);
-      c.theta_dtdt = cut(h.theta_dtdt);
-      c.hinge_fx = cut(h.hinge_fx);
-      c.hinge_fz = cut(h.hinge_fz);
-      c.moment_y = cut(h.moment_y);
-      c.pto_power = cut(h.pto_power);
-      c.pto_energy = cut(h.pto_energy);
-      out.floats.push_back(std::move(c));
-    }
-    return out;
-  };
   Table t;
   t.name = "time_history";
   t.title = "Time histories (" + main.method + ")";
-  appendHistory(t, head(main), theta0, "", true);
-  if (augmented) appendHistory(t, head(*augmented), theta0, "_aug", false);
+  appendHistory(t, main, theta0, "", true);
+  if (augmented) appendHistory(t, *augmented, theta0, "_aug", false);
+  // The first `rows` instants of every column (the partial and the final table hold the same numbers).
+  for (Column& c : t.columns) c.values.resize(rows);
   return t;
 }
 
