@@ -258,10 +258,7 @@ std::vector<std::string> parseNames(const char* text) {
 
 std::vector<int> parseList(const char* text) {
   std::vector<int> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-    if (!item.empty()) out.push_back(std::atoi(item.c_str()));
+  for (const std::string& item : parseNames(text)) out.push_back(std::atoi(item.c_str()));
   std::sort(out.begin(), out.end());
   return out;
 }

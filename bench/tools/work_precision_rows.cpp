@@ -18,12 +18,6 @@ std::string cell(std::string text) {
   return text;
 }
 
-std::string format(const char* spec, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, spec, value);
-  return buffer;
-}
-
 int rankOf(const std::string& value, std::initializer_list<const char*> order) {
   int rank = 0;
   for (const char* name : order) {
@@ -35,6 +29,12 @@ int rankOf(const std::string& value, std::initializer_list<const char*> order) {
 
 }  // namespace
 
+std::string formatNumber(const char* spec, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, spec, value);
+  return buffer;
+}
+
 std::string workPrecisionHeader() {
   return "case,variant,n,method,setting,steps,rhs_evaluations,cpu_time,error_same_n,error_finest_n,finest_n,"
          "reference,note\n-,-,-,-,s or -,-,-,s,-,-,-,-,-\n";
@@ -42,9 +42,10 @@ std::string workPrecisionHeader() {
 
 std::string workPrecisionLine(const WorkPrecisionRow& r) {
   return cell(r.case_name) + "," + cell(r.variant) + "," + std::to_string(r.n) + "," + cell(r.method) + "," +
-         format("%.3e", r.setting) + "," + std::to_string(r.steps) + "," + std::to_string(r.rhs_evaluations) + "," +
-         format("%.4e", r.cpu) + "," + format("%.3e", r.error_same_n) + "," + format("%.3e", r.error_finest_n) + "," +
-         std::to_string(r.finest_n) + "," + cell(r.reference) + "," + cell(r.note) + "\n";
+         formatNumber("%.3e", r.setting) + "," + std::to_string(r.steps) + "," + std::to_string(r.rhs_evaluations) +
+         "," + formatNumber("%.4e", r.cpu) + "," + formatNumber("%.3e", r.error_same_n) + "," +
+         formatNumber("%.3e", r.error_finest_n) + "," + std::to_string(r.finest_n) + "," + cell(r.reference) + "," +
+         cell(r.note) + "\n";
 }
 
 std::vector<WorkPrecisionRow> parseWorkPrecisionRows(const std::string& csv_text) {
@@ -80,7 +81,8 @@ std::vector<WorkPrecisionRow> parseWorkPrecisionRows(const std::string& csv_text
 }
 
 std::string workPrecisionKey(const WorkPrecisionRow& r) {
-  return r.case_name + "|" + r.variant + "|" + std::to_string(r.n) + "|" + r.method + "|" + format("%.3e", r.setting);
+  return r.case_name + "|" + r.variant + "|" + std::to_string(r.n) + "|" + r.method + "|" +
+         formatNumber("%.3e", r.setting);
 }
 
 std::vector<WorkPrecisionRow> mergeWorkPrecisionRows(const std::vector<WorkPrecisionRow>& old_rows,

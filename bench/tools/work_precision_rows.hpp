@@ -22,6 +22,9 @@ struct WorkPrecisionRow {
   std::string note;       // why the run failed or was skipped ("" if it ran)
 };
 
+// `value` printed with one printf conversion (`spec`, e.g. "%.3e"): the CSV cells and the markdown tables.
+std::string formatNumber(const char* spec, double value);
+
 // The CSV header (names row and units row, each ending in a newline).
 std::string workPrecisionHeader();
 
