@@ -11,7 +11,9 @@ void RunContext::progress(double fraction, std::string_view stage) {
   if (!progress_) return;
   const auto now = Clock::now();
   const bool edge = fraction <= 0.0 || fraction >= 1.0;
-  if (!edge && std::chrono::duration<double>(now - last_progress_).count() < min_progress_interval_s_) return;
+  if (!edge && last_progress_ &&
+      std::chrono::duration<double>(now - *last_progress_).count() < min_progress_interval_s_)
+    return;
   last_progress_ = now;
   progress_(std::clamp(fraction, 0.0, 1.0), std::string(stage));
 }
@@ -37,7 +39,7 @@ void RunContext::setPartialSink(PartialFn sink, double min_interval_s) {
 
 bool RunContext::wantsPartialResults() {
   if (!partial_) return false;
-  return std::chrono::duration<double>(Clock::now() - last_partial_).count() >= min_partial_interval_s_;
+  return !last_partial_ || std::chrono::duration<double>(Clock::now() - *last_partial_).count() >= min_partial_interval_s_;
 }
 
 void RunContext::publishPartial(std::shared_ptr<const Results> partial) {

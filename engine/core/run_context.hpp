@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,8 +60,9 @@ class RunContext {
   double min_progress_interval_s_ = 0.05;
   double min_partial_interval_s_ = 0.25;
   Clock::time_point start_ = Clock::now();
-  Clock::time_point last_progress_{};
-  Clock::time_point last_partial_{};
+  // Empty until the first call: a default time_point is the clock's epoch (boot time for steady_clock), so
+  // "interval since last" would stay false for the first hour after boot with a 3600 s interval.
+  std::optional<Clock::time_point> last_progress_, last_partial_;
   mutable std::mutex warnings_mutex_;
   std::vector<std::string> warnings_;
 };
