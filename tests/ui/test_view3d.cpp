@@ -147,12 +147,7 @@ class View3dTest : public QObject {
   Q_OBJECT
 
  private slots:
-  void initTestCase() {
-    test::isolateSettings();
-    QSettings().remove(QStringLiteral("colorMaps"));  // choices saved by an earlier run of this test
-  }
-  // The other UI tests share the settings: leave them no colour choices.
-  void cleanupTestCase() { QSettings().remove(QStringLiteral("colorMaps")); }
+  void initTestCase() { test::isolateSettings(); }
 
   void tubeIsDrawnWhereItIsWithItsColours() {
     SceneView view;

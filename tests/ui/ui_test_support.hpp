@@ -2,17 +2,23 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QImage>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QtTest>
 
 namespace maris::test {
 
-// Keeps QSettings (recent files, layout) of tests away from the user's own.
+// Keeps QSettings (recent files, theme, colour maps) of tests away from the user's own and from each other:
+// one settings file per test program, emptied at its start. A shared file let ui.view3d's greyscale choice
+// reach ui.main_window's report check when ctest ran both at once.
 inline void isolateSettings() {
   QStandardPaths::setTestModeEnabled(true);
+  const QString program = QFileInfo(QCoreApplication::applicationFilePath()).baseName();
   QCoreApplication::setOrganizationName(QStringLiteral("MarisTests"));
-  QCoreApplication::setApplicationName(QStringLiteral("maris-ui-test"));
+  QCoreApplication::setApplicationName(QStringLiteral("maris-ui-test-") + program);
+  QSettings().clear();
 }
 
 // Fraction of pixels whose colour is saturated (not a grey or near-white background).
