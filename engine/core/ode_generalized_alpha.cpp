@@ -38,7 +38,8 @@ std::string newtonFailure(const NewtonSolver& newton, const OdeOptions& o, doubl
 
 OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::VectorXd& q, Eigen::VectorXd& v,
                                    const OdeOptions& options, const GeneralizedAlphaOptions& alpha_options,
-                                   RunContext& ctx, const SecondOrderObserver& observer) {
+                                   RunContext& ctx, const SecondOrderObserver& observer,
+                                   GeneralizedAlphaState* state) {
   using namespace ode_detail;
   checkOptions(options, "integrateGeneralizedAlpha", true);
   const GeneralizedAlphaCoefficients c = generalizedAlphaCoefficients(alpha_options.rho_inf);
@@ -50,20 +51,24 @@ OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::Vecto
   OutputSchedule schedule(options);
   ProgressTicker ticker(ctx, options);
 
-  // Initial acceleration from M(t0, q0) q̈0 = f(t0, q0, v0); the pseudo-acceleration starts equal to it.
+  // Initial acceleration from M(t0, q0) q̈0 = f(t0, q0, v0) and the pseudo-acceleration equal to it, unless
+  // a previous call's are given.
   throwIfNotFinite(q, options.t0, 0, options.state_name);
   throwIfNotFinite(v, options.t0, 0, options.state_name);
-  Eigen::VectorXd acc = Eigen::VectorXd::Zero(n);
-  if (!newton.solve(options.t0, q, v, 0.0, 0.0, acc)) {
+  const bool continued = state && state->acceleration.size() == n && state->pseudo_acceleration.size() == n;
+  Eigen::VectorXd acc = continued ? state->acceleration : Eigen::VectorXd::Zero(n);
+  if (!continued && !newton.solve(options.t0, q, v, 0.0, 0.0, acc)) {
     Eigen::Index worst = 0;
     newtonFailure(newton, options, 0.0, &worst);
     throw SolverError(componentName(options, worst), options.t0, 0,
                       "acceleration could not be found at the initial state (singular mass matrix?)");
   }
+  if (continued) throwIfNotFinite(acc, options.t0, 0, options.state_name);
   if (observer) observer(options.t0, q, v, acc);
   newton.invalidateMatrix();
 
-  Eigen::VectorXd pseudo = acc, pseudo_known(n), acc_new(n), q_base(n), v_base(n), q_new(n), v_new(n), q_out(n), v_out(n), a_out(n);
+  Eigen::VectorXd pseudo = continued ? state->pseudo_acceleration : acc;
+  Eigen::VectorXd pseudo_known(n), acc_new(n), q_base(n), v_base(n), q_new(n), v_new(n), q_out(n), v_out(n), a_out(n);
   const double h_nominal = options.step;
   const int ramp = std::clamp(alpha_options.startup_halvings, 0, 60);
   double h = std::max(std::ldexp(h_nominal, -ramp), options.min_step), t = options.t0;
@@ -143,6 +148,10 @@ OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::Vecto
     }
   }
   ticker.finish();
+  if (state) {
+    state->acceleration = acc;
+    state->pseudo_acceleration = pseudo;
+  }
   return stats;
 }
 

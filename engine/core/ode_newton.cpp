@@ -127,14 +127,16 @@ bool NewtonSolver::formDifferenceMatrix(double t, const Eigen::VectorXd& acc, do
   return banded_lu_.factorize();
 }
 
-// Weighted RMS of the corrections to q and v (weights 1/(atol + rtol·|value|)); the larger one.
+// Weighted RMS of the corrections to q and v (weights 1/(atol + rtol·|value|)) over the coordinates that are
+// not passive; the larger one.
 // With dq = dv = 0 (initial acceleration) the acceleration itself is measured.
 double NewtonSolver::correctionNorm(double dq, double dv, const Eigen::VectorXd& q_base,
                                     const Eigen::VectorXd& v_base, const Eigen::VectorXd& acc) const {
-  if (n_ == 0) return 0.0;
+  const Eigen::Index checked = n_ - std::clamp<Eigen::Index>(system_.passive_coordinates, 0, n_);
+  if (checked == 0) return 0.0;
   const double atol = options_.atol, rtol = options_.rtol;
   double sum_q = 0.0, sum_v = 0.0, sum_a = 0.0;
-  for (Eigen::Index i = 0; i < n_; ++i) {
+  for (Eigen::Index i = 0; i < checked; ++i) {
     const double eq = dq * delta_[i] / (atol + rtol * std::abs(q_base[i] + dq * acc[i]));
     const double ev = dv * delta_[i] / (atol + rtol * std::abs(v_base[i] + dv * acc[i]));
     const double ea = delta_[i] / (atol + rtol * std::abs(acc[i]));
@@ -142,7 +144,7 @@ double NewtonSolver::correctionNorm(double dq, double dv, const Eigen::VectorXd&
     sum_v += ev * ev;
     sum_a += ea * ea;
   }
-  const double count = static_cast<double>(n_);
+  const double count = static_cast<double>(checked);
   if (dq == 0.0 && dv == 0.0) return std::sqrt(sum_a / count);
   return std::sqrt(std::max(sum_q, sum_v) / count);
 }

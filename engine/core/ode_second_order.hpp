@@ -65,6 +65,12 @@ struct SecondOrderSystem {
   // coordinate i couples to i ± b: b and b). Then S is formed from lower + upper + 1 grouped residual
   // differences instead of n and factorised by BandedLu in O(n·b²). −1 (either): dense.
   Eigen::Index lower_bandwidth = -1, upper_bandwidth = -1;
+
+  // Optional: the last `passive_coordinates` coordinates feed back into no other (their values never enter
+  // another row of the residual: work or energy integrals kept for the record). The Newton convergence test
+  // leaves them out, so an iteration matrix that gives them the identity (their corrections then follow the
+  // others' one iteration behind) does not fail or prolong a step for their sake; they converge with the rest.
+  Eigen::Index passive_coordinates = 0;
 };
 
 // Sees t0, every output time and t1: coordinates, velocities and accelerations (q̈). Between step
@@ -86,8 +92,20 @@ struct GeneralizedAlphaOptions {
 // x0 = 1, v0 = 0, h = 0.01: slow-mode amplitude wrong by +3 % at ρ∞ = 0.8, +28 % at 0.5, +250 % at 0).
 // Start from a consistent state (statics) or set startup_halvings (10 there gives 1e-5).
 
+// The integrator's accelerations at the end of a call, to continue in a later call as one call would have
+// gone on. Without it each call starts from the exact q̈0 of its initial state with a_0 = q̈0: where modes far
+// faster than h are present but unresolved (damped by ρ∞ over many steps, as in a finely discretised riser),
+// that restart injects their full acceleration, and the next step's Newton iteration starts far off
+// (riser case 5 in absolute coordinates at n = 400, h = 50 ms, restarted every 0.5 s: 359 of 1623 steps
+// rejected; 44 of 833 when restarted every 6 s).
+struct GeneralizedAlphaState {
+  Eigen::VectorXd acceleration;         // q̈_n
+  Eigen::VectorXd pseudo_acceleration;  // a_n
+};
+
 // Integrates from (q, v) at options.t0 to options.t1 with nominal step options.step (the last step is
-// shortened to end at t1); q and v hold the end state on return.
+// shortened to end at t1); q and v hold the end state on return. With `state`: if both its vectors have
+// size n they are the starting q̈_0 and a_0 (no initial solve); on return it holds the end's q̈ and a.
 // Uses from OdeOptions: t0, t1, step, min_step, max_steps, output_interval, state_name (names coordinate i),
 // and rtol/atol for Newton convergence: stop when the corrections of q and of v have weighted RMS
 // ≤ 1 with weights 1/(atol + rtol·|value|) (or when the contraction-rate estimate says so).
@@ -97,6 +115,7 @@ struct GeneralizedAlphaOptions {
 // smallest allowed step, or the non-finite component; RunCancelled; std::invalid_argument for bad options.
 OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::VectorXd& q, Eigen::VectorXd& v,
                                    const OdeOptions& options, const GeneralizedAlphaOptions& alpha_options,
-                                   RunContext& ctx, const SecondOrderObserver& observer = {});
+                                   RunContext& ctx, const SecondOrderObserver& observer = {},
+                                   GeneralizedAlphaState* state = nullptr);
 
 }  // namespace maris

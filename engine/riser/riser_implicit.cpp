@@ -157,6 +157,16 @@ Vec3 rightJacobianRate(const Vec3& theta, const Vec3& rate) {
 }
 }  // namespace
 
+void RotationVectorChart::rebaseAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                              Eigen::VectorXd& acc) const {
+  const int off = m_.formulation == Formulation::Joint ? 0 : 3;
+  for (int k = 0; k <= m_.last_dynamic - m_.first_dynamic; ++k) {
+    const Eigen::Index gt = 3 + k * per_segment_ + off;
+    const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
+    acc.segment<3>(gt) = rightJacobian(theta) * acc.segment<3>(gt) + rightJacobianRate(theta, rate);
+  }
+}
+
 void RotationVectorChart::accelerationMap(const Eigen::VectorXd& q, std::vector<Mat3>& turn, std::vector<Vec3>& arm) const {
   const int segments = m_.last_dynamic - m_.first_dynamic + 1;
   const int off = m_.formulation == Formulation::Joint ? 0 : 3;

@@ -29,6 +29,10 @@ class RotationVectorChart {
   // (q, v) of first-order state y with the current references kept (θ = log(R_refᵀ R), θ̇ = J_r⁻¹ Rᵀω);
   // the work coordinates of q are left as they are. For projecting the state after a step.
   void fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) const;
+  // Chart accelerations `acc` at (q, v), rewritten for the chart reset() makes of this state (references = the
+  // current orientations, θ = 0): θ̈' = J_r(θ) θ̈ + J̇_r θ̇ (the body angular acceleration, since J̇_r(0) θ̇' = 0);
+  // top, position and work entries unchanged. Carries the integrator's accelerations over a reset.
+  void rebaseAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& acc) const;
   // First-order state (quaternions, angular velocities) of (q, v).
   void toState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;
   // r = acc − a(t, q, v), a from the O(n) solve of riser_dynamics mapped to the chart.
