@@ -51,6 +51,7 @@ struct PlotSpec {
   bool log_y = false;
   std::string reference_table;         // optional: a table of reference points drawn as markers
   std::vector<std::string> reference_y;  // its y columns (x column has the same name as `x`)
+  bool operator==(const PlotSpec&) const = default;
 };
 
 // A plot of y columns against x from one table; the other fields (log_x, references) set afterwards.

@@ -19,14 +19,6 @@
 
 namespace maris::ui {
 
-namespace {
-bool sameSpec(const PlotSpec& a, const PlotSpec& b) {
-  return a.name == b.name && a.title == b.title && a.table == b.table && a.x == b.x && a.y == b.y &&
-         a.log_x == b.log_x && a.log_y == b.log_y && a.reference_table == b.reference_table &&
-         a.reference_y == b.reference_y;
-}
-}  // namespace
-
 PlotPanel::PlotPanel(QWidget* parent)
     : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new QTabWidget(this)),
       overlay_menu_(new QMenu(tr("Overlay runs"), this)) {
@@ -116,12 +108,12 @@ void PlotPanel::showResults(std::shared_ptr<const Results> results, const QStrin
 void PlotPanel::rebuildTabs(const Results& results) {
   const std::vector<PlotSpec>& specs = results.plots;
   bool same = static_cast<int>(specs.size()) == count();
-  for (int i = 0; same && i < count(); ++i) same = sameSpec(views_[i]->spec(), specs[i]);
+  for (int i = 0; same && i < count(); ++i) same = views_[i]->spec() == specs[i];
   if (same) return;
   // Tabs are removed and inserted one by one, not cleared and added again: each change of the
   // current tab shows a view, and a shown view with new data redraws (~8 ms each).
   auto wanted = [&](const PlotView* view) {
-    return std::any_of(specs.begin(), specs.end(), [&](const PlotSpec& s) { return sameSpec(view->spec(), s); });
+    return std::any_of(specs.begin(), specs.end(), [&](const PlotSpec& s) { return view->spec() == s; });
   };
   for (int i = count() - 1; i >= 0; --i)
     if (!wanted(views_[i])) {
@@ -132,11 +124,11 @@ void PlotPanel::rebuildTabs(const Results& results) {
     }
   for (int i = 0; i < static_cast<int>(specs.size()); ++i) {
     const PlotSpec& spec = specs[i];
-    if (i < count() && sameSpec(views_[i]->spec(), spec)) continue;
+    if (i < count() && views_[i]->spec() == spec) continue;
     // A kept tab further on (plots in another order): take it out and put it here.
     PlotView* view = nullptr;
     for (int j = i + 1; j < count() && !view; ++j)
-      if (sameSpec(views_[j]->spec(), spec)) {
+      if (views_[j]->spec() == spec) {
         view = views_[j];
         tabs_->removeTab(j);
         views_.erase(views_.begin() + j);
@@ -152,7 +144,7 @@ PlotView* PlotPanel::takeSpareView(const PlotSpec& spec) {
   if (auto it = spare_views_.find(spec.name); it != spare_views_.end()) {
     PlotView* view = it->second;
     spare_views_.erase(it);
-    if (sameSpec(view->spec(), spec)) return view;
+    if (view->spec() == spec) return view;
     delete view;  // a plot of the same name with another table or columns is a new plot
   }
   auto* view = new PlotView(spec, tabs_);
