@@ -14,8 +14,6 @@ namespace {
 
 constexpr int kMinSide = 200, kMaxSide = 8000;  // [px] window sizes a screenshot may ask for
 
-const ColorMap kColorMaps[] = {ColorMap::CoolWarm, ColorMap::Viridis, ColorMap::Rainbow, ColorMap::Greyscale};
-
 QString invalid(const QString& option, const QString& value, const QString& allowed) {
   return QStringLiteral("%1 %2: %3").arg(option, value, allowed);
 }
@@ -51,8 +49,7 @@ QString parseValue(const QString& option, const QString& value, CommandLine& out
   } else if (option == QLatin1String("--tab")) {
     out.tab = value;
   } else if (option == QLatin1String("--colormap")) {
-    for (ColorMap map : kColorMaps)
-      if (value == colorMapKey(map)) out.color_map = map;
+    if (value != QLatin1String("coolwarm")) out.color_map = colorMapFromKey(value);
     if (!out.color_map)
       return invalid(option, value, QStringLiteral("must be one of %1").arg(colorMapKeys().join(QStringLiteral(", "))));
   } else {
@@ -62,22 +59,6 @@ QString parseValue(const QString& option, const QString& value, CommandLine& out
 }
 
 }  // namespace
-
-QString colorMapKey(ColorMap map) {
-  switch (map) {
-    case ColorMap::CoolWarm: return QStringLiteral("cool-warm");
-    case ColorMap::Viridis: return QStringLiteral("viridis");
-    case ColorMap::Rainbow: return QStringLiteral("rainbow");
-    case ColorMap::Greyscale: return QStringLiteral("greyscale");
-  }
-  return {};
-}
-
-QStringList colorMapKeys() {
-  QStringList keys;
-  for (ColorMap map : kColorMaps) keys << colorMapKey(map);
-  return keys;
-}
 
 ParsedCommandLine parseCommandLine(const QStringList& arguments) {
   ParsedCommandLine parsed;

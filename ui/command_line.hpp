@@ -41,10 +41,6 @@ ParsedCommandLine parseCommandLine(const QStringList& arguments);
 // The text of `maris --help`.
 QString commandLineHelp();
 
-// The command-line name of a colour map ("cool-warm", "viridis", ...), and all of them.
-QString colorMapKey(ColorMap map);
-QStringList colorMapKeys();
-
 // Shows what `options` ask for in `window` after a run: the 3D frame (--frame or --time), the
 // colour map, the plot tab. Returns "" or an error naming the option and the values this run
 // allows ("--tab stress: no such plot; the plots are probe_displacement, top_force, ...").

@@ -237,6 +237,20 @@ class View3dTest : public QObject {
     QCOMPARE(next.colorSettings(), ColorSettings{});
   }
 
+  // The settings file holds the same map names as `maris --colormap`; "coolwarm", which earlier versions
+  // wrote, still reads as cool to warm.
+  void colourMapNamesAreTheCommandLinesAndOldFilesStillRead() {
+    saveColorSettings("named", ColorSettings{ColorMap::CoolWarm, true, 0.0, 1.0});
+    QCOMPARE(QSettings().value(QStringLiteral("colorMaps/named/map")).toString(), QStringLiteral("cool-warm"));
+    QCOMPARE(colorMapKeys(), QStringList({"cool-warm", "viridis", "rainbow", "greyscale"}));
+    QSettings().setValue(QStringLiteral("colorMaps/old/map"), QStringLiteral("coolwarm"));
+    QSettings().setValue(QStringLiteral("colorMaps/old/automatic"), true);
+    const std::optional<ColorSettings> old = loadColorSettings("old");
+    QVERIFY(old.has_value());
+    QCOMPARE(old->map, ColorMap::CoolWarm);
+    QVERIFY(!colorMapFromKey(QStringLiteral("pink")));
+  }
+
   // The Colours control, driven as a user would: another map or a fixed range changes the colours
   // at the model's pixels and the colour bar's range; the choice is remembered per quantity.
   void colourMapAndRangeRecolourTheModel() {

@@ -27,8 +27,7 @@ constexpr std::array<std::array<int, 3>, 11> kViridis{{{0x44, 0x01, 0x54},
                                                        {0xbd, 0xdf, 0x26},
                                                        {0xfd, 0xe7, 0x25}}};
 
-// Stable names in the settings file (the display names are translated).
-constexpr std::array<const char*, 4> kMapKeys{"coolwarm", "viridis", "rainbow", "greyscale"};
+constexpr std::array<ColorMap, 4> kMaps{ColorMap::CoolWarm, ColorMap::Viridis, ColorMap::Rainbow, ColorMap::Greyscale};
 
 // A quantity's name may hold '/', which QSettings reads as a group separator.
 QString settingsGroup(const std::string& quantity) {
@@ -40,11 +39,10 @@ QString settingsGroup(const std::string& quantity) {
 std::optional<ColorSettings> loadColorSettings(const std::string& quantity) {
   QSettings settings;
   settings.beginGroup(settingsGroup(quantity));
-  const QString key = settings.value(QStringLiteral("map")).toString();
-  const auto found = std::find(kMapKeys.begin(), kMapKeys.end(), key.toStdString());
-  if (found == kMapKeys.end()) return std::nullopt;  // none saved, or a map this version lacks
+  const std::optional<ColorMap> map = colorMapFromKey(settings.value(QStringLiteral("map")).toString());
+  if (!map) return std::nullopt;  // none saved, or a map this version lacks
   ColorSettings out;
-  out.map = static_cast<ColorMap>(found - kMapKeys.begin());
+  out.map = *map;
   out.automatic = settings.value(QStringLiteral("automatic"), true).toBool();
   bool min_ok = false, max_ok = false;
   out.min = settings.value(QStringLiteral("min")).toDouble(&min_ok);
@@ -60,10 +58,33 @@ std::optional<ColorSettings> loadColorSettings(const std::string& quantity) {
 void saveColorSettings(const std::string& quantity, const ColorSettings& settings) {
   QSettings store;
   store.beginGroup(settingsGroup(quantity));
-  store.setValue(QStringLiteral("map"), QString::fromLatin1(kMapKeys[static_cast<std::size_t>(settings.map)]));
+  store.setValue(QStringLiteral("map"), colorMapKey(settings.map));
   store.setValue(QStringLiteral("automatic"), settings.automatic);
   store.setValue(QStringLiteral("min"), settings.min);
   store.setValue(QStringLiteral("max"), settings.max);
+}
+
+QString colorMapKey(ColorMap map) {
+  switch (map) {
+    case ColorMap::CoolWarm: return QStringLiteral("cool-warm");
+    case ColorMap::Viridis: return QStringLiteral("viridis");
+    case ColorMap::Rainbow: return QStringLiteral("rainbow");
+    case ColorMap::Greyscale: return QStringLiteral("greyscale");
+  }
+  return {};
+}
+
+QStringList colorMapKeys() {
+  QStringList keys;
+  for (ColorMap map : kMaps) keys << colorMapKey(map);
+  return keys;
+}
+
+std::optional<ColorMap> colorMapFromKey(const QString& key) {
+  if (key == QLatin1String("coolwarm")) return ColorMap::CoolWarm;
+  for (ColorMap map : kMaps)
+    if (key == colorMapKey(map)) return map;
+  return std::nullopt;
 }
 
 QStringList colorMapNames() {

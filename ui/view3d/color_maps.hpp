@@ -22,6 +22,13 @@ enum class ColorMap {
 // Display names in enum order (the control's combo box lists these).
 QStringList colorMapNames();
 
+// The one stable name of each map ("cool-warm", "viridis", "rainbow", "greyscale"): the value of
+// `maris --colormap` and of the settings file. colorMapKeys() lists them in enum order.
+QString colorMapKey(ColorMap map);
+QStringList colorMapKeys();
+// The map named `key`; also "coolwarm", which settings files written before the names were one wrote.
+std::optional<ColorMap> colorMapFromKey(const QString& key);
+
 struct ColorSettings {
   ColorMap map = ColorMap::CoolWarm;
   bool automatic = true;  // range from the data; else [min, max]
