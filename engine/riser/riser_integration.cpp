@@ -308,6 +308,10 @@ SolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const 
     integrateImplicit(m, p, plan, samples, y, recorder, context, stats);
   else
     integrateExplicit(m, p, plan, samples, y, recorder, context, stats);
+  // Generalized-α's own estimate (sum of h²|β − 1/6||Δq̈| relative to the largest coordinate) is dominated by
+  // the accelerations of the unresolved, damped fast modes, which leave the motion alone: case 5, joint,
+  // 50 ms: 0.45 for a probe error of 1e-3. Where the plan has the measured error model, that is the estimate.
+  if (plan.method == Integrator::Implicit && plan.expected_error > 0) stats.error_estimate = plan.expected_error;
   return stats;
 }
 

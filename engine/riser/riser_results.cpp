@@ -337,7 +337,9 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
   out.addScalar("steps", static_cast<double>(stats.steps), "-", "Accepted time steps");
   out.addScalar("rhs_evaluations", static_cast<double>(stats.rhs_evaluations), "-", "Right-hand side evaluations");
   out.addScalar("integrator_error_estimate", stats.error_estimate, "-",
-                "Integrator's relative global error estimate (sum of local estimates, see docs/numerics.md)");
+                "Error estimate: implicit runs under a harmonic top motion, the expected probe error relative to "
+                "the motion, C (h/T)² (docs/riser.md); other runs, the integrator's relative global estimate (sum "
+                "of local estimates, docs/numerics.md)");
   // Plots.
   if (h.rows() > 1) addHistoryPlots(out);
   for (const auto& t : out.tables) {
