@@ -4,6 +4,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+# ccache (when present) keys on the compiler's command line; relative to this checkout, and without the build
+# directory hashed into debug information, a second clone of the same tree hits the first one's cache.
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true
 jobs="$(nproc)"
 start=$(date +%s)
 
