@@ -48,7 +48,8 @@ double implicitStepForTolerance(Formulation formulation, double period, double t
 // Chooses integrator, step and stabilisation from solver.integrator, solver.time_step and solver.tolerance.
 // "auto": implicit when the explicit stability limit would need more than 2e6 steps (stiff torsion of fine
 // discretisations) or when solver.tolerance >= 1e-3 (any tolerance in absolute coordinates) and the implicit
-// run is estimated cheaper, at the step implicitStepForTolerance (at most T/50); else RK4 at half its stability
+// run is estimated cheaper, at the step implicitStepForTolerance (at most T/50; any implicit step without
+// solver.time_step is rounded down to whole steps per frame interval); else RK4 at half its stability
 // limit (see docs/riser.md for the measured costs of the three).
 IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p);
 

@@ -68,7 +68,12 @@ TEST(RiserAutoStep, ImplicitStepFromTheToleranceMeetsItOnCaseFiveInBothFormulati
     p.tolerance = 1e-3;
     const IntegrationPlan plan = planIntegration(buildRiserModel(p), p);
     ASSERT_EQ(plan.method, Integrator::Implicit) << formulation << ": " << plan.reason;
-    EXPECT_NEAR(plan.expected_error, 0.64 * p.tolerance, 1e-9) << formulation;
+    // h from the tolerance (0.64 tol expected), rounded down to whole steps per 0.5 s frame interval.
+    const double h_tolerance = implicitStepForTolerance(buildRiserModel(p).formulation, p.motion_period, p.tolerance);
+    const double frame = p.end_time / p.frame_count;
+    EXPECT_NEAR(plan.step, frame / std::ceil(frame / h_tolerance), 1e-12) << formulation;
+    EXPECT_LE(plan.expected_error, 0.64 * p.tolerance * (1 + 1e-12)) << formulation;
+    EXPECT_GT(plan.expected_error, 0.64 * p.tolerance * 0.8) << formulation;
     EXPECT_NE(plan.reason.find("expected probe error"), std::string::npos) << plan.reason;
     const Results automatic = run(p);
     // The run reports the plan's estimate (generalized-α's own sum says 0.45 for case 5 J at 50 ms).
