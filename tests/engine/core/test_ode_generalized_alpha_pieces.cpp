@@ -89,11 +89,12 @@ TEST(GeneralizedAlphaPieces, StateOfTheWrongSizeIsIgnoredAndFilled) {
 TEST(GeneralizedAlphaPieces, PassiveCoordinateDoesNotHoldBackTheOthers) {
   constexpr double kOmega = 2.0, kZeta = 0.1;
   long calls = 0;
+  const SecondOrderSystem oscillator = test::oscillatorSystem(kOmega, kZeta);  // writes r[0] from entry 0
   SecondOrderSystem s;
   s.size = 2;
-  s.residual = [&](double, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
+  s.residual = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
                    Eigen::VectorXd& r) {
-    r[0] = acc[0] + 2 * kZeta * kOmega * v[0] + kOmega * kOmega * q[0];
+    oscillator.residual(t, q, v, acc, r);
     r[1] = acc[1] - ((calls++ % 2) ? 1e3 : -1e3);
   };
   s.solve_iteration_matrix = [&](const IterationMatrixRequest& req, Eigen::VectorXd& rhs) {

@@ -66,10 +66,11 @@ TEST(RiserAutoStep, ImplicitStepFromTheToleranceMeetsItOnCaseFiveInBothFormulati
     p.integrator = "auto";
     p.time_step = 0.0;
     p.tolerance = 1e-3;
-    const IntegrationPlan plan = planIntegration(buildRiserModel(p), p);
+    const RiserModel model = buildRiserModel(p);
+    const IntegrationPlan plan = planIntegration(model, p);
     ASSERT_EQ(plan.method, Integrator::Implicit) << formulation << ": " << plan.reason;
     // h from the tolerance (0.64 tol expected), rounded down to whole steps per 0.5 s frame interval.
-    const double h_tolerance = implicitStepForTolerance(buildRiserModel(p).formulation, p.motion_period, p.tolerance);
+    const double h_tolerance = implicitStepForTolerance(model.formulation, p.motion_period, p.tolerance);
     const double frame = p.end_time / p.frame_count;
     EXPECT_NEAR(plan.step, frame / std::ceil(frame / h_tolerance), 1e-12) << formulation;
     EXPECT_LE(plan.expected_error, 0.64 * p.tolerance * (1 + 1e-12)) << formulation;
