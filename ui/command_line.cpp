@@ -49,8 +49,7 @@ QString parseValue(const QString& option, const QString& value, CommandLine& out
   } else if (option == QLatin1String("--tab")) {
     out.tab = value;
   } else if (option == QLatin1String("--colormap")) {
-    // "coolwarm" is only read from old settings files; the command line takes the one current name.
-    if (value != QLatin1String("coolwarm")) out.color_map = colorMapFromKey(value);
+    out.color_map = colorMapFromKey(value);
     if (!out.color_map)
       return invalid(option, value, QStringLiteral("must be one of %1").arg(colorMapKeys().join(QStringLiteral(", "))));
   } else {

@@ -249,6 +249,7 @@ class View3dTest : public QObject {
     QVERIFY(old.has_value());
     QCOMPARE(old->map, ColorMap::CoolWarm);
     QVERIFY(!colorMapFromKey(QStringLiteral("pink")));
+    QVERIFY(!colorMapFromKey(QStringLiteral("coolwarm")));  // the old spelling is read from settings files only
   }
 
   // The Colours control, driven as a user would: another map or a fixed range changes the colours

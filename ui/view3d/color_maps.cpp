@@ -39,7 +39,9 @@ QString settingsGroup(const std::string& quantity) {
 std::optional<ColorSettings> loadColorSettings(const std::string& quantity) {
   QSettings settings;
   settings.beginGroup(settingsGroup(quantity));
-  const std::optional<ColorMap> map = colorMapFromKey(settings.value(QStringLiteral("map")).toString());
+  // "coolwarm": the name settings files held before the maps had one name each.
+  const QString key = settings.value(QStringLiteral("map")).toString();
+  const std::optional<ColorMap> map = key == QLatin1String("coolwarm") ? ColorMap::CoolWarm : colorMapFromKey(key);
   if (!map) return std::nullopt;  // none saved, or a map this version lacks
   ColorSettings out;
   out.map = *map;
@@ -81,7 +83,6 @@ QStringList colorMapKeys() {
 }
 
 std::optional<ColorMap> colorMapFromKey(const QString& key) {
-  if (key == QLatin1String("coolwarm")) return ColorMap::CoolWarm;
   for (ColorMap map : kMaps)
     if (key == colorMapKey(map)) return map;
   return std::nullopt;

@@ -26,7 +26,7 @@ QStringList colorMapNames();
 // `maris --colormap` and of the settings file. colorMapKeys() lists them in enum order.
 QString colorMapKey(ColorMap map);
 QStringList colorMapKeys();
-// The map named `key`; also "coolwarm", which settings files written before the names were one wrote.
+// The map named `key` (one of colorMapKeys()), nullopt for any other text.
 std::optional<ColorMap> colorMapFromKey(const QString& key);
 
 struct ColorSettings {
