@@ -1,7 +1,8 @@
 // Work–precision of the riser scene (issue 10): CPU time against error for the four variants J2, J3,
 // A2, A3 and the integrators core/ode.hpp offers (RK4 fixed step as the scene uses, DOPRI5 adaptive),
 // on the paper's case 5 (riser_paper_case5_j3: 500 m riser, elliptical top motion, 1 m/s current,
-// 36 s) and on a 3D cable case (a 30 m cable whose top whirls on a circle in a current, 10 s).
+// 36 s) and on a 3D cable case (built-in scenario riser_cable_3d_circle: a 30 m cable whose top whirls on a
+// circle in a current, 10 s).
 //   error_same_n:   max over outputs (every 0.2 s) of |r_mid - r_mid,ref| / max |r_mid,ref(t) - r_mid,ref(0)|,
 //                   r_mid = the point at s = L/2, reference = the same n and variant integrated by the most
 //                   accurate method within the budget (column `reference`: DOPRI5 rtol 1e-10, RK4 at 0.2 or
@@ -61,26 +62,6 @@ namespace {
 RiserParameters builtin(const std::string& id) {
   const auto text = builtinResource("scenarios/riser/" + id + ".json");
   return riserBinder().read(scenarioFromText(std::string(*text)).parameters);
-}
-
-// The 3D cable: 30 m steel cable D 0.05 m pinned at a top that moves on a horizontal circle of radius
-// 1 m (period 4 s) in a 0.5 m/s current at 45°, free bottom, in water.
-RiserParameters cable3d() {
-  RiserParameters p;
-  p.length = 30.0;
-  p.outer_diameter = 0.05;
-  p.inner_diameter = 0.0;
-  p.water_level = 10.0;
-  p.seabed_level = -100.0;
-  p.current_speed_surface = p.current_speed_seabed = 0.5;
-  p.current_direction = 0.7853981633974483;
-  p.top_condition = "pinned";
-  p.motion_amplitude_x = p.motion_amplitude_y = 1.0;
-  p.motion_period = 4.0;
-  p.motion_ramp_time = 2.0;
-  p.bottom_condition = "free";
-  p.end_time = 10.0;
-  return p;
 }
 
 struct Variant {
@@ -366,7 +347,7 @@ int main(int argc, char** argv) {
   if ((opt.only == "all" || opt.only == "case5") && !opt.case5_n.empty())
     cases.push_back({"case5", builtin("riser_paper_case5_j3"), opt.case5_n});
   if ((opt.only == "all" || opt.only == "cable3d") && !opt.cable_n.empty())
-    cases.push_back({"cable3d", cable3d(), opt.cable_n});
+    cases.push_back({"cable3d", builtin("riser_cable_3d_circle"), opt.cable_n});
   for (auto& c : cases)
     if (c.name == std::string("case5")) c.p.end_time = opt.case5_end;
   for (auto& c : cases) {
