@@ -361,11 +361,9 @@ void closeJointsByTranslation(const RiserModel& m, RiserWorkspace& ws, double t,
   }
 }
 
-// One Gauss–Newton sweep of the mass-weighted projection, δz_i = W_i (E μ_i − D'_i μ_{i+1}) from the
-// reaction system's block-tridiagonal matrix, for the position or velocity mismatch of the top row and/or the
-// bottom row; the other rows are held at zero change.
-void massWeightedSweep(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, bool velocity,
-                       bool top_row, bool bottom_row) {
+// One Gauss–Newton sweep of the mass-weighted projection of every row, δz_i = W_i (E μ_i − D'_i μ_{i+1}) from
+// the reaction system's block-tridiagonal matrix with the position or velocity mismatch as right side.
+void massWeightedSweep(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, bool velocity) {
   const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
   poseFromState(m, t, y, ws.pose);
   updateInverseMasses(m, ws);
@@ -373,9 +371,8 @@ void massWeightedSweep(const RiserModel& m, RiserWorkspace& ws, double t, Eigen:
   const std::vector<Vec3>& gap = velocity ? phi.velocity : phi.position;
   assembleReactionMatrix(m, ws);
   // Right sides for δΦ = −Φ: the matrix rows give δz_f (top), δz_j − D'ᵀδz_{j−1} (inner), −D'ᵀδz_last (bottom).
-  for (Vec3& r : ws.rhs) r.setZero();
-  if (top_row) ws.rhs[0] = -gap[0];
-  if (bottom_row) ws.rhs[nb - 1] = gap[nb - 1];
+  ws.rhs[0] = -gap[0];
+  for (int k = 1; k < nb; ++k) ws.rhs[k] = gap[k];
   solveReactionSystem(m, ws);
   for (int i = f; i <= last; ++i) {
     Vec6 g;
@@ -401,24 +398,24 @@ void massWeightedSweep(const RiserModel& m, RiserWorkspace& ws, double t, Eigen:
 
 double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, int iterations) {
   if (m.formulation == Formulation::Joint) return 0.0;
-  // Why translations, and why the top's velocity apart (measured with generalized-α on the 3D cable of
-  // riser_work_precision, A3):
-  // - a mass-weighted projection of every row closes a joint by turning the short segments next to it (a
-  //   rotation moves a far end at 1/12 of a translation's kinetic cost): it kinks the chain, the bending
-  //   springs answer with accelerations of 1e7 and at n = 400, 0.16 s steps, 213 of 1062 steps failed Newton
-  //   (closing the joints by translation: 13 steps, none failed);
-  // - the top's velocity mismatch is left to Baumgarte: carried down the whole chain (a momentum kick at
-  //   every step) it made the method first order (n = 20: probe error 4.6e-3 at 20 ms steps against
-  //   1.6e-4); projected mass-weighted it kinks the top (n = 400: 41 of 204 steps failed).
-  // A held bottom's mismatch, the sum of every joint's drift, goes by the mass-weighted projection.
-  const bool held = bottomHeld(m);
-  for (int it = 0; it < std::max(iterations, 1); ++it) {
+  // Measured with generalized-α, A3:
+  // - free bottom (the 3D cable of riser_work_precision): the mass-weighted projection closes a joint by
+  //   turning the short segments next to it (a rotation moves a far end at 1/12 of a translation's kinetic
+  //   cost), which kinks the chain; the bending springs answer with accelerations of 1e7 and at n = 400,
+  //   0.16 s steps, 213 of 1062 steps failed Newton. Closing the joints by translation: 13 steps, none failed.
+  //   The top's velocity mismatch is left to Baumgarte there: carried down the whole chain (a momentum kick
+  //   at every step) it made the method first order (n = 20: probe error 4.6e-3 at 20 ms steps against
+  //   1.6e-4); projected mass-weighted it kinked the top (n = 400: 41 of 204 steps failed).
+  // - held bottom (case 5): translation with the bottom's mismatch mass-weighted was 20 % less accurate
+  //   (6.2e-4 against 5.2e-4 at 50 ms) and halved more long steps (n = 400, 0.4 s: 1141 steps against 764)
+  //   than the mass-weighted projection of every row, which stays there.
+  if (bottomHeld(m)) {
+    for (int it = 0; it < iterations; ++it) massWeightedSweep(m, ws, t, y, false);
+    massWeightedSweep(m, ws, t, y, true);
+  } else {
     closeJointsByTranslation(m, ws, t, y, false);
-    if (!held) break;
-    massWeightedSweep(m, ws, t, y, false, false, true);
+    closeJointsByTranslation(m, ws, t, y, true);
   }
-  closeJointsByTranslation(m, ws, t, y, true);
-  if (held) massWeightedSweep(m, ws, t, y, true, false, true);
   poseFromState(m, t, y, ws.pose);
   return constraintViolation(m, ws.pose, t).largest;
 }
