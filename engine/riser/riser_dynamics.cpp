@@ -346,6 +346,16 @@ void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, co
 }
 
 namespace {
+// Turns the orientation quaternion of the segment at state offset o by the small rotation vector θ (global).
+void turnSegment(Eigen::VectorXd& y, int o, const Vec3& theta) {
+  const Eigen::Quaterniond q(y[o + 3], y[o + 4], y[o + 5], y[o + 6]);
+  const double angle = theta.norm();
+  const Eigen::Quaterniond turn =
+      angle > 0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, theta / angle)) : Eigen::Quaterniond::Identity();
+  const Eigen::Quaterniond rotated = (turn * q).normalized();
+  y.segment<4>(o + 3) << rotated.w(), rotated.x(), rotated.y(), rotated.z();
+}
+
 // Translates every segment so that it starts where the one above ends: positions (the first segment also to
 // the top's held coordinates) or velocities (inner joints only). Orientations and angular velocities are
 // kept, so positions become the ones joint coordinates would give the orientations.
@@ -361,61 +371,63 @@ void closeJointsByTranslation(const RiserModel& m, RiserWorkspace& ws, double t,
   }
 }
 
-// One Gauss–Newton sweep of the mass-weighted projection of every row, δz_i = W_i (E μ_i − D'_i μ_{i+1}) from
-// the reaction system's block-tridiagonal matrix with the position or velocity mismatch as right side.
-void massWeightedSweep(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, bool velocity) {
+// Removes a held bottom's mismatch (after closeJointsByTranslation, the sum of every joint's drift): the
+// components the top may move in (force-known, e.g. a tensioner's z) by moving the whole chain, the others by
+// turning all segments a little, δθ_i = λ × d_i / I_i (the least Σ I_i|δθ_i|² with P Σ δθ_i × d_i = −P Φ_bottom,
+// P the held top components; a 3×3 system), the chain below each turn translated after it; the same for the
+// velocities. The least-squares solve leaves what no turn can remove (along a straight chain) to Baumgarte.
+void spreadBottomMismatch(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, bool velocity) {
   const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
+  Mat3 held = Mat3::Identity();
+  for (int c = 0; c < 3; ++c)
+    if (topForceKnown(m, c)) held(c, c) = 0.0;
   poseFromState(m, t, y, ws.pose);
-  updateInverseMasses(m, ws);
   const ConstraintViolation phi = constraintViolation(m, ws.pose, t);
-  const std::vector<Vec3>& gap = velocity ? phi.velocity : phi.position;
-  assembleReactionMatrix(m, ws);
-  // Right sides for δΦ = −Φ: the matrix rows give δz_f (top), δz_j − D'ᵀδz_{j−1} (inner), −D'ᵀδz_last (bottom).
-  ws.rhs[0] = -gap[0];
-  for (int k = 1; k < nb; ++k) ws.rhs[k] = gap[k];
-  solveReactionSystem(m, ws);
+  const Vec3 mismatch = held * (velocity ? phi.velocity[nb - 1] : phi.position[nb - 1]);
+  auto inverseInertia = [&](int i) { return 12.0 / (m.segments[i].mass * m.segments[i].length * m.segments[i].length); };
+  Mat3 a = Mat3::Zero();
   for (int i = f; i <= last; ++i) {
-    Vec6 g;
     const Vec3 d = m.segments[i].length * ws.pose.rotation[i].col(0);
-    g << ws.reaction[i] - ws.reaction[i + 1], -d.cross(ws.reaction[i + 1]);
-    const Vec6 dz = ws.inverse_mass[i] * g;
-    const int o = segmentOffset(m, i);
-    if (velocity) {  // v_i += δv, ω_i += δω
-      y.segment<3>(o + 7) += dz.head<3>();
-      y.segment<3>(o + 10) += dz.tail<3>();
-      continue;
-    }
-    y.segment<3>(o) += dz.head<3>();
-    const Eigen::Quaterniond q(y[o + 3], y[o + 4], y[o + 5], y[o + 6]);
-    const double angle = dz.tail<3>().norm();
-    const Eigen::Quaterniond turn =
-        angle > 0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, dz.tail<3>() / angle)) : Eigen::Quaterniond::Identity();
-    const Eigen::Quaterniond rotated = (turn * q).normalized();
-    y.segment<4>(o + 3) << rotated.w(), rotated.x(), rotated.y(), rotated.z();
+    a += (d.squaredNorm() * Mat3::Identity() - d * d.transpose()) * inverseInertia(i);
   }
+  const Vec3 lambda = held * (held * a * held).completeOrthogonalDecomposition().solve(mismatch);
+  for (int i = f; i <= last; ++i) {
+    const Vec3 turn = lambda.cross(m.segments[i].length * ws.pose.rotation[i].col(0)) * inverseInertia(i);
+    const int o = segmentOffset(m, i);
+    if (velocity)
+      y.segment<3>(o + 10) += turn;
+    else
+      turnSegment(y, o, turn);
+  }
+  closeJointsByTranslation(m, ws, t, y, velocity);
+  if (held == Mat3::Identity()) return;
+  poseFromState(m, t, y, ws.pose);
+  const ConstraintViolation after = constraintViolation(m, ws.pose, t);
+  const Vec3 shift = -(Mat3::Identity() - held) * (velocity ? after.velocity[nb - 1] : after.position[nb - 1]);
+  for (int i = f; i <= last; ++i) y.segment<3>(segmentOffset(m, i) + (velocity ? 7 : 0)) += shift;
 }
 }  // namespace
 
 double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, int iterations) {
   if (m.formulation == Formulation::Joint) return 0.0;
-  // Measured with generalized-α, A3:
-  // - free bottom (the 3D cable of riser_work_precision): the mass-weighted projection closes a joint by
-  //   turning the short segments next to it (a rotation moves a far end at 1/12 of a translation's kinetic
-  //   cost), which kinks the chain; the bending springs answer with accelerations of 1e7 and at n = 400,
-  //   0.16 s steps, 213 of 1062 steps failed Newton. Closing the joints by translation: 13 steps, none failed.
-  //   The top's velocity mismatch is left to Baumgarte there: carried down the whole chain (a momentum kick
-  //   at every step) it made the method first order (n = 20: probe error 4.6e-3 at 20 ms steps against
-  //   1.6e-4); projected mass-weighted it kinked the top (n = 400: 41 of 204 steps failed).
-  // - held bottom (case 5): translation with the bottom's mismatch mass-weighted was 20 % less accurate
-  //   (6.2e-4 against 5.2e-4 at 50 ms) and halved more long steps (n = 400, 0.4 s: 1141 steps against 764)
-  //   than the mass-weighted projection of every row, which stays there.
-  if (bottomHeld(m)) {
-    for (int it = 0; it < iterations; ++it) massWeightedSweep(m, ws, t, y, false);
-    massWeightedSweep(m, ws, t, y, true);
-  } else {
+  // Measured with generalized-α, A3. The mass-weighted projection of every row closes a joint by turning the
+  // short segments next to it (a rotation moves a far end at 1/12 of a translation's kinetic cost), which
+  // kinks the chain; the bending springs answer with accelerations of 1e7 and Newton fails: the free 3D cable
+  // of riser_work_precision at n = 400, 0.16 s steps: 213 of 1062 steps rejected (by translation: 13, none);
+  // case 5 at n = 400, 0.4 s: 764 steps for 90 (spread over all rotations: 153); a slack cable held at both
+  // ends, n = 100, T/25: 441 steps, 107 rejected (spread: 90, 12). Spreading cost case 5 12 % of accuracy at
+  // 50 ms (5.8e-4 against 5.2e-4) and saved 30 % of the time at n = 400.
+  // The top's velocity mismatch is left to Baumgarte: carried down the whole chain (a momentum kick at every
+  // step) it made the method first order (cable, n = 20: 4.6e-3 at 20 ms against 1.6e-4); projected
+  // mass-weighted it kinked the top (n = 400: 41 of 204 steps rejected).
+  const bool held = bottomHeld(m);
+  for (int it = 0; it < std::max(iterations, 1); ++it) {
     closeJointsByTranslation(m, ws, t, y, false);
-    closeJointsByTranslation(m, ws, t, y, true);
+    if (!held) break;
+    spreadBottomMismatch(m, ws, t, y, false);
   }
+  closeJointsByTranslation(m, ws, t, y, true);
+  if (held) spreadBottomMismatch(m, ws, t, y, true);
   poseFromState(m, t, y, ws.pose);
   return constraintViolation(m, ws.pose, t).largest;
 }

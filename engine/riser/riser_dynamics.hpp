@@ -82,13 +82,12 @@ void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, co
                      const std::vector<Vec3>& reaction, std::vector<Vec6>& segment_residual,
                      std::vector<Vec3>& row_residual);
 
-// Absolute coordinates: projects y back onto the constraints, O(n). Held bottom: onto Φ = 0, Φ̇ = 0 by
-// mass-weighted least-squares corrections δz_i = W_i (E μ_i − D'_i μ_{i+1}) of positions and rotations
-// (Gauss–Newton, the reaction system's block-tridiagonal matrix with Φ as right side; `iterations` sweeps),
-// then the same for the velocities. Free bottom: the joints are closed by translating the segments down the
-// chain (positions from the top's held coordinates, velocities from the first segment's), orientations and
-// angular velocities kept; the top's velocity mismatch is left to the Baumgarte term (riser_dynamics.cpp
-// says why). Returns the largest |Φ| [m] after the projection. Joint coordinates: no-op, returns 0.
+// Absolute coordinates: projects y back onto the constraints, O(n). The joints are closed by translating the
+// segments down the chain (positions from the top's held coordinates, velocities from the first segment's),
+// orientations and angular velocities kept; a held bottom's remaining mismatch is then spread over small
+// turns of all segments, weighted by their rotational inertia (`iterations` sweeps of positions, one of
+// velocities). The top's velocity mismatch is left to the Baumgarte term (riser_dynamics.cpp says why).
+// Returns the largest |Φ| [m] after the projection. Joint coordinates: no-op, returns 0.
 double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, int iterations = 2);
 
 // Renormalises the quaternions of y (after a step) and, without torsion, removes spin about the axes.
