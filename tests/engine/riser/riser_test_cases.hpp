@@ -21,6 +21,29 @@ inline RiserParameters builtinParameters(const std::string& path) {
 // The paper's case 5 (n = 100, elliptical top motion of period 10 s, 1 m/s current).
 inline RiserParameters paperCaseFive() { return builtinParameters("scenarios/riser/riser_paper_case5_j3.json"); }
 
+// The bench's 3D cable (riser_cable_3d_circle: 30 m, top whirled on a 1 m circle of period 4 s, current at
+// 45°, free bottom) in absolute coordinates with torsion, n segments, generalized-α at the given step [s],
+// one frame, no stress snapshots.
+inline RiserParameters implicitCable(int n, double step) {
+  RiserParameters p = builtinParameters("scenarios/riser/riser_cable_3d_circle.json");
+  p.formulation = "absolute";
+  p.segment_count = n;
+  p.integrator = "implicit";
+  p.time_step = step;
+  p.frame_count = 1;
+  p.stress_times.clear();
+  return p;
+}
+
+// The same cable held at both ends: pinned to an anchor 26.9 m from the top (10 m aside, 25 m down), slack.
+inline RiserParameters implicitCableHeldAtBothEnds(int n, double step) {
+  RiserParameters p = implicitCable(n, step);
+  p.bottom_condition = "pinned";
+  p.bottom_x = 10.0;
+  p.bottom_z = -15.0;
+  return p;
+}
+
 // A calm, dry set-up: no current, no top motion, no drag, water far below, nothing moving.
 inline RiserParameters calmInAir() {
   RiserParameters p;

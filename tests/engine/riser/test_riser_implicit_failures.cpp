@@ -99,15 +99,9 @@ TEST(RiserImplicitFailures, FineChainInShortChunksTakesNoRejectedSteps) {
 // bending springs then failed Newton again and again (here 464 steps, 118 rejected; bench, 10 s: 1043 steps
 // instead of 63 at n = 200). Closing the joints by translation takes the 13 steps.
 TEST(RiserImplicitFailures, FreeCableInAbsoluteCoordinatesTakesCoarseStepsWithoutRejection) {
-  RiserParameters p = test::builtinParameters("scenarios/riser/riser_cable_3d_circle.json");
+  RiserParameters p = test::implicitCable(200, 0.16);
   ASSERT_EQ(p.bottom_condition, "free");
-  p.formulation = "absolute";
-  p.segment_count = 200;
-  p.integrator = "implicit";
-  p.time_step = 0.16;
   p.end_time = 2.0;
-  p.frame_count = 1;
-  p.stress_times.clear();
   RunContext context;
   const Results r = solveRiser(p, context);
   EXPECT_EQ(r.stats.steps, 13);
@@ -119,16 +113,7 @@ TEST(RiserImplicitFailures, FreeCableInAbsoluteCoordinatesTakesCoarseStepsWithou
 // its bottom's mismatch, spread over small turns of all segments, lets A3 take about the nominal 63 steps
 // (measured 90, 12 rejected; the mass-weighted projection of every joint took 441, 107 rejected; J3 63, none).
 TEST(RiserImplicitFailures, SlackCableHeldAtBothEndsKeepsItsSteps) {
-  RiserParameters p = test::builtinParameters("scenarios/riser/riser_cable_3d_circle.json");
-  p.formulation = "absolute";
-  p.segment_count = 100;
-  p.bottom_condition = "pinned";
-  p.bottom_x = 10.0;
-  p.bottom_z = -15.0;
-  p.integrator = "implicit";
-  p.time_step = 0.16;
-  p.frame_count = 1;
-  p.stress_times.clear();
+  const RiserParameters p = test::implicitCableHeldAtBothEnds(100, 0.16);
   RunContext context;
   const Results r = solveRiser(p, context);
   EXPECT_LE(r.stats.steps, 100);

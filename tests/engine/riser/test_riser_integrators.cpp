@@ -114,12 +114,8 @@ TEST(RiserIntegrators, ImplicitConvergesAtSecondOrderInBothFormulations) {
 // at every step, as a projection by translation alone would, made it first order (bench error 4.6e-3 instead
 // of 1.6e-4 at 20 ms, n = 20; here a ratio of 2.9).
 TEST(RiserIntegrators, ImplicitStaysSecondOrderOnAFreeCableInAbsoluteCoordinates) {
-  RiserParameters p = test::builtinParameters("scenarios/riser/riser_cable_3d_circle.json");
-  p.formulation = "absolute";
-  p.segment_count = 10;
-  p.integrator = "implicit";
+  RiserParameters p = test::implicitCable(10, 0.04);
   p.frame_count = 4;
-  p.stress_times.clear();
   std::vector<Results> runs;
   for (double h : {0.04, 0.02, 0.01}) {
     p.time_step = h;
