@@ -128,8 +128,8 @@ void integrateImplicit(const RiserModel& m, const RiserParameters& p, const Inte
   // Absolute coordinates: O(n) force-space Newton matrix; joint coordinates: the same through an absolute
   // twin of the model (riser_joint_newton), also O(n). Neither forms the dense N×N matrix.
   // Absolute coordinates: the joints are also projected back together after every step (closed by
-  // translation down the chain, a held bottom by one mass-weighted sweep), so Baumgarte only has to hold the
-  // remainder within a step and the top's velocity.
+  // translation down the chain, a held bottom's mismatch spread over turns of all segments), so Baumgarte
+  // only has to hold the remainder within a step and the top's velocity.
   std::optional<ForceSpaceNewtonMatrix> newton;
   std::optional<JointNewtonMatrix> joint_newton;
   RiserWorkspace projection_ws = makeWorkspace(m, 0.0);
