@@ -1,6 +1,6 @@
 #include "core/errors.hpp"
 
-#include <cstdio>
+#include "core/text_format.hpp"
 
 namespace maris {
 
@@ -25,12 +25,8 @@ InputError::InputError(const std::string& path, const std::string& value, const 
     : InputError(std::vector<FieldError>{FieldError{path, value, message}}) {}
 
 static std::string solverMessage(const std::string& quantity, double t, long step, const std::string& detail) {
-  char head[96];
-  if (step >= 0)
-    std::snprintf(head, sizeof head, "solver failed at t = %.6g s (step %ld): ", t, step);
-  else
-    std::snprintf(head, sizeof head, "solver failed at t = %.6g s: ", t);
-  std::string message(head);
+  std::string message = step >= 0 ? formatText("solver failed at t = %.6g s (step %ld): ", t, step)
+                                  : formatText("solver failed at t = %.6g s: ", t);
   message.append(quantity);
   if (!detail.empty()) message.append(" ").append(detail);
   return message;

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <set>
 #include <sstream>
+
+#include "core/text_format.hpp"
 
 namespace maris {
 
@@ -21,11 +22,7 @@ const char* toString(ParamKind kind) {
   return "?";
 }
 
-static std::string formatNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+static std::string formatNumber(double v) { return formatText("%.6g", v); }
 
 bool Range::contains(double v) const {
   if (std::isnan(v)) return false;

@@ -4,12 +4,12 @@
 #include <cassert>
 #include <cmath>
 #include <complex>
-#include <cstdio>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "core/text_format.hpp"
 #include "riser/riser_dynamics.hpp"
 
 namespace maris::riser {
@@ -274,14 +274,12 @@ double divergenceFlowSpeed(const RiserModel& model, const StaticSolution& static
 }
 
 std::string slowGrowthNote(int count, double growth_rate, double growth_per_radian) {
-  char text[400];
-  std::snprintf(text, sizeof text,
+  return formatText(
                 "%d linearised modes grow slowly (largest Re λ = %.2g 1/s, %.2g per radian, e-folding time %.2g s): "
                 "the discrete internal-flow force (curvature fit of eqs 47-49 with the Coriolis term) is not exactly "
                 "conservative on a coarse chain, an O(u³Δ³) artefact, not flutter of the pipe (docs/riser.md); "
                 "frequencies kept",
                 count, growth_rate, growth_per_radian, 1.0 / growth_rate);
-  return text;
 }
 
 RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count, Formulation linearisation) {

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
 
 #include "core/errors.hpp"
+#include "core/text_format.hpp"
 #include "riser/riser_dynamics.hpp"
 #include "riser/riser_joint_newton.hpp"
 
@@ -338,8 +338,7 @@ StaticSolution solveStatics(const RiserModel& model, RunContext& context, Static
       if (increment < 1.0 / 4096) {
         // Seen on a slack cable held at both ends (30 m, n = 100, before bandedNewton's cap was raised): from
         // the sagging arc this path stalled at load factor 0, 2.1e-11 against the tolerance, after 28 s.
-        char text[640];
-        std::snprintf(text, sizeof text,
+        const std::string text = formatText(
                       "Newton's method found no equilibrium beyond load factor %.3g of gravity, buoyancy and current "
                       "(scaled residual %.3g, tolerance %.0e). Start from a shape nearer the equilibrium "
                       "(initial.inclination, initial.azimuth; a held bottom starts from an arc sagging to it), use "

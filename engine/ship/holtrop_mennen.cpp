@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "core/text_format.hpp"
 #include "ship/viscous_resistance.hpp"
 
 namespace maris::ship {
@@ -119,10 +119,7 @@ std::vector<std::string> holtropRangeNotes(const HoltropHull& h) {
   std::vector<std::string> notes;
   auto check = [&](const char* name, double v, double lo, double hi) {
     if (v >= lo && v <= hi) return;
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "Holtrop-Mennen: %s = %.3g is outside the regression's range [%.3g, %.3g]", name, v,
-                  lo, hi);
-    notes.emplace_back(buf);
+    notes.push_back(formatText("Holtrop-Mennen: %s = %.3g is outside the regression's range [%.3g, %.3g]", name, v, lo, hi));
   };
   check("C_P", h.prismatic(), 0.55, 0.85);
   check("L/B", h.length_wl / h.beam, 3.9, 14.9);

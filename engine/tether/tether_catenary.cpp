@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
+
+#include "core/text_format.hpp"
 
 namespace maris::tether {
 
@@ -14,12 +15,6 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kVerticalHangSpanRatio = 1e-14;  // S/L below which the tether is treated as hanging vertically
 constexpr double kNearlyTautCondition = 1e6;      // condition number above which the shape is "nearly taut"
-
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c);
-  return buf;
-}
 
 // ln(sinh(xi)/xi) for xi >= 0 without cancellation: series below 1, asymptotic form above 20.
 double logSinhOverX(double xi) {
@@ -111,12 +106,12 @@ void classify(Catenary& c) {
   c.condition_number = 1.0 + c.span / std::max(deficit, kEps * q);
   if (c.vertex_offset < 0.0 || c.vertex_offset > c.span) {
     c.regime = CatenaryRegime::VertexOutsideSpan;
-    c.message = format("the lowest point lies %.3g m beyond an attachment point (span %.6g m, rise %.6g m): the "
-                       "paper's sag/height-offset model needs it between them",
-                       c.vertex_offset < 0.0 ? -c.vertex_offset : c.vertex_offset - c.span, c.span, c.rise);
+    c.message = formatText("the lowest point lies %.3g m beyond an attachment point (span %.6g m, rise %.6g m): the "
+                           "paper's sag/height-offset model needs it between them",
+                           c.vertex_offset < 0.0 ? -c.vertex_offset : c.vertex_offset - c.span, c.span, c.rise);
   } else if (c.condition_number > kNearlyTautCondition) {
     c.regime = CatenaryRegime::NearlyTaut;
-    c.message = format("nearly taut: the sag is ill-conditioned in the span, |d ln H/d ln S| ~ %.3g", c.condition_number);
+    c.message = formatText("nearly taut: the sag is ill-conditioned in the span, |d ln H/d ln S| ~ %.3g", c.condition_number);
   } else {
     c.regime = CatenaryRegime::Regular;
   }
@@ -160,19 +155,19 @@ CatenaryConstantGradient catenaryConstantGradient(double sag, double rise, doubl
 
 Catenary catenaryFromShape(double sag, double rise, double length) {
   if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(sag) || !std::isfinite(rise))
-    return failed(CatenaryRegime::Degenerate, format("length %.6g m, sag %.6g m and rise %.6g m must be finite with "
-                                                     "length > 0", length, sag, rise), 0.0, rise, length);
+    return failed(CatenaryRegime::Degenerate, formatText("length %.6g m, sag %.6g m and rise %.6g m must be finite with "
+                                                         "length > 0", length, sag, rise), 0.0, rise, length);
   if (sag < 0.0 || sag + rise < 0.0)
     return failed(CatenaryRegime::VertexOutsideSpan,
-                  format("sag H = %.6g m and H + dH = %.6g m must both be >= 0 (lowest point between the ends)", sag,
-                         sag + rise), 0.0, rise, length);
+                  formatText("sag H = %.6g m and H + dH = %.6g m must both be >= 0 (lowest point between the ends)", sag,
+                             sag + rise), 0.0, rise, length);
   const double w = 2.0 * sag + rise;
   if (w > length)
-    return failed(CatenaryRegime::Degenerate, format("2H + dH = %.6g m exceeds the length %.6g m", w, length), 0.0,
+    return failed(CatenaryRegime::Degenerate, formatText("2H + dH = %.6g m exceeds the length %.6g m", w, length), 0.0,
                   rise, length);
   if (w == length)
-    return verticalHang(0.0, rise, length, format("2H + dH = L = %.6g m: the tether hangs vertically (C infinite)",
-                                                  length));
+    return verticalHang(0.0, rise, length, formatText("2H + dH = L = %.6g m: the tether hangs vertically (C infinite)",
+                                                      length));
   if (sag == 0.0 && rise == 0.0)
     return failed(CatenaryRegime::Overstretched, "H = dH = 0 is the straight taut tether (chord = length)", length,
                   rise, length);
@@ -182,7 +177,7 @@ Catenary catenaryFromShape(double sag, double rise, double length) {
   c.sag = sag;
   c.constant = catenaryConstant(sag, rise, length);
   if (!std::isfinite(c.constant))
-    return verticalHang(0.0, rise, length, format("2H + dH = %.17g m is L to round-off: vertical hang", w));
+    return verticalHang(0.0, rise, length, formatText("2H + dH = %.17g m is L to round-off: vertical hang", w));
   c.inverse_constant = 1.0 / c.constant;
   // D = asinh(sqrt(CH (CH + 2)))/C is acosh(1 + CH)/C without the cancellation in 1 + CH for small CH.
   const double ch2 = c.constant * sag, ch1 = c.constant * (sag + rise);
@@ -197,17 +192,17 @@ Catenary catenaryFromShape(double sag, double rise, double length) {
 
 Catenary catenaryFromSpan(double span, double rise, double length) {
   if (!(length > 0.0) || !std::isfinite(length) || !(span >= 0.0) || !std::isfinite(span) || !std::isfinite(rise))
-    return failed(CatenaryRegime::Degenerate, format("length %.6g m, span %.6g m and rise %.6g m must be finite with "
-                                                     "length > 0 and span >= 0", length, span, rise), span, rise,
+    return failed(CatenaryRegime::Degenerate, formatText("length %.6g m, span %.6g m and rise %.6g m must be finite with "
+                                                         "length > 0 and span >= 0", length, span, rise), span, rise,
                   length);
   const double deficit = chordDeficit(span, rise, length);  // q^2 - S^2
   if (!(deficit > 0.0))
     return failed(CatenaryRegime::Overstretched,
-                  format("chord %.9g m >= length %.9g m: an inextensible tether cannot span it (rise %.6g m)",
-                         std::hypot(span, rise), length, rise),
+                  formatText("chord %.9g m >= length %.9g m: an inextensible tether cannot span it (rise %.6g m)",
+                             std::hypot(span, rise), length, rise),
                   span, rise, length);
   if (span <= kVerticalHangSpanRatio * length)
-    return verticalHang(span, rise, length, format("span %.3g m <= 1e-14 L: the tether hangs vertically", span));
+    return verticalHang(span, rise, length, formatText("span %.3g m <= 1e-14 L: the tether hangs vertically", span));
   const double q = std::sqrt((length - rise) * (length + rise));
   const double r_minus_1 = deficit / (span * (q + span));  // r - 1, r = q/S
   Catenary c;

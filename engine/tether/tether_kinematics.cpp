@@ -1,12 +1,12 @@
 #include "tether/tether_kinematics.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 #include <Eigen/Geometry>
 
 #include "core/errors.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::tether {
 
@@ -67,20 +67,16 @@ Features featuresOf(const TetherRig& rig, const TetherState& state) {
 }
 
 std::string featureInfeasibility(const TetherRig& rig, const Features& s) {
-  char buf[320];
   const double sag = s.a * rig.sag_max;
   const double rise = (2.0 * s.d - 1.0) * rig.rise_max;
   if (!(s.a > 0.0) || !(sag + rise > 0.0) || !(2.0 * sag + rise < rig.length)) {
-    std::snprintf(buf, sizeof buf,
-                  "(a, d) = (%.4g, %.4g) gives sag H = %.4g m and rise dH = %.4g m; the feasible box is "
-                  "max(0, -dH) < H < (L - dH)/2 = %.4g m",
-                  s.a, s.d, sag, rise, 0.5 * (rig.length - rise));
-    return buf;
+    return formatText("(a, d) = (%.4g, %.4g) gives sag H = %.4g m and rise dH = %.4g m; the feasible box is "
+                      "max(0, -dH) < H < (L - dH)/2 = %.4g m",
+                      s.a, s.d, sag, rise, 0.5 * (rig.length - rise));
   }
   if (!(std::abs(s.b) < 1.0) || !(std::abs(s.b1) < 1.0)) {
-    std::snprintf(buf, sizeof buf, "b = %.4g and b1 = %.4g must lie in (-1, 1) (tether plane not perpendicular to "
-                  "a robot axis)", s.b, s.b1);
-    return buf;
+    return formatText("b = %.4g and b1 = %.4g must lie in (-1, 1) (tether plane not perpendicular to a robot axis)",
+                      s.b, s.b1);
   }
   const Catenary c = catenaryFromShape(sag, rise, rig.length);
   if (!c.fitsPaperModel()) return std::string(toString(c.regime)) + ": " + c.message;

@@ -1,8 +1,9 @@
 #include "tether/tether_parameters.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
+
+#include "core/text_format.hpp"
 
 namespace maris::tether {
 
@@ -10,11 +11,7 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string number(double v) { return formatText("%.6g", v); }
 
 SchemaBinder<LeaderLeg> legBinder() {
   SchemaBinder<LeaderLeg> b;

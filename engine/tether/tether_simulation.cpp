@@ -1,13 +1,13 @@
 #include "tether/tether_simulation.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <random>
 
 #include <Eigen/Geometry>
 
 #include "core/errors.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::tether {
 
@@ -166,10 +166,10 @@ SimulationOutput simulateTether(const TetherParameters& p, RunContext& context) 
       rec.cable_iterations = std::max(rec.cable_iterations, r.iterations);
       out.worst_constraint_error = std::max(out.worst_constraint_error, r.constraint_error);
       if (!r.converged || !std::isfinite(r.constraint_error)) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "link constraints not met after %d iterations (relative error %.3g); the ends "
-                      "moved too far in one sub-step of %.3g s", r.iterations, r.constraint_error, substep);
-        throw SolverError("cable link lengths", t + (s + 1) * substep, k, buf);
+        throw SolverError("cable link lengths", t + (s + 1) * substep, k,
+                          formatText("link constraints not met after %d iterations (relative error %.3g); the ends "
+                                     "moved too far in one sub-step of %.3g s",
+                                     r.iterations, r.constraint_error, substep));
       }
     }
     tether = tetherState(rig, follower, leader);

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
+
+#include "core/text_format.hpp"
 
 namespace maris::wec {
 
@@ -194,9 +195,7 @@ std::vector<PlotSpec> wecPlots(std::size_t n, bool have_td_points, bool have_aug
 }
 
 std::string powerMatrixColumn(double hs) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "power_hs_%gm", hs);
-  std::string name = buf;
+  std::string name = formatText("power_hs_%gm", hs);
   std::replace(name.begin(), name.end(), '.', 'p');
   return name;
 }

@@ -2,10 +2,10 @@
 // time-domain check points, main time-domain run(s) → Results.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 #include "core/scene.hpp"
+#include "core/text_format.hpp"
 #include "wec/wec_frequency.hpp"
 #include "wec/wec_parameters.hpp"
 #include "wec/wec_response.hpp"
@@ -17,12 +17,6 @@ namespace maris {
 namespace {
 
 using namespace maris::wec;
-
-std::string fmt(const char* format, double a, double b = 0.0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b);
-  return buf;
-}
 
 // Partial results for live plots: the finished part of the results, the tables being filled and the radiation
 // kernel table, with the final plot list, so a GUI draws them as it will draw the finished run (only fewer rows).
@@ -72,9 +66,9 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
   res.tables.push_back(sweepTable(omega, resp, omega_deep));
   res.tables.push_back(hydroTable(model, omega));
   if (p.omega_min < omega_deep && p.hydro_source == "hemisphere_hulme")
-    ctx.warn(fmt("below %.3g rad/s kh < pi at %.3g m depth: the deep-water Hulme coefficients are approximate there "
-                 "(finite depth lowers heave damping by several %%); see column deep_water",
-                 omega_deep, p.depth));
+    ctx.warn(formatText("below %.3g rad/s kh < pi at %.3g m depth: the deep-water Hulme coefficients are approximate there "
+                        "(finite depth lowers heave damping by several %%); see column deep_water",
+                        omega_deep, p.depth));
   for (std::size_t f = 0; f < model.floats.size(); ++f) {
     const std::string n = std::to_string(f + 1);
     const double wn = naturalFrequency(model, model.floats[f]);
@@ -241,7 +235,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   const double h_lim = rk4StabilityStep(model, base);
   res.addScalar("rk4_stability_step", h_lim, "s", "Estimated RK4 stability limit of the fastest mode");
   if (p.time_step > 0.8 * h_lim)
-    ctx.warn(fmt("time step %.3g s is close to or above the RK4 stability limit %.3g s", p.time_step, h_lim));
+    ctx.warn(formatText("time step %.3g s is close to or above the RK4 stability limit %.3g s", p.time_step, h_lim));
   addTimeDomainChecks(p, model, base, res, ctx, live);
 
   // Main run(s).
