@@ -274,12 +274,11 @@ double divergenceFlowSpeed(const RiserModel& model, const StaticSolution& static
 }
 
 std::string slowGrowthNote(int count, double growth_rate, double growth_per_radian) {
-  return formatText(
-                "%d linearised modes grow slowly (largest Re λ = %.2g 1/s, %.2g per radian, e-folding time %.2g s): "
-                "the discrete internal-flow force (curvature fit of eqs 47-49 with the Coriolis term) is not exactly "
-                "conservative on a coarse chain, an O(u³Δ³) artefact, not flutter of the pipe (docs/riser.md); "
-                "frequencies kept",
-                count, growth_rate, growth_per_radian, 1.0 / growth_rate);
+  return formatText("%d linearised modes grow slowly (largest Re λ = %.2g 1/s, %.2g per radian, e-folding time %.2g s): "
+                    "the discrete internal-flow force (curvature fit of eqs 47-49 with the Coriolis term) is not exactly "
+                    "conservative on a coarse chain, an O(u³Δ³) artefact, not flutter of the pipe (docs/riser.md); "
+                    "frequencies kept",
+                    count, growth_rate, growth_per_radian, 1.0 / growth_rate);
 }
 
 RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count, Formulation linearisation) {
