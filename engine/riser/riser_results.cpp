@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/text_format.hpp"
+
 namespace maris::riser {
 namespace {
 
@@ -348,6 +350,22 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
                                  {"bending_stress", "torsional_stress"}));
     out.plots.push_back(makePlot(t.name + "_shape", t.title + ": shape", t.name, "arc_length", {"x", "y"}));
   }
+  return out;
+}
+
+std::vector<std::string> accuracyWarnings(const Results& results) {
+  std::vector<std::string> out;
+  const Scalar* balance = results.findScalar("energy_balance_error");
+  if (balance && !(balance->value <= 0.05))
+    out.push_back(formatText("the energy balance is off by %.3g of the run's energy scale (energy_balance_error; an "
+                             "accurate run stays below 1e-3): the time integration is not accurate; lower "
+                             "solver.tolerance or solver.time_step, or use solver.integrator = implicit",
+                             balance->value));
+  const Scalar* estimate = results.findScalar("integrator_error_estimate");
+  if (estimate && !(estimate->value <= 0.1))
+    out.push_back(formatText("the integrator's own error estimate is %.3g (relative, integrator_error_estimate): the "
+                             "histories are not accurate; lower solver.tolerance or solver.time_step",
+                             estimate->value));
   return out;
 }
 

@@ -39,6 +39,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   }
   const SolverStats stats = integrateRiser(model, p, plan, y, recorder, context);
   Results results = recorder.finish(stats, statics.iterations, statics.residual);
+  for (std::string& w : accuracyWarnings(results)) context.warn(std::move(w));
   addEnvelope(model, results);
   addFrequencySweeps(p, results, context);  // paper Sect. 8.2 tables (no-op without sweep lists)
   // Without a time history the 3D view animates the mode shapes instead (one period per mode).

@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "riser/riser_implicit.hpp"
 #include "riser/riser_integration.hpp"
+#include "riser/riser_results.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
 
@@ -241,6 +242,44 @@ TEST(RiserTopMotion, TableReproducesTheHarmonicRunAtSecondOrder) {
   }
   EXPECT_GT(probe[0] / probe[1], 3.0) << probe[0] << " " << probe[1];
   EXPECT_LT(probe[1], 5e-4 * a);
+}
+
+// A run that ends without a failed step but whose own measures say it is inaccurate must say so (the user sees
+// only plots otherwise). Thresholds of accuracyWarnings: energy balance above 5 %, error estimate above 0.1.
+TEST(RiserAccuracyWarnings, NameTheMeasureThatIsOff) {
+  Results good;
+  good.addScalar("energy_balance_error", 1e-13, "-", "");
+  good.addScalar("integrator_error_estimate", 6e-4, "-", "");
+  EXPECT_TRUE(accuracyWarnings(good).empty());
+  // The DOPRI5 run at rtol 1e-3 on the 3D cable (A3, n = 100, 68 s): balance 0.999, estimate 171.
+  Results bad;
+  bad.addScalar("energy_balance_error", 0.999, "-", "");
+  bad.addScalar("integrator_error_estimate", 171.0, "-", "");
+  const std::vector<std::string> w = accuracyWarnings(bad);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_NE(w[0].find("energy_balance_error"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("0.999"), std::string::npos) << w[0];
+  EXPECT_NE(w[1].find("integrator_error_estimate"), std::string::npos) << w[1];
+  EXPECT_NE(w[1].find("171"), std::string::npos) << w[1];
+  Results broken;  // a NaN is not "within the bound"
+  broken.addScalar("energy_balance_error", std::nan(""), "-", "");
+  EXPECT_EQ(accuracyWarnings(broken).size(), 1u);
+}
+
+// End to end: generalized-α at T/5 on the 3D cable expects a probe error of C (h/T)² = 25/25 = 1 of the motion
+// (docs/riser.md): the scene warns; at T/50 (0.01) it does not.
+TEST(RiserAccuracyWarnings, CoarseImplicitStepIsReported) {
+  auto warnings = [](double step) {
+    RiserParameters p = test::implicitCable(10, step);
+    p.end_time = 4.0;
+    RunContext context;
+    solveRiser(p, context);
+    return context.warnings();
+  };
+  const std::vector<std::string> coarse = warnings(4.0 / 5);
+  ASSERT_FALSE(coarse.empty());
+  EXPECT_NE(coarse.back().find("integrator_error_estimate"), std::string::npos) << coarse.back();
+  for (const std::string& w : warnings(4.0 / 50)) EXPECT_EQ(w.find("integrator_error_estimate"), std::string::npos) << w;
 }
 
 }  // namespace
