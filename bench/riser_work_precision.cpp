@@ -23,8 +23,9 @@
 // MARIS_BENCH_VARIANTS / MARIS_BENCH_METHODS = comma lists restricting (and ordering) variants and methods,
 // MARIS_BENCH_ESTIMATE_ONLY=1 prints the estimates and runs nothing, MARIS_BENCH_SKIPPED_ONLY=1 writes only the
 // rows skipped for their estimated cost (their notes), without integrating anything; MARIS_BENCH_RERUN_SKIPPED=1
-// runs only the settings whose row in out.csv was skipped for its estimated cost (with a larger row budget: filling
-// in the costly explicit rows at large n without re-running the others).
+// runs only the settings whose row in out.csv was skipped for its estimated cost or is absent (with a larger row
+// budget: filling in the costly explicit rows at large n, and rows earlier restricted runs left out, without
+// re-running the others).
 // Integrators: RK4 at 0.9, 0.45, 0.225 x its stability estimate, DOPRI5 rtol 1e-3/1e-6/1e-8, and the scene's
 // implicit generalized-alpha (riser_integration) at T/25, T/50, T/100, T/200 of the top-motion period.
 // Plot: bench/tools/work_precision_plot (built with the GUI) renders the CSV to PNG with the GUI's plot
@@ -224,7 +225,7 @@ struct Options {
   bool merge = false;                 // merge the rows into an existing `out` (replacing rows of the same key)
   bool estimate_only = false;         // print the estimated cost of every run, run nothing
   bool skipped_only = false;          // write only the rows skipped for their estimated cost (no integration)
-  bool rerun_skipped = false;         // run only the settings whose merged-into row was skipped for its cost
+  bool rerun_skipped = false;         // run only the settings whose merged-into row was skipped for cost or is absent
   double budget = 180.0;              // [s] CPU: runs estimated above it are skipped with a note
   double reference_budget = 180.0;    // [s] CPU: the most accurate same-n reference estimated within it is taken
   std::vector<std::string> variants = {"J2", "J3", "A2", "A3"};  // in run order
@@ -287,13 +288,13 @@ class RowWriter {
     write(loadAverage() + " (still running)");
   }
   void finish() { write(loadAverage()); }
-  // Whether the row of `key`'s case, variant, n, method and setting in the merged-into CSV was skipped for its
-  // estimated cost.
-  bool wasSkippedForCost(const bench::WorkPrecisionRow& key) const {
+  // Whether the merged-into CSV has no row of `key`'s case, variant, n, method and setting, or one skipped for
+  // its estimated cost.
+  bool skippedForCostOrAbsent(const bench::WorkPrecisionRow& key) const {
     const std::string k = bench::workPrecisionKey(key);
     for (const auto& r : old_)
-      if (bench::workPrecisionKey(r) == k && r.note.rfind("skipped: estimated", 0) == 0) return true;
-    return false;
+      if (bench::workPrecisionKey(r) == k) return r.note.rfind("skipped: estimated", 0) == 0;
+    return true;
   }
   void setHeader(const std::string& header) { header_ = header; }
 
@@ -441,7 +442,7 @@ int main(int argc, char** argv) {
           });
         if (opt.rerun_skipped)
           std::erase_if(settings, [&](const auto& m) {
-            return !writer.wasSkippedForCost(Row{c.name, v.name, m.first, n, m.second, 0, 0, 0.0, 0.0, 0.0, 0, "", ""});
+            return !writer.skippedForCostOrAbsent(Row{c.name, v.name, m.first, n, m.second, 0, 0, 0.0, 0.0, 0.0, 0, "", ""});
           });
         if (settings.empty()) continue;  // nothing to run at this n: no same-n reference either
         if (opt.estimate_only) {

@@ -18,7 +18,7 @@
 #              tables and PNGs are redrawn from the whole CSV and the log is appended to,
 #              MARIS_BENCH_ROW_BUDGET: CPU seconds per run above which a run is skipped with a note giving
 #              its estimated cost (default 180), MARIS_BENCH_ESTIMATE_ONLY=1: print the estimates only,
-#              MARIS_BENCH_RERUN_SKIPPED=1: run only the rows the CSV has as skipped for their cost (with a
+#              MARIS_BENCH_RERUN_SKIPPED=1: run only the rows the CSV has as skipped for cost or lacks (with a
 #              larger MARIS_BENCH_ROW_BUDGET; MARIS_BENCH_REFERENCE_BUDGET=180 keeps the same-n references),
 #              MARIS_BENCH_PLOT_CASE5_N / MARIS_BENCH_PLOT_CABLE_N: n of the per-n PNGs (default 100 and 50).
 # Example (the n = 400 rows): MARIS_BENCH_NLIST=400 MARIS_BENCH_CABLE_NLIST=100,200,400 scripts/bench_riser.sh
