@@ -138,6 +138,18 @@ void addBottomSpring(const RiserModel& m, const RiserPose& pose, SegmentLoads& l
   loads.power_damping -= m.spring_damping * pose.end_velocity.squaredNorm();
 }
 
+void addRelaxationDamping(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads) {
+  for (int i = 0; i <= m.n; ++i) {
+    const Mat3& r = pose.rotation[i];
+    Vec6 v;
+    v << r.transpose() * pose.velocity[i], r.transpose() * pose.omega[i];
+    const Vec6 f = -m.relaxation_damping * (m.segments[i].mass_local * v);
+    loads.force[i] += r * f.head<3>();
+    loads.moment[i] += r * f.tail<3>();
+    loads.power_damping += f.dot(v);
+  }
+}
+
 void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
   for (int i = 0; i <= m.n; ++i) {
     loads.force[i].setZero();
@@ -151,6 +163,7 @@ void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, Seg
   if (!m.point_loads.empty()) addPointLoads(m, pose, factor, loads);
   if (m.flow_speed != 0.0) addInternalFlow(m, pose, loads);
   if (m.bottom == BottomCondition::Spring) addBottomSpring(m, pose, loads);
+  if (m.relaxation_damping > 0) addRelaxationDamping(m, pose, loads);
 }
 
 double springEnergy(const RiserModel& m, const RiserPose& pose) {

@@ -64,6 +64,10 @@ void addPointLoads(const RiserModel& m, const RiserPose& pose, double factor, Se
 // Bottom spring (and damper) to the anchor, for BottomCondition::Spring.
 void addBottomSpring(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads);
 
+// Mass-proportional damping −c M_i (v_i, ω_i) of every segment (c = m.relaxation_damping): drains 2c times the
+// kinetic energy per second from every mode alike. Only statics by dynamic relaxation switches it on.
+void addRelaxationDamping(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads);
+
 // All loads at `pose`; `factor` scales the external loads (gravity, drag, point loads) for load stepping.
 void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads);
 

@@ -84,6 +84,7 @@ struct RiserModel {
   Formulation formulation = Formulation::Joint;
   bool torsion = true;
   double stiffness_damping = 0.0;  // [s] β of the spring dampers (B = β C)
+  double relaxation_damping = 0.0; // [1/s] c of a mass-proportional damper −c M v: statics' dynamic relaxation only
   TopCondition top = TopCondition::Tensioner;
   BottomCondition bottom = BottomCondition::Pinned;
   int first_dynamic = 0;         // 1 when the top is clamped (segment 0 moves with the top)

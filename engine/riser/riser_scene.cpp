@@ -39,6 +39,8 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   }
   const SolverStats stats = integrateRiser(model, p, plan, y, recorder, context);
   Results results = recorder.finish(stats, statics.iterations, statics.residual);
+  results.addScalar("statics_relaxation_time", statics.relaxation_time, "s",
+                    "Damped motion (dynamic relaxation) before the static Newton converged; 0: none needed");
   for (std::string& w : accuracyWarnings(results)) context.warn(std::move(w));
   addEnvelope(model, results);
   addFrequencySweeps(p, results, context);  // paper Sect. 8.2 tables (no-op without sweep lists)

@@ -11,6 +11,7 @@
 #include "core/text_format.hpp"
 #include "riser/riser_dynamics.hpp"
 #include "riser/riser_joint_newton.hpp"
+#include "riser/riser_relaxation.hpp"
 
 namespace maris::riser {
 namespace {
@@ -228,7 +229,7 @@ Configuration configurationOf(const RiserModel& m, const Eigen::VectorXd& y, con
 // (30 m, n = 100, current at 45°) takes 142 damped iterations from its sagging arc, 1 s; a cap of 100 sent it
 // to the dense path, which failed after 28 s.
 bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration& x, int& iterations,
-                  double& residual_norm, RunContext& context) {
+                  double& residual_norm, RunContext& context, int max_iterations = 1000) {
   RiserModel m = model;
   m.formulation = Formulation::Joint;
   constexpr double kRate = 1.0;                    // [1/s] bottom Baumgarte rate: only α²Φ = 0 matters
@@ -240,7 +241,7 @@ bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration
   problem.fitEndReaction(x, 1.0);
   Eigen::VectorXd r = problem.residual(x, 1.0);
   double dq = kFirst, ceiling = kLargest;
-  for (int it = 0; it < 1000; ++it) {
+  for (int it = 0; it < max_iterations; ++it) {
     residual_norm = r.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(residual_norm)) return false;
     // Below the dense path's tolerance by 1e-3: that path converges quadratically and ends far below it
@@ -291,6 +292,41 @@ bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration
   return residual_norm < kTolerance;
 }
 
+// Dynamic relaxation (riser_relaxation) when the O(n) Newton fails from the initial shape: damped motion one
+// pendulum period at a time, then the O(n) Newton from the shape reached once its scaled residual is below
+// kHandOver (at most 100 iterations each try). Gives up after kPeriods periods or if the motion fails. The slack
+// 3D cable held at both ends (n = 200, 1000) reaches a residual of 1e-8 in one period (11 s, 390-490 steps,
+// most of them halved: Newton, not the step, sets their number) and Newton converges in 9-44 iterations.
+bool relaxThenNewton(const RiserModel& m, StaticProblem& problem, Configuration& x, StaticSolution& out,
+                     double& residual, RunContext& context) {
+  constexpr int kPeriods = 30;
+  constexpr double kHandOver = 1e-3;
+  DampedRelaxation relax(m);
+  Eigen::VectorXd y = restState(relax.model(), x.orientation, x.top);
+  for (int k = 0; k < kPeriods; ++k) {
+    context.progress(0.05 + 0.9 * k / kPeriods, "statics: dynamic relaxation");
+    try {
+      relax.advance(y, relax.period(), context);
+    } catch (const SolverError&) {
+      return false;  // the motion itself failed: the dense path may still find the equilibrium
+    }
+    out.relaxation_time = relax.time();
+    out.relaxation_steps = relax.steps();
+    Configuration trial = configurationOf(relax.model(), y, x);
+    problem.fitEndReaction(trial, 1.0);
+    const double shape_residual = problem.residual(trial, 1.0).lpNorm<Eigen::Infinity>();
+    if (!(shape_residual < kHandOver)) continue;
+    int iterations = 0;
+    const bool ok = bandedNewton(m, problem, trial, iterations, residual, context, 100);
+    out.iterations += iterations;
+    if (ok) {
+      x = std::move(trial);
+      return true;
+    }
+  }
+  return false;
+}
+
 // The model held at its t = 0 top position with no top motion: a prescribed top acceleration at t = 0 (a
 // clamped spline table, or harmonic motion without a ramp) would otherwise enter a(q) and no shape would
 // have a(q) = 0 (riser_top_motion_table fell back to the dense path for this), and a top velocity the drag.
@@ -310,18 +346,32 @@ StaticSolution solveStatics(const RiserModel& model, RunContext& context, Static
   Configuration x{m.initial_orientation, m.initial_top, Vec3::Zero()};
   StaticSolution out;
   double done = 0.0, increment = 1.0, residual = 0.0;
-  // O(n) first; the dense Newton with load continuation only if that fails (from the initial shape again).
+  // O(n) Newton first, then dynamic relaxation and the O(n) Newton from where it ends; the dense Newton with load
+  // continuation only if both fail (from the initial shape again).
   if (method == StaticMethod::Automatic) {
     Configuration fast = x;
-    if (bandedNewton(m, problem, fast, out.iterations, residual, context)) {
+    bool found = bandedNewton(m, problem, fast, out.iterations, residual, context);
+    if (!found) {
+      const int tried = out.iterations;
+      fast = x;
+      found = relaxThenNewton(m, problem, fast, out, residual, context);
+      if (found)
+        context.warn(formatText("statics: the O(n) Newton did not converge from the initial shape (%d iterations); "
+                              "equilibrium reached by dynamic relaxation (%.3g s of damped motion, %ld steps) "
+                              "and the O(n) Newton from there",
+                              tried, out.relaxation_time, out.relaxation_steps));
+    }
+    if (found) {
       x = std::move(fast);
       done = 1.0;
       out.load_steps = 1;
       out.banded = true;
     } else {
       // Say so: the fallback is O(n³) per iteration, minutes at n ≈ 1000.
-      context.warn("statics: the O(n) Newton did not converge at full load (" + std::to_string(out.iterations) +
-                   " iterations); used the dense Newton with load continuation, O(n³) per iteration");
+      context.warn(formatText("statics: the O(n) Newton did not converge at full load, nor after %.3g s of dynamic "
+                              "relaxation (%d iterations in all); used the dense Newton with load continuation, "
+                              "O(n³) per iteration",
+                              out.relaxation_time, out.iterations));
     }
   }
   while (done < 1.0) {

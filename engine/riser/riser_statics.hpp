@@ -17,6 +17,8 @@ struct StaticSolution {
   int load_steps = 0;              // accepted load levels (1 when full load converged at once)
   double residual = 0.0;           // [-] final scaled residual (max norm)
   bool banded = false;             // true: the O(n) Newton found it (no dense fallback)
+  double relaxation_time = 0.0;    // [s] damped motion before the O(n) Newton converged (0: none needed)
+  long relaxation_steps = 0;       // its time steps
 };
 
 enum class StaticMethod {
