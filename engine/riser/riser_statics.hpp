@@ -28,7 +28,9 @@ enum class StaticMethod {
 
 // Statics of the model at rest at its t = 0 top position (prescribed top motion removed).
 // First an O(n) Newton at full load (pseudo-time steps with the joint Newton matrix of riser_joint_newton, damped
-// by the natural monotonicity test, see riser_statics.cpp); only if that fails, the dense method below.
+// by the natural monotonicity test, see riser_statics.cpp); if that fails from the initial shape, dynamic
+// relaxation (riser_relaxation: damped motion, O(n) per step) and the same Newton from where it ends (warned);
+// only if both fail, the dense method below (warned).
 // Dense: Newton's method on the generalised forces of joint coordinates: unknowns are a rotation
 // increment per dynamic segment (2 without torsion), the free top coordinates (tensioner: z) and,
 // for a pinned/clamped bottom, the end reaction as Lagrange multiplier. Residuals: for each segment
