@@ -60,7 +60,6 @@ void DampedRelaxation::advance(Eigen::VectorXd& y, double duration, RunContext& 
     RunContext quiet;
     const OdeStats st = integrateGeneralizedAlpha(system, q, v, options, alpha, quiet, nullptr, &carried);
     steps_ += st.steps;
-    rejected_ += st.rejected_steps;
     chart.toState(q, v, y);
     normaliseState(m_, y);
     time_ = chunk_end;

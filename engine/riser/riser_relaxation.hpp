@@ -27,12 +27,11 @@ class DampedRelaxation {
   double period() const { return period_; }       // [s] 2π√(L/g)
   double time() const { return time_; }           // [s] damped motion so far
   long steps() const { return steps_; }
-  long rejectedSteps() const { return rejected_; }
 
  private:
   RiserModel m_;
   double period_ = 0.0, step_ = 0.0, time_ = 0.0;
-  long steps_ = 0, rejected_ = 0;
+  long steps_ = 0;
 };
 
 }  // namespace maris::riser
