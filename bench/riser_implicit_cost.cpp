@@ -66,7 +66,7 @@ Outcome run(const RiserParameters& p) {
   const double t0 = bench::threadCpuSeconds();
   out.stats = integrateRiser(m, p, plan, y, recorder, ctx);
   out.cpu = bench::threadCpuSeconds() - t0;
-  const Results r = recorder.finish(out.stats, 0, 0.0);
+  const Results r = recorder.finish(out.stats, s);
   const Table* h = r.findTable("history");
   const auto& time = h->find("time")->values;
   const Column* d[3] = {h->find("probe_dx"), h->find("probe_dy"), h->find("probe_dz")};

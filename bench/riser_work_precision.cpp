@@ -108,7 +108,7 @@ Run integrateImplicit(const RiserModel& m, RiserParameters p, const StaticSoluti
   run.cpu = bench::threadCpuSeconds() - t0;
   run.rhs = st.rhs_evaluations;
   run.steps = st.steps;
-  const Results r = recorder.finish(st, 0, 0.0);
+  const Results r = recorder.finish(st, s);
   const Table* h = r.findTable("history");
   const auto& time = h->find("time")->values;
   const Column* d[3] = {h->find("probe_dx"), h->find("probe_dy"), h->find("probe_dz")};

@@ -5,11 +5,8 @@
 #include <optional>
 #include <sstream>
 
-#include "core/errors.hpp"
 #include "core/ode.hpp"
-#include "riser/riser_implicit.hpp"
-#include "riser/riser_joint_newton.hpp"
-#include "riser/riser_newton.hpp"
+#include "riser/riser_charted_alpha.hpp"
 
 namespace maris::riser {
 namespace {
@@ -109,51 +106,8 @@ void integrateExplicit(const RiserModel& m, const RiserParameters& p, const Inte
 void integrateImplicit(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
                        const std::vector<Sample>& samples, Eigen::VectorXd& y, RiserRecorder& recorder,
                        RunContext& context, SolverStats& stats) {
-  RotationVectorChart chart(m, plan.stabilisation_rate);
-  SecondOrderSystem system;
-  system.size = chart.size();
-  system.passive_coordinates = kWorkIntegrals;  // the chart's last coordinates (riser_implicit.hpp)
-  system.residual = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
-                        Eigen::VectorXd& r) {
-    context.throwIfCancelled();
-    chart.residual(t, q, v, acc, r);
-  };
-  // The O(n) Newton matrices below give the work-integral rows the identity (the powers feed back into
-  // nothing), so their corrections lag one iteration behind; as passive coordinates they are left out of the
-  // convergence test. Counted in, they failed steps whose motion had converged: the top's work has an
-  // absolute tolerance at the start of a run (W ≈ 0) and its power carries the stiff top reaction (case 5,
-  // A3, n = 400, h = 50 ms: 12 rejected steps in the first 0.15 s). The motion is the same either way; the
-  // work integrals agree to 1e-16 relative with those of an exact completion of their rows.
-  const bool joint = m.formulation == Formulation::Joint;
-  // Absolute coordinates: O(n) force-space Newton matrix; joint coordinates: the same through an absolute
-  // twin of the model (riser_joint_newton), also O(n). Neither forms the dense N×N matrix.
-  // Absolute coordinates: the joints are also projected back together after every step (closed by
-  // translation down the chain, a held bottom's mismatch spread over turns of all segments), so Baumgarte
-  // only has to hold the remainder within a step and the top's velocity.
-  std::optional<ForceSpaceNewtonMatrix> newton;
-  std::optional<JointNewtonMatrix> joint_newton;
-  RiserWorkspace projection_ws = makeWorkspace(m, 0.0);
-  Eigen::VectorXd projected;
-  if (joint) {
-    joint_newton.emplace(m, chart, plan.stabilisation_rate);
-    system.solve_iteration_matrix = [&](const IterationMatrixRequest& request, Eigen::VectorXd& rhs) {
-      context.throwIfCancelled();
-      return joint_newton->solve(request, rhs);
-    };
-  } else {
-    newton.emplace(m, chart);
-    system.solve_iteration_matrix = [&](const IterationMatrixRequest& request, Eigen::VectorXd& rhs) {
-      context.throwIfCancelled();
-      return newton->solve(request, rhs);
-    };
-    system.project_step = [&](double t, Eigen::VectorXd& q, Eigen::VectorXd& v) {
-      chart.toState(q, v, projected);
-      projectConstraints(m, projection_ws, t, projected, 1);
-      chart.fromState(projected, q, v);
-    };
-  }
+  ChartedGeneralizedAlpha integrator(m, plan.stabilisation_rate);
   OdeOptions options;
-  options.state_name = [&](Eigen::Index k) { return chart.name(k); };
   // Newton tolerance: at most 1e-6, whatever accuracy is asked of the step. A loose Newton tolerance spoils the
   // step's own accuracy (case 5, J3, 50 ms: probe error 1.6e-2 with Newton at 1e-3, 9.7e-4 at 1e-6, 9.48e-4 at 1e-8).
   options.rtol = std::min(p.tolerance, kLooseNewtonTolerance);
@@ -161,47 +115,19 @@ void integrateImplicit(const RiserModel& m, const RiserParameters& p, const Inte
   options.step = plan.step;
   options.min_step = plan.step * 1e-6;
   options.output_interval = p.end_time / kHistorySamples;
-  GeneralizedAlphaOptions alpha;
+  const GeneralizedAlphaOptions alpha;
   const double end = p.end_time;
-  Eigen::VectorXd q, v, state;
-  // The chart is reset at every chunk; the integrator's accelerations go on across (GeneralizedAlphaState).
-  GeneralizedAlphaState carried;
   double t = 0.0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const Sample& s = samples[k];
     if (!s.frame && !s.profile && k + 1 < samples.size()) continue;  // sampled by the observer
-    if (carried.acceleration.size() > 0) {
-      chart.rebaseAccelerations(q, v, carried.acceleration);
-      chart.rebaseAccelerations(q, v, carried.pseudo_acceleration);
-    }
-    chart.reset(y, q, v);
     options.t0 = t;
     options.t1 = s.t;
-    RunContext chunk([&](double f, const std::string& stage) { context.progress((t + f * (s.t - t)) / end, stage); },
-                     nullptr);
-    const double t_end = s.t;
-    const SecondOrderObserver observer = [&](double to, const Eigen::VectorXd& qo, const Eigen::VectorXd& vo,
-                                             const Eigen::VectorXd&) {
-      if (to <= options.t0 + 1e-9 * end || to >= t_end - 1e-9 * end) return;
-      chart.toState(qo, vo, state);
-      recorder.sample(to, state, false, std::nullopt);
-    };
-    OdeStats st;
-    try {
-      st = integrateGeneralizedAlpha(system, q, v, options, alpha, chunk, observer, &carried);
-    } catch (const SolverError& e) {
-      // Step counted from the start of the run; an iterate beyond the rotation-vector chart at the failing
-      // time is named as the quantity (the core only sees its NaN residual).
-      const auto& overflow = chart.chartOverflow();
-      const bool off_chart = overflow.t == e.time();
-      throw SolverError(off_chart ? overflow.quantity : e.quantity(), e.time(), stats.steps + std::max(e.step(), 0L),
-                        off_chart ? overflow.detail + " in every Newton iteration down to the smallest step (" +
-                                        e.detail() + "); shorten the chunks (raise output.frame_count) or the step"
-                                  : e.detail());
-    }
+    const OdeStats st = integrator.advance(
+        y, options, alpha, context,
+        [&](double f, const std::string& stage) { context.progress((t + f * (s.t - t)) / end, stage); },
+        [&](double to, const Eigen::VectorXd& state) { recorder.sample(to, state, false, std::nullopt); });
     accumulate(stats, st);
-    chart.toState(q, v, y);
-    normaliseState(m, y);
     t = s.t;
     recorder.sample(t, y, s.frame, s.profile);
   }

@@ -5,9 +5,12 @@
 // instead of Newton's linearisation. Statics then finishes by Newton from the shape the motion reaches.
 #pragma once
 
+#include <memory>
+
 #include <Eigen/Core>
 
 #include "core/run_context.hpp"
+#include "riser/riser_charted_alpha.hpp"
 #include "riser/riser_model.hpp"
 
 namespace maris::riser {
@@ -18,6 +21,8 @@ class DampedRelaxation {
   // The damper c = 2√(g/L) [1/s] is critical for a pendulum of the chain's length; the step is a 40th of that
   // pendulum's period; generalized-α's numerical damping (ρ∞ = 0.8) takes the modes far above it.
   explicit DampedRelaxation(const RiserModel& at_rest);
+  DampedRelaxation(const DampedRelaxation&) = delete;  // the integrator refers to m_
+  DampedRelaxation& operator=(const DampedRelaxation&) = delete;
 
   // Advances the joint state y (riser_dynamics layout of the joint model) by `duration` s of damped motion.
   // Throws SolverError if the motion fails (naming time, step and quantity).
@@ -26,12 +31,12 @@ class DampedRelaxation {
   const RiserModel& model() const { return m_; }  // the joint model with the damper
   double period() const { return period_; }       // [s] 2π√(L/g)
   double time() const { return time_; }           // [s] damped motion so far
-  long steps() const { return steps_; }
+  long steps() const { return integrator_->steps(); }
 
  private:
   RiserModel m_;
+  std::unique_ptr<ChartedGeneralizedAlpha> integrator_;  // refers to m_
   double period_ = 0.0, step_ = 0.0, time_ = 0.0;
-  long steps_ = 0;
 };
 
 }  // namespace maris::riser

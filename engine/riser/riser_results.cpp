@@ -295,7 +295,7 @@ void RiserRecorder::addModes(const RiserModes& modes) {
   r_.tables.push_back(std::move(shapes));
 }
 
-Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, double statics_residual) {
+Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& statics) {
   Results out = std::move(r_);
   out.stats = stats;
   const double scale = std::max(energy_scale_, 1e-300);
@@ -334,8 +334,10 @@ Results RiserRecorder::finish(const SolverStats& stats, int statics_iterations, 
   out.addScalar("energy_balance_error", balance_max_ / scale, "-",
                 "max |E(t) - E(0) - W_drag - W_damping - W_boundary| relative to the energy scale of the run");
   out.addScalar("constraint_drift", drift_max_, "m", "Largest constraint violation |Φ| (bottom end; A: all joints)");
-  out.addScalar("statics_iterations", statics_iterations, "-", "Newton iterations of the static solution");
-  out.addScalar("statics_residual", statics_residual, "-", "Final scaled residual of the static solution");
+  out.addScalar("statics_iterations", statics.iterations, "-", "Newton iterations of the static solution");
+  out.addScalar("statics_residual", statics.residual, "-", "Final scaled residual of the static solution");
+  out.addScalar("statics_relaxation_time", statics.relaxation_time, "s",
+                "Damped motion (dynamic relaxation) before the static Newton converged; 0: none needed");
   out.addScalar("steps", static_cast<double>(stats.steps), "-", "Accepted time steps");
   out.addScalar("rhs_evaluations", static_cast<double>(stats.rhs_evaluations), "-", "Right-hand side evaluations");
   out.addScalar("integrator_error_estimate", stats.error_estimate, "-",

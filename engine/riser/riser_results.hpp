@@ -13,6 +13,7 @@
 #include "riser/riser_dynamics.hpp"
 #include "riser/riser_modes.hpp"
 #include "riser/riser_parameters.hpp"
+#include "riser/riser_statics.hpp"
 
 namespace maris::riser {
 
@@ -46,8 +47,9 @@ class RiserRecorder {
   void publishPartialsTo(RunContext* context) { live_ = context; }
   // Natural frequencies and mode shapes about the static state: tables "modes" and "mode_shapes".
   void addModes(const RiserModes& modes);
-  // Results with everything recorded, the statics summary and the solver statistics.
-  Results finish(const SolverStats& stats, int statics_iterations, double statics_residual);
+  // Results with everything recorded, the summary of the static solution the run started from and the solver
+  // statistics.
+  Results finish(const SolverStats& stats, const StaticSolution& statics);
 
  private:
   const RiserModel& m_;

@@ -38,9 +38,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
                    std::to_string(modes.divergence_flow_speed) + " m/s (or in flutter)");
   }
   const SolverStats stats = integrateRiser(model, p, plan, y, recorder, context);
-  Results results = recorder.finish(stats, statics.iterations, statics.residual);
-  results.addScalar("statics_relaxation_time", statics.relaxation_time, "s",
-                    "Damped motion (dynamic relaxation) before the static Newton converged; 0: none needed");
+  Results results = recorder.finish(stats, statics);
   for (std::string& w : accuracyWarnings(results)) context.warn(std::move(w));
   addEnvelope(model, results);
   addFrequencySweeps(p, results, context);  // paper Sect. 8.2 tables (no-op without sweep lists)
