@@ -6,15 +6,27 @@
 
 namespace maris::riser {
 
-DampedRelaxation::DampedRelaxation(const RiserModel& at_rest) : m_(at_rest) {
-  m_.formulation = Formulation::Joint;
-  const double g = m_.gravity > 0 ? m_.gravity : 9.81;
-  const double rate = std::sqrt(g / std::max(m_.length, 1e-6));  // [rad/s] pendulum of the chain's length
-  m_.relaxation_damping = 2 * rate;
-  period_ = 2 * std::numbers::pi / rate;
-  step_ = period_ / 40;
-  integrator_ = std::make_unique<ChartedGeneralizedAlpha>(m_, 1.0 / step_);  // Baumgarte rate as the dynamics
+namespace {
+
+double pendulumRate(const RiserModel& m) {  // [rad/s] of a pendulum of the chain's length
+  const double g = m.gravity > 0 ? m.gravity : 9.81;
+  return std::sqrt(g / std::max(m.length, 1e-6));
 }
+
+RiserModel dampedJointModel(const RiserModel& at_rest) {
+  RiserModel m = at_rest;
+  m.formulation = Formulation::Joint;
+  m.relaxation_damping = 2 * pendulumRate(m);
+  return m;
+}
+
+}  // namespace
+
+DampedRelaxation::DampedRelaxation(const RiserModel& at_rest)
+    : m_(dampedJointModel(at_rest)),
+      period_(2 * std::numbers::pi / pendulumRate(m_)),
+      step_(period_ / 40),
+      integrator_(m_, 1.0 / step_) {}  // Baumgarte rate as the implicit dynamics use
 
 void DampedRelaxation::advance(Eigen::VectorXd& y, double duration, RunContext& context) {
   OdeOptions options;
@@ -29,7 +41,7 @@ void DampedRelaxation::advance(Eigen::VectorXd& y, double duration, RunContext& 
   while (time_ < end - 1e-9 * period_) {
     options.t0 = time_;
     options.t1 = std::min(end, time_ + period_);
-    integrator_->advance(y, options, alpha, context);
+    integrator_.advance(y, options, alpha, context);
     time_ = options.t1;
     alpha.startup_halvings = 0;
   }

@@ -5,8 +5,6 @@
 // instead of Newton's linearisation. Statics then finishes by Newton from the shape the motion reaches.
 #pragma once
 
-#include <memory>
-
 #include <Eigen/Core>
 
 #include "core/run_context.hpp"
@@ -31,12 +29,14 @@ class DampedRelaxation {
   const RiserModel& model() const { return m_; }  // the joint model with the damper
   double period() const { return period_; }       // [s] 2π√(L/g)
   double time() const { return time_; }           // [s] damped motion so far
-  long steps() const { return integrator_->steps(); }
+  long steps() const { return integrator_.steps(); }
 
  private:
+  // In this order: each is made from the ones above it.
   RiserModel m_;
-  std::unique_ptr<ChartedGeneralizedAlpha> integrator_;  // refers to m_
-  double period_ = 0.0, step_ = 0.0, time_ = 0.0;
+  double period_ = 0.0, step_ = 0.0;
+  ChartedGeneralizedAlpha integrator_;  // refers to m_
+  double time_ = 0.0;
 };
 
 }  // namespace maris::riser
