@@ -25,8 +25,15 @@ Mat3 expMap(const Vec3& theta) {
 // Rotations above this within one chunk mean the chunk is far too long for the chart (J_r is singular at 2π).
 constexpr double kLargestChartRotation = 5.0;  // [rad]
 
-// J̇_r θ̇ by a central difference along θ̇ (step 1e-4 rad: error ~1e-8 relative).
-Vec3 rightJacobianRate(const Vec3& theta, const Vec3& rate);
+// Ṁ θ̇ of chartRateMap by a central difference along θ̇ (step 1e-4 rad: error ~1e-8 relative).
+Vec3 rateMapRate(ChartKind kind, const Vec3& theta, const Vec3& rate) {
+  const double speed = rate.norm();
+  if (!(speed > 0)) return Vec3::Zero();
+  const double eps = 1e-4 / speed;
+  return (chartRateMap(kind, theta + eps * rate) - chartRateMap(kind, theta - eps * rate)) * rate / (2 * eps);
+}
+
+Mat3 spinTurn(double angle) { return Mat3(Eigen::AngleAxisd(angle, Vec3::UnitX())); }
 
 }  // namespace
 
@@ -39,8 +46,34 @@ Mat3 rightJacobian(const Vec3& theta) {
   return Mat3::Identity() - c1 * k + c2 * k * k;
 }
 
+Mat3 chartTurn(ChartKind kind, const Vec3& theta) {
+  if (kind == ChartKind::RotationVector) return expMap(theta);
+  return expMap(Vec3(0, theta.y(), theta.z())) * spinTurn(theta.x());
+}
+
+Mat3 chartRateMap(ChartKind kind, const Vec3& theta) {
+  if (kind == ChartKind::RotationVector) return rightJacobian(theta);
+  Mat3 m = spinTurn(theta.x()).transpose() * rightJacobian(Vec3(0, theta.y(), theta.z()));
+  m.col(0) = Vec3::UnitX();
+  return m;
+}
+
+Vec3 chartCoordinates(ChartKind kind, const Mat3& turn) {
+  if (turn == Mat3::Identity()) return Vec3::Zero();
+  if (kind == ChartKind::RotationVector) {
+    const Eigen::AngleAxisd a(turn);
+    return a.angle() * a.axis();
+  }
+  // The swing turns e_x to the axis t about e_x × t; atan2 keeps the angle accurate near 0 and π.
+  const Vec3 axis = turn.col(0), normal = Vec3::UnitX().cross(axis);
+  const double sine = normal.norm();
+  const Vec3 swing = sine > 0 ? Vec3(std::atan2(sine, axis.x()) * normal / sine) : Vec3::Zero();
+  const Mat3 spin = expMap(swing).transpose() * turn;
+  return {std::atan2(spin(2, 1), spin(1, 1)), swing.y(), swing.z()};
+}
+
 RotationVectorChart::RotationVectorChart(const RiserModel& m, double stabilisation_rate)
-    : m_(m), ws_(makeWorkspace(m, stabilisation_rate)) {
+    : m_(m), kind_(m.torsion ? ChartKind::RotationVector : ChartKind::SwingTwist), ws_(makeWorkspace(m, stabilisation_rate)) {
   const int segments = m.last_dynamic - m.first_dynamic + 1;
   per_segment_ = m.formulation == Formulation::Joint ? 3 : 6;
   work_ = 3 + static_cast<Eigen::Index>(segments) * per_segment_;
@@ -73,15 +106,11 @@ void RotationVectorChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
     const Eigen::Quaterniond quat(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
     const Mat3 rot = quat.normalized().toRotationMatrix();
-    // At the reference (right after reset) θ is exactly 0 and J_r = I, so ω' = Rᵀω unchanged; the
+    // At the reference (right after reset) θ is exactly 0 and M = I, so ω' = Rᵀω unchanged; the
     // angle-axis of Rᵀ·R would give a round-off angle with an arbitrary axis instead.
-    Vec3 theta = Vec3::Zero();
-    if (rot != reference_[k]) {
-      const Eigen::AngleAxisd turn(reference_[k].transpose() * rot);
-      theta = turn.angle() * turn.axis();
-    }
+    const Vec3 theta = rot == reference_[k] ? Vec3::Zero() : chartCoordinates(kind_, reference_[k].transpose() * rot);
     q.segment<3>(gt) = theta;
-    v.segment<3>(gt) = rightJacobian(theta).lu().solve(rot.transpose() * y.segment<3>(joint ? o + 4 : o + 10));
+    v.segment<3>(gt) = chartRateMap(kind_, theta).lu().solve(rot.transpose() * y.segment<3>(joint ? o + 4 : o + 10));
     if (!joint) {
       q.segment<3>(g) = y.segment<3>(o);
       v.segment<3>(g) = y.segment<3>(o + 7);
@@ -101,10 +130,10 @@ void RotationVectorChart::toState(const Eigen::VectorXd& q, const Eigen::VectorX
     const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
     const Vec3 theta = q.segment<3>(gt);
-    const Mat3 r = reference_[k] * expMap(theta);
+    const Mat3 r = reference_[k] * chartTurn(kind_, theta);
     const Eigen::Quaterniond quat(r);
     y.segment<4>(oq) << quat.w(), quat.x(), quat.y(), quat.z();
-    y.segment<3>(joint ? o + 4 : o + 10) = r * (rightJacobian(theta) * v.segment<3>(gt));
+    y.segment<3>(joint ? o + 4 : o + 10) = r * (chartRateMap(kind_, theta) * v.segment<3>(gt));
     if (!joint) {
       y.segment<3>(o) = q.segment<3>(g);
       y.segment<3>(o + 7) = v.segment<3>(g);
@@ -130,17 +159,17 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
     // than the segment's turning allows): a non-finite residual makes the integrator halve the step;
     // the note names the segment if the halving runs out (chartOverflow).
     if (!(theta.norm() < kLargestChartRotation)) {
-      overflow_ = {t, "segment " + std::to_string(i) + " rotation vector",
+      overflow_ = {t, "segment " + std::to_string(i) + (kind_ == ChartKind::SwingTwist ? " swing-twist angles" : " rotation vector"),
                    "reached |θ| = " + std::to_string(theta.norm()) + " rad, beyond the chart's limit of " +
                        std::to_string(kLargestChartRotation) + " rad"};
       r.setConstant(std::numeric_limits<double>::quiet_NaN());
       return;
     }
-    const Mat3 rot = reference_[k] * expMap(theta), jr = rightJacobian(theta);
-    // θ̈ = J_r⁻¹ (Rᵀ α − J̇_r θ̇).
-    const Vec3 jdot_rate = rightJacobianRate(theta, rate);
+    const Mat3 rot = reference_[k] * chartTurn(kind_, theta);
+    // θ̈ = M⁻¹ (Rᵀ α − Ṁ θ̇).
     const Vec3 alpha = dy_.segment<3>(joint ? o + 4 : o + 10);
-    const Vec3 theta_acc = jr.lu().solve(rot.transpose() * alpha - jdot_rate);
+    const Vec3 theta_acc =
+        chartRateMap(kind_, theta).lu().solve(rot.transpose() * alpha - rateMapRate(kind_, theta, rate));
     r.segment<3>(gt) = acc.segment<3>(gt) - theta_acc;
     if (!joint) r.segment<3>(g) = acc.segment<3>(g) - dy_.segment<3>(o + 7);
   }
@@ -148,22 +177,17 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
   for (int w = 0; w < kWorkIntegrals; ++w) r[work_ + w] = acc[work_ + w] - dy_[ow + w];
 }
 
-namespace {
-Vec3 rightJacobianRate(const Vec3& theta, const Vec3& rate) {
-  const double speed = rate.norm();
-  if (!(speed > 0)) return Vec3::Zero();
-  const double eps = 1e-4 / speed;
-  return (rightJacobian(theta + eps * rate) - rightJacobian(theta - eps * rate)) * rate / (2 * eps);
-}
-}  // namespace
-
 void RotationVectorChart::rebaseAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                               Eigen::VectorXd& acc) const {
   const int off = m_.formulation == Formulation::Joint ? 0 : 3;
   for (int k = 0; k <= m_.last_dynamic - m_.first_dynamic; ++k) {
     const Eigen::Index gt = 3 + k * per_segment_ + off;
     const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
-    acc.segment<3>(gt) = rightJacobian(theta) * acc.segment<3>(gt) + rightJacobianRate(theta, rate);
+    // The body angular acceleration, less the new chart's own rate term at θ' = 0 (zero for the rotation
+    // vector, J̇_r(0) θ̇' = −½ θ̇' × θ̇'; not for the swing–twist chart).
+    const Vec3 body_rate = chartRateMap(kind_, theta) * rate;
+    acc.segment<3>(gt) = chartRateMap(kind_, theta) * acc.segment<3>(gt) + rateMapRate(kind_, theta, rate) -
+                         rateMapRate(kind_, Vec3::Zero(), body_rate);
   }
 }
 
@@ -174,8 +198,8 @@ void RotationVectorChart::accelerationMap(const Eigen::VectorXd& q, std::vector<
   arm.resize(segments);
   for (int k = 0; k < segments; ++k) {
     const Vec3 theta = q.segment<3>(3 + k * per_segment_ + off);
-    const Mat3 rot = reference_[k] * expMap(theta);
-    turn[k] = rot * rightJacobian(theta);
+    const Mat3 rot = reference_[k] * chartTurn(kind_, theta);
+    turn[k] = rot * chartRateMap(kind_, theta);
     arm[k] = m_.segments[m_.first_dynamic + k].length * rot.col(0);
   }
 }
@@ -191,8 +215,8 @@ void RotationVectorChart::balance(double t, const Eigen::VectorXd& q, const Eige
     const int k = i - m_.first_dynamic;
     const Eigen::Index g = 3 + k * per_segment_, gt = g + off;
     const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
-    const Mat3 rot = reference_[k] * expMap(theta);
-    const Vec3 alpha = rot * (rightJacobian(theta) * acc.segment<3>(gt) + rightJacobianRate(theta, rate));
+    const Mat3 rot = reference_[k] * chartTurn(kind_, theta);
+    const Vec3 alpha = rot * (chartRateMap(kind_, theta) * acc.segment<3>(gt) + rateMapRate(kind_, theta, rate));
     x_[i] << (off ? Vec3(acc.segment<3>(g)) : Vec3::Zero()), alpha;
   }
   balanceResidual(m_, ws_, t, x_, reaction, segment_residual, row_residual);
@@ -214,6 +238,7 @@ std::string RotationVectorChart::name(Eigen::Index k) const {
   const int c = static_cast<int>((k - 3) % per_segment_);
   const std::string seg = "segment " + std::to_string(i) + " ";
   if (per_segment_ == 6 && c < 3) return seg + "position " + axis[c];
+  if (kind_ == ChartKind::SwingTwist) return seg + (c % 3 == 0 ? "spin angle" : std::string("swing vector ") + axis[c % 3]);
   return seg + "rotation vector " + axis[c % 3];
 }
 

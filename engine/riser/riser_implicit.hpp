@@ -4,7 +4,7 @@
 //
 // Coordinates q (and velocities v = q̇), in the order of the first-order state:
 //   top end (3): position, velocity                         (prescribed components are ignored by the pose)
-//   per dynamic segment: J: θ_i (3);  A: r_i (3), θ_i (3)    R_i = R_ref,i exp([θ_i]×), ω_body = J_r(θ_i) θ̇_i
+//   per dynamic segment: J: θ_i (3);  A: r_i (3), θ_i (3)    R_i = R_ref,i E(θ_i), ω_body = M(θ_i) θ̇_i (ChartKind)
 //   work integrals (4): q = ∫W dt (unused), v = W           (q̈ = power)
 #pragma once
 
@@ -18,6 +18,21 @@ namespace maris::riser {
 
 // Right Jacobian of SO(3): body angular velocity of R exp([θ]×) is J_r(θ) θ̇ (R fixed).
 Mat3 rightJacobian(const Vec3& theta);
+
+// How a segment's three chart coordinates θ give its orientation R = R_ref E(θ) about the reference R_ref.
+//   RotationVector: E = exp([θ]×). Used with torsion.
+//   SwingTwist:     E = exp([0, θ_y, θ_z]×) exp(θ_x [e_x]×): a swing of the axis, then a spin θ_x about it.
+//                   Used without torsion, where the spin has neither stiffness nor inertia (its rate is held at
+//                   zero): the axis t = R e_x then does not depend on θ_x, whereas with the rotation vector a
+//                   Newton correction of the free spin also turns the axis once the segment has swung.
+enum class ChartKind { RotationVector, SwingTwist };
+Mat3 chartTurn(ChartKind kind, const Vec3& theta);  // E(θ)
+// Body angular velocity ω' = M(θ) θ̇. RotationVector: J_r(θ); SwingTwist: exp(θ_x[e_x]×)ᵀ J_r(θ_s) P + e_x e_xᵀ
+// with θ_s = Pθ = (0, θ_y, θ_z). Both are I at θ = 0.
+Mat3 chartRateMap(ChartKind kind, const Vec3& theta);
+// θ of a turn E (the inverse of chartTurn; SwingTwist: the swing is the shortest turn of e_x to E e_x, so
+// |θ_s| ≤ π). Exactly 0 for E = I.
+Vec3 chartCoordinates(ChartKind kind, const Mat3& turn);
 
 class RotationVectorChart {
  public:
@@ -49,6 +64,7 @@ class RotationVectorChart {
   const RiserWorkspace& workspace() const { return ws_; }
   RiserWorkspace& workspace() { return ws_; }
   int perSegment() const { return per_segment_; }
+  ChartKind kind() const { return kind_; }
   // Largest |θ_i| of q [rad].
   double largestRotation(const Eigen::VectorXd& q) const;
   // Name of coordinate k for error messages.
@@ -63,6 +79,7 @@ class RotationVectorChart {
 
  private:
   const RiserModel& m_;
+  ChartKind kind_;               // SwingTwist without torsion
   RiserWorkspace ws_;
   std::vector<Mat3> reference_;  // R_ref,i per dynamic segment
   Eigen::VectorXd y_, dy_;

@@ -59,7 +59,7 @@ void JointNewtonMatrix::refresh(const IterationMatrixRequest& request) {
   twin_chart_.reset(y_twin_, q_twin_, v_twin_);
   for (int k = 0; k < segments_; ++k) {
     const int i = f_ + k;
-    jr_[k] = rightJacobian(request.q.segment<3>(jointIndex(k)));
+    jr_[k] = chartRateMap(chart_.kind(), request.q.segment<3>(jointIndex(k)));
     jr_inverse_[k] = jr_[k].inverse();
     rot_[k] = pose_ws_.pose.rotation[i];
     arm_[k] = m_.segments[i].length * rot_[k].col(0);

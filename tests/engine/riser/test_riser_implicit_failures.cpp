@@ -42,12 +42,15 @@ TEST(RiserImplicitFailures, ResidualBeyondTheChartIsNonFiniteAndNamed) {
   EXPECT_EQ(chart.chartOverflow().quantity, "segment " + std::to_string(m.first_dynamic + 2) + " rotation vector");
 }
 
-// Case 5 in absolute coordinates without torsion (A2) at h = T/10 = 1 s: Newton fails on some steps (at T/25
+// Case 5 in absolute coordinates without torsion (A2) at h = T/5 = 2 s: Newton fails on some steps (at T/25
 // it ran off the chart near t = 4.9 s and the run ended with "rotated 6.9 rad within one chunk" before the
-// fix; since the held bottom's mismatch is spread over all rotations T/25 no longer fails, so the test takes
-// T/10). With the step halved it finishes, with rejected steps to show the halving (measured 6), and its
-// probe motion at t = 8 s agrees with h = T/200 within 5 % of the motion amplitude (measured 4.0 %; the
-// halved steps are the accurate ones).
+// held bottom's mismatch was spread over all rotations; T/10 failed until the swing–twist chart without
+// torsion, so the test now takes T/5). With the step halved it finishes, with rejected steps to show the
+// halving (measured 25 of 88), and its probe motion at t = 8 s is as close to h = T/200 as generalized-α at
+// 5 steps per period can be: its period error ≈ (ωh)²/12 = 13 % gives a phase error ≈ 0.66 rad over the
+// 0.8 period, so up to ~0.6 of the amplitude (measured 0.31; at T/10, without halvings, 0.18 against the
+// estimate 0.17). Asserted: within half the amplitude (a step that diverged, or a halving that lost the state,
+// would not be).
 TEST(RiserImplicitFailures, StepTooLongForNewtonIsHalvedNotFatal) {
   RiserParameters p = test::paperCaseFive();
   p.formulation = "absolute";
@@ -56,7 +59,7 @@ TEST(RiserImplicitFailures, StepTooLongForNewtonIsHalvedNotFatal) {
   p.end_time = 8.0;
   p.frame_count = 2;
   p.stress_times.clear();
-  p.time_step = p.motion_period / 10;
+  p.time_step = p.motion_period / 5;
   RunContext context;
   Results coarse;
   ASSERT_NO_THROW(coarse = solveRiser(p, context));
@@ -67,7 +70,7 @@ TEST(RiserImplicitFailures, StepTooLongForNewtonIsHalvedNotFatal) {
   double amplitude = 0;
   for (double d : motion) amplitude = std::max(amplitude, std::abs(d));
   ASSERT_GT(amplitude, 0.1);
-  EXPECT_LT(std::abs(finalProbeX(coarse) - finalProbeX(fine)), 0.05 * amplitude);
+  EXPECT_LT(std::abs(finalProbeX(coarse) - finalProbeX(fine)), 0.5 * amplitude);
 }
 
 // Case 5 at n = 400 in 0.5 s chunks (frames), h = 50 ms: no rejected step in either formulation. Before the

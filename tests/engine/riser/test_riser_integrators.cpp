@@ -174,19 +174,6 @@ TEST(RiserIntegrators, AutoPicksRk4UnlessTheExplicitStepCountExplodes) {
   EXPECT_EQ(plan.method, Integrator::Implicit) << plan.reason;
 }
 
-// Right Jacobian of SO(3): R exp([θ + ε θ̇]×) ≈ R exp([θ]×) exp([ε J_r θ̇]×), checked by central differences
-// of the rotation (step 1e-6: truncation 1e-12, round-off 1e-10).
-TEST(RiserIntegrators, RightJacobianMapsRotationVectorRatesToBodyAngularVelocity) {
-  const Vec3 theta(0.7, -1.1, 0.4), rate(0.3, 0.5, -0.2);
-  auto expo = [](const Vec3& v) { return Mat3(Eigen::AngleAxisd(v.norm(), v.normalized())); };
-  const double h = 1e-6;
-  const Mat3 derivative = (expo(theta + h * rate) - expo(theta - h * rate)) / (2 * h);
-  const Mat3 body = expo(theta).transpose() * derivative;  // [ω_body]×
-  const Vec3 omega_body(body(2, 1), body(0, 2), body(1, 0));
-  EXPECT_LT((omega_body - rightJacobian(theta) * rate).norm(), 1e-9);
-  EXPECT_LT((rightJacobian(Vec3(1e-5, 0, 0)) - Mat3::Identity()).norm(), 1e-5);
-}
-
 // Clamped cubic spline through x(t) = A(1 − cos ωt) sampled every h over one period (end slopes 0 as the
 // spline assumes): errors within the Hall–Meyer bounds 5/384 h⁴, 1/24 h³, 3/8 h² times max|x''''| = Aω⁴.
 // Before and after the table the first and last rows hold.
