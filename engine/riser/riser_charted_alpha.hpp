@@ -1,4 +1,4 @@
-// Generalized-α on the riser over a sequence of chunks of time, each in a fresh rotation-vector chart about the
+// Generalized-α on the riser over a sequence of chunks of time, each in a fresh chart (riser_implicit) about the
 // state at its start (riser_implicit: the chart's reach is limited, so a long run cannot stay in one). Owns the
 // chart and the O(n) Newton matrix of the formulation: absolute coordinates the force-space matrix of
 // riser_newton, with the joints projected back together after every step; joint coordinates the same through

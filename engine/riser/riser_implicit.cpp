@@ -73,7 +73,9 @@ Vec3 chartCoordinates(ChartKind kind, const Mat3& turn) {
 }
 
 RotationVectorChart::RotationVectorChart(const RiserModel& m, double stabilisation_rate)
-    : m_(m), kind_(m.torsion ? ChartKind::RotationVector : ChartKind::SwingTwist), ws_(makeWorkspace(m, stabilisation_rate)) {
+    : m_(m),
+      kind_(m.torsion ? ChartKind::RotationVector : ChartKind::SwingTwist),
+      ws_(makeWorkspace(m, stabilisation_rate)) {
   const int segments = m.last_dynamic - m.first_dynamic + 1;
   per_segment_ = m.formulation == Formulation::Joint ? 3 : 6;
   work_ = 3 + static_cast<Eigen::Index>(segments) * per_segment_;
@@ -159,7 +161,8 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
     // than the segment's turning allows): a non-finite residual makes the integrator halve the step;
     // the note names the segment if the halving runs out (chartOverflow).
     if (!(theta.norm() < kLargestChartRotation)) {
-      overflow_ = {t, "segment " + std::to_string(i) + (kind_ == ChartKind::SwingTwist ? " swing-twist angles" : " rotation vector"),
+      const char* coordinates = kind_ == ChartKind::SwingTwist ? " swing-twist angles" : " rotation vector";
+      overflow_ = {t, "segment " + std::to_string(i) + coordinates,
                    "reached |θ| = " + std::to_string(theta.norm()) + " rad, beyond the chart's limit of " +
                        std::to_string(kLargestChartRotation) + " rad"};
       r.setConstant(std::numeric_limits<double>::quiet_NaN());
@@ -238,7 +241,8 @@ std::string RotationVectorChart::name(Eigen::Index k) const {
   const int c = static_cast<int>((k - 3) % per_segment_);
   const std::string seg = "segment " + std::to_string(i) + " ";
   if (per_segment_ == 6 && c < 3) return seg + "position " + axis[c];
-  if (kind_ == ChartKind::SwingTwist) return seg + (c % 3 == 0 ? "spin angle" : std::string("swing vector ") + axis[c % 3]);
+  if (kind_ == ChartKind::SwingTwist)
+    return seg + (c % 3 == 0 ? std::string("spin angle") : std::string("swing vector ") + axis[c % 3]);
   return seg + "rotation vector " + axis[c % 3];
 }
 

@@ -1,5 +1,5 @@
 // Second-order form of the riser equations for the implicit generalized-α integrator (core/ode.hpp),
-// over one chunk of time in which every orientation is a rotation vector about a reference
+// over one chunk of time in which every orientation is given by three chart coordinates about a reference
 // (see riser_integration.hpp for why and how it is used).
 //
 // Coordinates q (and velocities v = q̇), in the order of the first-order state:
@@ -41,11 +41,12 @@ class RotationVectorChart {
   Eigen::Index size() const { return size_; }
   // Takes the orientations of first-order state y as the references; q (θ = 0) and v from y.
   void reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v);
-  // (q, v) of first-order state y with the current references kept (θ = log(R_refᵀ R), θ̇ = J_r⁻¹ Rᵀω);
+  // (q, v) of first-order state y with the current references kept (θ = E⁻¹(R_refᵀ R), θ̇ = M⁻¹ Rᵀω);
   // the work coordinates of q are left as they are. For projecting the state after a step.
   void fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) const;
   // Chart accelerations `acc` at (q, v), rewritten for the chart reset() makes of this state (references = the
-  // current orientations, θ = 0): θ̈' = J_r(θ) θ̈ + J̇_r θ̇ (the body angular acceleration, since J̇_r(0) θ̇' = 0);
+  // current orientations, θ = 0): θ̈' = M(θ) θ̈ + Ṁ θ̇ − Ṁ(0) θ̇' (the body angular acceleration less the new
+  // chart's rate term, which is zero for the rotation vector);
   // top, position and work entries unchanged. Carries the integrator's accelerations over a reset.
   void rebaseAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& acc) const;
   // First-order state (quaternions, angular velocities) of (q, v).
@@ -54,7 +55,7 @@ class RotationVectorChart {
   void residual(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
                 Eigen::VectorXd& r);
   // Per dynamic segment k: the map of its chart accelerations (r̈, θ̈) to x = (a_{A_i}, α_i) is
-  // x = (r̈, turn_k θ̈ + R J̇_r θ̇) with turn_k = R_i J_r(θ_i); also writes the arm d_i = l_i t_i (both at q).
+  // x = (r̈, turn_k θ̈ + R Ṁ θ̇) with turn_k = R_i M(θ_i); also writes the arm d_i = l_i t_i (both at q).
   void accelerationMap(const Eigen::VectorXd& q, std::vector<Mat3>& turn, std::vector<Vec3>& arm) const;
   // Absolute coordinates: residuals of the unreduced equations (balanceResidual) at chart state (q, v),
   // chart accelerations acc and reactions F_j; used by the O(n) Newton matrix (riser_newton).

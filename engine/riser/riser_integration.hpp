@@ -8,10 +8,11 @@
 // the norm never reaches the physics.
 //
 // The implicit integrator (core generalized-α, second-order form M q̈ = f) needs a vector-space
-// configuration: each chunk re-parametrises every segment's orientation by a rotation vector θ_i about
-// its orientation at the chunk start, R_i = R_ref,i exp([θ_i]×) (local re-parametrisation, so no Euler
-// singularity), with velocities θ̇_i. The residual is r = q̈ − a(t, q, q̇), a = the accelerations of the
-// O(n) Newton–Euler/reaction solve mapped to θ̈ through the right Jacobian of SO(3). Work integrals ride
+// configuration: each chunk re-parametrises every segment's orientation by three chart coordinates θ_i about
+// its orientation at the chunk start, R_i = R_ref,i E(θ_i) (local re-parametrisation, so no Euler
+// singularity; E: the rotation vector with torsion, swing–twist without, riser_implicit ChartKind), with
+// velocities θ̇_i. The residual is r = q̈ − a(t, q, q̇), a = the accelerations of the O(n) Newton–Euler/reaction
+// solve mapped to θ̈ through the chart's rate map. Work integrals ride
 // along as coordinates whose velocity is the work (q̈ = power). The iteration matrix of this residual is
 // dense (a depends on every segment through the reactions), so it is never formed: absolute coordinates
 // solve with it through the banded unreduced equations (riser_newton), joint coordinates through an

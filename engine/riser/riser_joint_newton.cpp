@@ -46,8 +46,8 @@ JointNewtonMatrix::JointNewtonMatrix(const RiserModel& joint, const RotationVect
       pose_ws_(makeWorkspace(joint, 0.0)) {
   f_ = joint.first_dynamic;
   segments_ = joint.last_dynamic - joint.first_dynamic + 1;
-  jr_.resize(segments_);
-  jr_inverse_.resize(segments_);
+  rate_map_.resize(segments_);
+  rate_map_inverse_.resize(segments_);
   rot_.resize(segments_);
   arm_.resize(segments_);
 }
@@ -59,8 +59,8 @@ void JointNewtonMatrix::refresh(const IterationMatrixRequest& request) {
   twin_chart_.reset(y_twin_, q_twin_, v_twin_);
   for (int k = 0; k < segments_; ++k) {
     const int i = f_ + k;
-    jr_[k] = chartRateMap(chart_.kind(), request.q.segment<3>(jointIndex(k)));
-    jr_inverse_[k] = jr_[k].inverse();
+    rate_map_[k] = chartRateMap(chart_.kind(), request.q.segment<3>(jointIndex(k)));
+    rate_map_inverse_[k] = rate_map_[k].inverse();
     rot_[k] = pose_ws_.pose.rotation[i];
     arm_[k] = m_.segments[i].length * rot_[k].col(0);
   }
@@ -80,7 +80,7 @@ bool JointNewtonMatrix::solve(const IterationMatrixRequest& request, Eigen::Vect
   for (int c = 0; c < 3; ++c)
     if (topForceKnown(m_, c)) point[c] = rhs[c];
   for (int k = 0; k < segments_; ++k) {
-    const Vec3 theta_acc = jr_[k] * rhs.segment<3>(jointIndex(k));  // twin θ̈ (its chart is at θ = 0: J_r = I)
+    const Vec3 theta_acc = rate_map_[k] * rhs.segment<3>(jointIndex(k));  // twin θ̈ (its chart is at θ = 0: M = I)
     rhs_twin_.segment<3>(twinIndex(k)) = point;
     rhs_twin_.segment<3>(twinIndex(k) + 3) = theta_acc;
     point += (rot_[k] * theta_acc).cross(arm_[k]);
@@ -91,11 +91,11 @@ bool JointNewtonMatrix::solve(const IterationMatrixRequest& request, Eigen::Vect
   dq_ = request.dq_dacc;
   dv_ = request.dv_dacc;
   if (!have_) return false;
-  // y = Π u: joint rates θ̈_J = J_r⁻¹ θ̈_twin; free top components from the top segment's acceleration.
+  // y = Π u: joint rates θ̈_J = M⁻¹ θ̈_twin; free top components from the top segment's acceleration.
   for (int c = 0; c < 3; ++c)
     if (topForceKnown(m_, c)) rhs[c] = rhs_twin_[twinIndex(0) + c];
   for (int k = 0; k < segments_; ++k)
-    rhs.segment<3>(jointIndex(k)) = jr_inverse_[k] * rhs_twin_.segment<3>(twinIndex(k) + 3);
+    rhs.segment<3>(jointIndex(k)) = rate_map_inverse_[k] * rhs_twin_.segment<3>(twinIndex(k) + 3);
   return true;
 }
 

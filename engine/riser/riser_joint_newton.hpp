@@ -6,7 +6,8 @@
 // positions as unknowns and tie them by local joint rows. So S_J y = b is solved through an absolute twin
 // of the model (the same RiserModel with formulation = Absolute, its own chart reset at the joint state):
 //   - the joint state P(q_J, v_J) is a consistent absolute state (Φ = Φ̇ = 0), where both formulations have
-//     the same accelerations: a_J = Π a_A(P(q_J, v_J)), Π = the joint-chart part (top, θ̈ through J_r⁻¹);
+//     the same accelerations: a_J = Π a_A(P(q_J, v_J)), Π = the joint-chart part (top, θ̈ through M⁻¹, the
+//     inverse rate map of the chart);
 //   - a joint motion u = T y (T: joint-chart accelerations to absolute-chart ones, O(n) recursion
 //     r̈_{i+1} = r̈_i + α_i × d_i) keeps the twin consistent to first order, and the twin's banded system
 //     K [u; μ] = ∂F/∂x · T b (riser_newton) enforces the joint rows Φ_q u ≈ 0 itself;
@@ -16,8 +17,8 @@
 // test_riser_joint_newton measures the Newton counts against the dense path):
 //   - the twin's joint rows are acceleration-level constraints, whose dependence on the coordinates
 //     (α × δd, ω × (ω × δd)) lets u leave the joint manifold by O(β'|α|·|δθ|·l);
-//   - the curvature of the chart maps away from the joint chart's reference (J_r(θ_J)⁻¹ varies), O(β'|α||θ_J|);
-//   - the change of the joint-point velocities with the rotations at fixed rates and the rate terms J̇_r θ̇,
+//   - the curvature of the chart maps away from the joint chart's reference (M(θ_J)⁻¹ varies), O(β'|α||θ_J|);
+//   - the change of the joint-point velocities with the rotations at fixed rates and the rate terms Ṁ θ̇,
 //     relative size ≈ ω h.
 // All vanish at rest on the chart reference (measured defect 2e-6 there); on smooth motions they are
 // ≈ 1e-4–1e-3 of S. Large angular accelerations far from the reference (a random twist of 0.03 rad between
@@ -62,7 +63,8 @@ class JointNewtonMatrix {
   int f_ = 0, segments_ = 0;
   bool have_ = false;
   double dq_ = -1.0, dv_ = -1.0;
-  std::vector<Mat3> jr_, jr_inverse_, rot_;  // J_r(θ_J,k), its inverse and R_k at the last refresh
+  // At the last refresh: the chart's rate map M(θ_J,k) (J_r with torsion), its inverse, R_k.
+  std::vector<Mat3> rate_map_, rate_map_inverse_, rot_;
   std::vector<Vec3> arm_;              // d_k at the last refresh
   Eigen::VectorXd y_joint_, y_twin_, q_twin_, v_twin_, acc_twin_, rhs_twin_;
 };
