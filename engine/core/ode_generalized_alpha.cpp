@@ -27,9 +27,15 @@ namespace {
 
 using ode_detail::NewtonSolver;
 
-std::string newtonFailure(const NewtonSolver& newton, const OdeOptions& o, double h, Eigen::Index* worst) {
+// The coordinate with the largest last correction among those Newton's convergence test checks (not the
+// passive ones, whose lagging corrections would otherwise be named).
+std::string newtonFailure(const NewtonSolver& newton, const SecondOrderSystem& system, const OdeOptions& o, double h,
+                          Eigen::Index* worst) {
   *worst = 0;
-  if (newton.lastCorrection().size() > 0) newton.lastCorrection().cwiseAbs().maxCoeff(worst);
+  const Eigen::VectorXd& correction = newton.lastCorrection();
+  const Eigen::Index passive = std::clamp<Eigen::Index>(system.passive_coordinates, 0, correction.size());
+  const Eigen::Index checked = correction.size() - passive;
+  if (checked > 0) correction.head(checked).cwiseAbs().maxCoeff(worst);
   return "has the largest correction when the Newton iteration failed to converge at step h = " +
          std::to_string(h) + " s (min_step " + std::to_string(o.min_step) + " s)";
 }
@@ -59,7 +65,7 @@ OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::Vecto
   Eigen::VectorXd acc = continued ? state->acceleration : Eigen::VectorXd::Zero(n);
   if (!continued && !newton.solve(options.t0, q, v, 0.0, 0.0, acc)) {
     Eigen::Index worst = 0;
-    newtonFailure(newton, options, 0.0, &worst);
+    newtonFailure(newton, system, options, 0.0, &worst);
     throw SolverError(componentName(options, worst), options.t0, 0,
                       "acceleration could not be found at the initial state (singular mass matrix?)");
   }
@@ -107,7 +113,7 @@ OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::Vecto
         continue;
       }
       Eigen::Index worst = 0;
-      const std::string detail = newtonFailure(newton, options, h_step, &worst);
+      const std::string detail = newtonFailure(newton, system, options, h_step, &worst);
       throw SolverError(componentName(options, worst), t_new, stats.steps + 1, detail);
     }
     q_new = newton.q();

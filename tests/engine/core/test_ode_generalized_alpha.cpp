@@ -253,6 +253,34 @@ TEST(GeneralizedAlpha, NewtonFailureIsSolverErrorNamingTheCoordinate) {
   }
 }
 
+// The same failure with a passive coordinate beside it whose corrections are far larger (a residual the
+// identity matrix does not solve, so each iteration corrects it by ~1e6): the error names the checked
+// coordinate that failed, not the passive one (which the message named before).
+TEST(GeneralizedAlpha, NewtonFailureNamesACheckedCoordinateNotAPassiveOne) {
+  SecondOrderSystem system;
+  system.size = 2;
+  system.passive_coordinates = 1;
+  system.residual = [](double t, const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd& acc,
+                       Eigen::VectorXd& r) {
+    r[0] = t < 0.5 ? acc[0] - 1.0 : acc[0] * acc[0] + 1.0;
+    r[1] = 2.0 * acc[1] - 1e6;
+  };
+  system.solve_iteration_matrix = [](const IterationMatrixRequest&, Eigen::VectorXd&) { return true; };
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(2), v = Eigen::VectorXd::Zero(2);
+  OdeOptions options;
+  options.step = 0.1;
+  options.min_step = 1e-3;
+  options.state_name = [](Eigen::Index k) { return std::string(k == 0 ? "pendulum angle" : "work integral"); };
+  RunContext ctx;
+  try {
+    integrateGeneralizedAlpha(system, q, v, options, GeneralizedAlphaOptions{}, ctx);
+    FAIL() << "expected SolverError";
+  } catch (const SolverError& e) {
+    EXPECT_EQ(e.quantity(), "pendulum angle") << e.what();
+    EXPECT_GE(e.time(), 0.5);
+  }
+}
+
 TEST(GeneralizedAlpha, HalvingRecoversFromALocalNewtonFailure) {
   // A residual that refuses (NaN) any step longer than 0.03 s: the integrator halves from 0.1 s, and
   // still reaches t1 with the oscillator's accuracy.
