@@ -15,12 +15,6 @@ int segmentOffset(const RiserModel& m, int i) { return kHeader + (i - m.first_dy
 int workOffset(const RiserModel& m) { return segmentOffset(m, m.last_dynamic + 1); }
 int quaternionOffset(const RiserModel& m) { return m.formulation == Formulation::Joint ? 0 : 3; }
 
-Mat3 skew(const Vec3& v) {
-  Mat3 s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-
 // D'ᵀ x = a + α × d: acceleration of the far end of a segment from its (a, α).
 Vec3 farEnd(const Vec6& x, const Vec3& d) { return x.head<3>() + x.tail<3>().cross(d); }
 

@@ -11,66 +11,10 @@
 namespace maris::riser {
 namespace {
 
-Mat3 skew(const Vec3& v) {
-  Mat3 s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-
-Mat3 expMap(const Vec3& theta) {
-  const double a = theta.norm();
-  return a > 0 ? Mat3(Eigen::AngleAxisd(a, theta / a)) : Mat3::Identity();
-}
-
 // Rotations above this within one chunk mean the chunk is far too long for the chart (J_r is singular at 2π).
 constexpr double kLargestChartRotation = 5.0;  // [rad]
 
-// Ṁ θ̇ of chartRateMap by a central difference along θ̇ (step 1e-4 rad: error ~1e-8 relative).
-Vec3 rateMapRate(ChartKind kind, const Vec3& theta, const Vec3& rate) {
-  const double speed = rate.norm();
-  if (!(speed > 0)) return Vec3::Zero();
-  const double eps = 1e-4 / speed;
-  return (chartRateMap(kind, theta + eps * rate) - chartRateMap(kind, theta - eps * rate)) * rate / (2 * eps);
-}
-
-Mat3 spinTurn(double angle) { return Mat3(Eigen::AngleAxisd(angle, Vec3::UnitX())); }
-
 }  // namespace
-
-Mat3 rightJacobian(const Vec3& theta) {
-  const double a2 = theta.squaredNorm(), a = std::sqrt(a2);
-  // (1 − cos a)/a² and (a − sin a)/a³, by their series below 1e-3 rad (cancellation).
-  const double c1 = a < 1e-3 ? 0.5 - a2 / 24 : (1 - std::cos(a)) / a2;
-  const double c2 = a < 1e-3 ? 1.0 / 6 - a2 / 120 : (a - std::sin(a)) / (a2 * a);
-  const Mat3 k = skew(theta);
-  return Mat3::Identity() - c1 * k + c2 * k * k;
-}
-
-Mat3 chartTurn(ChartKind kind, const Vec3& theta) {
-  if (kind == ChartKind::RotationVector) return expMap(theta);
-  return expMap(Vec3(0, theta.y(), theta.z())) * spinTurn(theta.x());
-}
-
-Mat3 chartRateMap(ChartKind kind, const Vec3& theta) {
-  if (kind == ChartKind::RotationVector) return rightJacobian(theta);
-  Mat3 m = spinTurn(theta.x()).transpose() * rightJacobian(Vec3(0, theta.y(), theta.z()));
-  m.col(0) = Vec3::UnitX();
-  return m;
-}
-
-Vec3 chartCoordinates(ChartKind kind, const Mat3& turn) {
-  if (turn == Mat3::Identity()) return Vec3::Zero();
-  if (kind == ChartKind::RotationVector) {
-    const Eigen::AngleAxisd a(turn);
-    return a.angle() * a.axis();
-  }
-  // The swing turns e_x to the axis t about e_x × t; atan2 keeps the angle accurate near 0 and π.
-  const Vec3 axis = turn.col(0), normal = Vec3::UnitX().cross(axis);
-  const double sine = normal.norm();
-  const Vec3 swing = sine > 0 ? Vec3(std::atan2(sine, axis.x()) * normal / sine) : Vec3::Zero();
-  const Mat3 spin = expMap(swing).transpose() * turn;
-  return {std::atan2(spin(2, 1), spin(1, 1)), swing.y(), swing.z()};
-}
 
 RotationVectorChart::RotationVectorChart(const RiserModel& m, double stabilisation_rate)
     : m_(m),
@@ -112,7 +56,8 @@ void RotationVectorChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q
     // angle-axis of Rᵀ·R would give a round-off angle with an arbitrary axis instead.
     const Vec3 theta = rot == reference_[k] ? Vec3::Zero() : chartCoordinates(kind_, reference_[k].transpose() * rot);
     q.segment<3>(gt) = theta;
-    v.segment<3>(gt) = chartRateMap(kind_, theta).lu().solve(rot.transpose() * y.segment<3>(joint ? o + 4 : o + 10));
+    const Vec3 omega_body = rot.transpose() * y.segment<3>(joint ? o + 4 : o + 10);
+    v.segment<3>(gt) = chartMaps(kind_, theta).rate_map.lu().solve(omega_body);
     if (!joint) {
       q.segment<3>(g) = y.segment<3>(o);
       v.segment<3>(g) = y.segment<3>(o + 7);
@@ -123,7 +68,13 @@ void RotationVectorChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q
 }
 
 void RotationVectorChart::toState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
+  writeState(q, v, y, nullptr);
+}
+
+void RotationVectorChart::writeState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y,
+                                     std::vector<ChartMaps>* maps_with_rates) const {
   y.setZero(stateSize(m_));
+  if (maps_with_rates) maps_with_rates->resize(m_.last_dynamic - m_.first_dynamic + 1);
   y.head<3>() = q.head<3>();
   y.segment<3>(3) = v.head<3>();
   const bool joint = m_.formulation == Formulation::Joint;
@@ -131,11 +82,13 @@ void RotationVectorChart::toState(const Eigen::VectorXd& q, const Eigen::VectorX
     const int k = i - m_.first_dynamic;
     const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
-    const Vec3 theta = q.segment<3>(gt);
-    const Mat3 r = reference_[k] * chartTurn(kind_, theta);
+    const ChartMaps maps = maps_with_rates ? chartMaps(kind_, q.segment<3>(gt), v.segment<3>(gt))
+                                           : chartMaps(kind_, q.segment<3>(gt));
+    if (maps_with_rates) (*maps_with_rates)[k] = maps;
+    const Mat3 r = reference_[k] * maps.turn;
     const Eigen::Quaterniond quat(r);
     y.segment<4>(oq) << quat.w(), quat.x(), quat.y(), quat.z();
-    y.segment<3>(joint ? o + 4 : o + 10) = r * (chartRateMap(kind_, theta) * v.segment<3>(gt));
+    y.segment<3>(joint ? o + 4 : o + 10) = r * (maps.rate_map * v.segment<3>(gt));
     if (!joint) {
       y.segment<3>(o) = q.segment<3>(g);
       y.segment<3>(o + 7) = v.segment<3>(g);
@@ -147,7 +100,7 @@ void RotationVectorChart::toState(const Eigen::VectorXd& q, const Eigen::VectorX
 
 void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                    const Eigen::VectorXd& acc, Eigen::VectorXd& r) {
-  toState(q, v, y_);
+  writeState(q, v, y_, &maps_);
   evaluateRhs(m_, ws_, t, y_, dy_);
   const bool joint = m_.formulation == Formulation::Joint;
   r.resize(size_);
@@ -156,7 +109,7 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
     const int k = i - m_.first_dynamic;
     const Eigen::Index o = segmentStateOffset(m_, i);
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
-    const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
+    const Vec3 theta = q.segment<3>(gt);
     // An iterate beyond the chart (a Newton iteration running away at too long a step, or a chunk longer
     // than the segment's turning allows): a non-finite residual makes the integrator halve the step;
     // the note names the segment if the halving runs out (chartOverflow).
@@ -168,11 +121,11 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
       r.setConstant(std::numeric_limits<double>::quiet_NaN());
       return;
     }
-    const Mat3 rot = reference_[k] * chartTurn(kind_, theta);
+    const ChartMaps& maps = maps_[k];
+    const Mat3 rot = reference_[k] * maps.turn;
     // θ̈ = M⁻¹ (Rᵀ α − Ṁ θ̇).
     const Vec3 alpha = dy_.segment<3>(joint ? o + 4 : o + 10);
-    const Vec3 theta_acc =
-        chartRateMap(kind_, theta).lu().solve(rot.transpose() * alpha - rateMapRate(kind_, theta, rate));
+    const Vec3 theta_acc = maps.rate_map.lu().solve(rot.transpose() * alpha - maps.rate_term);
     r.segment<3>(gt) = acc.segment<3>(gt) - theta_acc;
     if (!joint) r.segment<3>(g) = acc.segment<3>(g) - dy_.segment<3>(o + 7);
   }
@@ -188,9 +141,10 @@ void RotationVectorChart::rebaseAccelerations(const Eigen::VectorXd& q, const Ei
     const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
     // The body angular acceleration, less the new chart's own rate term at θ' = 0 (zero for the rotation
     // vector, J̇_r(0) θ̇' = −½ θ̇' × θ̇'; not for the swing–twist chart).
-    const Vec3 body_rate = chartRateMap(kind_, theta) * rate;
-    acc.segment<3>(gt) = chartRateMap(kind_, theta) * acc.segment<3>(gt) + rateMapRate(kind_, theta, rate) -
-                         rateMapRate(kind_, Vec3::Zero(), body_rate);
+    const ChartMaps maps = chartMaps(kind_, theta, rate);
+    const Vec3 body_rate = maps.rate_map * rate;
+    acc.segment<3>(gt) =
+        maps.rate_map * acc.segment<3>(gt) + maps.rate_term - chartMaps(kind_, Vec3::Zero(), body_rate).rate_term;
   }
 }
 
@@ -201,8 +155,9 @@ void RotationVectorChart::accelerationMap(const Eigen::VectorXd& q, std::vector<
   arm.resize(segments);
   for (int k = 0; k < segments; ++k) {
     const Vec3 theta = q.segment<3>(3 + k * per_segment_ + off);
-    const Mat3 rot = reference_[k] * chartTurn(kind_, theta);
-    turn[k] = rot * chartRateMap(kind_, theta);
+    const ChartMaps maps = chartMaps(kind_, theta);
+    const Mat3 rot = reference_[k] * maps.turn;
+    turn[k] = rot * maps.rate_map;
     arm[k] = m_.segments[m_.first_dynamic + k].length * rot.col(0);
   }
 }
@@ -210,16 +165,15 @@ void RotationVectorChart::accelerationMap(const Eigen::VectorXd& q, std::vector<
 void RotationVectorChart::balance(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
                                   const std::vector<Vec3>& reaction, std::vector<Vec6>& segment_residual,
                                   std::vector<Vec3>& row_residual) {
-  toState(q, v, y_);
+  writeState(q, v, y_, &maps_);
   prepareSegments(m_, ws_, t, y_);
   x_.resize(m_.segmentCount());
   const int off = m_.formulation == Formulation::Joint ? 0 : 3;
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
     const int k = i - m_.first_dynamic;
     const Eigen::Index g = 3 + k * per_segment_, gt = g + off;
-    const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
-    const Mat3 rot = reference_[k] * chartTurn(kind_, theta);
-    const Vec3 alpha = rot * (chartRateMap(kind_, theta) * acc.segment<3>(gt) + rateMapRate(kind_, theta, rate));
+    const ChartMaps& maps = maps_[k];
+    const Vec3 alpha = reference_[k] * maps.turn * (maps.rate_map * acc.segment<3>(gt) + maps.rate_term);
     x_[i] << (off ? Vec3(acc.segment<3>(g)) : Vec3::Zero()), alpha;
   }
   balanceResidual(m_, ws_, t, x_, reaction, segment_residual, row_residual);

@@ -12,27 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "riser/riser_chart_maps.hpp"
 #include "riser/riser_dynamics.hpp"
 
 namespace maris::riser {
-
-// Right Jacobian of SO(3): body angular velocity of R exp([θ]×) is J_r(θ) θ̇ (R fixed).
-Mat3 rightJacobian(const Vec3& theta);
-
-// How a segment's three chart coordinates θ give its orientation R = R_ref E(θ) about the reference R_ref.
-//   RotationVector: E = exp([θ]×). Used with torsion.
-//   SwingTwist:     E = exp([0, θ_y, θ_z]×) exp(θ_x [e_x]×): a swing of the axis, then a spin θ_x about it.
-//                   Used without torsion, where the spin has neither stiffness nor inertia (its rate is held at
-//                   zero): the axis t = R e_x then does not depend on θ_x, whereas with the rotation vector a
-//                   Newton correction of the free spin also turns the axis once the segment has swung.
-enum class ChartKind { RotationVector, SwingTwist };
-Mat3 chartTurn(ChartKind kind, const Vec3& theta);  // E(θ)
-// Body angular velocity ω' = M(θ) θ̇. RotationVector: J_r(θ); SwingTwist: exp(θ_x[e_x]×)ᵀ J_r(θ_s) P + e_x e_xᵀ
-// with θ_s = Pθ = (0, θ_y, θ_z). Both are I at θ = 0.
-Mat3 chartRateMap(ChartKind kind, const Vec3& theta);
-// θ of a turn E (the inverse of chartTurn; SwingTwist: the swing is the shortest turn of e_x to E e_x, so
-// |θ_s| ≤ π). Exactly 0 for E = I.
-Vec3 chartCoordinates(ChartKind kind, const Mat3& turn);
 
 class RotationVectorChart {
  public:
@@ -79,12 +62,17 @@ class RotationVectorChart {
   const ChartOverflow& chartOverflow() const { return overflow_; }
 
  private:
+  // toState; also keeps every segment's maps with their rate terms if `maps_with_rates` is given.
+  void writeState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y,
+                  std::vector<ChartMaps>* maps_with_rates) const;
+
   const RiserModel& m_;
   ChartKind kind_;               // SwingTwist without torsion
   RiserWorkspace ws_;
   std::vector<Mat3> reference_;  // R_ref,i per dynamic segment
   Eigen::VectorXd y_, dy_;
   std::vector<Vec6> x_;          // physical accelerations of balance()
+  std::vector<ChartMaps> maps_;  // per dynamic segment, with rate terms, of the last residual()/balance()
   Eigen::Index size_ = 0;
   int per_segment_ = 3;          // J: θ; A: r, θ
   Eigen::Index work_ = 0;        // offset of the work coordinates in q

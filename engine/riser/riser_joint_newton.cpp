@@ -59,7 +59,7 @@ void JointNewtonMatrix::refresh(const IterationMatrixRequest& request) {
   twin_chart_.reset(y_twin_, q_twin_, v_twin_);
   for (int k = 0; k < segments_; ++k) {
     const int i = f_ + k;
-    rate_map_[k] = chartRateMap(chart_.kind(), request.q.segment<3>(jointIndex(k)));
+    rate_map_[k] = chartMaps(chart_.kind(), request.q.segment<3>(jointIndex(k))).rate_map;
     rate_map_inverse_[k] = rate_map_[k].inverse();
     rot_[k] = pose_ws_.pose.rotation[i];
     arm_[k] = m_.segments[i].length * rot_[k].col(0);

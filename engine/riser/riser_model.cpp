@@ -17,12 +17,6 @@ SectionRow sectionAt(const RiserParameters& p, double s) {
   return r;
 }
 
-Mat3 skew(const Vec3& v) {
-  Mat3 m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
-
 // Newton-Euler mass matrix of a uniform straight segment about its origin, in its own frame:
 // [[m I, -m[c]x], [m[c]x, I_A]] with c = (l/2) e1, I_A = diag(ι l, m l²/3 + ι l/2, m l²/3 + ι l/2)
 // (brief §2.3: J = diag(μ l³/3, ι l/2, ι l/2), I' = tr(J) 1 - J).

@@ -30,6 +30,13 @@ using Mat3 = Eigen::Matrix3d;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 
+// [v]×: the matrix of the cross product, [v]× w = v × w.
+inline Mat3 skew(const Vec3& v) {
+  Mat3 s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
+
 enum class TopCondition { Pinned, Clamped, Tensioner, Free };
 enum class BottomCondition { Pinned, Clamped, Free, Spring };
 enum class Formulation { Joint, Absolute };

@@ -109,9 +109,11 @@ TEST(RiserStaticsBanded, ThousandLinkChainMatchesTheCatenaryToTheDiscretisationE
 
 // A slack 3D cable held at both ends: the 30 m cable of riser_cable_3d_circle pinned to an anchor 26.9 m away
 // (10 m aside, 25 m down), current at 45° to that plane. From the sagging arc in the vertical plane the
-// pseudo-time Newton finds it at n = 100 (142 damped iterations) but not at n = 50, 200 or 1000; there
-// dynamic relaxation (riser_relaxation: one pendulum period of damped motion, 11 s) brings the shape close
-// enough for the same O(n) Newton (before it, n = 50 took the dense path, 3 s, and n = 200 failed after 156 s).
+// pseudo-time Newton finds it at n = 100 (142 damped iterations) but not at n = 50 or 1000; there dynamic
+// relaxation (riser_relaxation: one pendulum period of damped motion, 11 s) brings the shape close enough for
+// the same O(n) Newton (before it, n = 50 took the dense path, 3 s, and n = 200 failed after 156 s). n = 200 is
+// at the edge: relaxed until the chart maps' round-off changed (session 12: Rodrigues' formula for the turn),
+// since then found by Newton alone in 200 of its 1000 iterations; either path is accepted there.
 // Checked: at n = 50 the relaxed-then-Newton equilibrium is the dense Newton's (independent path: load
 // continuation, dense Jacobian) to 1e-8 m at every joint; every solution holds the bottom on the anchor; the
 // midpoints of n = 25 (dense), 50, 100, 200 (relaxed) and 400 (Newton alone) converge as one sequence.
@@ -129,7 +131,7 @@ TEST(RiserStaticsBanded, SlackCableHeldAtBothEndsIsFoundByDynamicRelaxation) {
     if (n == 100) {
       EXPECT_EQ(s.relaxation_time, 0.0);
     }
-    if (n == 50 || n == 200) {
+    if (n == 50) {
       EXPECT_GT(s.relaxation_time, 0.0) << n;
       ASSERT_EQ(context.warnings().size(), 1u) << n;
       EXPECT_NE(context.warnings().front().find("dynamic relaxation"), std::string::npos) << context.warnings().front();
