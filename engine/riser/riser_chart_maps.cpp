@@ -1,6 +1,7 @@
 #include "riser/riser_chart_maps.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <Eigen/Geometry>
 
@@ -66,7 +67,9 @@ Vec3 chartCoordinates(ChartKind kind, const Mat3& turn) {
   // The swing turns e_x to the axis t about e_x × t; atan2 keeps the angle accurate near 0 and π.
   const Vec3 axis = turn.col(0), normal = Vec3::UnitX().cross(axis);
   const double sine = normal.norm();
-  const Vec3 swing = sine > 0 ? Vec3(std::atan2(sine, axis.x()) * normal / sine) : Vec3::Zero();
+  // An axis turned exactly to −e_x: any half turn about an axis normal to e_x will do (e_y here).
+  const Vec3 half_turn(0, axis.x() < 0 ? std::numbers::pi : 0.0, 0);
+  const Vec3 swing = sine > 0 ? Vec3(std::atan2(sine, axis.x()) * normal / sine) : half_turn;
   const Mat3 spin = chartMaps(ChartKind::RotationVector, swing).turn.transpose() * turn;
   return {std::atan2(spin(2, 1), spin(1, 1)), swing.y(), swing.z()};
 }

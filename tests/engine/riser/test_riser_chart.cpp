@@ -84,6 +84,10 @@ TEST(RiserChart, CoordinatesInvertTheTurn) {
     }
     const Vec3 spin(0.6, 0, 0);
     EXPECT_LT((chartCoordinates(kind, chartTurn(kind, spin)) - spin).norm(), 1e-15);
+    // The axis turned exactly to −e_x (a half turn about e_z, then a spin): some θ of the same turn.
+    Mat3 flipped;
+    flipped << -1, 0, 0, 0, -std::cos(0.4), std::sin(0.4), 0, std::sin(0.4), std::cos(0.4);
+    EXPECT_LT((chartTurn(kind, chartCoordinates(kind, flipped)) - flipped).norm(), 1e-13);
   }
 }
 
