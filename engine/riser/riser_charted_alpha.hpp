@@ -43,7 +43,7 @@ class ChartedGeneralizedAlpha {
 
  private:
   const RiserModel& m_;
-  RotationVectorChart chart_;
+  OrientationChart chart_;
   std::optional<ForceSpaceNewtonMatrix> newton_;      // absolute coordinates
   std::optional<JointNewtonMatrix> joint_newton_;     // joint coordinates
   RiserWorkspace projection_ws_;

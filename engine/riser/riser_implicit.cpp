@@ -16,7 +16,7 @@ constexpr double kLargestChartRotation = 5.0;  // [rad]
 
 }  // namespace
 
-RotationVectorChart::RotationVectorChart(const RiserModel& m, double stabilisation_rate)
+OrientationChart::OrientationChart(const RiserModel& m, double stabilisation_rate)
     : m_(m),
       kind_(m.torsion ? ChartKind::RotationVector : ChartKind::SwingTwist),
       ws_(makeWorkspace(m, stabilisation_rate)) {
@@ -29,7 +29,7 @@ RotationVectorChart::RotationVectorChart(const RiserModel& m, double stabilisati
   dy_.resize(stateSize(m));
 }
 
-void RotationVectorChart::reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) {
+void OrientationChart::reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) {
   // The current orientations become the references; fromState then gives θ = 0 exactly (see there).
   const bool joint = m_.formulation == Formulation::Joint;
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
@@ -42,7 +42,7 @@ void RotationVectorChart::reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Ei
   fromState(y, q, v);
 }
 
-void RotationVectorChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) const {
+void OrientationChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) const {
   q.head<3>() = y.head<3>();
   v.head<3>() = y.segment<3>(3);
   const bool joint = m_.formulation == Formulation::Joint;
@@ -67,11 +67,11 @@ void RotationVectorChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q
   for (int w = 0; w < kWorkIntegrals; ++w) v[work_ + w] = y[ow + w];
 }
 
-void RotationVectorChart::toState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
+void OrientationChart::toState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
   writeState(q, v, y, nullptr);
 }
 
-void RotationVectorChart::writeState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y,
+void OrientationChart::writeState(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& y,
                                      std::vector<ChartMaps>* maps_with_rates) const {
   y.setZero(stateSize(m_));
   if (maps_with_rates) maps_with_rates->resize(m_.last_dynamic - m_.first_dynamic + 1);
@@ -98,7 +98,7 @@ void RotationVectorChart::writeState(const Eigen::VectorXd& q, const Eigen::Vect
   for (int w = 0; w < kWorkIntegrals; ++w) y[ow + w] = v[work_ + w];
 }
 
-void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+void OrientationChart::residual(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                    const Eigen::VectorXd& acc, Eigen::VectorXd& r) {
   writeState(q, v, y_, &maps_);
   evaluateRhs(m_, ws_, t, y_, dy_);
@@ -133,7 +133,7 @@ void RotationVectorChart::residual(double t, const Eigen::VectorXd& q, const Eig
   for (int w = 0; w < kWorkIntegrals; ++w) r[work_ + w] = acc[work_ + w] - dy_[ow + w];
 }
 
-void RotationVectorChart::rebaseAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+void OrientationChart::rebaseAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                               Eigen::VectorXd& acc) const {
   const int off = m_.formulation == Formulation::Joint ? 0 : 3;
   for (int k = 0; k <= m_.last_dynamic - m_.first_dynamic; ++k) {
@@ -148,7 +148,7 @@ void RotationVectorChart::rebaseAccelerations(const Eigen::VectorXd& q, const Ei
   }
 }
 
-void RotationVectorChart::accelerationMap(const Eigen::VectorXd& q, std::vector<Mat3>& turn, std::vector<Vec3>& arm) const {
+void OrientationChart::accelerationMap(const Eigen::VectorXd& q, std::vector<Mat3>& turn, std::vector<Vec3>& arm) const {
   const int segments = m_.last_dynamic - m_.first_dynamic + 1;
   const int off = m_.formulation == Formulation::Joint ? 0 : 3;
   turn.resize(segments);
@@ -162,7 +162,7 @@ void RotationVectorChart::accelerationMap(const Eigen::VectorXd& q, std::vector<
   }
 }
 
-void RotationVectorChart::balance(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
+void OrientationChart::balance(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
                                   const std::vector<Vec3>& reaction, std::vector<Vec6>& segment_residual,
                                   std::vector<Vec3>& row_residual) {
   writeState(q, v, y_, &maps_);
@@ -179,7 +179,7 @@ void RotationVectorChart::balance(double t, const Eigen::VectorXd& q, const Eige
   balanceResidual(m_, ws_, t, x_, reaction, segment_residual, row_residual);
 }
 
-double RotationVectorChart::largestRotation(const Eigen::VectorXd& q) const {
+double OrientationChart::largestRotation(const Eigen::VectorXd& q) const {
   double largest = 0;
   const int off = m_.formulation == Formulation::Joint ? 0 : 3;
   for (int k = 0; k <= m_.last_dynamic - m_.first_dynamic; ++k)
@@ -187,7 +187,7 @@ double RotationVectorChart::largestRotation(const Eigen::VectorXd& q) const {
   return largest;
 }
 
-std::string RotationVectorChart::name(Eigen::Index k) const {
+std::string OrientationChart::name(Eigen::Index k) const {
   static const char* axis[] = {"x", "y", "z"};
   if (k < 3) return std::string("top position ") + axis[k];
   if (k >= work_) return "work integral " + std::to_string(k - work_);

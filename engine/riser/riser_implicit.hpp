@@ -17,9 +17,11 @@
 
 namespace maris::riser {
 
-class RotationVectorChart {
+// The chart of one chunk: references, maps between (q, v) and the first-order state, and the residual.
+// Its kind is the rotation vector with torsion and swing–twist without (riser_chart_maps).
+class OrientationChart {
  public:
-  RotationVectorChart(const RiserModel& m, double stabilisation_rate);
+  OrientationChart(const RiserModel& m, double stabilisation_rate);
 
   Eigen::Index size() const { return size_; }
   // Takes the orientations of first-order state y as the references; q (θ = 0) and v from y.

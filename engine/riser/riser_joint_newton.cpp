@@ -37,7 +37,7 @@ Eigen::Index twinIndex(int k) { return 3 + 6 * static_cast<Eigen::Index>(k); }
 
 }  // namespace
 
-JointNewtonMatrix::JointNewtonMatrix(const RiserModel& joint, const RotationVectorChart& chart, double stabilisation_rate)
+JointNewtonMatrix::JointNewtonMatrix(const RiserModel& joint, const OrientationChart& chart, double stabilisation_rate)
     : m_(joint),
       chart_(chart),
       twin_(absoluteTwin(joint)),

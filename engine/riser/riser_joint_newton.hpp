@@ -37,7 +37,7 @@ class JointNewtonMatrix {
  public:
   // `joint` must use joint coordinates (throws std::invalid_argument otherwise); keeps references to
   // `joint` and `chart` (the joint chart the integrator iterates in).
-  JointNewtonMatrix(const RiserModel& joint, const RotationVectorChart& chart, double stabilisation_rate);
+  JointNewtonMatrix(const RiserModel& joint, const OrientationChart& chart, double stabilisation_rate);
   JointNewtonMatrix(const JointNewtonMatrix&) = delete;
   JointNewtonMatrix& operator=(const JointNewtonMatrix&) = delete;
 
@@ -55,9 +55,9 @@ class JointNewtonMatrix {
   void refresh(const IterationMatrixRequest& request);
 
   const RiserModel& m_;
-  const RotationVectorChart& chart_;
+  const OrientationChart& chart_;
   RiserModel twin_;                    // absolute twin (declared before the members that refer to it)
-  RotationVectorChart twin_chart_;
+  OrientationChart twin_chart_;
   ForceSpaceNewtonMatrix twin_newton_;
   RiserWorkspace pose_ws_;
   int f_ = 0, segments_ = 0;

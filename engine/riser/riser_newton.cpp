@@ -26,7 +26,7 @@ constexpr double kStaticCoordinateStep = 1e-7;
 
 }  // namespace
 
-ForceSpaceNewtonMatrix::ForceSpaceNewtonMatrix(const RiserModel& m, RotationVectorChart& chart) : m_(m), chart_(chart) {
+ForceSpaceNewtonMatrix::ForceSpaceNewtonMatrix(const RiserModel& m, OrientationChart& chart) : m_(m), chart_(chart) {
   if (m.formulation != Formulation::Absolute)
     throw std::invalid_argument("ForceSpaceNewtonMatrix: absolute coordinates only");
   f_ = m.first_dynamic;

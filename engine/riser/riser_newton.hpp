@@ -27,7 +27,7 @@ namespace maris::riser {
 class ForceSpaceNewtonMatrix {
  public:
   // Absolute coordinates only (throws std::invalid_argument otherwise). Keeps references to both.
-  ForceSpaceNewtonMatrix(const RiserModel& m, RotationVectorChart& chart);
+  ForceSpaceNewtonMatrix(const RiserModel& m, OrientationChart& chart);
 
   // Overwrites rhs with S⁻¹ rhs; forms and factorises K when request.refresh, when there is none yet, or when
   // β', γ' changed. Returns false if K is singular. Matches SecondOrderSystem::solve_iteration_matrix.
@@ -46,7 +46,7 @@ class ForceSpaceNewtonMatrix {
   void pack(const std::vector<Vec6>& segment_residual, const std::vector<Vec3>& row_residual, Eigen::VectorXd& out) const;
 
   const RiserModel& m_;
-  RotationVectorChart& chart_;
+  OrientationChart& chart_;
   int f_ = 0, segments_ = 0;
   Eigen::Index size_ = 0, band_ = 0;
   BandedLu lu_;

@@ -234,7 +234,7 @@ bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration
   m.formulation = Formulation::Joint;
   constexpr double kRate = 1.0;                    // [1/s] bottom Baumgarte rate: only α²Φ = 0 matters
   constexpr double kFirst = 1.0, kLargest = 1e8, kSmallest = 1e-4;  // [s²] pseudo-time β'
-  RotationVectorChart chart(m, kRate);
+  OrientationChart chart(m, kRate);
   JointNewtonMatrix newton(m, chart, kRate);
   newton.useCoordinateSteps();
   Eigen::VectorXd y = restState(m, x.orientation, x.top), q, v, acc, res, step, simplified, trial_q, trial_y;

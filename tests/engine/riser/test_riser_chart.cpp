@@ -102,7 +102,7 @@ TEST(RiserChart, RebasedAccelerationsAreTheSameMotion) {
       RiserParameters p = test::inclinedTensionedRiser(6, formulation, false);
       p.torsion = torsion;
       const RiserModel m = buildRiserModel(p);
-      RotationVectorChart chart(m, 10.0);
+      OrientationChart chart(m, 10.0);
       ASSERT_EQ(chart.kind(), torsion ? ChartKind::RotationVector : ChartKind::SwingTwist);
       Eigen::VectorXd q, v, y, acc, r;
       chart.reset(restState(m, m.initial_orientation, m.initial_top), q, v);

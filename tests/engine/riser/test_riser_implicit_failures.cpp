@@ -25,7 +25,7 @@ TEST(RiserImplicitFailures, ResidualBeyondTheChartIsNonFiniteAndNamed) {
   p.segment_count = 6;
   p.solve_statics = false;
   const RiserModel m = buildRiserModel(p);
-  RotationVectorChart chart(m, 10.0);
+  OrientationChart chart(m, 10.0);
   Eigen::VectorXd y = restState(m, m.initial_orientation, m.initial_top), q, v, r;
   chart.reset(y, q, v);
   const Eigen::VectorXd acc = Eigen::VectorXd::Zero(chart.size());

@@ -42,7 +42,7 @@ JointCase movingJointModel(int n, bool torsion, bool flow) {
 
 // S_J = ∂r/∂acc + γ'∂r/∂v + β'∂r/∂q of the joint chart residual by central differences of every column
 // (independent of the twin construction).
-Eigen::MatrixXd denseIterationMatrix(RotationVectorChart& chart, double t, const Eigen::VectorXd& q,
+Eigen::MatrixXd denseIterationMatrix(OrientationChart& chart, double t, const Eigen::VectorXd& q,
                                      const Eigen::VectorXd& v, const Eigen::VectorXd& acc, double dq, double dv) {
   const Eigen::Index n = chart.size();
   Eigen::MatrixXd s(n, n);
@@ -71,7 +71,7 @@ TEST(RiserJointNewton, TwinSolveInvertsTheDenseJointIterationMatrix) {
     for (bool torsion : {true, false})
       for (bool flow : {false, true}) {
         JointCase c = movingJointModel(8, torsion, flow);
-        RotationVectorChart chart(c.m, 20.0);
+        OrientationChart chart(c.m, 20.0);
         Eigen::VectorXd q, v, r0;
         chart.reset(c.y, q, v);
         const Eigen::Index n = chart.size(), work = n - kWorkIntegrals;
@@ -111,7 +111,7 @@ TEST(RiserJointNewton, EvaluationsPerRefreshDoNotGrowWithN) {
   int idx = 0;
   for (int n : {12, 48}) {
     JointCase c = movingJointModel(n, true, false);
-    RotationVectorChart chart(c.m, 20.0);
+    OrientationChart chart(c.m, 20.0);
     Eigen::VectorXd q, v, r0;
     chart.reset(c.y, q, v);
     Eigen::VectorXd acc = Eigen::VectorXd::Zero(chart.size());
@@ -144,7 +144,7 @@ TEST(RiserJointNewton, TwinMatrixGivesTheDenseTrajectoryWithComparableNewtonIter
     long newton_residuals = 0;  // residuals of the Newton iterations (not those forming a dense matrix)
   };
   auto integrate = [&](bool twin) {
-    RotationVectorChart chart(m, 50.0);
+    OrientationChart chart(m, 50.0);
     JointNewtonMatrix newton(m, chart, 50.0);
     SecondOrderSystem system;
     system.size = chart.size();

@@ -66,7 +66,7 @@ TEST(RiserNewton, BalanceResidualVanishesAtTheReactionSolution) {
 // and mapping back gives the same state: positions and velocities to 1e-14 (round-off), rotations to 1e-15.
 TEST(RiserNewton, ChartResetStartsAtZeroRotationAndMapsBack) {
   MovingModel c = movingAbsoluteModel(false);
-  RotationVectorChart chart(c.m, 10.0);
+  OrientationChart chart(c.m, 10.0);
   Eigen::VectorXd q, v, y;
   chart.reset(c.y, q, v);
   for (int k = 0; k <= c.m.last_dynamic - c.m.first_dynamic; ++k)
@@ -93,7 +93,7 @@ TEST(RiserNewton, BandedForceSpaceSolveInvertsTheDenseIterationMatrix) {
   if (const char* e = std::getenv("DENSE_STEP")) kDenseStep = std::atof(e);
   for (bool flow : {false, true}) {
     MovingModel c = movingAbsoluteModel(flow);
-    RotationVectorChart chart(c.m, 10.0);
+    OrientationChart chart(c.m, 10.0);
     Eigen::VectorXd q, v, r0, rp, rm;
     chart.reset(c.y, q, v);
     const Eigen::Index n = chart.size();
