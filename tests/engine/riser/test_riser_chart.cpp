@@ -38,13 +38,15 @@ TEST(RiserChart, RateMapsGiveTheBodyAngularVelocity) {
 }
 
 // The rate term Ṁ θ̇ (closed form) against central differences of M along θ̇ (step 1e-5: truncation ~1e-10,
-// round-off ~1e-11), at random θ up to 3 rad and at tiny ones (the series branch below 1e-2 rad).
+// round-off ~1e-11), at random θ of sizes up to 3 rad, 0.2 and 0.05 rad (both sides of the series branch below
+// 0.1 rad) and 5e-3 rad.
 TEST(RiserChart, RateTermIsTheDerivativeOfTheRateMap) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double sizes[] = {3.0, 0.2, 0.05, 5e-3};
   for (ChartKind kind : {ChartKind::RotationVector, ChartKind::SwingTwist})
-    for (int k = 0; k < 100; ++k) {
-      const double size = k % 2 ? 3.0 : 5e-3;
+    for (int k = 0; k < 200; ++k) {
+      const double size = sizes[k % 4];
       const Vec3 theta = size * Vec3(u(rng), u(rng), u(rng)) / std::sqrt(3.0), rate(u(rng), u(rng), u(rng));
       const double h = 1e-5;
       const Vec3 differences = (chartRateMap(kind, theta + h * rate) - chartRateMap(kind, theta - h * rate)) * rate / (2 * h);
