@@ -45,9 +45,64 @@ ChartedGeneralizedAlpha::ChartedGeneralizedAlpha(const RiserModel& m, double sta
   }
 }
 
+namespace {
+
+// [rad/s] the largest angular speed of the segments in first-order state y.
+double largestAngularSpeed(const RiserModel& m, const Eigen::VectorXd& y) {
+  const Eigen::Index omega = m.formulation == Formulation::Joint ? 4 : 10;
+  double largest = 0.0;
+  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i)
+    largest = std::max(largest, y.segment<3>(segmentStateOffset(m, i) + omega).norm());
+  return largest;
+}
+
+// A chart is used for at most the time a segment takes to turn this far at the speed of the chart's start, so
+// that a fast segment (a whipping free end) stays well inside the chart's reach (riser_implicit: a swing of
+// 2.8 rad without torsion) even if it speeds up twofold.
+constexpr double kChartTurn = 1.0;  // [rad]
+
+}  // namespace
+
 OdeStats ChartedGeneralizedAlpha::advance(Eigen::VectorXd& y, OdeOptions options, const GeneralizedAlphaOptions& alpha,
                                           RunContext& context, const RunContext::ProgressFn& progress,
                                           const StateObserver& observer) {
+  const double t0 = options.t0, t1 = options.t1;
+  const double tol = 1e-9 * std::max(std::abs(t1), t1 - t0);
+  OdeStats total;
+  for (double t = t0; t < t1 - tol;) {
+    // A new chart where the segments turn fast; the last piece not shorter than half a reach. The pieces end on
+    // the chunk's output grid (the core counts output times from each call's start), at least one interval on.
+    const double speed = largestAngularSpeed(m_, y);
+    const double reach = speed > 0 ? kChartTurn / speed : t1 - t;
+    double end = t1;
+    if (t1 - t > 1.5 * reach) {
+      end = t + reach;
+      if (const double every = options.output_interval; every > 0) {
+        const double at = std::round((t - t0) / every);
+        end = t0 + std::max(at + 1, std::floor((end - t0) / every)) * every;
+      }
+      if (end >= t1 - tol) end = t1;
+    }
+    options.t0 = t;
+    options.t1 = end;
+    RunContext::ProgressFn piece_progress;
+    if (progress)
+      piece_progress = [&](double f, const std::string& stage) { progress((t - t0 + f * (end - t)) / (t1 - t0), stage); };
+    const OdeStats s = advanceChart(y, options, alpha, context, piece_progress, observer, t1);
+    total.steps += s.steps;
+    total.rejected_steps += s.rejected_steps;
+    total.rhs_evaluations += s.rhs_evaluations;
+    total.jacobian_evaluations += s.jacobian_evaluations;
+    total.error_estimate += s.error_estimate;
+    if (s.last_step > 0) total.last_step = s.last_step;
+    t = end;
+  }
+  return total;
+}
+
+OdeStats ChartedGeneralizedAlpha::advanceChart(Eigen::VectorXd& y, OdeOptions options, const GeneralizedAlphaOptions& alpha,
+                                               RunContext& context, const RunContext::ProgressFn& progress,
+                                               const StateObserver& observer, double chunk_end) {
   context_ = &context;
   if (carried_.acceleration.size() > 0) {
     chart_.rebaseAccelerations(q_, v_, carried_.acceleration);
@@ -55,12 +110,14 @@ OdeStats ChartedGeneralizedAlpha::advance(Eigen::VectorXd& y, OdeOptions options
   }
   chart_.reset(y, q_, v_);
   options.state_name = [this](Eigen::Index k) { return chart_.name(k); };
-  const double t0 = options.t0, t1 = options.t1;
-  const double tol = 1e-9 * std::max(std::abs(t1), t1 - t0);
+  // The observer sees the output times after the piece's start (the previous piece's end, seen there) and
+  // before the chunk's end (the caller's); a piece's own end inside the chunk is on the output grid.
+  const double t0 = options.t0;
+  const double tol = 1e-9 * std::max(std::abs(chunk_end), chunk_end - t0);
   SecondOrderObserver inner;
   if (observer)
     inner = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd&) {
-      if (t <= t0 + tol || t >= t1 - tol) return;
+      if (t <= t0 + tol || t >= chunk_end - tol) return;
       chart_.toState(q, v, state_);
       observer(t, state_);
     };

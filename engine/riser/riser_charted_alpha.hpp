@@ -32,7 +32,8 @@ class ChartedGeneralizedAlpha {
   ChartedGeneralizedAlpha& operator=(const ChartedGeneralizedAlpha&) = delete;
 
   // Integrates the first-order state y (riser_dynamics layout) from options.t0 to options.t1 as one chunk and
-  // leaves it normalised in y. options.state_name is set here (the chart's coordinate names). `context` is
+  // leaves it normalised in y. The chunk is cut into pieces, each in a fresh chart, where a segment turns faster
+  // than 1 rad per chunk (by the angular speeds at each piece's start): a whipping end stays inside the chart. options.state_name is set here (the chart's coordinate names). `context` is
   // checked for cancellation in every residual; `progress` (may be empty) sees the fraction of this chunk.
   // Throws SolverError (its step counted from the first chunk; an iterate beyond the chart named as such),
   // RunCancelled.
@@ -42,6 +43,11 @@ class ChartedGeneralizedAlpha {
   long steps() const { return steps_; }  // accepted steps of all chunks so far
 
  private:
+  // One piece [options.t0, options.t1] of the chunk ending at chunk_end, in a chart reset at its start.
+  OdeStats advanceChart(Eigen::VectorXd& y, OdeOptions options, const GeneralizedAlphaOptions& alpha,
+                        RunContext& context, const RunContext::ProgressFn& progress, const StateObserver& observer,
+                        double chunk_end);
+
   const RiserModel& m_;
   OrientationChart chart_;
   std::optional<ForceSpaceNewtonMatrix> newton_;      // absolute coordinates

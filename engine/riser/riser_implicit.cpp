@@ -11,8 +11,12 @@
 namespace maris::riser {
 namespace {
 
-// Rotations above this within one chunk mean the chunk is far too long for the chart (J_r is singular at 2π).
-constexpr double kLargestChartRotation = 5.0;  // [rad]
+// Turns above these within one chunk mean the chunk is far too long for the chart: the rotation vector's
+// J_r is singular at |θ| = 2π, the swing–twist rate map at a swing |θ_s| = π (det M ∝ sin|θ_s|/|θ_s|: the
+// axis reversed, where swing and spin are no longer apart). Measured: a whipping chain's free end at a swing
+// near π failed Newton down to the smallest step, with the largest correction in its swing.
+constexpr double kLargestRotationVector = 5.0;  // [rad] |θ|
+constexpr double kLargestSwing = 2.8;           // [rad] |θ_s|: sin|θ_s|/|θ_s| ≥ 0.12
 
 }  // namespace
 
@@ -113,11 +117,14 @@ void OrientationChart::residual(double t, const Eigen::VectorXd& q, const Eigen:
     // An iterate beyond the chart (a Newton iteration running away at too long a step, or a chunk longer
     // than the segment's turning allows): a non-finite residual makes the integrator halve the step;
     // the note names the segment if the halving runs out (chartOverflow).
-    if (!(theta.norm() < kLargestChartRotation)) {
-      const char* coordinates = kind_ == ChartKind::SwingTwist ? " swing-twist angles" : " rotation vector";
+    const bool swing_twist = kind_ == ChartKind::SwingTwist;
+    const double reach = swing_twist ? theta.tail<2>().norm() : theta.norm();
+    const double limit = swing_twist ? kLargestSwing : kLargestRotationVector;
+    if (!(reach < limit)) {
+      const char* coordinates = swing_twist ? " swing-twist angles" : " rotation vector";
       overflow_ = {t, "segment " + std::to_string(i) + coordinates,
-                   "reached |θ| = " + std::to_string(theta.norm()) + " rad, beyond the chart's limit of " +
-                       std::to_string(kLargestChartRotation) + " rad"};
+                   std::string(swing_twist ? "reached a swing |θ_s| = " : "reached |θ| = ") + std::to_string(reach) +
+                       " rad, beyond the chart's limit of " + std::to_string(limit) + " rad"};
       r.setConstant(std::numeric_limits<double>::quiet_NaN());
       return;
     }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "core/errors.hpp"
 #include "riser/riser_scene.hpp"
@@ -62,6 +63,68 @@ TEST(RiserHardCases, SlackChainFallsSnapsTautAndWhipsConservingEnergy) {
       EXPECT_GT(previous / error, 8.0) << "energy error must fall at fourth order";
     }
     previous = error;
+  }
+}
+
+// The same falling, snapping and whipping chain without torsion, integrated implicitly in both formulations:
+// generalized-α through the swing–twist chart (riser_chart_maps), whose reach is a swing of 2.8 rad (it is
+// singular at π). In 0.05 s output chunks the whipping free end turned past it (J2 at h = 1.25 ms failed at
+// t = 1.78 s down to the smallest step); now a chunk is cut into pieces, each in a fresh chart, where a segment
+// turns faster than 1 rad per chunk. Against RK4 at h = 2e-4 s (above: energy error < 1e-5), the end point's
+// largest distance over the run, relative to L, for h = 2.5, 1.25, 0.625 ms:
+//   J2: 6.9e-2, 2.0e-2, 6.3e-3 (ratios 3.4, 3.2: second order); asserted ratio ≥ 2.8 and < 1e-2 at the finest.
+//   A2: 0.106, 0.087, 0.067 over the run, and 1.3e-3, 7.0e-4, 4.3e-4 before the snap (t < 1.5 s): first order
+//       here, a known limit of the absolute coordinates on this violent case (docs/riser.md); asserted only that
+//       both fall (ratios ≥ 1.15 and ≥ 1.5).
+TEST(RiserHardCases, SlackChainWhipsThroughTheImplicitSwingTwistChart) {
+  RiserParameters p = test::calmInAir();
+  p.length = 10.0;
+  p.segment_count = 10;
+  p.outer_diameter = 0.05;
+  p.inner_diameter = 0.0;
+  p.youngs_modulus = 1e-3;
+  p.torsion = false;
+  p.added_mass_coefficient = 0.0;
+  p.initial_inclination = kPi - 0.3;
+  p.solve_statics = false;
+  p.end_time = 2.5;
+  p.frame_count = 50;
+  p.time_step = 2e-4;
+  const Results reference = run(p);
+  auto endPoint = [](const Results& r, std::size_t k) {
+    const auto* h = r.findTable("history");
+    return Vec3(h->find("end_x")->values[k], h->find("end_y")->values[k], h->find("end_z")->values[k]);
+  };
+  for (const char* formulation : {"joint", "absolute"}) {
+    const bool joint = std::string(formulation) == "joint";
+    p.formulation = formulation;
+    p.integrator = "implicit";
+    p.tolerance = 1e-6;
+    double previous = 0, previous_early = 0, error = 0;
+    for (double h : {2.5e-3, 1.25e-3, 6.25e-4}) {
+      p.time_step = h;
+      const Results r = run(p);
+      const auto& time = r.findTable("history")->find("time")->values;
+      ASSERT_EQ(time.size(), reference.findTable("history")->find("time")->values.size());
+      double early = 0;
+      error = 0;
+      for (std::size_t k = 0; k < time.size(); ++k) {
+        const double d = (endPoint(r, k) - endPoint(reference, k)).norm() / p.length;
+        error = std::max(error, d);
+        if (time[k] < 1.5) early = std::max(early, d);
+      }
+      if (previous > 0) {
+        EXPECT_GT(previous / error, joint ? 2.8 : 1.15) << formulation << " h = " << h;
+        if (!joint) {
+          EXPECT_GT(previous_early / early, 1.5) << formulation << " h = " << h;
+        }
+      }
+      previous = error;
+      previous_early = early;
+    }
+    if (joint) {
+      EXPECT_LT(error, 1e-2);
+    }
   }
 }
 
