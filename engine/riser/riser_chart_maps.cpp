@@ -43,8 +43,6 @@ ChartMaps rotationVectorMaps(const Vec3& theta, const Vec3& rate) {
 
 }  // namespace
 
-Mat3 rightJacobian(const Vec3& theta) { return rotationVectorMaps(theta, Vec3::Zero()).rate_map; }
-
 ChartMaps chartMaps(ChartKind kind, const Vec3& theta, const Vec3& rate) {
   if (kind == ChartKind::RotationVector) return rotationVectorMaps(theta, rate);
   // E = E_s T, T = exp(θ_x[e_x]×). ω = Tᵀ J_s θ̇_s + θ̇_x e_x; its rate at fixed θ̈:

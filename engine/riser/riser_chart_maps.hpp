@@ -7,9 +7,6 @@
 
 namespace maris::riser {
 
-// Right Jacobian of SO(3): body angular velocity of R exp([θ]×) is J_r(θ) θ̇ (R fixed).
-Mat3 rightJacobian(const Vec3& theta);
-
 //   RotationVector: E = exp([θ]×), M = J_r(θ). Used with torsion.
 //   SwingTwist:     E = exp([0, θ_y, θ_z]×) exp(θ_x [e_x]×): a swing of the axis, then a spin θ_x about it;
 //                   M = exp(θ_x[e_x]×)ᵀ J_r(θ_s) P + e_x e_xᵀ with θ_s = Pθ = (0, θ_y, θ_z). Used without torsion,

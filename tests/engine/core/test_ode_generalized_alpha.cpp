@@ -230,27 +230,35 @@ TEST(GeneralizedAlpha, BandedDifferenceJacobianMatchesDenseWithFewerCalls) {
             (n - 3) * dense_stats.jacobian_evaluations);
 }
 
+// Runs `system` from rest at h = 0.1 s (min_step 1e-3 s) to t = 1 s, coordinate 0 named "pendulum angle" and any
+// other "work integral", and returns the SolverError it must end with.
+SolverError newtonFailureOf(const SecondOrderSystem& system) {
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(system.size), v = Eigen::VectorXd::Zero(system.size);
+  OdeOptions options;
+  options.step = 0.1;
+  options.min_step = 1e-3;
+  options.state_name = [](Eigen::Index k) { return std::string(k == 0 ? "pendulum angle" : "work integral"); };
+  RunContext ctx;
+  try {
+    integrateGeneralizedAlpha(system, q, v, options, GeneralizedAlphaOptions{}, ctx);
+  } catch (const SolverError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected SolverError";
+  return SolverError("none", 0.0, 0, "the run did not fail");
+}
+
 TEST(GeneralizedAlpha, NewtonFailureIsSolverErrorNamingTheCoordinate) {
   // r = acc − 1 before t = 0.5, then acc² + 1, which has no real root at any step size.
   SecondOrderSystem system;
   system.size = 1;
   system.residual = [](double t, const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd& acc,
                        Eigen::VectorXd& r) { r[0] = t < 0.5 ? acc[0] - 1.0 : acc[0] * acc[0] + 1.0; };
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(1), v = Eigen::VectorXd::Zero(1);
-  OdeOptions options;
-  options.step = 0.1;
-  options.min_step = 1e-3;
-  options.state_name = [](Eigen::Index) { return std::string("pendulum angle"); };
-  RunContext ctx;
-  try {
-    integrateGeneralizedAlpha(system, q, v, options, GeneralizedAlphaOptions{}, ctx);
-    FAIL() << "expected SolverError";
-  } catch (const SolverError& e) {
-    EXPECT_EQ(e.quantity(), "pendulum angle") << e.what();
-    EXPECT_GE(e.time(), 0.5);
-    EXPECT_LT(e.time(), 0.51);  // failed at the first step past 0.5 after halving to ~min_step
-    EXPECT_NE(std::string(e.what()).find("Newton"), std::string::npos) << e.what();
-  }
+  const SolverError e = newtonFailureOf(system);
+  EXPECT_EQ(e.quantity(), "pendulum angle") << e.what();
+  EXPECT_GE(e.time(), 0.5);
+  EXPECT_LT(e.time(), 0.51);  // failed at the first step past 0.5 after halving to ~min_step
+  EXPECT_NE(std::string(e.what()).find("Newton"), std::string::npos) << e.what();
 }
 
 // The same failure with a passive coordinate beside it whose corrections are far larger (a residual the
@@ -266,19 +274,9 @@ TEST(GeneralizedAlpha, NewtonFailureNamesACheckedCoordinateNotAPassiveOne) {
     r[1] = 2.0 * acc[1] - 1e6;
   };
   system.solve_iteration_matrix = [](const IterationMatrixRequest&, Eigen::VectorXd&) { return true; };
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(2), v = Eigen::VectorXd::Zero(2);
-  OdeOptions options;
-  options.step = 0.1;
-  options.min_step = 1e-3;
-  options.state_name = [](Eigen::Index k) { return std::string(k == 0 ? "pendulum angle" : "work integral"); };
-  RunContext ctx;
-  try {
-    integrateGeneralizedAlpha(system, q, v, options, GeneralizedAlphaOptions{}, ctx);
-    FAIL() << "expected SolverError";
-  } catch (const SolverError& e) {
-    EXPECT_EQ(e.quantity(), "pendulum angle") << e.what();
-    EXPECT_GE(e.time(), 0.5);
-  }
+  const SolverError e = newtonFailureOf(system);
+  EXPECT_EQ(e.quantity(), "pendulum angle") << e.what();
+  EXPECT_GE(e.time(), 0.5);
 }
 
 TEST(GeneralizedAlpha, HalvingRecoversFromALocalNewtonFailure) {

@@ -60,6 +60,20 @@ inline RiserParameters calmInAir() {
   return p;
 }
 
+// A 10 m chain in calm air, n segments: a solid 0.05 m rod with E = 1e-3 Pa (EI ≈ 3e-10 N·m²), no torsion, no
+// added mass (it would act along the whole length even above water).
+inline RiserParameters chainInAir(int n) {
+  RiserParameters p = calmInAir();
+  p.length = 10.0;
+  p.segment_count = n;
+  p.outer_diameter = 0.05;
+  p.inner_diameter = 0.0;
+  p.youngs_modulus = 1e-3;
+  p.torsion = false;
+  p.added_mass_coefficient = 0.0;
+  return p;
+}
+
 // Horizontal cantilever of length L clamped at the origin along +x, weightless, with a dead tip force
 // -P e_z. EI of the default steel tube (D 0.1 / 0.08 m).
 inline RiserParameters tipLoadedCantilever(int n, double tip_force, double length = 10.0) {

@@ -22,6 +22,16 @@ Results run(const RiserParameters& p) {
 
 double scalar(const Results& r, const std::string& name) { return r.findScalar(name)->value; }
 
+// The chain of test::chainInAir(10) pinned at the top and released 17° from upright, at rest: over 2.5 s it
+// falls, snaps taut below the support (≈ 1.6 s) and whips its free end.
+RiserParameters fallingChain() {
+  RiserParameters p = test::chainInAir(10);
+  p.initial_inclination = kPi - 0.3;
+  p.solve_statics = false;
+  p.end_time = 2.5;
+  return p;
+}
+
 // A chain (EI ≈ 0) pinned at the top, released almost upright: it folds (slack), falls past the
 // support, snaps taut when it straightens below it and whips its free end through large rotations. No
 // drag or damping, so E(t) = E(0) (the run's energy_balance_error, relative to the energy scale) up to
@@ -31,17 +41,7 @@ double scalar(const Results& r, const std::string& name) { return r.findScalar(n
 // of the relative-ZYX spring law (eq 21) and energy is then not conserved (measured 4e-3 to 2e-1 for
 // EI = 6 N·m², n = 10, not converging with h); EI ≈ 0 keeps the spring moments negligible.
 TEST(RiserHardCases, SlackChainFallsSnapsTautAndWhipsConservingEnergy) {
-  RiserParameters p = test::calmInAir();
-  p.length = 10.0;
-  p.segment_count = 10;
-  p.outer_diameter = 0.05;
-  p.inner_diameter = 0.0;
-  p.youngs_modulus = 1e-3;  // EI ≈ 3e-10 N·m²: a chain
-  p.torsion = false;
-  p.added_mass_coefficient = 0.0;
-  p.initial_inclination = kPi - 0.3;  // 17° from upright
-  p.solve_statics = false;
-  p.end_time = 2.5;  // the fall, the snap below the support (≈ 1.6 s) and the whip after it
+  RiserParameters p = fallingChain();
   p.probes = {{p.length}};
   double previous = 0;
   for (double h : {4e-4, 2e-4}) {
@@ -77,17 +77,7 @@ TEST(RiserHardCases, SlackChainFallsSnapsTautAndWhipsConservingEnergy) {
 //       here, a known limit of the absolute coordinates on this violent case (docs/riser.md); asserted only that
 //       both fall (ratios ≥ 1.15 and ≥ 1.5).
 TEST(RiserHardCases, SlackChainWhipsThroughTheImplicitSwingTwistChart) {
-  RiserParameters p = test::calmInAir();
-  p.length = 10.0;
-  p.segment_count = 10;
-  p.outer_diameter = 0.05;
-  p.inner_diameter = 0.0;
-  p.youngs_modulus = 1e-3;
-  p.torsion = false;
-  p.added_mass_coefficient = 0.0;
-  p.initial_inclination = kPi - 0.3;
-  p.solve_statics = false;
-  p.end_time = 2.5;
+  RiserParameters p = fallingChain();
   p.frame_count = 50;
   p.time_step = 2e-4;
   const Results reference = run(p);

@@ -70,14 +70,7 @@ TEST(RiserModes, TensionedPinnedBeamMatchesEquation66) {
 // Hanging chain (top pinned, bottom free, EI ≈ 0): ω_k = (j_0,k / 2)√(g/L), j_0,k = 2.404826,
 // 5.520078, 8.653728. SM errors at n = 20: +0.007 %, +0.25 %, +1.03 % (brief §5.2): tolerance 1.5 %.
 TEST(RiserModes, HangingChainMatchesBesselZeros) {
-  RiserParameters p = test::calmInAir();
-  p.length = 10.0;
-  p.segment_count = 20;
-  p.outer_diameter = 0.05;
-  p.inner_diameter = 0.0;
-  p.youngs_modulus = 1e-3;
-  p.torsion = false;
-  p.added_mass_coefficient = 0.0;  // added mass is applied along the whole length, even above water
+  const RiserParameters p = test::chainInAir(20);
   const std::vector<double> w = distinctFrequencies(p, 3);
   const double zeros[3] = {2.404826, 5.520078, 8.653728};
   ASSERT_EQ(w.size(), 3u);
