@@ -69,6 +69,7 @@ OdeStats ChartedGeneralizedAlpha::advance(Eigen::VectorXd& y, OdeOptions options
   const double t0 = options.t0, t1 = options.t1;
   const double tol = 1e-9 * std::max(std::abs(t1), t1 - t0);
   OdeStats total;
+  GeneralizedAlphaOptions piece_alpha = alpha;  // the start-up ramp belongs to the chunk's start, not each piece's
   for (double t = t0; t < t1 - tol;) {
     // A new chart where the segments turn fast; the last piece not shorter than half a reach. The pieces end on
     // the chunk's output grid (the core counts output times from each call's start), at least one interval on.
@@ -88,7 +89,8 @@ OdeStats ChartedGeneralizedAlpha::advance(Eigen::VectorXd& y, OdeOptions options
     RunContext::ProgressFn piece_progress;
     if (progress)
       piece_progress = [&](double f, const std::string& stage) { progress((t - t0 + f * (end - t)) / (t1 - t0), stage); };
-    const OdeStats s = advanceChart(y, options, alpha, context, piece_progress, observer, t1);
+    const OdeStats s = advanceChart(y, options, piece_alpha, context, piece_progress, observer, t1);
+    piece_alpha.startup_halvings = 0;
     total.steps += s.steps;
     total.rejected_steps += s.rejected_steps;
     total.rhs_evaluations += s.rhs_evaluations;
