@@ -350,34 +350,32 @@ void turnSegment(Eigen::VectorXd& y, int o, const Vec3& theta) {
   y.segment<4>(o + 3) << rotated.w(), rotated.x(), rotated.y(), rotated.z();
 }
 
-// Translates every segment so that it starts where the one above ends: positions (the first segment also to
-// the top's held coordinates) or velocities (inner joints only). Orientations and angular velocities are
-// kept, so positions become the ones joint coordinates would give the orientations.
-void closeJointsByTranslation(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, bool velocity) {
+// Translates every segment so that it starts where the one above ends, the first to the top's held
+// coordinates. Orientations are kept, so positions become the ones joint coordinates would give them.
+void closeJointsByTranslation(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y) {
   poseFromState(m, t, y, ws.pose);
   const ConstraintViolation phi = constraintViolation(m, ws.pose, t);
-  const std::vector<Vec3>& gap = velocity ? phi.velocity : phi.position;
-  Vec3 shift = velocity ? Vec3::Zero() : Vec3(-gap[0]);
+  Vec3 shift = -phi.position[0];
   for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
     const int k = i - m.first_dynamic;
-    if (k > 0) shift += gap[k];
-    y.segment<3>(segmentOffset(m, i) + (velocity ? 7 : 0)) += shift;
+    if (k > 0) shift += phi.position[k];
+    y.segment<3>(segmentOffset(m, i)) += shift;
   }
 }
 
 // Removes a held bottom's mismatch (after closeJointsByTranslation, the sum of every joint's drift): the
 // components the top may move in (force-known, e.g. a tensioner's z) by moving the whole chain, the others by
 // turning all segments a little, δθ_i = λ × d_i / I_i (the least Σ I_i|δθ_i|² with P Σ δθ_i × d_i = −P Φ_bottom,
-// P the held top components; a 3×3 system), the chain below each turn translated after it; the same for the
-// velocities. The least-squares solve leaves what no turn can remove (along a straight chain) to Baumgarte.
-void spreadBottomMismatch(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, bool velocity) {
+// P the held top components; a 3×3 system), the chain below each turn translated after it. The least-squares
+// solve leaves what no turn can remove (along a straight chain) to Baumgarte.
+void spreadBottomMismatch(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y) {
   const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
   Mat3 held = Mat3::Identity();
   for (int c = 0; c < 3; ++c)
     if (topForceKnown(m, c)) held(c, c) = 0.0;
   poseFromState(m, t, y, ws.pose);
   const ConstraintViolation phi = constraintViolation(m, ws.pose, t);
-  const Vec3 mismatch = held * (velocity ? phi.velocity[nb - 1] : phi.position[nb - 1]);
+  const Vec3 mismatch = held * phi.position[nb - 1];
   auto inverseInertia = [&](int i) { return 12.0 / (m.segments[i].mass * m.segments[i].length * m.segments[i].length); };
   Mat3 a = Mat3::Zero();
   for (int i = f; i <= last; ++i) {
@@ -385,20 +383,14 @@ void spreadBottomMismatch(const RiserModel& m, RiserWorkspace& ws, double t, Eig
     a += (d.squaredNorm() * Mat3::Identity() - d * d.transpose()) * inverseInertia(i);
   }
   const Vec3 lambda = held * (held * a * held).completeOrthogonalDecomposition().solve(mismatch);
-  for (int i = f; i <= last; ++i) {
-    const Vec3 turn = lambda.cross(m.segments[i].length * ws.pose.rotation[i].col(0)) * inverseInertia(i);
-    const int o = segmentOffset(m, i);
-    if (velocity)
-      y.segment<3>(o + 10) += turn;
-    else
-      turnSegment(y, o, turn);
-  }
-  closeJointsByTranslation(m, ws, t, y, velocity);
+  for (int i = f; i <= last; ++i)
+    turnSegment(y, segmentOffset(m, i), lambda.cross(m.segments[i].length * ws.pose.rotation[i].col(0)) * inverseInertia(i));
+  closeJointsByTranslation(m, ws, t, y);
   if (held == Mat3::Identity()) return;
   poseFromState(m, t, y, ws.pose);
   const ConstraintViolation after = constraintViolation(m, ws.pose, t);
-  const Vec3 shift = -(Mat3::Identity() - held) * (velocity ? after.velocity[nb - 1] : after.position[nb - 1]);
-  for (int i = f; i <= last; ++i) y.segment<3>(segmentOffset(m, i) + (velocity ? 7 : 0)) += shift;
+  const Vec3 shift = -(Mat3::Identity() - held) * after.position[nb - 1];
+  for (int i = f; i <= last; ++i) y.segment<3>(segmentOffset(m, i)) += shift;
 }
 }  // namespace
 
@@ -411,15 +403,18 @@ double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eig
   // case 5 at n = 400, 0.4 s: 764 steps for 90 (spread over all rotations: 153); a slack cable held at both
   // ends, n = 100, T/25: 441 steps, 107 rejected (spread: 90, 12). Spreading cost case 5 12 % of accuracy at
   // 50 ms (5.8e-4 against 5.2e-4) and saved 30 % of the time at n = 400.
-  // The top's velocity mismatch is left to Baumgarte: carried down the whole chain (a momentum kick at every
-  // step) it made the method first order (cable, n = 20: 4.6e-3 at 20 ms against 1.6e-4); projected
-  // mass-weighted it kinked the top (n = 400: 41 of 204 steps rejected).
+  // Velocities are not projected: their joint mismatch is left to Baumgarte. Removed by translation, which is
+  // not the mass-orthogonal projection, it changed the momentum at every step and made the method first order
+  // where segments turn fast. Measured on a falling,
+  // whipping chain (n = 10, A2, h = 2.5 ms to 0.156 ms halved four times): end-point error before the snap
+  // 1.3e-3 … 8.3e-5 of L (ratio 2.0) with the velocities translated, 2.8e-5 … 1.8e-6 (ratio 4) without; on the
+  // cables and case 5 the errors, steps and rejections changed by under 15 % (docs/riser.md). Earlier, the top's
+  // velocity mismatch carried down the chain made the cable first order (n = 20: 4.6e-3 at 20 ms against
+  // 1.6e-4), and projected mass-weighted it kinked the top (n = 400: 41 of 204 steps rejected).
   // spreadBottomMismatch closes the joints it opens itself, so each sweep starts from closed joints.
   const bool held = bottomHeld(m);
-  closeJointsByTranslation(m, ws, t, y, false);
-  for (int it = 0; held && it < std::max(iterations, 1); ++it) spreadBottomMismatch(m, ws, t, y, false);
-  closeJointsByTranslation(m, ws, t, y, true);
-  if (held) spreadBottomMismatch(m, ws, t, y, true);
+  closeJointsByTranslation(m, ws, t, y);
+  for (int it = 0; held && it < std::max(iterations, 1); ++it) spreadBottomMismatch(m, ws, t, y);
   poseFromState(m, t, y, ws.pose);
   return constraintViolation(m, ws.pose, t).largest;
 }

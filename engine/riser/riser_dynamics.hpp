@@ -82,11 +82,10 @@ void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, co
                      const std::vector<Vec3>& reaction, std::vector<Vec6>& segment_residual,
                      std::vector<Vec3>& row_residual);
 
-// Absolute coordinates: projects y back onto the constraints, O(n). The joints are closed by translating the
-// segments down the chain (positions from the top's held coordinates, velocities from the first segment's),
-// orientations and angular velocities kept; a held bottom's remaining mismatch is then spread over small
-// turns of all segments, weighted by their rotational inertia (`iterations` sweeps of positions, one of
-// velocities). The top's velocity mismatch is left to the Baumgarte term (riser_dynamics.cpp says why).
+// Absolute coordinates: projects the positions of y back onto the constraints, O(n). The joints are closed by
+// translating the segments down the chain from the top's held coordinates, orientations kept; a held bottom's
+// remaining mismatch is then spread over small turns of all segments, weighted by their rotational inertia
+// (`iterations` sweeps). Velocities are left to the Baumgarte term (riser_dynamics.cpp says why).
 // Returns the largest |Φ| [m] after the projection. Joint coordinates: no-op, returns 0.
 double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eigen::VectorXd& y, int iterations = 2);
 

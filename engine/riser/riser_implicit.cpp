@@ -186,14 +186,6 @@ void OrientationChart::balance(double t, const Eigen::VectorXd& q, const Eigen::
   balanceResidual(m_, ws_, t, x_, reaction, segment_residual, row_residual);
 }
 
-double OrientationChart::largestRotation(const Eigen::VectorXd& q) const {
-  double largest = 0;
-  const int off = m_.formulation == Formulation::Joint ? 0 : 3;
-  for (int k = 0; k <= m_.last_dynamic - m_.first_dynamic; ++k)
-    largest = std::max(largest, q.segment<3>(3 + k * per_segment_ + off).norm());
-  return largest;
-}
-
 std::string OrientationChart::name(Eigen::Index k) const {
   static const char* axis[] = {"x", "y", "z"};
   if (k < 3) return std::string("top position ") + axis[k];

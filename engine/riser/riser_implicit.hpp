@@ -51,8 +51,6 @@ class OrientationChart {
   RiserWorkspace& workspace() { return ws_; }
   int perSegment() const { return per_segment_; }
   ChartKind kind() const { return kind_; }
-  // Largest |θ_i| of q [rad].
-  double largestRotation(const Eigen::VectorXd& q) const;
   // Name of coordinate k for error messages.
   std::string name(Eigen::Index k) const;
   // The last residual() call whose iterate left the chart (|θ_i| ≥ 5 rad; the residual is then NaN):

@@ -43,7 +43,8 @@ struct SegmentLoads {
 
 // ZYX angles (γ, θ, ψ) of a rotation matrix, eq (21): R = R3(ψ) R2(θ) R1(γ).
 Vec3 zyxAngles(const Mat3& r);
-// Euler-rate matrix G(γ, θ, ψ): spatial angular velocity = G · d(γ, θ, ψ)/dt; det G = cos θ.
+// Euler-rate matrix G(γ, θ, ψ): spatial angular velocity = G · d(γ, θ, ψ)/dt; det G = cos θ, with |cos θ| held
+// at 1e-6 or more (within 1e-6 rad of the 90° singularity).
 Mat3 zyxRateMatrix(const Vec3& angles);
 
 // Spring-damping moments (eqs 20-28). For sde i the couple on segment i is -R_{i-1} G(Δφ)^{-T} M̄_i

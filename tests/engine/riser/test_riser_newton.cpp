@@ -131,10 +131,10 @@ TEST(RiserNewton, BandedForceSpaceSolveInvertsTheDenseIterationMatrix) {
   }
 }
 
-// Projection: a state with violated joints (random velocities, positions moved by up to 5 cm). |Φ| ≤ 1e-9 m
-// and |Φ̇| ≤ 1e-9 m/s at every row but the top's velocity, which is left as it was (to Baumgarte). Pinned
+// Projection: a state with violated joints (random velocities, positions moved by up to 5 cm). |Φ| ≤ 1e-9 m;
+// the velocities are left as they were (their mismatch to Baumgarte: projectConstraints says why). Pinned
 // bottom: after two sweeps (the bottom's mismatch spread over turns of all segments converges quadratically
-// from 5e-2 m). Free bottom: closed by translation alone, orientations and angular velocities untouched.
+// from 5e-2 m). Free bottom: closed by translation alone, orientations untouched.
 TEST(RiserNewton, ProjectionRestoresTheConstraints) {
   for (const bool pinned : {true, false}) {
     MovingModel c = movingAbsoluteModel(false);
@@ -152,14 +152,11 @@ TEST(RiserNewton, ProjectionRestoresTheConstraints) {
     const double after = projectConstraints(c.m, ws, 0.4, c.y, 2);
     EXPECT_LT(after, 1e-9) << pinned;
     const ConstraintViolation phi = constraintViolation(c.m, ws.pose, 0.4);
-    for (std::size_t k = 1; k < phi.velocity.size(); ++k) EXPECT_LT(phi.velocity[k].norm(), 1e-9) << pinned << k;
-    EXPECT_GT(phi.velocity[0].norm(), 1e-2);
-    EXPECT_LT((phi.velocity[0] - before.velocity[0]).norm(), 1e-12);
-    if (pinned) continue;
+    EXPECT_GT(phi.velocity[1].norm(), 1e-2) << "the velocities' mismatch must be there for the test to mean anything";
     for (int i = c.m.first_dynamic; i <= c.m.last_dynamic; ++i) {
       const Eigen::Index o = segmentStateOffset(c.m, i);
-      EXPECT_EQ(c.y.segment<4>(o + 3), start.segment<4>(o + 3)) << "orientation " << i;
-      EXPECT_EQ(c.y.segment<3>(o + 10), start.segment<3>(o + 10)) << "angular velocity " << i;
+      EXPECT_EQ(c.y.segment<6>(o + 7), start.segment<6>(o + 7)) << "velocities " << i;
+      if (!pinned) EXPECT_EQ(c.y.segment<4>(o + 3), start.segment<4>(o + 3)) << "orientation " << i;
     }
   }
 }
