@@ -73,11 +73,12 @@ TEST(RiserIntegrators, Rk4AndDopri5Agree) {
 }
 
 // Generalized-α is second order in both formulations: against DOPRI5 (rtol 1e-10), halving h from T/80
-// must cut the probe error by about 4 (measured 3.96 J, 4.2 A; accept > 3), and at h = T/160 the error is
-// below 3e-3 of the motion (measured 1.7e-3 J, 6.9e-4 A). J: the bottom constraint drift (Baumgarte at rate
-// 1/h) falls at the same order. A: the joints are projected after every step except for the top's velocity
-// (Baumgarte's), so the drift at output times between the projected steps, where q is a Hermite interpolant,
-// is the top's local error: below 2e-7 L and falling at third order (measured 7.8e-6 m = 1.3e-7 L at T/80,
+// must cut the probe error by about 4 (measured 3.96 J, 3.97 A; 4.2 while A's velocities were projected;
+// accept > 3), and at h = T/160 the error is below 3e-3 of the motion (measured 1.7e-3 J, 7.6e-4 A). J: the
+// bottom constraint drift (Baumgarte at rate 1/h) falls at the same order. A: the joints' positions are
+// projected after every step (velocities are left to Baumgarte), so the drift at output times between the
+// projected steps, where q is a Hermite interpolant, is a local error: below 2e-7 L and falling at third
+// order (measured 7.8e-6 m = 1.3e-7 L at T/80,
 // 9.4e-7 m at T/160; 4.8e-4 m = 8e-6 L at T/80 with Baumgarte alone). Four frames: chunks (one Jacobian
 // each) longer than the step. A uses the O(n) force-space Newton matrix, J the dense one.
 TEST(RiserIntegrators, ImplicitConvergesAtSecondOrderInBothFormulations) {
