@@ -383,8 +383,10 @@ void spreadBottomMismatch(const RiserModel& m, RiserWorkspace& ws, double t, Eig
     a += (d.squaredNorm() * Mat3::Identity() - d * d.transpose()) * inverseInertia(i);
   }
   const Vec3 lambda = held * (held * a * held).completeOrthogonalDecomposition().solve(mismatch);
-  for (int i = f; i <= last; ++i)
-    turnSegment(y, segmentOffset(m, i), lambda.cross(m.segments[i].length * ws.pose.rotation[i].col(0)) * inverseInertia(i));
+  for (int i = f; i <= last; ++i) {
+    const Vec3 turn = lambda.cross(m.segments[i].length * ws.pose.rotation[i].col(0)) * inverseInertia(i);
+    turnSegment(y, segmentOffset(m, i), turn);
+  }
   closeJointsByTranslation(m, ws, t, y);
   if (held == Mat3::Identity()) return;
   poseFromState(m, t, y, ws.pose);
@@ -405,12 +407,12 @@ double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eig
   // 50 ms (5.8e-4 against 5.2e-4) and saved 30 % of the time at n = 400.
   // Velocities are not projected: their joint mismatch is left to Baumgarte. Removed by translation, which is
   // not the mass-orthogonal projection, it changed the momentum at every step and made the method first order
-  // where segments turn fast. Measured on a falling,
-  // whipping chain (n = 10, A2, h = 2.5 ms to 0.156 ms halved four times): end-point error before the snap
-  // 1.3e-3 … 8.3e-5 of L (ratio 2.0) with the velocities translated, 2.8e-5 … 1.8e-6 (ratio 4) without; on the
-  // cables and case 5 the errors, steps and rejections changed by under 15 % (docs/riser.md). Earlier, the top's
-  // velocity mismatch carried down the chain made the cable first order (n = 20: 4.6e-3 at 20 ms against
-  // 1.6e-4), and projected mass-weighted it kinked the top (n = 400: 41 of 204 steps rejected).
+  // where segments turn fast. Measured on a falling, whipping chain (n = 10, A2, h = 2.5 ms to 0.156 ms halved
+  // four times): end-point error before the snap 1.3e-3 … 8.3e-5 of L (ratio 2.0) with the velocities
+  // translated, 2.8e-5 … 1.8e-6 (ratio 4) without; on the cables and case 5 the errors, steps and rejections
+  // changed by under 15 % (docs/riser.md). Earlier, the top's velocity mismatch carried down the chain made the
+  // cable first order (n = 20: 4.6e-3 at 20 ms against 1.6e-4), and projected mass-weighted it kinked the top
+  // (n = 400: 41 of 204 steps rejected).
   // spreadBottomMismatch closes the joints it opens itself, so each sweep starts from closed joints.
   const bool held = bottomHeld(m);
   closeJointsByTranslation(m, ws, t, y);

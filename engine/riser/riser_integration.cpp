@@ -14,7 +14,7 @@ namespace {
 // auto: above this many explicit steps the implicit integrator is used instead.
 constexpr double kExplicitStepBudget = 2.0e6;
 // Newton's tolerance of the implicit integrator: its share of the asked tolerance, within [1e-10, 1e-6] (below;
-// under 1e-10 round-off in the residual of a long chain can keep Newton from converging).
+// the lower bound keeps Newton's test above the residual's round-off).
 constexpr double kLooseNewtonTolerance = 1e-6;
 constexpr double kTightNewtonTolerance = 1e-10;
 constexpr double kNewtonShare = 1e-3;
