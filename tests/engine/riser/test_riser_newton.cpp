@@ -156,7 +156,9 @@ TEST(RiserNewton, ProjectionRestoresTheConstraints) {
     for (int i = c.m.first_dynamic; i <= c.m.last_dynamic; ++i) {
       const Eigen::Index o = segmentStateOffset(c.m, i);
       EXPECT_EQ(c.y.segment<6>(o + 7), start.segment<6>(o + 7)) << "velocities " << i;
-      if (!pinned) EXPECT_EQ(c.y.segment<4>(o + 3), start.segment<4>(o + 3)) << "orientation " << i;
+      if (!pinned) {
+        EXPECT_EQ(c.y.segment<4>(o + 3), start.segment<4>(o + 3)) << "orientation " << i;
+      }
     }
   }
 }
