@@ -36,8 +36,8 @@ class RiserRecorder {
  public:
   // Reactions, tension and stresses are those of the ideal constraints at the sampled state: the
   // recorder evaluates without the Baumgarte term 2αΦ̇ + α²Φ of the run. That term is an artificial
-  // correction force; with α = 0.1/h (RK4) and a drift Φ = O(h²) it does not vanish as h → 0, and it
-  // kept the J and A top reactions ~3e-8·T apart at any step (measured on the JointAndAbsolute test case).
+  // correction force; while RK4's α followed the step (0.1/h) it did not vanish as h → 0, and it kept the
+  // J and A top reactions ~3e-8·T apart at any step (measured on the JointAndAbsolute test case).
   RiserRecorder(const RiserModel& model, const RiserParameters& parameters);
 
   // Records state y at time t: always a history row; optionally a 3D frame and a profile table.
