@@ -465,7 +465,8 @@ int main(int argc, char** argv) {
         }
         Run ref;
         if (is_finest) ref = finest;
-        else if (!ref_how.method.empty() && !opt.skipped_only) ref = integrate(referenceParameters(p, ref_how.method), ref_how.method, ref_how.value);
+        else if (!ref_how.method.empty() && !opt.skipped_only)
+          ref = integrate(referenceParameters(p, ref_how.method), ref_how.method, ref_how.value);
         const int finest_n = huge || !finest_how.method.empty() ? ns.back() : 0;
         for (const auto& [method, value] : settings) {
           Row row{c.name, v.name, method, n, value, 0, 0, 0.0, inf, inf, finest_n, ref_how.how, ""};

@@ -88,7 +88,9 @@ OdeStats ChartedGeneralizedAlpha::advance(Eigen::VectorXd& y, OdeOptions options
     options.t1 = end;
     RunContext::ProgressFn piece_progress;
     if (progress)
-      piece_progress = [&](double f, const std::string& stage) { progress((t - t0 + f * (end - t)) / (t1 - t0), stage); };
+      piece_progress = [&](double f, const std::string& stage) {
+        progress((t - t0 + f * (end - t)) / (t1 - t0), stage);
+      };
     const OdeStats s = advanceChart(y, options, piece_alpha, context, piece_progress, observer, t1);
     piece_alpha.startup_halvings = 0;
     total.steps += s.steps;
@@ -102,9 +104,10 @@ OdeStats ChartedGeneralizedAlpha::advance(Eigen::VectorXd& y, OdeOptions options
   return total;
 }
 
-OdeStats ChartedGeneralizedAlpha::advanceChart(Eigen::VectorXd& y, OdeOptions options, const GeneralizedAlphaOptions& alpha,
-                                               RunContext& context, const RunContext::ProgressFn& progress,
-                                               const StateObserver& observer, double chunk_end) {
+OdeStats ChartedGeneralizedAlpha::advanceChart(Eigen::VectorXd& y, OdeOptions options,
+                                               const GeneralizedAlphaOptions& alpha, RunContext& context,
+                                               const RunContext::ProgressFn& progress, const StateObserver& observer,
+                                               double chunk_end) {
   context_ = &context;
   if (carried_.acceleration.size() > 0) {
     chart_.rebaseAccelerations(q_, v_, carried_.acceleration);

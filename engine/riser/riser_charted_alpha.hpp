@@ -33,8 +33,9 @@ class ChartedGeneralizedAlpha {
 
   // Integrates the first-order state y (riser_dynamics layout) from options.t0 to options.t1 as one chunk and
   // leaves it normalised in y. The chunk is cut into pieces, each in a fresh chart, where a segment turns faster
-  // than 1 rad per chunk (by the angular speeds at each piece's start): a whipping end stays inside the chart. options.state_name is set here (the chart's coordinate names). `context` is
-  // checked for cancellation in every residual; `progress` (may be empty) sees the fraction of this chunk.
+  // than 1 rad per chunk (by the angular speeds at each piece's start): a whipping end stays inside the chart.
+  // options.state_name is set here (the chart's coordinate names). `context` is checked for cancellation in
+  // every residual; `progress` (may be empty) sees the fraction of this chunk.
   // Throws SolverError (its step counted from the first chunk; an iterate beyond the chart named as such),
   // RunCancelled.
   OdeStats advance(Eigen::VectorXd& y, OdeOptions options, const GeneralizedAlphaOptions& alpha, RunContext& context,

@@ -53,7 +53,8 @@ class OrientationChart {
   ChartKind kind() const { return kind_; }
   // Name of coordinate k for error messages.
   std::string name(Eigen::Index k) const;
-  // The last residual() call whose iterate left the chart (|θ_i| ≥ 5 rad; the residual is then NaN):
+  // The last residual() call whose iterate left the chart (rotation vector |θ_i| ≥ 5 rad, swing |θ_s| ≥ 2.8 rad;
+  // the residual is then NaN):
   // at time t [s], which quantity, by how much. t is NaN if none did.
   struct ChartOverflow {
     double t = std::numeric_limits<double>::quiet_NaN();

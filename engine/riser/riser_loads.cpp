@@ -27,11 +27,12 @@ Vec3 zyxAngles(const Mat3& r) {
 }
 
 Mat3 zyxRateMatrix(const Vec3& a) {
-  // det G = cos θ. At a 90° bend the law itself is singular; there round-off can put θ exactly at ±π/2 (asin of
-  // a clamped ±1: cos θ = 6e-17), and the couple of even a chain with EI ≈ 3e-10 N·m² became 1.6e7 N·m (a falling
-  // chain, J, RK4 at h = 1e-4 s: energy balance error 0.88). |cos θ| is held at 1e-6 or more: this changes G only
-  // within 1e-6 rad of the singularity and bounds the couple by 1e6 C·|Δφ|.
-  const double ct = std::copysign(std::max(std::abs(std::cos(a.y())), kLeastCosPitch), std::cos(a.y()));
+  // det G = cos θ. At a 90° bend the law itself is singular; there round-off can put θ exactly at ±π/2 (asin
+  // of a clamped ±1: cos θ = 6e-17), and the couple of even a chain with EI ≈ 3e-10 N·m² became 1.6e7 N·m (a
+  // falling chain, J, RK4 at h = 1e-4 s: energy balance error 0.88). |cos θ| is held at 1e-6 or more: this
+  // changes G only within 1e-6 rad of the singularity and bounds the couple by 1e6 C·|Δφ|.
+  const double cos_pitch = std::cos(a.y());
+  const double ct = std::copysign(std::max(std::abs(cos_pitch), kLeastCosPitch), cos_pitch);
   const double st = std::sin(a.y()), cp = std::cos(a.z()), sp = std::sin(a.z());
   Mat3 g;
   g << ct * cp, -sp, 0, ct * sp, cp, 0, -st, 0, 1;
