@@ -125,8 +125,8 @@ SchemaBinder<P> makeBinder() {
            "Time integrator: rk4 (constant step, the paper's), dopri5 (adaptive), implicit (stiff torsion), "
            "auto (the cheapest for the tolerance)");
   b.real("solver.tolerance", &P::tolerance, "-", Range::closed(1e-12, 1e-1),
-         "Relative local error tolerance of dopri5; the implicit Newton iteration converges to 1e-3 of it "
-         "(within 1e-10 and 1e-6)");
+         "Relative local error tolerance of dopri5; the implicit Newton iteration converges to 1e-3 of it, or of "
+         "the step's expected error if that is larger (within 1e-10 and 1e-6)");
   b.integer("output.frame_count", &P::frame_count, "-", Range::closed(1, 10000), "Stored frames");
   b.table("output.probes", &P::probes, probeBinder(), 1, 20,
           "Probe points (arc length from the top) whose displacement and stress histories are recorded");
