@@ -49,10 +49,9 @@ namespace {
 
 // [rad/s] the largest angular speed of the segments in first-order state y.
 double largestAngularSpeed(const RiserModel& m, const Eigen::VectorXd& y) {
-  const Eigen::Index omega = m.formulation == Formulation::Joint ? 4 : 10;
   double largest = 0.0;
   for (int i = m.first_dynamic; i <= m.last_dynamic; ++i)
-    largest = std::max(largest, y.segment<3>(segmentStateOffset(m, i) + omega).norm());
+    largest = std::max(largest, y.segment<3>(angularVelocityStateOffset(m, i)).norm());
   return largest;
 }
 

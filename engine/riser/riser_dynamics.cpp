@@ -13,7 +13,9 @@ constexpr int kHeader = 6;  // r_top, v_top
 int stride(const RiserModel& m) { return m.formulation == Formulation::Joint ? 7 : 13; }
 int segmentOffset(const RiserModel& m, int i) { return kHeader + (i - m.first_dynamic) * stride(m); }
 int workOffset(const RiserModel& m) { return segmentOffset(m, m.last_dynamic + 1); }
+// Within a segment's entries (layout in riser_dynamics.hpp).
 int quaternionOffset(const RiserModel& m) { return m.formulation == Formulation::Joint ? 0 : 3; }
+int angularVelocityOffset(const RiserModel& m) { return m.formulation == Formulation::Joint ? 4 : 10; }
 
 // D'ᵀ x = a + α × d: acceleration of the far end of a segment from its (a, α).
 Vec3 farEnd(const Vec6& x, const Vec3& d) { return x.head<3>() + x.tail<3>().cross(d); }
@@ -46,6 +48,12 @@ int stateSize(const RiserModel& m) { return workOffset(m) + kWorkIntegrals; }
 Eigen::Index workIntegralOffset(const RiserModel& m) { return workOffset(m); }
 
 Eigen::Index segmentStateOffset(const RiserModel& m, int i) { return segmentOffset(m, i); }
+
+Eigen::Index orientationStateOffset(const RiserModel& m, int i) { return segmentOffset(m, i) + quaternionOffset(m); }
+
+Eigen::Index angularVelocityStateOffset(const RiserModel& m, int i) {
+  return segmentOffset(m, i) + angularVelocityOffset(m);
+}
 
 std::string stateComponentName(const RiserModel& m, Eigen::Index k) {
   static const char* axis[] = {"x", "y", "z"};
@@ -101,7 +109,7 @@ void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, Rise
     const int o = segmentOffset(m, i), oq = o + quaternionOffset(m);
     const Eigen::Quaterniond q(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
     pose.rotation[i] = q.normalized().toRotationMatrix();
-    Vec3 w = y.segment<3>(joint ? o + 4 : o + 10);
+    Vec3 w = y.segment<3>(o + angularVelocityOffset(m));
     if (!m.torsion) w -= w.dot(pose.rotation[i].col(0)) * pose.rotation[i].col(0);
     pose.omega[i] = w;
     if (!joint) r = y.segment<3>(o), v = y.segment<3>(o + 7);
@@ -288,12 +296,10 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
     const Vec3 qv = y.segment<3>(oq + 1);
     dy[oq] = -0.5 * w.dot(qv);
     dy.segment<3>(oq + 1) = 0.5 * (qw * w + w.cross(qv));
-    if (joint) {
-      dy.segment<3>(o + 4) = ws.acceleration[i].tail<3>();
-    } else {
+    dy.segment<3>(o + angularVelocityOffset(m)) = ws.acceleration[i].tail<3>();
+    if (!joint) {
       dy.segment<3>(o) = pose.velocity[i];
       dy.segment<3>(o + 7) = ws.acceleration[i].head<3>();
-      dy.segment<3>(o + 10) = ws.acceleration[i].tail<3>();
     }
   }
   for (int c = 0; c < 3; ++c) {
@@ -422,14 +428,13 @@ double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eig
 }
 
 void normaliseState(const RiserModel& m, Eigen::VectorXd& y) {
-  const bool joint = m.formulation == Formulation::Joint;
   for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
     const int o = segmentOffset(m, i), oq = o + quaternionOffset(m);
     y.segment<4>(oq).normalize();
     if (m.torsion) continue;
     const Eigen::Quaterniond q(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
     const Vec3 t = q.toRotationMatrix().col(0);
-    auto w = y.segment<3>(joint ? o + 4 : o + 10);
+    auto w = y.segment<3>(o + angularVelocityOffset(m));
     w -= w.dot(t) * t;
   }
 }

@@ -46,6 +46,9 @@ inline constexpr int kWorkIntegrals = 4;  // W_drag, W_damping, W_boundary (top 
 int stateSize(const RiserModel& m);
 // Index of the first state entry of dynamic segment i (layout in the file comment).
 Eigen::Index segmentStateOffset(const RiserModel& m, int i);
+// Index of dynamic segment i's orientation quaternion (w, x, y, z) and of its angular velocity ω [rad/s].
+Eigen::Index orientationStateOffset(const RiserModel& m, int i);
+Eigen::Index angularVelocityStateOffset(const RiserModel& m, int i);
 // Index of the first work integral in the state.
 Eigen::Index workIntegralOffset(const RiserModel& m);
 // Name of state component k for error messages ("segment 17 angular velocity z").

@@ -35,9 +35,8 @@ OrientationChart::OrientationChart(const RiserModel& m, double stabilisation_rat
 
 void OrientationChart::reset(const Eigen::VectorXd& y, Eigen::VectorXd& q, Eigen::VectorXd& v) {
   // The current orientations become the references; fromState then gives θ = 0 exactly (see there).
-  const bool joint = m_.formulation == Formulation::Joint;
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
-    const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
+    const Eigen::Index oq = orientationStateOffset(m_, i);
     const Eigen::Quaterniond quat(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
     reference_[i - m_.first_dynamic] = quat.normalized().toRotationMatrix();
   }
@@ -52,7 +51,7 @@ void OrientationChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, E
   const bool joint = m_.formulation == Formulation::Joint;
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
     const int k = i - m_.first_dynamic;
-    const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
+    const Eigen::Index o = segmentStateOffset(m_, i), oq = orientationStateOffset(m_, i);
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
     const Eigen::Quaterniond quat(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
     const Mat3 rot = quat.normalized().toRotationMatrix();
@@ -60,7 +59,7 @@ void OrientationChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, E
     // angle-axis of Rᵀ·R would give a round-off angle with an arbitrary axis instead.
     const Vec3 theta = rot == reference_[k] ? Vec3::Zero() : chartCoordinates(kind_, reference_[k].transpose() * rot);
     q.segment<3>(gt) = theta;
-    const Vec3 omega_body = rot.transpose() * y.segment<3>(joint ? o + 4 : o + 10);
+    const Vec3 omega_body = rot.transpose() * y.segment<3>(angularVelocityStateOffset(m_, i));
     v.segment<3>(gt) = chartMaps(kind_, theta).rate_map.lu().solve(omega_body);
     if (!joint) {
       q.segment<3>(g) = y.segment<3>(o);
@@ -84,7 +83,7 @@ void OrientationChart::writeState(const Eigen::VectorXd& q, const Eigen::VectorX
   const bool joint = m_.formulation == Formulation::Joint;
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
     const int k = i - m_.first_dynamic;
-    const Eigen::Index o = segmentStateOffset(m_, i), oq = joint ? o : o + 3;
+    const Eigen::Index o = segmentStateOffset(m_, i), oq = orientationStateOffset(m_, i);
     const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
     const ChartMaps maps = maps_with_rates ? chartMaps(kind_, q.segment<3>(gt), v.segment<3>(gt))
                                            : chartMaps(kind_, q.segment<3>(gt));
@@ -92,7 +91,7 @@ void OrientationChart::writeState(const Eigen::VectorXd& q, const Eigen::VectorX
     const Mat3 r = reference_[k] * maps.turn;
     const Eigen::Quaterniond quat(r);
     y.segment<4>(oq) << quat.w(), quat.x(), quat.y(), quat.z();
-    y.segment<3>(joint ? o + 4 : o + 10) = r * (maps.rate_map * v.segment<3>(gt));
+    y.segment<3>(angularVelocityStateOffset(m_, i)) = r * (maps.rate_map * v.segment<3>(gt));
     if (!joint) {
       y.segment<3>(o) = q.segment<3>(g);
       y.segment<3>(o + 7) = v.segment<3>(g);
@@ -131,7 +130,7 @@ void OrientationChart::residual(double t, const Eigen::VectorXd& q, const Eigen:
     const ChartMaps& maps = maps_[k];
     const Mat3 rot = reference_[k] * maps.turn;
     // θ̈ = M⁻¹ (Rᵀ α − Ṁ θ̇).
-    const Vec3 alpha = dy_.segment<3>(joint ? o + 4 : o + 10);
+    const Vec3 alpha = dy_.segment<3>(angularVelocityStateOffset(m_, i));
     const Vec3 theta_acc = maps.rate_map.lu().solve(rot.transpose() * alpha - maps.rate_term);
     r.segment<3>(gt) = acc.segment<3>(gt) - theta_acc;
     if (!joint) r.segment<3>(g) = acc.segment<3>(g) - dy_.segment<3>(o + 7);

@@ -154,7 +154,6 @@ Eigen::VectorXd coordinateAccelerations(const RiserModel& m, RiserWorkspace& ws,
 Eigen::VectorXd movingState(const RiserModel& m, const Coordinates& q, const Eigen::VectorXd& y0, int k, double h) {
   Eigen::VectorXd y = y0;
   const int nt = static_cast<int>(q.top_axes.size()), np = static_cast<int>(q.positions.size());
-  const bool joint = m.formulation == Formulation::Joint;
   if (k < nt) {
     y[3 + q.top_axes[k]] += h * m.length;
   } else if (k < nt + np) {
@@ -162,7 +161,7 @@ Eigen::VectorXd movingState(const RiserModel& m, const Coordinates& q, const Eig
     y[segmentStateOffset(m, i) + 7 + c] += h * m.element_length;
   } else {
     const auto& [i, axis] = q.rotations[k - nt - np];
-    y.segment<3>(segmentStateOffset(m, i) + (joint ? 4 : 10)) += h * axis;
+    y.segment<3>(angularVelocityStateOffset(m, i)) += h * axis;
   }
   return y;
 }
