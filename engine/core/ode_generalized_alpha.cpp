@@ -75,7 +75,12 @@ OdeStats integrateGeneralizedAlpha(const SecondOrderSystem& system, Eigen::Vecto
 
   Eigen::VectorXd pseudo = continued ? state->pseudo_acceleration : acc;
   Eigen::VectorXd pseudo_known(n), acc_new(n), q_base(n), v_base(n), q_new(n), v_new(n), q_out(n), v_out(n), a_out(n);
-  const double h_nominal = options.step;
+  // Equal steps no longer than options.step over [t0, t1], not full steps and a short last one: a change of step
+  // changes β', γ' (a fresh iteration matrix) and, where the iteration matrix is formed at the predictor, fails
+  // Newton (riser, slack cable held at both ends in absolute coordinates, 0.25 s output intervals at h = 0.16 s:
+  // 247 steps, 92 rejected, with a 0.09 s step closing every interval; in two steps of 0.125 s: 81 and 1).
+  const double span = options.t1 - options.t0;
+  const double h_nominal = span > 0 ? span / std::ceil(span / options.step - 1e-9) : options.step;
   const int ramp = std::clamp(alpha_options.startup_halvings, 0, 60);
   double h = std::max(std::ldexp(h_nominal, -ramp), options.min_step), t = options.t0;
   bool ramping = ramp > 0;

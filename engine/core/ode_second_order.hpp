@@ -103,8 +103,8 @@ struct GeneralizedAlphaState {
   Eigen::VectorXd pseudo_acceleration;  // a_n
 };
 
-// Integrates from (q, v) at options.t0 to options.t1 with nominal step options.step (the last step is
-// shortened to end at t1); q and v hold the end state on return. With `state`: if both its vectors have
+// Integrates from (q, v) at options.t0 to options.t1 in equal nominal steps no longer than options.step (the
+// fewest that fit); q and v hold the end state on return. With `state`: if both its vectors have
 // size n they are the starting q̈_0 and a_0 (no initial solve); on return it holds the end's q̈ and a.
 // Uses from OdeOptions: t0, t1, step, min_step, max_steps, output_interval, state_name (names coordinate i),
 // and rtol/atol for Newton convergence: stop when the corrections of q and of v have weighted RMS

@@ -67,8 +67,8 @@ std::string methodName(const RiserModel& m, const IntegrationPlan& plan, const R
   if (plan.method == Integrator::Rk4) s << "RK4, constant step h = " << plan.step << " s";
   if (plan.method == Integrator::Dopri5) s << "DOPRI5 (adaptive), rtol = " << p.tolerance;
   if (plan.method == Integrator::Implicit)
-    s << "generalized-α (implicit, ρ∞ = 0.8, " << (m.torsion ? "rotation-vector" : "swing–twist") << " chart), h = "
-      << plan.step << " s";
+    s << "generalized-α (implicit, ρ∞ = 0.8, " << (m.torsion ? "rotation-vector" : "swing–twist") << " chart), h ≤ "
+      << plan.step << " s (equal steps per output interval)";
   s << ", " << (m.formulation == Formulation::Joint ? "joint" : "absolute") << " coordinates"
     << (m.torsion ? " with torsion" : " without torsion");
   if (!plan.reason.empty()) s << " (" << plan.reason << ")";

@@ -120,7 +120,8 @@ SchemaBinder<P> makeBinder() {
   b.table("point_loads", &P::point_loads, pointLoadBinder(), 0, 1000, "Forces and moments at nodes (box pulses)");
   b.real("solver.end_time", &P::end_time, "s", Range::nonNegative(1e6), "Simulated time");
   b.real("solver.time_step", &P::time_step, "s", Range::nonNegative(10.0),
-         "Step of rk4 and implicit (0 = automatic: rk4 half its stability limit, implicit from the tolerance)");
+         "Step of rk4; largest step of implicit, which cuts each output interval into equal steps (0 = automatic: "
+         "rk4 half its stability limit, implicit from the tolerance)");
   b.choice("solver.integrator", &P::integrator, {"auto", "rk4", "dopri5", "implicit"},
            "Time integrator: rk4 (constant step, the paper's), dopri5 (adaptive), implicit (stiff torsion), "
            "auto (the cheapest for the tolerance)");

@@ -39,6 +39,26 @@ TEST(GeneralizedAlpha, ConvergesAtSecondOrderForEveryRhoInf) {
   }
 }
 
+// The interval is cut into the fewest equal steps no longer than the asked one: 0.25 s at 0.16 s is two steps of
+// 0.125 s (not 0.16 s and 0.09 s, a change of step that costs a new iteration matrix); a step that divides the
+// interval up to round-off is kept.
+TEST(GeneralizedAlpha, TakesEqualStepsNoLongerThanTheAskedStep) {
+  auto steps = [](double t1, double h) {
+    Eigen::VectorXd q = Eigen::VectorXd::Constant(1, kX0), v = Eigen::VectorXd::Constant(1, kV0);
+    OdeOptions options;
+    options.t1 = t1;
+    options.step = h;
+    RunContext ctx;
+    return integrateGeneralizedAlpha(test::oscillatorSystem(kOmega, kZeta), q, v, options, {}, ctx);
+  };
+  const OdeStats uneven = steps(0.25, 0.16);
+  EXPECT_EQ(uneven.steps, 2);
+  EXPECT_DOUBLE_EQ(uneven.last_step, 0.125);
+  const OdeStats even = steps(0.3, 0.1);
+  EXPECT_EQ(even.steps, 3);
+  EXPECT_NEAR(even.last_step, 0.1, 1e-15);
+}
+
 TEST(GeneralizedAlpha, CoefficientsFollowChungHulbert) {
   // ρ∞ = 1: trapezoidal rule (α_m = α_f = 1/2, γ = 1/2, β = 1/4); ρ∞ = 0: α_m = −1, α_f = 0, γ = 3/2, β = 1.
   const GeneralizedAlphaCoefficients one = generalizedAlphaCoefficients(1.0);
