@@ -46,11 +46,12 @@ TEST(RiserImplicitFailures, ResidualBeyondTheChartIsNonFiniteAndNamed) {
 // it ran off the chart near t = 4.9 s and the run ended with "rotated 6.9 rad within one chunk" before the
 // held bottom's mismatch was spread over all rotations; T/10 failed until the swing–twist chart without
 // torsion, so the test now takes T/5). With the step halved it finishes, with rejected steps to show the
-// halving (measured 25 of 88), and its probe motion at t = 8 s is as close to h = T/200 as generalized-α at
+// halving (measured 5 of 17), and its probe motion at t = 8 s is as close to h = T/200 as generalized-α at
 // 5 steps per period can be: its period error ≈ (ωh)²/12 = 13 % gives a phase error ≈ 0.66 rad over the
-// 0.8 period, so up to ~0.6 of the amplitude (measured 0.31; at T/10, without halvings, 0.18 against the
-// estimate 0.17). Asserted: within half the amplitude (a step that diverged, or a halving that lost the state,
-// would not be).
+// 0.8 period, so up to ~0.6 of the amplitude, more with ρ∞'s damping (measured 0.62; J2 at T/5, never
+// halved, 0.76; 0.31 while Newton, giving up on its first matrix, halved 25 of 88 steps and so refined the
+// run; at T/10, without halvings, 0.18 against the estimate 0.17). Asserted: within 0.9 of the amplitude (a
+// step that diverged, or a halving that lost the state, leaving the riser near rest, would not be).
 TEST(RiserImplicitFailures, StepTooLongForNewtonIsHalvedNotFatal) {
   RiserParameters p = test::paperCaseFive();
   p.formulation = "absolute";
@@ -70,7 +71,7 @@ TEST(RiserImplicitFailures, StepTooLongForNewtonIsHalvedNotFatal) {
   double amplitude = 0;
   for (double d : motion) amplitude = std::max(amplitude, std::abs(d));
   ASSERT_GT(amplitude, 0.1);
-  EXPECT_LT(std::abs(finalProbeX(coarse) - finalProbeX(fine)), 0.5 * amplitude);
+  EXPECT_LT(std::abs(finalProbeX(coarse) - finalProbeX(fine)), 0.9 * amplitude);
 }
 
 // Case 5 at n = 400 in 0.5 s chunks (frames), h = 50 ms: no rejected step in either formulation. Before the
@@ -113,29 +114,32 @@ TEST(RiserImplicitFailures, FreeCableInAbsoluteCoordinatesTakesCoarseStepsWithou
 }
 
 // A slack cable held at both ends (the 3D cable pinned to an anchor 26.9 m away, n = 100) at T/25 over 10 s:
-// its bottom's mismatch, spread over small turns of all segments, lets A3 take close to the nominal 63 steps
-// (measured 85, 11 rejected, in equal steps of 10/63 s; 63, none, in steps of 0.16 s before the steps were made
-// equal; 0.155 s takes 86, 7 either way and 0.15 s 67, none: at T/25 A's Newton is on its edge here. The
-// mass-weighted projection of every joint took 441, 107 rejected; J3 63, none).
+// its bottom's mismatch, spread over small turns of all segments, lets A3 take the nominal 63 steps (measured
+// 63, none rejected). At T/25 A's Newton is on its edge here: while a step whose second iterate diverged was
+// given up at once, it took 85 steps, 11 rejected, in equal steps of 10/63 s (A2 118, 21); Newton now forms
+// its matrix once more at that iterate (core/ode_newton.cpp), and A2 also takes 63, none. The mass-weighted
+// projection of every joint took 441, 107 rejected; J3 63, none.
 TEST(RiserImplicitFailures, SlackCableHeldAtBothEndsKeepsItsSteps) {
   const RiserParameters p = test::implicitCableHeldAtBothEnds(100, 0.16);
   RunContext context;
   const Results r = solveRiser(p, context);
-  EXPECT_LE(r.stats.steps, 100);
-  EXPECT_LE(r.stats.rejected_steps, 15);
+  EXPECT_LE(r.stats.steps, 66);
+  EXPECT_LE(r.stats.rejected_steps, 1);
 }
 
 // The same with the scenario's 40 frames (0.25 s output intervals, each an integration chunk) at h = 0.16 s:
 // while each interval was closed by a 0.09 s step, A3 took 247 steps with 92 rejected (J3 82, 1), and A2 263
 // with 100: Newton diverged on the first full step after the short one, at the top segments' positions. Cut
-// into two equal steps of 0.125 s: A3 81 steps, 1 rejected; A2 93, 7; J3 80, none (nominal 80).
+// into two equal steps of 0.125 s: A3, A2 and J3 80 steps, none rejected (nominal 80; A3 81, 1 and A2 93, 7
+// before Newton formed its matrix again at a diverging second iterate, which alone leaves 178, 51 with the
+// short steps).
 TEST(RiserImplicitFailures, SlackCableHeldAtBothEndsBetweenFramesKeepsItsSteps) {
   RiserParameters p = test::implicitCableHeldAtBothEnds(100, 0.16);
   p.frame_count = 40;
   RunContext context;
   const Results r = solveRiser(p, context);
-  EXPECT_LE(r.stats.steps, 88);
-  EXPECT_LE(r.stats.rejected_steps, 4);
+  EXPECT_LE(r.stats.steps, 84);
+  EXPECT_LE(r.stats.rejected_steps, 2);
 }
 
 }  // namespace
