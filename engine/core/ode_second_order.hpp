@@ -109,7 +109,8 @@ struct GeneralizedAlphaState {
 // Uses from OdeOptions: t0, t1, step, min_step, max_steps, output_interval, state_name (names coordinate i),
 // and rtol/atol for Newton convergence: stop when the corrections of q and of v have weighted RMS
 // ≤ 1 with weights 1/(atol + rtol·|value|) (or when the contraction-rate estimate says so).
-// The iteration matrix is kept across steps and refreshed when the step changes or Newton converges slowly.
+// The iteration matrix is kept across steps and refreshed when the step changes or Newton converges slowly, and
+// formed once more at the second iterate if that diverges from a matrix just formed at the predictor.
 // Error estimate per step: h² |β − 1/6| |q̈_{n+1} − q̈_n| (Newmark family's displacement truncation term).
 // Throws SolverError naming the coordinate with the largest Newton correction when Newton fails at the
 // smallest allowed step, or the non-finite component; RunCancelled; std::invalid_argument for bad options.
