@@ -48,16 +48,10 @@ bool NewtonSolver::solve(double t, const Eigen::VectorXd& q_base, const Eigen::V
       v_ = v_base + dv * acc;
       return true;
     }
-    if (iteration > 0 && theta >= 1.0) {
-      // Diverging. A matrix formed at the first iterate (the predictor) can be far from the one along the path
-      // to the solution; formed again here (slow_ is set), it often converges at once: riser, absolute
-      // coordinates, slack cable held at both ends at T/25: 85 steps, 11 rejected, without this; 63, none, with.
-      if (iteration == 1 && matrix_fresh_) {
-        previous_norm = norm;
-        continue;
-      }
-      return false;
-    }
+    // Diverging. Except once: a matrix formed at the first iterate (the predictor) can be far from the one along
+    // the path to the solution; formed again at the second (slow_ is set), it often converges at once: riser,
+    // absolute coordinates, slack cable held at both ends at T/25: 85 steps, 11 rejected, without this; 63, none.
+    if (iteration > 0 && theta >= 1.0 && !(iteration == 1 && matrix_fresh_)) return false;
     previous_norm = norm;
   }
   slow_ = true;

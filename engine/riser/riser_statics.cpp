@@ -203,7 +203,7 @@ bool newton(StaticProblem& problem, Configuration& x, double lambda, int& iterat
 Configuration configurationOf(const RiserModel& m, const Eigen::VectorXd& y, const Configuration& x) {
   Configuration out = x;
   for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
-    const Eigen::Index o = segmentStateOffset(m, i);
+    const Eigen::Index o = orientationStateOffset(m, i);
     out.orientation[i] = Eigen::Quaterniond(y[o], y[o + 1], y[o + 2], y[o + 3]).normalized();
   }
   for (int c = 0; c < 3; ++c)
