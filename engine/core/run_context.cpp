@@ -18,6 +18,14 @@ void RunContext::progress(double fraction, std::string_view stage) {
   progress_(std::clamp(fraction, 0.0, 1.0), std::string(stage));
 }
 
+RunContext RunContext::part(double from, double to, std::string stage_prefix) {
+  return RunContext(
+      [this, from, to, prefix = std::move(stage_prefix)](double f, const std::string& stage) {
+        progress(from + f * (to - from), prefix + stage);
+      },
+      cancel_);
+}
+
 void RunContext::throwIfCancelled() const {
   if (cancelRequested()) throw RunCancelled();
 }

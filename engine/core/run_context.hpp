@@ -47,6 +47,11 @@ class RunContext {
   bool wantsPartialResults();
   void publishPartial(std::shared_ptr<const Results> partial);
 
+  // A context for one part of a longer run (a sweep row): its progress f shows as from + f (to − from) here, with
+  // `stage_prefix` before its stage; it sees this context's cancellation. Its warnings and partial results stay
+  // with it (the caller passes on what it wants). Must not outlive this context.
+  RunContext part(double from, double to, std::string stage_prefix);
+
   // Seconds of wall time since the context was created.
   double elapsedSeconds() const;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/LU>
 
@@ -16,6 +17,7 @@ int workOffset(const RiserModel& m) { return segmentOffset(m, m.last_dynamic + 1
 // Within a segment's entries (layout in riser_dynamics.hpp).
 int quaternionOffset(const RiserModel& m) { return m.formulation == Formulation::Joint ? 0 : 3; }
 int angularVelocityOffset(const RiserModel& m) { return m.formulation == Formulation::Joint ? 4 : 10; }
+constexpr int kVelocityOffset = 7;  // absolute coordinates only
 
 // D'ᵀ x = a + α × d: acceleration of the far end of a segment from its (a, α).
 Vec3 farEnd(const Vec6& x, const Vec3& d) { return x.head<3>() + x.tail<3>().cross(d); }
@@ -53,6 +55,11 @@ Eigen::Index orientationStateOffset(const RiserModel& m, int i) { return segment
 
 Eigen::Index angularVelocityStateOffset(const RiserModel& m, int i) {
   return segmentOffset(m, i) + angularVelocityOffset(m);
+}
+
+Eigen::Index velocityStateOffset(const RiserModel& m, int i) {
+  if (m.formulation == Formulation::Joint) throw std::logic_error("velocityStateOffset: absolute coordinates only");
+  return segmentOffset(m, i) + kVelocityOffset;
 }
 
 std::string stateComponentName(const RiserModel& m, Eigen::Index k) {
@@ -112,7 +119,7 @@ void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, Rise
     Vec3 w = y.segment<3>(o + angularVelocityOffset(m));
     if (!m.torsion) w -= w.dot(pose.rotation[i].col(0)) * pose.rotation[i].col(0);
     pose.omega[i] = w;
-    if (!joint) r = y.segment<3>(o), v = y.segment<3>(o + 7);
+    if (!joint) r = y.segment<3>(o), v = y.segment<3>(o + kVelocityOffset);
     pose.position[i] = r;
     pose.velocity[i] = v;
     const Vec3 d = m.segments[i].length * pose.rotation[i].col(0);
@@ -299,7 +306,7 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
     dy.segment<3>(o + angularVelocityOffset(m)) = ws.acceleration[i].tail<3>();
     if (!joint) {
       dy.segment<3>(o) = pose.velocity[i];
-      dy.segment<3>(o + 7) = ws.acceleration[i].head<3>();
+      dy.segment<3>(o + kVelocityOffset) = ws.acceleration[i].head<3>();
     }
   }
   for (int c = 0; c < 3; ++c) {
@@ -346,14 +353,14 @@ void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, co
 }
 
 namespace {
-// Turns the orientation quaternion of the segment at state offset o by the small rotation vector θ (global).
-void turnSegment(Eigen::VectorXd& y, int o, const Vec3& theta) {
-  const Eigen::Quaterniond q(y[o + 3], y[o + 4], y[o + 5], y[o + 6]);
+// Turns the orientation quaternion at state offset oq by the small rotation vector θ (global).
+void turnSegment(Eigen::VectorXd& y, Eigen::Index oq, const Vec3& theta) {
+  const Eigen::Quaterniond q(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
   const double angle = theta.norm();
   const Eigen::Quaterniond turn =
       angle > 0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, theta / angle)) : Eigen::Quaterniond::Identity();
   const Eigen::Quaterniond rotated = (turn * q).normalized();
-  y.segment<4>(o + 3) << rotated.w(), rotated.x(), rotated.y(), rotated.z();
+  y.segment<4>(oq) << rotated.w(), rotated.x(), rotated.y(), rotated.z();
 }
 
 // Translates every segment so that it starts where the one above ends, the first to the top's held
@@ -391,7 +398,7 @@ void spreadBottomMismatch(const RiserModel& m, RiserWorkspace& ws, double t, Eig
   const Vec3 lambda = held * (held * a * held).completeOrthogonalDecomposition().solve(mismatch);
   for (int i = f; i <= last; ++i) {
     const Vec3 turn = lambda.cross(m.segments[i].length * ws.pose.rotation[i].col(0)) * inverseInertia(i);
-    turnSegment(y, segmentOffset(m, i), turn);
+    turnSegment(y, orientationStateOffset(m, i), turn);
   }
   closeJointsByTranslation(m, ws, t, y);
   if (held == Mat3::Identity()) return;

@@ -49,6 +49,9 @@ Eigen::Index segmentStateOffset(const RiserModel& m, int i);
 // Index of dynamic segment i's orientation quaternion (w, x, y, z) and of its angular velocity ω [rad/s].
 Eigen::Index orientationStateOffset(const RiserModel& m, int i);
 Eigen::Index angularVelocityStateOffset(const RiserModel& m, int i);
+// Index of dynamic segment i's origin velocity [m/s]: absolute coordinates only (J has no such entry; its
+// position is segmentStateOffset).
+Eigen::Index velocityStateOffset(const RiserModel& m, int i);
 // Index of the first work integral in the state.
 Eigen::Index workIntegralOffset(const RiserModel& m);
 // Name of state component k for error messages ("segment 17 angular velocity z").

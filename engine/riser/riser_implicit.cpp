@@ -52,7 +52,7 @@ void OrientationChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, E
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
     const int k = i - m_.first_dynamic;
     const Eigen::Index o = segmentStateOffset(m_, i), oq = orientationStateOffset(m_, i);
-    const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
+    const Eigen::Index g = positionIndex(k), gt = turnIndex(k);
     const Eigen::Quaterniond quat(y[oq], y[oq + 1], y[oq + 2], y[oq + 3]);
     const Mat3 rot = quat.normalized().toRotationMatrix();
     // At the reference (right after reset) θ is exactly 0 and M = I, so ω' = Rᵀω unchanged; the
@@ -63,7 +63,7 @@ void OrientationChart::fromState(const Eigen::VectorXd& y, Eigen::VectorXd& q, E
     v.segment<3>(gt) = chartMaps(kind_, theta).rate_map.lu().solve(omega_body);
     if (!joint) {
       q.segment<3>(g) = y.segment<3>(o);
-      v.segment<3>(g) = y.segment<3>(o + 7);
+      v.segment<3>(g) = y.segment<3>(velocityStateOffset(m_, i));
     }
   }
   const Eigen::Index ow = workIntegralOffset(m_);
@@ -84,7 +84,7 @@ void OrientationChart::writeState(const Eigen::VectorXd& q, const Eigen::VectorX
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
     const int k = i - m_.first_dynamic;
     const Eigen::Index o = segmentStateOffset(m_, i), oq = orientationStateOffset(m_, i);
-    const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
+    const Eigen::Index g = positionIndex(k), gt = turnIndex(k);
     const ChartMaps maps = maps_with_rates ? chartMaps(kind_, q.segment<3>(gt), v.segment<3>(gt))
                                            : chartMaps(kind_, q.segment<3>(gt));
     if (maps_with_rates) (*maps_with_rates)[k] = maps;
@@ -94,7 +94,7 @@ void OrientationChart::writeState(const Eigen::VectorXd& q, const Eigen::VectorX
     y.segment<3>(angularVelocityStateOffset(m_, i)) = r * (maps.rate_map * v.segment<3>(gt));
     if (!joint) {
       y.segment<3>(o) = q.segment<3>(g);
-      y.segment<3>(o + 7) = v.segment<3>(g);
+      y.segment<3>(velocityStateOffset(m_, i)) = v.segment<3>(g);
     }
   }
   const Eigen::Index ow = workIntegralOffset(m_);
@@ -110,8 +110,7 @@ void OrientationChart::residual(double t, const Eigen::VectorXd& q, const Eigen:
   r.head<3>() = acc.head<3>() - dy_.segment<3>(3);
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
     const int k = i - m_.first_dynamic;
-    const Eigen::Index o = segmentStateOffset(m_, i);
-    const Eigen::Index g = 3 + k * per_segment_, gt = joint ? g : g + 3;
+    const Eigen::Index g = positionIndex(k), gt = turnIndex(k);
     const Vec3 theta = q.segment<3>(gt);
     // An iterate beyond the chart (a Newton iteration running away at too long a step, or a chunk longer
     // than the segment's turning allows): a non-finite residual makes the integrator halve the step;
@@ -133,7 +132,7 @@ void OrientationChart::residual(double t, const Eigen::VectorXd& q, const Eigen:
     const Vec3 alpha = dy_.segment<3>(angularVelocityStateOffset(m_, i));
     const Vec3 theta_acc = maps.rate_map.lu().solve(rot.transpose() * alpha - maps.rate_term);
     r.segment<3>(gt) = acc.segment<3>(gt) - theta_acc;
-    if (!joint) r.segment<3>(g) = acc.segment<3>(g) - dy_.segment<3>(o + 7);
+    if (!joint) r.segment<3>(g) = acc.segment<3>(g) - dy_.segment<3>(velocityStateOffset(m_, i));
   }
   const Eigen::Index ow = workIntegralOffset(m_);
   for (int w = 0; w < kWorkIntegrals; ++w) r[work_ + w] = acc[work_ + w] - dy_[ow + w];
@@ -141,9 +140,8 @@ void OrientationChart::residual(double t, const Eigen::VectorXd& q, const Eigen:
 
 void OrientationChart::rebaseAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                               Eigen::VectorXd& acc) const {
-  const int off = m_.formulation == Formulation::Joint ? 0 : 3;
   for (int k = 0; k <= m_.last_dynamic - m_.first_dynamic; ++k) {
-    const Eigen::Index gt = 3 + k * per_segment_ + off;
+    const Eigen::Index gt = turnIndex(k);
     const Vec3 theta = q.segment<3>(gt), rate = v.segment<3>(gt);
     // The body angular acceleration, less the new chart's own rate term at θ' = 0 (zero for the rotation
     // vector, J̇_r(0) θ̇' = −½ θ̇' × θ̇'; not for the swing–twist chart).
@@ -156,11 +154,10 @@ void OrientationChart::rebaseAccelerations(const Eigen::VectorXd& q, const Eigen
 
 void OrientationChart::accelerationMap(const Eigen::VectorXd& q, std::vector<Mat3>& turn, std::vector<Vec3>& arm) const {
   const int segments = m_.last_dynamic - m_.first_dynamic + 1;
-  const int off = m_.formulation == Formulation::Joint ? 0 : 3;
   turn.resize(segments);
   arm.resize(segments);
   for (int k = 0; k < segments; ++k) {
-    const Vec3 theta = q.segment<3>(3 + k * per_segment_ + off);
+    const Vec3 theta = q.segment<3>(turnIndex(k));
     const ChartMaps maps = chartMaps(kind_, theta);
     const Mat3 rot = reference_[k] * maps.turn;
     turn[k] = rot * maps.rate_map;
@@ -174,13 +171,12 @@ void OrientationChart::balance(double t, const Eigen::VectorXd& q, const Eigen::
   writeState(q, v, y_, &maps_);
   prepareSegments(m_, ws_, t, y_);
   x_.resize(m_.segmentCount());
-  const int off = m_.formulation == Formulation::Joint ? 0 : 3;
+  const bool joint = m_.formulation == Formulation::Joint;
   for (int i = m_.first_dynamic; i <= m_.last_dynamic; ++i) {
     const int k = i - m_.first_dynamic;
-    const Eigen::Index g = 3 + k * per_segment_, gt = g + off;
     const ChartMaps& maps = maps_[k];
-    const Vec3 alpha = reference_[k] * maps.turn * (maps.rate_map * acc.segment<3>(gt) + maps.rate_term);
-    x_[i] << (off ? Vec3(acc.segment<3>(g)) : Vec3::Zero()), alpha;
+    const Vec3 alpha = reference_[k] * maps.turn * (maps.rate_map * acc.segment<3>(turnIndex(k)) + maps.rate_term);
+    x_[i] << (joint ? Vec3::Zero() : Vec3(acc.segment<3>(positionIndex(k)))), alpha;
   }
   balanceResidual(m_, ws_, t, x_, reaction, segment_residual, row_residual);
 }

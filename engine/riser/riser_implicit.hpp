@@ -50,6 +50,9 @@ class OrientationChart {
   const RiserWorkspace& workspace() const { return ws_; }
   RiserWorkspace& workspace() { return ws_; }
   int perSegment() const { return per_segment_; }
+  // Index in q of dynamic segment k's chart turn θ_k, and (A only) of its origin position r_k.
+  Eigen::Index turnIndex(int k) const { return positionIndex(k) + (per_segment_ - 3); }
+  Eigen::Index positionIndex(int k) const { return 3 + static_cast<Eigen::Index>(k) * per_segment_; }
   ChartKind kind() const { return kind_; }
   // Name of coordinate k for error messages.
   std::string name(Eigen::Index k) const;

@@ -21,19 +21,14 @@ void twinState(const RiserModel& joint, const RiserModel& twin, const Eigen::Vec
   y_twin.setZero(stateSize(twin));
   y_twin.head<6>() = y_joint.head<6>();
   for (int i = twin.first_dynamic; i <= twin.last_dynamic; ++i) {
-    const Eigen::Index o = segmentStateOffset(twin, i);
     const Eigen::Quaterniond q(pose.rotation[i]);
-    y_twin.segment<3>(o) = pose.position[i];
-    y_twin.segment<4>(o + 3) << q.w(), q.x(), q.y(), q.z();
-    y_twin.segment<3>(o + 7) = pose.velocity[i];
-    y_twin.segment<3>(o + 10) = pose.omega[i];
+    y_twin.segment<3>(segmentStateOffset(twin, i)) = pose.position[i];
+    y_twin.segment<4>(orientationStateOffset(twin, i)) << q.w(), q.x(), q.y(), q.z();
+    y_twin.segment<3>(velocityStateOffset(twin, i)) = pose.velocity[i];
+    y_twin.segment<3>(angularVelocityStateOffset(twin, i)) = pose.omega[i];
   }
   y_twin.tail<kWorkIntegrals>() = y_joint.segment<kWorkIntegrals>(workIntegralOffset(joint));
 }
-
-// Chart layouts (riser_implicit.hpp): top (3), then per dynamic segment k: joint θ (3) / absolute (r, θ) (6).
-Eigen::Index jointIndex(int k) { return 3 + 3 * static_cast<Eigen::Index>(k); }
-Eigen::Index twinIndex(int k) { return 3 + 6 * static_cast<Eigen::Index>(k); }
 
 }  // namespace
 
@@ -59,7 +54,7 @@ void JointNewtonMatrix::refresh(const IterationMatrixRequest& request) {
   twin_chart_.reset(y_twin_, q_twin_, v_twin_);
   for (int k = 0; k < segments_; ++k) {
     const int i = f_ + k;
-    rate_map_[k] = chartMaps(chart_.kind(), request.q.segment<3>(jointIndex(k))).rate_map;
+    rate_map_[k] = chartMaps(chart_.kind(), request.q.segment<3>(chart_.turnIndex(k))).rate_map;
     rate_map_inverse_[k] = rate_map_[k].inverse();
     rot_[k] = pose_ws_.pose.rotation[i];
     arm_[k] = m_.segments[i].length * rot_[k].col(0);
@@ -80,9 +75,9 @@ bool JointNewtonMatrix::solve(const IterationMatrixRequest& request, Eigen::Vect
   for (int c = 0; c < 3; ++c)
     if (topForceKnown(m_, c)) point[c] = rhs[c];
   for (int k = 0; k < segments_; ++k) {
-    const Vec3 theta_acc = rate_map_[k] * rhs.segment<3>(jointIndex(k));  // twin θ̈ (its chart is at θ = 0: M = I)
-    rhs_twin_.segment<3>(twinIndex(k)) = point;
-    rhs_twin_.segment<3>(twinIndex(k) + 3) = theta_acc;
+    const Vec3 theta_acc = rate_map_[k] * rhs.segment<3>(chart_.turnIndex(k));  // twin θ̈ (its chart is at θ = 0: M = I)
+    rhs_twin_.segment<3>(twin_chart_.positionIndex(k)) = point;
+    rhs_twin_.segment<3>(twin_chart_.turnIndex(k)) = theta_acc;
     point += (rot_[k] * theta_acc).cross(arm_[k]);
   }
   const IterationMatrixRequest twin_request{request.t,       q_twin_, v_twin_, acc_twin_, request.dv_dacc,
@@ -93,9 +88,9 @@ bool JointNewtonMatrix::solve(const IterationMatrixRequest& request, Eigen::Vect
   if (!have_) return false;
   // y = Π u: joint rates θ̈_J = M⁻¹ θ̈_twin; free top components from the top segment's acceleration.
   for (int c = 0; c < 3; ++c)
-    if (topForceKnown(m_, c)) rhs[c] = rhs_twin_[twinIndex(0) + c];
+    if (topForceKnown(m_, c)) rhs[c] = rhs_twin_[twin_chart_.positionIndex(0) + c];
   for (int k = 0; k < segments_; ++k)
-    rhs.segment<3>(jointIndex(k)) = rate_map_inverse_[k] * rhs_twin_.segment<3>(twinIndex(k) + 3);
+    rhs.segment<3>(chart_.turnIndex(k)) = rate_map_inverse_[k] * rhs_twin_.segment<3>(twin_chart_.turnIndex(k));
   return true;
 }
 

@@ -11,8 +11,6 @@ namespace {
 constexpr int kBlock = 9;
 Eigen::Index reactionIndex(int k) { return kBlock * static_cast<Eigen::Index>(k); }
 Eigen::Index segmentIndex(int k) { return kBlock * static_cast<Eigen::Index>(k) + 3; }
-// Chart index of dynamic segment k's (r, θ) (riser_implicit.hpp: top (3), then 6 per segment).
-Eigen::Index chartIndex(int k) { return 3 + 6 * static_cast<Eigen::Index>(k); }
 
 // Forward-difference steps: the residual is linear in the accelerations and reactions at fixed (q, v), so
 // only the coordinate change β'ε matters for truncation; it is set to 1e-9 m (or rad) relative to the
@@ -62,7 +60,7 @@ void ForceSpaceNewtonMatrix::refresh(const IterationMatrixRequest& request) {
   for (int k = 0; k <= segments_; ++k) eps_.segment<3>(reactionIndex(k)).setConstant(kLinearStep * (1 + largest_reaction));
   for (int k = 0; k < segments_; ++k)
     for (int c = 0; c < 6; ++c) {
-      const double linear = kLinearStep * (1 + std::abs(acc_[chartIndex(k) + c]));
+      const double linear = kLinearStep * (1 + std::abs(acc_[chart_.positionIndex(k) + c]));  // (r, θ) adjacent
       const double scale = c < 3 ? length_scale : 1.0;
       if (coordinate_steps_ && dq > 0)
         eps_[segmentIndex(k) + c] = kStaticCoordinateStep * scale / dq;
@@ -84,7 +82,7 @@ void ForceSpaceNewtonMatrix::refresh(const IterationMatrixRequest& request) {
       if (c < 3) {
         reaction_pert_[f_ + k][c] += e;
       } else {
-        const Eigen::Index ci = chartIndex(k) + (c - 3);
+        const Eigen::Index ci = chart_.positionIndex(k) + (c - 3);
         acc_pert_[ci] += e;
         q_[ci] += dq * e;
         v_[ci] += dv * e;
@@ -114,21 +112,20 @@ bool ForceSpaceNewtonMatrix::solve(const IterationMatrixRequest& request, Eigen:
   // Right side ∂F/∂acc · b: segment rows (b_r, turn b_θ); rows the acceleration-level constraints of that.
   z_.setZero(size_);
   auto far = [&](int k) -> Vec3 {
-    const Eigen::Index ci = chartIndex(k);
-    return rhs.segment<3>(ci) + (turn_[k] * rhs.segment<3>(ci + 3)).cross(arm_[k]);
+    return rhs.segment<3>(chart_.positionIndex(k)) + (turn_[k] * rhs.segment<3>(chart_.turnIndex(k))).cross(arm_[k]);
   };
   for (int k = 0; k < segments_; ++k) {
-    const Eigen::Index ci = chartIndex(k), zi = segmentIndex(k);
-    z_.segment<3>(zi) = rhs.segment<3>(ci);
-    z_.segment<3>(zi + 3) = turn_[k] * rhs.segment<3>(ci + 3);
+    const Eigen::Index zi = segmentIndex(k);
+    z_.segment<3>(zi) = rhs.segment<3>(chart_.positionIndex(k));
+    z_.segment<3>(zi + 3) = turn_[k] * rhs.segment<3>(chart_.turnIndex(k));
   }
   for (int c = 0; c < 3; ++c)
-    if (!topForceKnown(m_, c)) z_[c] = rhs[chartIndex(0) + c];
-  for (int k = 1; k < segments_; ++k) z_.segment<3>(reactionIndex(k)) = rhs.segment<3>(chartIndex(k)) - far(k - 1);
+    if (!topForceKnown(m_, c)) z_[c] = rhs[chart_.positionIndex(0) + c];
+  for (int k = 1; k < segments_; ++k) z_.segment<3>(reactionIndex(k)) = rhs.segment<3>(chart_.positionIndex(k)) - far(k - 1);
   if (bottomHeld(m_))
     z_.segment<3>(reactionIndex(segments_)) = far(segments_ - 1);
   lu_.solve(z_);
-  for (int k = 0; k < segments_; ++k) rhs.segment<6>(chartIndex(k)) = z_.segment<6>(segmentIndex(k));
+  for (int k = 0; k < segments_; ++k) rhs.segment<6>(chart_.positionIndex(k)) = z_.segment<6>(segmentIndex(k));
   return true;
 }
 

@@ -1,5 +1,6 @@
 #include "riser/riser_parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -138,6 +139,14 @@ SchemaBinder<P> makeBinder() {
              "each gives the first two bending frequencies (table frequency_vs_pretension)");
   b.realList("frequency_sweep.segment_counts", &P::sweep_segment_counts, "-", Range::closed(2.0, 200.0), 0, 100,
              "Segment counts n to sweep at top.tension (whole numbers; table frequency_vs_segments)");
+  b.realList("stress_convergence.segment_counts", &P::convergence_segment_counts, "-", Range::closed(2.0, 1000.0), 0,
+             20,
+             "Segment counts n at which the whole run is repeated to show how the first probe's bending stress "
+             "converges (whole numbers; table bending_stress_vs_segments)");
+  b.real("stress_convergence.tolerance", &P::convergence_tolerance, "-", Range::closed(1e-6, 1e-2),
+         "Under a harmonic top motion each repeated run is integrated by generalized-α with its step from this "
+         "expected probe error (relative to the motion; keep it below the differences between the n); other runs "
+         "keep the solver settings, so a fixed rk4 step must be stable at every n");
   return b;
 }
 
@@ -221,8 +230,32 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
     if (p.sweep_segment_counts[k] != std::round(p.sweep_segment_counts[k]))
       e.push_back({"frequency_sweep.segment_counts[" + std::to_string(k) + "]", num(p.sweep_segment_counts[k]),
                    "must be a whole number in [2, 200]"});
+  for (std::size_t k = 0; k < p.convergence_segment_counts.size(); ++k)
+    if (p.convergence_segment_counts[k] != std::round(p.convergence_segment_counts[k]))
+      e.push_back({"stress_convergence.segment_counts[" + std::to_string(k) + "]", num(p.convergence_segment_counts[k]),
+                   "must be a whole number in [2, 1000]"});
+  if (!p.convergence_segment_counts.empty() && p.end_time <= 0)
+    e.push_back({"solver.end_time", num(p.end_time), "a stress convergence study repeats the time history: must be > 0"});
   if ((!p.sweep_pretension_ratios.empty() || !p.sweep_segment_counts.empty()) && !p.solve_statics)
     e.push_back({"initial.solve_statics", "false", "frequency sweeps linearise about the static state: must be true"});
+  // Each convergence row is a whole run at its n: fields that depend on n (point load nodes, both ends clamped) must
+  // hold there too. Errors the scenario has at its own n are not repeated per row.
+  const std::vector<FieldError> own = e;
+  auto repeated = [&own](const FieldError& r) {
+    return std::any_of(own.begin(), own.end(),
+                       [&r](const FieldError& o) { return o.path == r.path && o.message == r.message; });
+  };
+  for (std::size_t k = 0; k < p.convergence_segment_counts.size(); ++k) {
+    const double n = p.convergence_segment_counts[k];
+    if (n != std::round(n) || n == p.segment_count) continue;
+    RiserParameters row = p;
+    row.segment_count = static_cast<int>(n);
+    row.convergence_segment_counts.clear();
+    for (const FieldError& r : checkRiserParameters(row))
+      if (!repeated(r))
+        e.push_back({"stress_convergence.segment_counts[" + std::to_string(k) + "]", num(n),
+                     "at this n, " + r.path + " = " + r.value + ": " + r.message});
+  }
   return e;
 }
 

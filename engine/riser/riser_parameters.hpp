@@ -121,6 +121,10 @@ struct RiserParameters {
   // frequency sweeps (paper Sect. 8.2): first two bending frequencies for other pretensions and segment counts
   std::vector<double> sweep_pretension_ratios;  // [-] i_T: top tension T = i_T g m′ (m′ submerged mass of riser + contents)
   std::vector<double> sweep_segment_counts;     // [-] n (whole numbers) at the scenario's top tension
+  // convergence of the first probe's bending stress with n (paper Sect. 9, "σ_b(L/2) against n"): the whole time
+  // history rerun at each n (riser_stress_convergence)
+  std::vector<double> convergence_segment_counts;  // [-] n (whole numbers); empty: no study
+  double convergence_tolerance = 1e-4;             // [-] harmonic top motion: expected probe error of each row
 };
 
 // The binder declaring path, unit, range and description of every field.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "core/text_format.hpp"
 
@@ -14,8 +16,13 @@ Vec3 probePoint(const RiserModel& m, const RiserPose& pose, double s) {
   return pose.position[i] + xi * pose.tangent(i);
 }
 
-int nearestJoint(const RiserModel& m, double s) {
-  return std::clamp(static_cast<int>(std::lround(s / m.element_length + 0.5)), 1, m.n);
+// Joint k is at arc length (k − ½)Δ (the end segments are Δ/2 long): the joint at or above s and the weight of
+// the one below it for a linear interpolation at s (0 outside [Δ/2, L − Δ/2]).
+std::pair<int, double> bracketingJoints(const RiserModel& m, double s) {
+  const double x = s / m.element_length + 0.5;  // joint index as a real number
+  const int above = std::clamp(static_cast<int>(std::floor(x)), 1, m.n);
+  const double weight = above < m.n ? std::clamp(x - above, 0.0, 1.0) : 0.0;
+  return {above, weight};
 }
 
 // History column of probe k (0-based): the first probe keeps the names probe_dx, ..., the others
@@ -85,7 +92,7 @@ void RiserRecorder::addHistoryPlots(Results& out) const {
   std::vector<std::string> stresses;
   for (std::size_t k = 0; k < probes_.size(); ++k) stresses.push_back(probeColumn(k, "bending_stress"));
   for (std::size_t k = 0; k < probes_.size(); ++k) stresses.push_back(probeColumn(k, "torsional_stress"));
-  out.plots.push_back(makePlot("probe_stress", "Stress at the probes (nearest joint)", "history", "time", stresses));
+  out.plots.push_back(makePlot("probe_stress", "Stress at the probes", "history", "time", stresses));
 }
 
 // probe_max_displacement (first probe, kept for scripts), probe2_max_displacement, ...
@@ -100,7 +107,7 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
   for (const ProbeRow& row : parameters.probes) {
     Probe probe;
     probe.arc_length = row.arc_length;
-    probe.joint = nearestJoint(model, row.arc_length);
+    std::tie(probe.joint, probe.weight_below) = bracketingJoints(model, row.arc_length);
     probes_.push_back(probe);
   }
   history_.name = "history";
@@ -150,7 +157,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
                             std::abs(wd) + std::abs(wdamp) + std::abs(wb) + std::abs(wf), std::abs(total - energy0_)});
   balance_max_ = std::max(balance_max_, std::abs(balance));
   drift_max_ = std::max(drift_max_, ws_.constraint_drift);
-  // Probe displacements from their first sample and stresses at their nearest joints.
+  // Probe displacements from their first sample and stresses interpolated between their bracketing joints.
   Vec3 first_d = Vec3::Zero();
   double first_bending = 0.0, first_torsion = 0.0;
   std::vector<double> extra;  // columns of probes 2, 3, ... (dx, dy, dz, bending, torsional)
@@ -160,14 +167,18 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     if (first_) probe.start = at;
     const Vec3 d = at - probe.start;
     probe.max_displacement = std::max(probe.max_displacement, d.norm());
-    probe.max_bending = std::max(probe.max_bending, prof.bending_stress[probe.joint]);
+    auto at_probe = [&](const std::vector<double>& along) {
+      const double below = probe.weight_below > 0 ? along[probe.joint + 1] : 0.0;
+      return (1 - probe.weight_below) * along[probe.joint] + probe.weight_below * below;
+    };
+    const double bending = at_probe(prof.bending_stress), torsion = at_probe(prof.torsional_stress);
+    probe.max_bending = std::max(probe.max_bending, bending);
     if (k == 0) {
       first_d = d;
-      first_bending = prof.bending_stress[probe.joint];
-      first_torsion = prof.torsional_stress[probe.joint];
+      first_bending = bending;
+      first_torsion = torsion;
     } else {
-      extra.insert(extra.end(), {d.x(), d.y(), d.z(), prof.bending_stress[probe.joint],
-                                 prof.torsional_stress[probe.joint]});
+      extra.insert(extra.end(), {d.x(), d.y(), d.z(), bending, torsion});
     }
   }
   pose_end_ = pose.end_position;
@@ -303,15 +314,16 @@ Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& st
   out.tables.push_back(nodes_);
   Table probes;
   probes.name = "probes";
-  probes.title = "Probe points: largest displacement and bending stress over the run";
-  for (const char* c : {"probe", "joint"}) probes.add(c, "-");
+  probes.title = "Probe points: largest displacement and bending stress over the run (stresses interpolated "
+                 "between joint_above and the joint below it, weight_below on the lower one)";
+  for (const char* c : {"probe", "joint_above", "weight_below"}) probes.add(c, "-");
   probes.add("arc_length", "m");
   probes.add("max_displacement", "m");
   probes.add("max_bending_stress", "Pa");
   for (std::size_t k = 0; k < probes_.size(); ++k) {
-    const double row[5] = {double(k + 1), double(probes_[k].joint), probes_[k].arc_length,
+    const double row[6] = {double(k + 1), double(probes_[k].joint), probes_[k].weight_below, probes_[k].arc_length,
                            probes_[k].max_displacement, probes_[k].max_bending};
-    for (int c = 0; c < 5; ++c) probes.columns[c].values.push_back(row[c]);
+    for (int c = 0; c < 6; ++c) probes.columns[c].values.push_back(row[c]);
   }
   out.tables.push_back(std::move(probes));
   const auto& h = history_;

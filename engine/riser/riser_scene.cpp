@@ -10,26 +10,35 @@
 #include "riser/riser_integration.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
+#include "riser/riser_stress_convergence.hpp"
 
 namespace maris::riser {
 
-Results solveRiser(const RiserParameters& p, RunContext& context) {
-  const RiserModel model = buildRiserModel(p);
-  // Initial shape: static equilibrium or the built-in straight/arc shape.
-  StaticSolution statics{model.initial_orientation, model.initial_top, Vec3::Zero(), 0, 0, 0.0};
-  if (p.solve_statics) statics = solveStatics(model, context);
-  Eigen::VectorXd y = restState(model, statics.orientation, statics.top);
+StaticSolution initialShape(const RiserModel& m, const RiserParameters& p, RunContext& context) {
+  if (p.solve_statics) return solveStatics(m, context);
+  return StaticSolution{m.initial_orientation, m.initial_top, Vec3::Zero(), 0, 0, 0.0};
+}
 
-  const IntegrationPlan plan = planIntegration(model, p);
-  RiserRecorder recorder(model, p);
+Results simulateRiser(const RiserModel& m, const RiserParameters& p, const StaticSolution& initial,
+                      const RiserModes& modes, RunContext& context) {
+  Eigen::VectorXd y = restState(m, initial.orientation, initial.top);
+  const IntegrationPlan plan = planIntegration(m, p);
+  RiserRecorder recorder(m, p);
   recorder.publishPartialsTo(&context);  // live plots in the GUI (no-op without a partial sink)
   recorder.sample(0.0, y, true, std::string("profile_static"));
+  if (!modes.frequencies.empty()) recorder.addModes(modes);
+  const SolverStats stats = integrateRiser(m, p, plan, y, recorder, context);
+  return recorder.finish(stats, initial);
+}
+
+Results solveRiser(const RiserParameters& p, RunContext& context) {
+  const RiserModel model = buildRiserModel(p);
+  const StaticSolution statics = initialShape(model, p, context);
   // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).
   RiserModes modes;
   if (p.solve_statics && 3 * (model.n + 1) <= 600) {
     context.progress(0.0, "natural frequencies");
     modes = computeModes(model, statics, 6);
-    recorder.addModes(modes);
     if (modes.slowly_growing_count > 0)
       context.warn(slowGrowthNote(modes.slowly_growing_count, modes.largest_growth_rate, modes.largest_growth_per_radian));
     if (modes.unstable_count > 0)
@@ -37,11 +46,11 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
                    std::to_string(std::abs(model.flow_speed)) + " m/s is beyond the divergence speed " +
                    std::to_string(modes.divergence_flow_speed) + " m/s (or in flutter)");
   }
-  const SolverStats stats = integrateRiser(model, p, plan, y, recorder, context);
-  Results results = recorder.finish(stats, statics);
+  Results results = simulateRiser(model, p, statics, modes, context);
   for (std::string& w : accuracyWarnings(results)) context.warn(std::move(w));
   addEnvelope(model, results);
   addFrequencySweeps(p, results, context);  // paper Sect. 8.2 tables (no-op without sweep lists)
+  addStressConvergence(p, results, context);  // paper Sect. 9, σ_b(L/2) against n (no-op without its list)
   // Without a time history the 3D view animates the mode shapes instead (one period per mode).
   if (p.end_time <= 0 && !modes.frequencies.empty()) {
     results.view.frames.clear();

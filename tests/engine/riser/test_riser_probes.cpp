@@ -102,6 +102,44 @@ TEST(RiserProbes, EachProbeRecordsTheHistoryOfItsOwnPoint) {
   EXPECT_EQ(r.findTable("probes")->rows(), 3u);
 }
 
+// A probe's stresses are those of the profile at its arc length, interpolated linearly between the two joints around
+// it (joint k at (k − ½)Δ): at a joint, that joint's value; a quarter of the way to the next, ¾ and ¼ of theirs;
+// above the first joint, the first joint's. Reference: the stress profile table at the same time (all joints),
+// tolerance 1e-9 of the largest stress (round-off). The nearest joint's value, up to Δ/2 away, made σ_b(L/2) of case
+// 5 converge at first order in n (riser_stress_convergence.hpp).
+TEST(RiserProbes, StressesAreInterpolatedBetweenTheJointsAroundTheProbe) {
+  RiserParameters p = test::shortMovingTopRun();  // n = 8, L = 100 m: joints at 6.25 + 12.5 (k − 1) m
+  p.stress_times = {2.0};
+  const double joint3 = 31.25, quarter = joint3 + 0.25 * 12.5, above_first = 2.0;
+  p.probes = {{joint3}, {quarter}, {above_first}};
+  RunContext context;
+  const Results r = solveRiser(p, context);
+  const Table& profile = *r.findTable("profile_t2");
+  const auto& arc = profile.find("arc_length")->values;
+  const auto& row = historyColumn(r, "time").values;
+  const auto at = std::find(row.begin(), row.end(), 2.0) - row.begin();
+  ASSERT_LT(static_cast<std::size_t>(at), row.size()) << "no history sample at the stress time";
+  for (const char* quantity : {"bending_stress", "torsional_stress"}) {
+    const auto& along = profile.find(quantity)->values;
+    double scale = 0;
+    for (double v : along) scale = std::max(scale, std::abs(v));
+    ASSERT_GT(scale, 0.0) << quantity;
+    const std::size_t k3 = std::find(arc.begin(), arc.end(), joint3) - arc.begin();
+    ASSERT_LT(k3 + 1, arc.size()) << "joint 3 not at " << joint3 << " m";
+    const double tol = 1e-9 * scale;
+    EXPECT_NEAR(historyColumn(r, std::string("probe_") + quantity).values[at], along[k3], tol) << quantity;
+    EXPECT_NEAR(historyColumn(r, std::string("probe2_") + quantity).values[at], 0.75 * along[k3] + 0.25 * along[k3 + 1],
+                tol)
+        << quantity;
+    EXPECT_NEAR(historyColumn(r, std::string("probe3_") + quantity).values[at], along[1], tol) << quantity;
+    // The interpolation must differ from the nearest joint's value for the check to mean something.
+    EXPECT_GT(std::abs(along[k3 + 1] - along[k3]), 1e-3 * scale) << quantity;
+  }
+  const Table& probes = *r.findTable("probes");
+  EXPECT_EQ(probes.find("joint_above")->values, (std::vector<double>{3, 3, 1}));
+  EXPECT_EQ(probes.find("weight_below")->values, (std::vector<double>{0, 0.25, 0}));
+}
+
 TEST(RiserProbes, ProbeBeyondTheRiserOrNoProbeIsAFieldError) {
   const SceneDefinition scene = makeRiserScene();
   RiserParameters p;
