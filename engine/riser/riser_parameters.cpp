@@ -261,6 +261,11 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
 
 std::vector<std::string> upgradeRiserParameters(Json& parameters) {
   std::vector<std::string> notes;
+  // Scenarios from before the stress convergence study (session 15) have no such section: no study.
+  if (parameters.is_object() && !parameters.contains("stress_convergence")) {
+    parameters["stress_convergence"] = Json{{"segment_counts", Json::array()}, {"tolerance", 1e-4}};
+    notes.push_back("stress_convergence added without a study (new in the riser schema; save the scenario to keep it)");
+  }
   auto output = parameters.find("output");
   if (output == parameters.end() || !output->is_object()) return notes;
   auto old = output->find("probe_position");

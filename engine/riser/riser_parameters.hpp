@@ -135,7 +135,8 @@ const SchemaBinder<RiserParameters>& riserBinder();
 std::vector<FieldError> checkRiserParameters(const RiserParameters& p);
 
 // Rewrites parameters of earlier riser schemas in place (SceneDefinition::upgrade); one note per change:
-// output.probe_position [m] (one probe) became the table output.probes of rows {arc_length}.
+// output.probe_position [m] (one probe) became the table output.probes of rows {arc_length}; a missing
+// stress_convergence section is added without a study.
 std::vector<std::string> upgradeRiserParameters(Json& parameters);
 
 }  // namespace maris::riser

@@ -8,10 +8,15 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/scene.hpp"
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser/riser_stress_convergence.hpp"
 #include "riser_test_cases.hpp"
+
+namespace maris {
+SceneDefinition makeRiserScene();
+}
 
 namespace maris::riser {
 namespace {
@@ -122,6 +127,22 @@ TEST(RiserStressConvergence, BadSettingsNameTheField) {
     return all;
   }();
   EXPECT_FALSE(hasError(errors, "stress_convergence.segment_counts[1]", "point_loads"));
+}
+
+// Scenario files saved before the study existed have no stress_convergence section: they load, without a study.
+TEST(RiserStressConvergence, ScenariosWithoutTheSectionLoadWithoutAStudy) {
+  const SceneDefinition scene = makeRiserScene();
+  Json old = riserBinder().write(test::paperCaseFive());
+  old.erase("stress_convergence");
+  EXPECT_TRUE(validateParameters(scene, old).empty()) << describeErrors(validateParameters(scene, old));
+  Json upgraded = old;
+  const auto notes = upgradeParameters(scene, upgraded);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes.front().find("stress_convergence"), std::string::npos) << notes.front();
+  const RiserParameters p = riserBinder().read(upgraded);
+  EXPECT_TRUE(p.convergence_segment_counts.empty());
+  EXPECT_EQ(p.convergence_tolerance, 1e-4);
+  EXPECT_TRUE(upgradeParameters(scene, upgraded).empty()) << "a second upgrade has nothing to do";
 }
 
 }  // namespace
