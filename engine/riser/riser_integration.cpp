@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/errors.hpp"
 #include "core/ode.hpp"
 #include "riser/riser_charted_alpha.hpp"
 
@@ -75,6 +76,24 @@ std::string methodName(const RiserModel& m, const IntegrationPlan& plan, const R
   return s.str();
 }
 
+// What a diverging RK4 run most likely met: a step beyond its stability limit 2.83/ω_max (the plan's estimate of the
+// highest mode). Without this the user only saw a non-finite derivative of some state component.
+std::string rk4InstabilityNote(const IntegrationPlan& plan) {
+  if (plan.method != Integrator::Rk4) return {};
+  std::ostringstream s;
+  s.precision(3);
+  const double limit = 2.83 / plan.highest_frequency;
+  if (plan.step > limit)
+    s << "; the step h = " << plan.step << " s is beyond RK4's stability limit ≈ 2.83/ω_max = " << limit
+      << " s (highest mode ω_max ≈ " << plan.highest_frequency
+      << " rad/s): the run is unstable; take solver.time_step below the limit (0 = automatic) or solver.integrator = "
+         "implicit";
+  else
+    s << "; RK4 diverged with h = " << plan.step << " s within its estimated stability limit " << limit
+      << " s (ω_max ≈ " << plan.highest_frequency << " rad/s is an estimate); try a smaller step or implicit";
+  return s.str();
+}
+
 // Explicit integrators from sample to sample, projecting the state at every sample.
 void integrateExplicit(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
                        const std::vector<Sample>& samples, Eigen::VectorXd& y, RiserRecorder& recorder,
@@ -96,8 +115,12 @@ void integrateExplicit(const RiserModel& m, const RiserParameters& p, const Inte
     options.t1 = s.t;
     RunContext chunk([&](double f, const std::string& stage) { context.progress((t + f * (s.t - t)) / end, stage); },
                      nullptr);
-    const OdeStats st = plan.method == Integrator::Rk4 ? integrateRk4(rhs, y, options, chunk)
-                                                       : integrateDopri5(rhs, y, options, chunk);
+    OdeStats st;
+    try {
+      st = plan.method == Integrator::Rk4 ? integrateRk4(rhs, y, options, chunk) : integrateDopri5(rhs, y, options, chunk);
+    } catch (const SolverError& e) {
+      throw SolverError(e.quantity(), e.time(), e.step(), e.detail() + rk4InstabilityNote(plan));
+    }
     accumulate(stats, st);
     if (plan.method == Integrator::Dopri5 && st.last_step > 0) options.step = st.last_step;
     normaliseState(m, y);
