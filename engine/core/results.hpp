@@ -75,8 +75,9 @@ struct Shape3D {
 };
 
 struct Frame3D {
-  double time = 0.0;  // [s] (or mode phase for mode shapes)
+  double time = 0.0;  // [s] (mode shapes: mode index + phase / 2π, an ordering only)
   std::vector<Shape3D> shapes;
+  std::string label;  // shown instead of "t = … s" when set ("mode 2: 9.21 rad/s, phase 90°")
 };
 
 struct View3D {

@@ -266,9 +266,13 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
 SolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
                            Eigen::VectorXd& y, RiserRecorder& recorder, RunContext& context) {
   SolverStats stats;
-  stats.method = methodName(m, plan, p);
   stats.error_unit = "-";
-  if (p.end_time <= 0) return stats;
+  if (p.end_time <= 0) {
+    stats.method = "no time integration (solver.end_time = 0): the initial shape" +
+                   std::string(p.solve_statics ? " (static equilibrium) and its natural frequencies" : "");
+    return stats;
+  }
+  stats.method = methodName(m, plan, p);
   long grid = kHistorySamples;
   double snap = 0.0;
   if (plan.method == Integrator::Rk4) {

@@ -375,6 +375,8 @@ void appendModeFrames(const RiserModel& model, const StaticSolution& statics, co
       }
       Frame3D frame;
       frame.time = static_cast<double>(k) + static_cast<double>(f) / frames_per_mode;
+      frame.label = formatText("mode %zu%s: %.4g rad/s (%.4g Hz), phase %.0f°", k + 1, torsion ? " (torsion)" : "",
+                               modes.frequencies[k], modes.frequencies[k] / (2 * kPi), 360.0 * f / frames_per_mode);
       frame.shapes.push_back(std::move(tube));
       view.frames.push_back(std::move(frame));
     }

@@ -264,7 +264,7 @@ void addWaveFieldFrames(const SeismicParameters& p, const FeCase& c, Results& re
         surf.points.emplace_back(c.x0 + i * delta, 0.0, c.y0 + j * delta);
         surf.scalars.push_back(c.snapshot_magnitude[f][j * (c.nx + 1) + i]);
       }
-    results.view.frames.push_back({c.snapshot_time[f], {std::move(surf)}});
+    results.view.frames.push_back({c.snapshot_time[f], {std::move(surf)}, {}});
   }
   results.view.scalar_name = "displacement magnitude";
   results.view.scalar_unit = "m";

@@ -284,8 +284,9 @@ void SceneView::drawFrame() {
 
 void SceneView::updateTimeLabel() {
   if (!results_ || frameCount() == 0) return;
-  const double t = results_->view.frames[frame_].time;
-  const QString text = QStringLiteral("t = %1 s").arg(t, 0, 'g', 6);
+  const Frame3D& frame = results_->view.frames[frame_];
+  const QString text = frame.label.empty() ? QStringLiteral("t = %1 s").arg(frame.time, 0, 'g', 6)
+                                           : QString::fromStdString(frame.label);
   // A static result (one frame) has no time worth showing.
   const bool animated = frameCount() > 1;
   time_->setText(animated ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : QString());

@@ -322,6 +322,10 @@ TEST(RiserModes, StaticRunAnimatesModeShapesInTheView) {
   ASSERT_EQ(r.view.frames.size(), 24 * count);
   const Frame3D& quarter = r.view.frames[6];  // mode 1, phase π/2
   EXPECT_NEAR(quarter.time, 0.25, 1e-12);
+  // The view shows what a mode frame is, not a time: "mode 1: … rad/s (… Hz), phase 90°".
+  EXPECT_EQ(quarter.label.rfind("mode 1: ", 0), 0u) << quarter.label;
+  EXPECT_NE(quarter.label.find("phase 90°"), std::string::npos) << quarter.label;
+  EXPECT_NE(r.view.frames[24].label.find("mode 2"), std::string::npos) << r.view.frames[24].label;
   const auto& tip = quarter.shapes.front().points.back();
   const int tip_row = p.segment_count + 1;  // mode 1, node n+1
   EXPECT_NEAR(tip.z(), 0.05 * p.length * shapes->find("dz")->values[tip_row], 1e-9);
