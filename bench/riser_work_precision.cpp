@@ -25,7 +25,8 @@
 // rows skipped for their estimated cost (their notes), without integrating anything; MARIS_BENCH_RERUN_SKIPPED=1
 // runs only the settings whose row in out.csv was skipped for its estimated cost or is absent (with a larger row
 // budget: filling in the costly explicit rows at large n, and rows earlier restricted runs left out, without
-// re-running the others).
+// re-running the others); MARIS_BENCH_FINEST_N = n of the "finest n" reference when above the largest n run
+// (rows at smaller n measured against the same finest n as the rest of the CSV, without re-running that n).
 // Integrators: RK4 at 0.9, 0.45, 0.225 x its stability estimate, DOPRI5 rtol 1e-3/1e-6/1e-8, and the scene's
 // implicit generalized-alpha (riser_integration) at T/25, T/50, T/100, T/200 of the top-motion period.
 // Plot: bench/tools/work_precision_plot (built with the GUI) renders the CSV to PNG with the GUI's plot
@@ -239,6 +240,7 @@ struct Options {
   double reference_budget = 180.0;    // [s] CPU: the most accurate same-n reference estimated within it is taken
   std::vector<std::string> variants = {"J2", "J3", "A2", "A3"};  // in run order
   std::vector<std::string> methods;   // only these methods (rk4, dopri5, implicit, auto); empty = all
+  int finest_n = 0;                   // n of the "finest n" reference if above the largest listed n (0: that n)
 };
 
 std::vector<std::string> parseNames(const char* text) {
@@ -279,6 +281,7 @@ Options parseOptions(int argc, char** argv) {
   if (const char* e = std::getenv("MARIS_BENCH_RERUN_SKIPPED")) o.rerun_skipped = o.merge = std::string(e) == "1";
   if (const char* v = std::getenv("MARIS_BENCH_VARIANTS")) o.variants = parseNames(v);
   if (const char* m = std::getenv("MARIS_BENCH_METHODS")) o.methods = parseNames(m);
+  if (const char* f = std::getenv("MARIS_BENCH_FINEST_N")) o.finest_n = std::atoi(f);
   return o;
 }
 
@@ -327,16 +330,23 @@ int main(int argc, char** argv) {
   const Options opt = parseOptions(argc, argv);
   RowWriter writer(opt);
   std::ostringstream header;
-  header << "Last run: case 5 (" << opt.case5_end << " s) n = ";
-  for (int n : opt.case5_n) header << n << " ";
-  header << "; cable n = ";
-  for (int n : opt.cable_n) header << n << " ";
-  header << "(" << (opt.merge ? "merged" : "full run") << "; budget " << opt.budget << " s CPU per run, "
-         << opt.reference_budget << " s for the reference; variants";
+  // The rows come from several runs merged into one CSV (each run's settings and load are in the .log); the header
+  // names the last one.
+  auto list = [](const std::vector<int>& ns) {
+    std::string out;
+    for (int n : ns) out += (out.empty() ? "" : ", ") + std::to_string(n);
+    return out;
+  };
+  header << "Last run " << (opt.merge ? "(merged into the rows of earlier runs)" : "(full)") << ":";
+  if ((opt.only == "all" || opt.only == "case5") && !opt.case5_n.empty())
+    header << " case 5 (" << opt.case5_end << " s) n = " << list(opt.case5_n) << ";";
+  if ((opt.only == "all" || opt.only == "cable3d") && !opt.cable_n.empty()) header << " cable n = " << list(opt.cable_n) << ";";
+  if (opt.finest_n > 0) header << " finest-n reference at n = " << opt.finest_n << ";";
+  header << " variants";
   for (const auto& v : opt.variants) header << " " << v;
   header << "; methods " << (opt.methods.empty() ? std::string("all") : "");
-  for (const auto& m : opt.methods) header << m << " ";
-  header << ").";
+  for (std::size_t k = 0; k < opt.methods.size(); ++k) header << (k ? ", " : "") << opt.methods[k];
+  header << "; budget " << opt.budget << " s CPU per run, " << opt.reference_budget << " s for a reference.";
   writer.setHeader(header.str());
   const double inf = std::numeric_limits<double>::infinity();
   using Row = bench::WorkPrecisionRow;
@@ -403,15 +413,16 @@ int main(int argc, char** argv) {
       const auto it = rhs_cost.find(std::string(v.name) + std::to_string(n));
       return it != rhs_cost.end() ? it->second : rhs_cost.at(std::string(v.name) + "1000") * n / 1000.0;
     };
+    const int finest_size = std::max(ns.back(), opt.finest_n);  // the "finest n" reference's n
     RiserParameters pf = c.p;
-    pf.segment_count = ns.back();
+    pf.segment_count = finest_size;
     pf.formulation = "joint";
     pf.torsion = true;
-    const Reference finest_how = chooseReference(pf, limitOf(pf), costOf(kVariants[1], ns.back()));
+    const Reference finest_how = chooseReference(pf, limitOf(pf), costOf(kVariants[1], finest_size));
     Run finest;
     if (!opt.estimate_only && !opt.skipped_only && !finest_how.method.empty()) {
       finest = integrate(referenceParameters(pf, finest_how.method), finest_how.method, finest_how.value);
-      std::printf("# %s finest reference n = %d (%s): %.2f s CPU, %ld steps\n", c.name, ns.back(), finest_how.how.c_str(),
+      std::printf("# %s finest reference n = %d (%s): %.2f s CPU, %ld steps\n", c.name, finest_size, finest_how.how.c_str(),
                   finest.cpu, finest.steps);
     }
     for (const std::string& variant_name : opt.variants) {
@@ -430,10 +441,10 @@ int main(int argc, char** argv) {
         p.segment_count = n;
         p.formulation = v.formulation;
         p.torsion = v.torsion;
-        const bool huge = n > ns.back();
+        const bool huge = n > finest_size;
         const double limit = limitOf(p);  // RK4 stability estimate
         const double cost = costOf(v, n);
-        const bool is_finest = n == ns.back() && std::string(v.name) == "J3";
+        const bool is_finest = n == finest_size && std::string(v.name) == "J3";
         const Reference ref_how = huge ? Reference{} : is_finest ? finest_how : chooseReference(p, limit, cost);
         std::vector<std::pair<std::string, double>> settings;
         if (!huge)
@@ -467,7 +478,7 @@ int main(int argc, char** argv) {
         if (is_finest) ref = finest;
         else if (!ref_how.method.empty() && !opt.skipped_only)
           ref = integrate(referenceParameters(p, ref_how.method), ref_how.method, ref_how.value);
-        const int finest_n = huge || !finest_how.method.empty() ? ns.back() : 0;
+        const int finest_n = huge || !finest_how.method.empty() ? finest_size : 0;
         for (const auto& [method, value] : settings) {
           Row row{c.name, v.name, method, n, value, 0, 0, 0.0, inf, inf, finest_n, ref_how.how, ""};
           const Estimate e = estimate(method, value, end, limit, cost, period);
