@@ -388,8 +388,22 @@ TEST(RiserModes, PipeConveyingFluidDivergesAtTheClosedFormSpeed) {
         EXPECT_NEAR(previous / error, 4.0, 1.0) << "T = " << tension;
       }
       previous = error;
+      // The run reports it as the scalar divergence_flow_speed (and warns once the flow is beyond it, below).
+      RiserParameters run = p;
+      run.end_time = 0.0;
+      const Results r = solveRiser(run, context);
+      ASSERT_NE(r.findScalar("divergence_flow_speed"), nullptr);
+      EXPECT_NEAR(r.findScalar("divergence_flow_speed")->value, divergenceFlowSpeed(m, s), 1e-9 * exact);
       if (n == 40) continue;
       p.internal_flow_speed = 1.05 * exact;
+      RiserParameters past = p;
+      past.end_time = 0.0;
+      RunContext warned;
+      solveRiser(past, warned);
+      const auto notes = warned.warnings();
+      EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& w) {
+        return w.find("beyond the divergence speed") != std::string::npos;
+      })) << "T = " << tension;
       const RiserModel beyond = buildRiserModel(p);
       const RiserModes modes = computeModes(beyond, solveStatics(beyond, context), 4);
       EXPECT_EQ(modes.unstable_count, 2) << "one diverging mode per bending plane, T = " << tension;
