@@ -49,7 +49,7 @@ class RunContext {
 
   // A context for one part of a longer run (a sweep row): its progress f shows as from + f (to − from) here, with
   // `stage_prefix` before its stage; it sees this context's cancellation. Its warnings and partial results stay
-  // with it (the caller passes on what it wants). Must not outlive this context.
+  // with it (the caller passes on what it wants); it reports as often as this one. Must not outlive this context.
   RunContext part(double from, double to, std::string stage_prefix);
 
   // Seconds of wall time since the context was created.
@@ -58,6 +58,9 @@ class RunContext {
   void setProgressInterval(double seconds) { min_progress_interval_s_ = seconds; }
 
  private:
+  RunContext(ProgressFn progress, const std::atomic<bool>* cancel_flag, double min_progress_interval_s)
+      : progress_(std::move(progress)), cancel_(cancel_flag), min_progress_interval_s_(min_progress_interval_s) {}
+
   using Clock = std::chrono::steady_clock;
   ProgressFn progress_;
   const std::atomic<bool>* cancel_ = nullptr;

@@ -20,6 +20,8 @@ constexpr double kLooseNewtonTolerance = 1e-6;
 constexpr double kTightNewtonTolerance = 1e-10;
 constexpr double kNewtonShare = 1e-3;
 constexpr long kHistorySamples = 2000;
+// RK4 is stable for ωh up to 2√2 ≈ 2.83 on the imaginary axis; with ω_max an estimate, 2.8 is taken as its limit.
+constexpr double kRk4StabilityLimit = 2.8;
 
 // One recorder sample after the start: time, whether it is a 3D frame, and a profile table name.
 struct Sample {
@@ -76,15 +78,15 @@ std::string methodName(const RiserModel& m, const IntegrationPlan& plan, const R
   return s.str();
 }
 
-// What a diverging RK4 run most likely met: a step beyond its stability limit 2.83/ω_max (the plan's estimate of the
+// What a diverging RK4 run most likely met: a step beyond its stability limit 2.8/ω_max (the plan's estimate of the
 // highest mode). Without this the user only saw a non-finite derivative of some state component.
 std::string rk4InstabilityNote(const IntegrationPlan& plan) {
-  if (plan.method != Integrator::Rk4) return {};
+  if (plan.method != Integrator::Rk4 || !(plan.highest_frequency > 0)) return {};
   std::ostringstream s;
   s.precision(3);
-  const double limit = 2.83 / plan.highest_frequency;
+  const double limit = kRk4StabilityLimit / plan.highest_frequency;
   if (plan.step > limit)
-    s << "; the step h = " << plan.step << " s is beyond RK4's stability limit ≈ 2.83/ω_max = " << limit
+    s << "; the step h = " << plan.step << " s is beyond RK4's stability limit ≈ 2.8/ω_max = " << limit
       << " s (highest mode ω_max ≈ " << plan.highest_frequency
       << " rad/s): the run is unstable; take solver.time_step below the limit (0 = automatic) or solver.integrator = "
          "implicit";
@@ -195,7 +197,7 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   plan.highest_frequency = highestFrequencyEstimate(m);
   const bool moving_top = m.motion_amplitude.norm() > 0 || !m.top_table.empty();
   // RK4: half its stability limit 2.8/ω_max, and at least 40 steps per period of the top motion.
-  double h_rk4 = 1.4 / plan.highest_frequency;
+  double h_rk4 = 0.5 * kRk4StabilityLimit / plan.highest_frequency;
   if (moving_top && m.top_table.empty()) h_rk4 = std::min(h_rk4, p.motion_period / 40);
   // Implicit: 50 steps per top period (or per run), unresolved fast modes are damped (ρ∞ = 0.8).
   double h_implicit = moving_top && m.top_table.empty() ? p.motion_period / 50 : std::max(p.end_time, 1e-9) / 200;
@@ -240,7 +242,7 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
     plan.stabilisation_rate = 0.1 / h_rk4;
   } else if (plan.method == Integrator::Dopri5) {
     plan.step = p.time_step;  // largest step, if given
-    plan.stabilisation_rate = 0.1 * plan.highest_frequency / 1.4;
+    plan.stabilisation_rate = 0.1 * plan.highest_frequency / (0.5 * kRk4StabilityLimit);
   } else {
     plan.step = p.time_step > 0 ? p.time_step : h_implicit;
     if (p.time_step <= 0 && p.end_time > 0) {
@@ -269,7 +271,7 @@ SolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const 
   stats.error_unit = "-";
   if (p.end_time <= 0) {
     stats.method = "no time integration (solver.end_time = 0): the initial shape" +
-                   std::string(p.solve_statics ? " (static equilibrium) and its natural frequencies" : "");
+                   std::string(p.solve_statics ? " (static equilibrium) and, for n ≤ 199, its natural frequencies" : "");
     return stats;
   }
   stats.method = methodName(m, plan, p);

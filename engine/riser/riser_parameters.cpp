@@ -239,11 +239,11 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
   if ((!p.sweep_pretension_ratios.empty() || !p.sweep_segment_counts.empty()) && !p.solve_statics)
     e.push_back({"initial.solve_statics", "false", "frequency sweeps linearise about the static state: must be true"});
   // Each convergence row is a whole run at its n: fields that depend on n (point load nodes, both ends clamped) must
-  // hold there too. Errors the scenario has at its own n are not repeated per row.
+  // hold there too. A field the scenario already has an error on at its own n is not named again per row (its message
+  // may differ with n: "must be in [0, 101]" against "[0, 51]").
   const std::vector<FieldError> own = e;
   auto repeated = [&own](const FieldError& r) {
-    return std::any_of(own.begin(), own.end(),
-                       [&r](const FieldError& o) { return o.path == r.path && o.message == r.message; });
+    return std::any_of(own.begin(), own.end(), [&r](const FieldError& o) { return o.path == r.path; });
   };
   for (std::size_t k = 0; k < p.convergence_segment_counts.size(); ++k) {
     const double n = p.convergence_segment_counts[k];
@@ -263,7 +263,7 @@ std::vector<std::string> upgradeRiserParameters(Json& parameters) {
   std::vector<std::string> notes;
   // Scenarios from before the stress convergence study (session 15) have no such section: no study.
   if (parameters.is_object() && !parameters.contains("stress_convergence")) {
-    parameters["stress_convergence"] = Json{{"segment_counts", Json::array()}, {"tolerance", 1e-4}};
+    parameters["stress_convergence"] = riserBinder().write(RiserParameters{})["stress_convergence"];
     notes.push_back("stress_convergence added without a study (new in the riser schema; save the scenario to keep it)");
   }
   auto output = parameters.find("output");

@@ -107,7 +107,7 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
   for (const ProbeRow& row : parameters.probes) {
     Probe probe;
     probe.arc_length = row.arc_length;
-    std::tie(probe.joint, probe.weight_below) = bracketingJoints(model, row.arc_length);
+    std::tie(probe.joint_above, probe.weight_below) = bracketingJoints(model, row.arc_length);
     probes_.push_back(probe);
   }
   history_.name = "history";
@@ -168,10 +168,12 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     const Vec3 d = at - probe.start;
     probe.max_displacement = std::max(probe.max_displacement, d.norm());
     auto at_probe = [&](const std::vector<double>& along) {
-      const double below = probe.weight_below > 0 ? along[probe.joint + 1] : 0.0;
-      return (1 - probe.weight_below) * along[probe.joint] + probe.weight_below * below;
+      const double below = probe.weight_below > 0 ? along[probe.joint_above + 1] : 0.0;
+      return (1 - probe.weight_below) * along[probe.joint_above] + probe.weight_below * below;
     };
-    const double bending = at_probe(prof.bending_stress), torsion = at_probe(prof.torsional_stress);
+    // σ_b from the interpolated components: |M| has a kink where the moment turns through zero.
+    const double bending = std::hypot(at_probe(prof.stress_xy), at_probe(prof.stress_xz));
+    const double torsion = at_probe(prof.torsional_stress);
     probe.max_bending = std::max(probe.max_bending, bending);
     if (k == 0) {
       first_d = d;
@@ -321,7 +323,7 @@ Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& st
   probes.add("max_displacement", "m");
   probes.add("max_bending_stress", "Pa");
   for (std::size_t k = 0; k < probes_.size(); ++k) {
-    const double row[6] = {double(k + 1), double(probes_[k].joint), probes_[k].weight_below, probes_[k].arc_length,
+    const double row[6] = {double(k + 1), double(probes_[k].joint_above), probes_[k].weight_below, probes_[k].arc_length,
                            probes_[k].max_displacement, probes_[k].max_bending};
     for (int c = 0; c < 6; ++c) probes.columns[c].values.push_back(row[c]);
   }

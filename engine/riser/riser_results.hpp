@@ -62,10 +62,10 @@ class RiserRecorder {
   // One per row of output.probes: history columns probe_dx.. (first), probe2_dx.., ...
   struct Probe {
     double arc_length = 0.0;   // [m]
-    // Stresses are interpolated linearly in arc length between joints `joint` and joint + 1 (weight
+    // Stresses are interpolated linearly in arc length between joints `joint_above` and the one below it (weight
     // `weight_below` on the lower one; 0 beyond the end joints): O(Δ²) at s, where the nearest joint, up to Δ/2
     // away, was O(Δ) (σ_b(L/2) of case 5 converged at first order in n).
-    int joint = 1;
+    int joint_above = 1;
     double weight_below = 0.0;  // [-]
     Vec3 start = Vec3::Zero(); // [m] position at the first sample
     double max_displacement = 0.0, max_bending = 0.0;  // [m], [Pa] over the samples so far

@@ -12,11 +12,12 @@
 
 namespace maris::riser {
 
-// Runs p at each n of p.convergence_segment_counts (implicit generalized-α, step from p.convergence_tolerance,
-// the rest of p unchanged) and appends table "bending_stress_vs_segments": segment_count, the first probe's
-// largest bending stress over the run and its value at each stress time in (0, end_time], the integration's
-// expected probe error, steps and wall time; with two rows or more also "bending_stress_difference_vs_segments"
-// (relative difference of each row's largest stress from the finest n's) with log–log plots. Reports progress per
+// Runs p at each n of p.convergence_segment_counts (under a harmonic top motion by generalized-α with its step from
+// p.convergence_tolerance, otherwise with p's solver settings; the rest of p unchanged) and appends table
+// "bending_stress_vs_segments": segment_count, the first probe's largest bending stress over the run and its value
+// at each stress time in (0, end_time], the integrator's error estimate (generalized-α: the expected probe error),
+// steps and wall time; with two rows or more also "bending_stress_difference_vs_segments" (relative difference of
+// each row's values from the finest n's) with log–log plots. Reports progress per
 // row, honours cancellation, passes on each row's warnings naming its n; a row that fails throws SolverError
 // naming its n. Does nothing when the list is empty.
 void addStressConvergence(const RiserParameters& p, Results& results, RunContext& context);

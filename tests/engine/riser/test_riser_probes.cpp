@@ -103,7 +103,8 @@ TEST(RiserProbes, EachProbeRecordsTheHistoryOfItsOwnPoint) {
 }
 
 // A probe's stresses are those of the profile at its arc length, interpolated linearly between the two joints around
-// it (joint k at (k − ½)Δ): at a joint, that joint's value; a quarter of the way to the next, ¾ and ¼ of theirs;
+// it (joint k at (k − ½)Δ): at a joint, that joint's value; a quarter of the way to the next, ¾ and ¼ of theirs (for
+// σ_b, of its components σ_xy and σ_xz);
 // above the first joint, the first joint's. Reference: the stress profile table at the same time (all joints),
 // tolerance 1e-9 of the largest stress (round-off). The nearest joint's value, up to Δ/2 away, made σ_b(L/2) of case
 // 5 converge at first order in n (riser_stress_convergence.hpp).
@@ -119,18 +120,21 @@ TEST(RiserProbes, StressesAreInterpolatedBetweenTheJointsAroundTheProbe) {
   const auto& row = historyColumn(r, "time").values;
   const auto at = std::find(row.begin(), row.end(), 2.0) - row.begin();
   ASSERT_LT(static_cast<std::size_t>(at), row.size()) << "no history sample at the stress time";
+  const std::size_t k3 = std::find(arc.begin(), arc.end(), joint3) - arc.begin();
+  ASSERT_LT(k3 + 1, arc.size()) << "joint 3 not at " << joint3 << " m";
+  // σ_t interpolated directly; σ_b = |(σ_xy, σ_xz)| of the interpolated components (|M| has a kink at M = 0).
+  const auto &xy = profile.find("stress_xy")->values, &xz = profile.find("stress_xz")->values;
+  const double bending_quarter = std::hypot(0.75 * xy[k3] + 0.25 * xy[k3 + 1], 0.75 * xz[k3] + 0.25 * xz[k3 + 1]);
   for (const char* quantity : {"bending_stress", "torsional_stress"}) {
     const auto& along = profile.find(quantity)->values;
     double scale = 0;
     for (double v : along) scale = std::max(scale, std::abs(v));
     ASSERT_GT(scale, 0.0) << quantity;
-    const std::size_t k3 = std::find(arc.begin(), arc.end(), joint3) - arc.begin();
-    ASSERT_LT(k3 + 1, arc.size()) << "joint 3 not at " << joint3 << " m";
     const double tol = 1e-9 * scale;
+    const bool bending = std::string(quantity) == "bending_stress";
+    const double quarter_value = bending ? bending_quarter : 0.75 * along[k3] + 0.25 * along[k3 + 1];
     EXPECT_NEAR(historyColumn(r, std::string("probe_") + quantity).values[at], along[k3], tol) << quantity;
-    EXPECT_NEAR(historyColumn(r, std::string("probe2_") + quantity).values[at], 0.75 * along[k3] + 0.25 * along[k3 + 1],
-                tol)
-        << quantity;
+    EXPECT_NEAR(historyColumn(r, std::string("probe2_") + quantity).values[at], quarter_value, tol) << quantity;
     EXPECT_NEAR(historyColumn(r, std::string("probe3_") + quantity).values[at], along[1], tol) << quantity;
     // The interpolation must differ from the nearest joint's value for the check to mean something.
     EXPECT_GT(std::abs(along[k3 + 1] - along[k3]), 1e-3 * scale) << quantity;

@@ -21,8 +21,8 @@ SceneDefinition makeRiserScene();
 namespace maris::riser {
 namespace {
 
-// The built-in case 5 scenario in one variant with its study at counts `n`, run to 24 s (the paper's stress time)
-// with the main run itself cut to nothing but the statics (the study's rows are what is tested).
+// The study of the built-in case 5 scenario in one variant at counts `n`, to 24 s (the paper's stress time); only the
+// study runs (addStressConvergence), not the scenario's own run.
 Results caseFiveStudy(const char* variant, std::vector<double> n) {
   RiserParameters p = test::builtinParameters(std::string("scenarios/riser/riser_paper_case5_") + variant + ".json");
   EXPECT_EQ(p.convergence_segment_counts, (std::vector<double>{10, 20, 50, 100, 200})) << "the scenario's study";
@@ -41,11 +41,13 @@ const std::vector<double>& column(const Results& r, const char* table, const cha
 
 // Second order in n: the segment method's bending moment at a joint is O(Δ²) (paper: errors of eq (66) ≈ 0.2 % at
 // n = 10, O(1/n²)), and the probe's value is interpolated between the joints around L/2, also O(Δ²). Successive
-// differences of σ_b(L/2) at 24 s for n = 12, 24, 48, 96 must fall by 4 (accepted 3–5.5); measured J2 3.5 and 5.0
-// (the largest over the run: 3.3 and 3.7, still approaching 4).
+// differences of σ_b(L/2) at 24 s for n = 12, 24, 48, 96 must fall by 4 (accepted 2.8–5.5; first order would give 2);
+// measured J2 3.4 and 5.1 (the largest over the run: 3.2 and 3.7, still approaching 4).
 // With the nearest joint's value (up to Δ/2 from L/2) they fell by 2 (case 5 J3 at n = 50, 100, 200, 400: 0.15,
 // 0.084, 0.045 MPa). The largest stress over the run must converge the same way. The integration's own error, an
-// expected 1e-4 of the motion at every n, is below the smallest difference (checked).
+// expected 6.4e-5 of the motion at every n (checked), must leave the smallest difference clear: a heuristic check
+// that it is above ten times 1e-4 of the stress (a relative displacement error is not a stress error, but the two
+// are of one order here: J2 against A2 differ by 3e-6–8e-5 of the stress, below).
 TEST(RiserStressConvergence, BendingStressAtMidLengthConvergesAtSecondOrderInN) {
   const Results r = caseFiveStudy("j2", {12, 24, 48, 96});
   ASSERT_NE(r.findTable("bending_stress_vs_segments"), nullptr);
@@ -53,14 +55,14 @@ TEST(RiserStressConvergence, BendingStressAtMidLengthConvergesAtSecondOrderInN) 
   for (const char* name : {"bending_stress_t24", "max_bending_stress"}) {
     const std::vector<double>& s = column(r, "bending_stress_vs_segments", name);
     const double d1 = s[1] - s[0], d2 = s[2] - s[1], d3 = s[3] - s[2];
-    EXPECT_GT(d1 / d2, 3.0) << name << ": " << d1 << " " << d2 << " " << d3;
+    EXPECT_GT(d1 / d2, 2.8) << name << ": " << d1 << " " << d2 << " " << d3;
     EXPECT_LT(d1 / d2, 5.5) << name;
-    EXPECT_GT(d2 / d3, 3.0) << name;
+    EXPECT_GT(d2 / d3, 2.8) << name;
     EXPECT_LT(d2 / d3, 5.5) << name;
     EXPECT_GT(std::abs(d3), 10 * 1e-4 * std::abs(s[3])) << name << ": differences above the integration error";
   }
   // The study says how accurate each row's time integration is, and the difference table exists for n < 96.
-  for (double e : column(r, "bending_stress_vs_segments", "expected_probe_error")) EXPECT_NEAR(e, 0.64e-4, 1e-6);
+  for (double e : column(r, "bending_stress_vs_segments", "integrator_error_estimate")) EXPECT_NEAR(e, 0.64e-4, 1e-6);
   EXPECT_EQ(column(r, "bending_stress_difference_vs_segments", "segment_count"), (std::vector<double>{12, 24, 48}));
 }
 
@@ -93,6 +95,7 @@ TEST(RiserStressConvergence, CancellationStopsTheStudy) {
         if (stage.find("n = 20") != std::string::npos) cancel = true;
       },
       &cancel);
+  context.setProgressInterval(0.0);  // every report through: the test must not depend on the timing of the rows
   Results results;
   EXPECT_THROW(addStressConvergence(p, results, context), RunCancelled);
   EXPECT_EQ(results.findTable("bending_stress_vs_segments"), nullptr);
@@ -108,7 +111,8 @@ bool hasError(const std::vector<FieldError>& errors, const std::string& path, co
 }
 
 // Bad study settings name the field: a fractional n, a study without a time history, and a row whose n breaks a
-// field that depends on n (a point load on node 60 exists at n = 100 but not at n = 50).
+// field that depends on n (a point load on node 60 exists at n = 100 but not at n = 50; one on node 120 is wrong at
+// n = 100 already, and named once).
 TEST(RiserStressConvergence, BadSettingsNameTheField) {
   RiserParameters p = test::paperCaseFive();
   p.convergence_segment_counts = {10.5};
@@ -127,6 +131,11 @@ TEST(RiserStressConvergence, BadSettingsNameTheField) {
     return all;
   }();
   EXPECT_FALSE(hasError(errors, "stress_convergence.segment_counts[1]", "point_loads"));
+  // A node already beyond the scenario's own n is named once, on its own field, not again for each row.
+  p.point_loads[0].node = 120;
+  const std::vector<FieldError> own = checkRiserParameters(p);
+  EXPECT_TRUE(hasError(own, "point_loads[0].node", "must be in [0, 101]"));
+  EXPECT_FALSE(hasError(own, "stress_convergence.segment_counts[0]", "point_loads"));
 }
 
 // Scenario files saved before the study existed have no stress_convergence section: they load, without a study.
