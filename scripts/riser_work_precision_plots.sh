@@ -4,7 +4,7 @@
 # Usage: scripts/riser_work_precision_plots.sh [BUILD (GUI build, default build/gui)] [CSV (default
 #        docs/riser_work_precision.csv)] [IMAGES (default docs/images)] [CASE5_N (100)] [CABLE_N (50)]
 # CASE5_N / CABLE_N: the n of the per-n plots (variant × method). The _case5_n plot has every n of J3; its
-# error is against the J3 reference at the finest n (CSV column finest_n: 400 for all but seven cable rows).
+# error is against the J3 reference at the finest n (CSV column finest_n: 400 for every row).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/gui}
