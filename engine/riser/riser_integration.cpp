@@ -192,15 +192,17 @@ double implicitStepForTolerance(Formulation formulation, double period, double t
   return 0.8 * period * std::sqrt(std::max(tolerance, 1e-12) / implicitErrorModel(formulation));
 }
 
+bool hasHarmonicTopMotion(const RiserModel& m) { return m.motion_amplitude.norm() > 0 && m.top_table.empty(); }
+
 IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   IntegrationPlan plan;
   plan.highest_frequency = highestFrequencyEstimate(m);
-  const bool moving_top = m.motion_amplitude.norm() > 0 || !m.top_table.empty();
+  const bool harmonic_top = hasHarmonicTopMotion(m);
   // RK4: half its stability limit 2.8/ω_max, and at least 40 steps per period of the top motion.
   double h_rk4 = 0.5 * kRk4StabilityLimit / plan.highest_frequency;
-  if (moving_top && m.top_table.empty()) h_rk4 = std::min(h_rk4, p.motion_period / 40);
+  if (harmonic_top) h_rk4 = std::min(h_rk4, p.motion_period / 40);
   // Implicit: 50 steps per top period (or per run), unresolved fast modes are damped (ρ∞ = 0.8).
-  double h_implicit = moving_top && m.top_table.empty() ? p.motion_period / 50 : std::max(p.end_time, 1e-9) / 200;
+  double h_implicit = harmonic_top ? p.motion_period / 50 : std::max(p.end_time, 1e-9) / 200;
   const std::string& choice = p.integrator;
   if (choice == "rk4") {
     plan.method = Integrator::Rk4;
@@ -222,7 +224,7 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
     const double reach = m.flow_speed != 0.0 ? 2 : 1;
     const double matrix_cost = 2 * (9 * reach + 5) + (absolute ? 3 : 4);
     // Step for the tolerance from the error model of generalized-α (implicitStepForTolerance).
-    if (moving_top && m.top_table.empty())
+    if (harmonic_top)
       h_implicit = std::min(h_implicit, implicitStepForTolerance(m.formulation, p.motion_period, p.tolerance));
     const double implicit_cost = 2.5 * p.end_time / h_implicit + chunks * matrix_cost;
     const bool stiff = explicit_steps > kExplicitStepBudget;
@@ -254,7 +256,7 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
       plan.step = frame / std::ceil(frame / plan.step - 1e-9);
     }
     plan.stabilisation_rate = 1.0 / plan.step;
-    if (moving_top && m.top_table.empty()) {
+    if (harmonic_top) {
       plan.expected_error = implicitErrorModel(m.formulation) * std::pow(plan.step / p.motion_period, 2);
       std::ostringstream e;
       e.precision(2);

@@ -43,6 +43,10 @@ struct IntegrationPlan {
 // of the motion, C measured on case 5 (absolute 22, joint 43: J builds positions from integrated rotations).
 double implicitErrorModel(Formulation formulation);
 
+// Whether the top moves harmonically (amplitude set, no time table): the only motion with a period T, the one
+// implicitErrorModel is fitted to.
+bool hasHarmonicTopMotion(const RiserModel& m);
+
 // The automatic implicit step for a relative tolerance: 0.8 T √(tol/C) (so the expected error is 0.64 tol).
 double implicitStepForTolerance(Formulation formulation, double period, double tolerance);
 

@@ -35,17 +35,14 @@ struct ConvergenceRow {
   double wall_time = 0.0;           // [s]
 };
 
-// Under a harmonic top motion generalized-α's error model gives the step for the tolerance at every n; other runs
-// keep the scenario's solver settings.
-bool stepFromTolerance(const RiserModel& m, const RiserParameters& p) {
-  return m.motion_amplitude.norm() > 0 && m.top_table.empty() && p.motion_period > 0;
-}
-
-ConvergenceRow runRow(const RiserParameters& p, int n, const std::vector<double>& times, RunContext& context) {
+// step_from_tolerance: under a harmonic top motion generalized-α's error model gives the step for the tolerance at
+// every n; other runs keep the scenario's solver settings.
+ConvergenceRow runRow(const RiserParameters& p, int n, bool step_from_tolerance, const std::vector<double>& times,
+                      RunContext& context) {
   RiserParameters q = p;
   q.segment_count = n;
   const RiserModel m = buildRiserModel(q);  // the solver and output settings below do not enter the model
-  if (stepFromTolerance(m, p)) {
+  if (step_from_tolerance) {
     q.integrator = "implicit";
     q.time_step = implicitStepForTolerance(m.formulation, p.motion_period, p.convergence_tolerance);
     q.tolerance = p.convergence_tolerance;
@@ -74,6 +71,8 @@ void addStressConvergence(const RiserParameters& p, Results& results, RunContext
   std::vector<double> times;
   for (double t : p.stress_times)
     if (t > 0 && t <= p.end_time) times.push_back(t);
+  // The top motion does not depend on n: decided once, for every row and the table's title.
+  const bool step_from_tolerance = hasHarmonicTopMotion(buildRiserModel(p)) && p.motion_period > 0;
   const std::size_t total = p.convergence_segment_counts.size();
   std::vector<ConvergenceRow> rows;
   for (std::size_t k = 0; k < total; ++k) {
@@ -83,7 +82,7 @@ void addStressConvergence(const RiserParameters& p, Results& results, RunContext
     RunContext row_context = context.part(double(k) / double(total), double(k + 1) / double(total), label + ": ");
     row_context.progress(0.0, "statics");
     try {
-      rows.push_back(runRow(p, n, times, row_context));
+      rows.push_back(runRow(p, n, step_from_tolerance, times, row_context));
     } catch (const SolverError& e) {
       throw SolverError(label + ": " + e.quantity(), e.time(), e.step(), e.detail());
     }
@@ -94,7 +93,7 @@ void addStressConvergence(const RiserParameters& p, Results& results, RunContext
   const double probe = p.probes.front().arc_length;
   Table t;
   t.name = "bending_stress_vs_segments";
-  t.title = stepFromTolerance(buildRiserModel(p), p)
+  t.title = step_from_tolerance
                 ? formatText("Bending stress at probe 1 (s = %g m) against segment count n (generalized-α, expected "
                              "probe error %g of the motion)", probe, p.convergence_tolerance)
                 : formatText("Bending stress at probe 1 (s = %g m) against segment count n (the run's solver "
