@@ -1,5 +1,5 @@
-// Hull geometry: Wigley particulars in closed form, built-in and shared offsets tables against their
-// published particulars (read from shared/data/hulls/*/particulars.json), and bad offsets tables.
+// Hull geometry: Wigley particulars in closed form, built-in and benchmark offsets tables against their
+// published particulars (read from tests/data/hulls/*/particulars.json), and bad offsets tables.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,16 +11,16 @@
 #include "core/resources.hpp"
 #include "ship/hull_form.hpp"
 #include "ship/hull_offsets.hpp"
-#include "shared_hulls.hpp"
+#include "hull_test_data.hpp"
 
 using namespace maris;
 using namespace maris::ship;
 
 namespace {
 
-std::string readShared(const std::string& relative) { return test_data::readSharedHullFile(relative); }
+std::string readHullFile(const std::string& relative) { return test_data::readHullFile(relative); }
 
-nlohmann::json particularsJson(const std::string& hull) { return nlohmann::json::parse(readShared(hull + "/particulars.json")); }
+nlohmann::json particularsJson(const std::string& hull) { return nlohmann::json::parse(readHullFile(hull + "/particulars.json")); }
 
 HullParticulars particularsOf(const std::string& csv, const std::string& origin, double lpp, int nx = 257, int nz = 51) {
   const HullForm hull = makeOffsetsHull(origin, parseOffsetsCsv(csv, origin), lpp);
@@ -54,7 +54,7 @@ TEST(HullGeometry, WigleyParticularsMatchClosedForms) {
 TEST(HullGeometry, Series60BuiltinTableMatchesPublishedParticulars) {
   // Todd (1963) parent 4210W: C_B 0.600, C_P 0.614, C_M 0.977, LCB 1.5 % Lpp aft (particulars.json
   // "published"). The table has only 6 underwater waterlines, so the monotone-cubic surface under-reads the
-  // bilge: the shared README measures C_B 0.5972 and C_M 0.9728 with the same interpolation (161×41,
+  // bilge: the hull data README measures C_B 0.5972 and C_M 0.9728 with the same interpolation (161×41,
   // Simpson). Tolerances: 0.1 % against that independent computation, 0.6 % against the published values.
   const auto j = particularsJson("series60_cb060");
   const HullParticulars p = particularsOf(builtin("data/ship/series60_cb060_offsets.csv"), "series60", 3.048);
@@ -73,8 +73,8 @@ TEST(HullGeometry, Series60BuiltinTableMatchesPublishedParticulars) {
 TEST(HullGeometry, KcsTablesMatchPublishedParticulars) {
   // KCS at model scale 1:31.5994, published ∇ 1.649 m³, C_B 0.6505, C_M 0.9849, LCB −1.48 % Lpp, S 9.4379 m²
   // without rudder (particulars.json). The sliced IGES itself gives S 1.3 % above the published value
-  // (shared README), so S is checked against the IGES value. Tolerances: the built-in 41×21 table has
-  // stations 2.5 % of L apart (∇, C_M 0.3 %, LCB 0.1 % Lpp, S 1.5 %); the shared 161×41 table 0.15 % / 1 %.
+  // (hull data README), so S is checked against the IGES value. Tolerances: the built-in 41×21 table has
+  // stations 2.5 % of L apart (∇, C_M 0.3 %, LCB 0.1 % Lpp, S 1.5 %); the benchmark 161×41 table 0.15 % / 1 %.
   const auto j = particularsJson("kcs");
   const auto& pub = j["model_scale"]["published_model"];
   const double scale = j["model_scale"]["scale"].get<double>();
@@ -84,7 +84,7 @@ TEST(HullGeometry, KcsTablesMatchPublishedParticulars) {
     double tol, s_tol;
   };
   const Case cases[] = {{builtin("data/ship/kcs_model_offsets.csv"), "kcs 41x21", 3e-3, 1.5e-2},
-                        {readShared("kcs/kcs_model_offsets_161x41.csv"), "kcs 161x41", 1.5e-3, 1e-2}};
+                        {readHullFile("kcs/kcs_model_offsets_161x41.csv"), "kcs 161x41", 1.5e-3, 1e-2}};
   for (const auto& c : cases) {
     const HullParticulars p = particularsOf(c.csv, c.name, lpp);
     EXPECT_NEAR(p.volume, pub["volume_m3"].get<double>(), c.tol * 1.649) << c.name;
@@ -122,10 +122,10 @@ TEST(HullGeometry, BadOffsetsAreReportedByLineAndColumn) {
 
 namespace {
 
-// The shared 161×41 tables are sampled on 321×81 nodes, which contain the table's own nodes, so that the
+// The benchmark 161×41 tables are sampled on 321×81 nodes, which contain the table's own nodes, so that the
 // grid adds no error of its own at the stations and waterlines of the table.
-HullParticulars sharedTableParticulars(const std::string& file, double lpp) {
-  return particularsOf(readShared(file), file, lpp, 321, 81);
+HullParticulars benchmarkTableParticulars(const std::string& file, double lpp) {
+  return particularsOf(readHullFile(file), file, lpp, 321, 81);
 }
 
 // Wetted surface of an interpolated offsets table against the exact surface it was sliced from: the monotone
@@ -142,13 +142,13 @@ void expectWettedSurfaceNear(double computed, double exact_surface, const std::s
 
 TEST(HullGeometry, DtcTableMatchesPublishedParticulars) {
   // DTC model 1:59.407 (el Moctar et al. 2012, Table 1, divided by the scale; particulars.json "published").
-  // The shared README's hydrostatics of the exact STL differ from these by ≤ 0.08 % (∇, C_B) and 0.003 %
+  // The hull data README's hydrostatics of the exact STL differ from these by ≤ 0.08 % (∇, C_B) and 0.003 %
   // (LCB); the table adds its sampling error (stations 3.9 cm apart, waterlines 6 mm): 0.3 % on ∇ and C_B,
   // 0.1 % on B_WL and T (flat keel: the deepest row), 0.1 % Lpp on LCB.
   const auto j = particularsJson("dtc");
   const auto& pub = j["published"];
   const double lpp = pub["lpp_m"].get<double>();
-  const HullParticulars p = sharedTableParticulars("dtc/dtc_model_offsets_161x41.csv", lpp);
+  const HullParticulars p = benchmarkTableParticulars("dtc/dtc_model_offsets_161x41.csv", lpp);
   const double volume = pub["volume_m3"].get<double>();
   EXPECT_NEAR(p.volume, volume, 3e-3 * volume);
   expectWettedSurfaceNear(p.wetted_surface, j["computed"]["wetted_area_m2"].get<double>(), "dtc");
@@ -162,14 +162,14 @@ TEST(HullGeometry, DtcTableMatchesPublishedParticulars) {
 TEST(HullGeometry, Dtmb5415TableMatchesPublishedParticularsDespiteTheSonarDome) {
   // DTMB 5415 full scale (SIMMAN 2008: ∇ 8424.4 m³, C_B 0.506, C_M 0.816, T 6.15 m). The sonar dome reaches
   // 9.17 m below the waterline: the moulded draft must still be the midship keel at 6.15 m (within half a
-  // waterline spacing, 0.057 m), not the dome. The STL is coarse (3436 facets): the shared README measures
+  // waterline spacing, 0.057 m), not the dome. The STL is coarse (3436 facets): the hull data README measures
   // ∇ −0.45 % and C_M −0.08 % against the published values, so the tolerances are 0.8 % (∇, C_B) and 0.5 %
   // (C_M, with the published B and T); LCB is 0.21 % Lpp forward of the published value in the STL itself
   // (0.3 % Lpp here).
   const auto j = particularsJson("dtmb5415");
   const auto& pub = j["published"];
   const double lpp = pub["lpp_m"].get<double>(), T = pub["draft_m"].get<double>(), B = pub["bwl_m"].get<double>();
-  const HullParticulars p = sharedTableParticulars("dtmb5415/dtmb5415_fullscale_offsets_161x41.csv", lpp);
+  const HullParticulars p = benchmarkTableParticulars("dtmb5415/dtmb5415_fullscale_offsets_161x41.csv", lpp);
   EXPECT_NEAR(p.max_depth, j["computed"]["t_max_m"].get<double>(), 1e-5 * 9.17);
   EXPECT_NEAR(p.draft, T, 0.5 * p.max_depth / 80.0);
   const double volume = pub["volume_m3"].get<double>();
@@ -184,14 +184,14 @@ TEST(HullGeometry, Dtmb5415TableMatchesPublishedParticularsDespiteTheSonarDome) 
 TEST(HullGeometry, Sysser1YachtTableMatchesPublishedHydrostatics) {
   // Delft Systematic Yacht Hull Series, Sysser 1 canoe body (TU Delft 4TU.ResearchData CC0 release, row
   // Sysser = 1; particulars.json "published"). Reference length LWL 1.6 m; T_c is the canoe-body depth. The
-  // shared README finds ∇, A_WP and A_M within 0.2 % from the exact IGES surface but B_WL +1.1 % and S +2.1 %
+  // hull data README finds ∇, A_WP and A_M within 0.2 % from the exact IGES surface but B_WL +1.1 % and S +2.1 %
   // (unexplained: possibly nominal values), so those two are checked against the IGES surface instead.
   // Tolerances add the table's sampling: 0.4 % (∇, A_WP, A_M), 0.3 % (B_WL against the IGES).
   const auto j = particularsJson("dsyhs_sysser01");
   const auto& pub = j["published"];
   const auto& iges = j["computed"];
   const double lwl = pub["lwl_m"].get<double>();
-  const HullParticulars p = sharedTableParticulars("dsyhs_sysser01/sysser01_model_offsets_161x41.csv", lwl);
+  const HullParticulars p = benchmarkTableParticulars("dsyhs_sysser01/sysser01_model_offsets_161x41.csv", lwl);
   const double volume = pub["volume_m3"].get<double>(), awp = pub["waterplane_area_m2"].get<double>();
   const double am = pub["max_section_area_m2"].get<double>();
   EXPECT_NEAR(p.volume, volume, 4e-3 * volume);

@@ -9,7 +9,7 @@
 #include "ship/hull_form.hpp"
 #include "ship/hull_offsets.hpp"
 #include "ship/michell_resistance.hpp"
-#include "shared_hulls.hpp"
+#include "hull_test_data.hpp"
 
 using namespace maris;
 using namespace maris::ship;
@@ -53,8 +53,8 @@ TEST(MichellBulb, GridErrorEstimateHoldsForTheBulbousKcs) {
   EXPECT_LE(std::abs(a.resistance - b.resistance), 0.01 * b.resistance);
 }
 
-TEST(MichellSharedHulls, GridErrorEstimateHoldsForDomeAndYachtHulls) {
-  // Hard cases from the shared benchmark tables (161×41): the DTMB 5415 model (1:24.824) with its sonar dome
+TEST(MichellBenchmarkHulls, GridErrorEstimateHoldsForDomeAndYachtHulls) {
+  // Hard cases from the benchmark tables (161×41): the DTMB 5415 model (1:24.824) with its sonar dome
   // 3 m (full scale) below the keel at the bow — the grid spans the dome's depth, a third of it empty
   // elsewhere — and the Sysser 1 yacht canoe body (L/B 3.1, shallow, rounded). As for the KCS, the 257×51
   // estimate must bound the change to a 1025×201 sampling of the same surface, at Fn 0.3 (where the
@@ -65,7 +65,7 @@ TEST(MichellSharedHulls, GridErrorEstimateHoldsForDomeAndYachtHulls) {
   };
   for (const Case c : {Case{"dtmb5415/dtmb5415_model_offsets_161x41.csv", 142.0 / 24.824},
                        Case{"dsyhs_sysser01/sysser01_model_offsets_161x41.csv", 1.6}}) {
-    const HullForm hull = makeOffsetsHull(c.file, parseOffsetsCsv(test_data::readSharedHullFile(c.file), c.file), c.lpp);
+    const HullForm hull = makeOffsetsHull(c.file, parseOffsetsCsv(test_data::readHullFile(c.file), c.file), c.lpp);
     GridKochin coarse(sampleHull(hull, 257, 51));
     GridKochin fine(sampleHull(hull, 1025, 201), false);
     for (double fn : {0.3}) {
