@@ -1,4 +1,4 @@
-// Cost of the riser's implicit integrator and statics against n (issue 3: O(n) per right-hand side in both
+// Cost of the riser's implicit integrator and statics against n (the design target: O(n) per right-hand side in both
 // formulations), on the paper's case 5 (riser_paper_case5_j3: n = 100, torsion, 36 s, 72 frames).
 //   bench_riser_implicit_cost implicit VARIANT STEP [end_time] [reference.csv]
 //       VARIANT J3/J2/A3/A2; the scene's implicit path (riser_integration) at step STEP; prints CPU seconds of

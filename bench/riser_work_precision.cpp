@@ -1,4 +1,4 @@
-// Work–precision of the riser scene (issue 10): CPU time against error for the four variants J2, J3,
+// Work–precision of the riser scene: CPU time against error for the four variants J2, J3,
 // A2, A3 and the integrators core/ode.hpp offers (RK4 fixed step as the scene uses, DOPRI5 adaptive),
 // on the paper's case 5 (riser_paper_case5_j3: 500 m riser, elliptical top motion, 1 m/s current,
 // 36 s) and on a 3D cable case (built-in scenario riser_cable_3d_circle: a 30 m cable whose top whirls on a
@@ -454,7 +454,7 @@ int main(int argc, char** argv) {
         // Implicit generalized-α of the scene at T/25, T/50, T/100, T/200 (T = top-motion period).
         for (double k : {25.0, 50.0, 100.0, 200.0})
           if (!huge || k == 50.0) settings.push_back({"implicit", period / k});
-        // The scene's default choice ("auto") at the tolerance 1e-3 (issue 10's target accuracy).
+        // The scene's default choice ("auto") at the tolerance 1e-3 (the target: relative error 1e-3 at L/2).
         if (!huge) settings.push_back({"auto", 1e-3});
         if (!opt.methods.empty())
           std::erase_if(settings, [&](const auto& m) {

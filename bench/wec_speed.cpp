@@ -1,4 +1,4 @@
-// Work–precision of the wec scene (issue 6 "Speed"):
+// Work–precision of the wec scene:
 //  1. frequency-domain sweep of 500 frequencies for one float (time per sweep);
 //  2. one float, 600 s of regular waves (H = 2 m, ω = 1 rad/s): state-space memory vs direct convolution at
 //     several time steps; time, real-time factor and max |θ − θ_ref| against a state-space run at h = 0.005 s,

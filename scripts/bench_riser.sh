@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Riser work-precision benchmark (issue 10), meant for a quiet machine: builds the Release bench (and
+# Riser work-precision benchmark, meant for a quiet machine: builds the Release bench (and
 # the PNG tool when the build has the GUI), runs it on one core, and writes
 #   docs/riser_work_precision.csv   every row (Maris CSV layout)
 #   docs/riser_work_precision.md    markdown tables: right-hand-side cost against n (linear growth),

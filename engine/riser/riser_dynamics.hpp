@@ -2,7 +2,7 @@
 // right-hand side.
 //
 // Both formulations use the same Newton-Euler block of each segment about its origin A_i
-// (brief §2.3, equivalent to the paper's A_i, h_A,i of eqs 12-15) and the same joint reactions
+// (derived from the paper's definitions; equivalent to its A_i, h_A,i of eqs 12-15) and the same joint reactions
 // F_j (eq 53: F_j acts on segment j at A_j, -F_{j+1} at its far end):
 //     M_i x_i = E F_i - D'_i F_{i+1} + b_i,   x_i = (a_{A_i}, α_i),  E = [I; 0],  D'_i = [I; [d_i]x]
 // The continuity conditions a_{A_{i+1}} = a_{A_i} + α_i × d_i + ω_i × (ω_i × d_i), with the end
@@ -102,7 +102,8 @@ void normaliseState(const RiserModel& m, Eigen::VectorXd& y);
 double totalEnergy(const RiserModel& m, const RiserPose& pose);
 
 // Estimated highest natural frequency [rad/s] (bending 9√(EI/μ)/Δ², torsion 2√(GJ/ι)/Δ, tension
-// 4√(T/μ)/Δ, brief §6; times β ω when the spring dampers are overdamped), used for the automatic RK4 step.
+// 4√(T/μ)/Δ, bounds of the chain's discrete spectra; times β ω when the spring dampers are overdamped), used for
+// the automatic RK4 step.
 double highestFrequencyEstimate(const RiserModel& m);
 
 }  // namespace maris::riser

@@ -1,4 +1,4 @@
-// O(n) Newton matrix of the implicit integrator in joint coordinates (issue 3: no dense N×N work at run time).
+// O(n) Newton matrix of the implicit integrator in joint coordinates (no dense N×N work at run time).
 //
 // The joint chart residual r_J = q̈_J − a_J(q_J, v_J) has a dense iteration matrix S_J: a segment's position
 // depends on every rotation above it, so the loads (buoyancy, current, drag) of segment i depend on all

@@ -1,5 +1,5 @@
 // Natural frequencies and mode shapes of the segment chain, linearised about a static equilibrium
-// (the paper's "procedure of [60]", issue 10). Undamped (no spring dampers, no drag damping); the
+// (the paper's "procedure of [60]"). Undamped (no spring dampers, no drag damping); the
 // current's drag on the static shape is kept as a load; top held where its motion is prescribed.
 //
 // Why both formulations give the same frequencies: with Baumgarte feedback off, the absolute

@@ -1,4 +1,4 @@
-// O(n) Newton matrix of the implicit integrator in absolute coordinates (issue 3: no dense N×N
+// O(n) Newton matrix of the implicit integrator in absolute coordinates (no dense N×N
 // factorisation at run time).
 //
 // The chart residual r = q̈ − a(t, q, q̇) of riser_implicit is dense in q, because the accelerations a

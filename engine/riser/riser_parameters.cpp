@@ -261,7 +261,7 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
 
 std::vector<std::string> upgradeRiserParameters(Json& parameters) {
   std::vector<std::string> notes;
-  // Scenarios from before the stress convergence study (session 15) have no such section: no study.
+  // Scenarios written before the stress convergence study existed have no such section: no study.
   if (parameters.is_object() && !parameters.contains("stress_convergence")) {
     parameters["stress_convergence"] = riserBinder().write(RiserParameters{})["stress_convergence"];
     notes.push_back("stress_convergence added without a study (new in the riser schema; save the scenario to keep it)");

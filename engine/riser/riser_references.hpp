@@ -1,5 +1,5 @@
 // Closed-form and semi-analytical natural frequencies of a straight riser, shared by the scene's
-// frequency sweeps, the tests and bench/ (brief §5.3, §5.7; paper Sect. 8.2-8.3).
+// frequency sweeps, the tests and bench/ (tensioned-beam and torsion closed forms; paper Sect. 8.2-8.3).
 #pragma once
 
 #include <vector>

@@ -211,7 +211,7 @@ Configuration configurationOf(const RiserModel& m, const Eigen::VectorXd& y, con
   return out;
 }
 
-// O(n) Newton at full load (issue 3: no dense factorisation at run time). At rest the accelerations a(q) of
+// O(n) Newton at full load (no dense factorisation at run time). At rest the accelerations a(q) of
 // the joint chart vanish exactly at equilibrium (the bottom row reads α²Φ = 0, so the bottom is held too;
 // the model must be at rest, see atRest). Each iteration resets the chart to the current shape (θ = 0,
 // ω = 0, where the neglected terms of the twin matrix vanish up to β'|a|) and solves (I − β'∂a/∂q) y = a with

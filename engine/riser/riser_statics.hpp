@@ -1,5 +1,5 @@
 // Static equilibrium of the segment chain (initial shapes: hanging catenary, riser in current,
-// cantilever under tip load). Not in the paper, which starts from given shapes [brief §7.4].
+// cantilever under tip load). Not in the paper, which starts from given shapes.
 #pragma once
 
 #include <vector>

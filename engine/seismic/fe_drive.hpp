@@ -1,5 +1,5 @@
-// Seismic input of the explicit FE model by the boundary substructure method (paper eq 3;
-// research brief §2.7): at every step the boundary (b) nodes receive
+// Seismic input of the explicit FE model by the boundary substructure method (paper eq 3,
+// written out for the discrete model): at every step the boundary (b) nodes receive
 //   F_b = M_bb ü⁰ + C_b u̇⁰ + K_b u⁰ + [K u⁰]_b (cells touching b only) + coupling terms,
 // i.e. the residual of the full discrete equations at the b nodes under the free field u⁰ of the
 // topography-free model. With lumped mass this equals the classical viscous-spring equivalent nodal

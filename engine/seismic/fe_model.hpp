@@ -10,8 +10,8 @@
 // Boundaries (left, right, bottom): solid viscous-spring nodes (Liu et al. 2006),
 // K = α G/R, C = ρc per unit length (α_N = 1, α_T = 0.5; normal c = v_p, tangential v_s), R the
 // distance to the scattering centre (0, 0); water: first-order radiation condition
-// ∂φ/∂n = −φ̇/c − φ/(2R), i.e. damping A/c and stiffness A/(2R) per node (the potential form of the
-// paper's series mass–damper, research brief §2.5).
+// ∂φ/∂n = −φ̇/c − φ/(2R), i.e. damping A/c and stiffness A/(2R) per node (the velocity-potential form of the
+// paper's series mass–damper).
 #pragma once
 
 #include <cstdint>

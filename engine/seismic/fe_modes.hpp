@@ -5,7 +5,7 @@
 // stiffness and lumped mass as the explicit solver), solved by shift-invert Lanczos at σ = 0 in the
 // M-inner product with full re-orthogonalisation (K⁻¹M is M-self-adjoint; its largest eigenvalues
 // 1/ω² converge first). K is factorised once (Eigen SimplicialLDLT, AMD ordering).
-// Boundary conditions (the paper does not state its own, research brief §8.4): the artificial
+// Boundary conditions (the paper does not state its own): the artificial
 // boundary's springs K = αG/R stay (dashpots dropped); with `fixed_base` the bottom row is clamped.
 // computeSolidModes: the dry reef on its seabed. computeCoupledModes: reef, seabed and water together
 // (fluid–solid modes, see there).

@@ -1,5 +1,5 @@
 // Parameters of the seismic scene (reef–seawater system under oblique P/SV waves), SI units.
-// Defaults are the placeholder reef of research/reef_seismic.md §5.4 (NOT the paper's Table 1,
+// Defaults are an assumed placeholder reef (NOT the paper's Table 1,
 // which the available text lacks) with a Ricker input that the default 5 Hz mesh resolves.
 #pragma once
 

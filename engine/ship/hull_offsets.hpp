@@ -1,7 +1,7 @@
 // Offsets tables: half-breadths on stations × waterlines read from CSV, and the monotone cubic (PCHIP,
 // Fritsch & Carlson 1980) interpolation that turns them into a smooth surface Y(x, z).
 //
-// CSV format (the format of /work/shared/data/hulls): a header row naming three columns with their units,
+// CSV format (that of the tables in resources/data/ship and tests/data/hulls): a header row naming three columns with their units,
 //   x_m,z_m,half_breadth_m          (or x,z,half_breadth followed by a units row  m,m,m)
 // then one row per offset, station by station (x ascending), any z order within a station. z is measured from
 // the design waterline, negative down; rows with z > 0 (above the waterline) are ignored. Every half-breadth

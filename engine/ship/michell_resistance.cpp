@@ -152,7 +152,7 @@ WaveResistance michellWaveResistance(KochinFunction& kochin, double speed, doubl
   WaveResistance r;
 
   // The paper's short-wave discard (§3.3): waves shorter than r·L, i.e. λ > √(2π/(k̂0 r L)), are dropped;
-  // λ ≤ 2 is always kept (as in the brief's comparison table).
+  // λ ≤ 2 is always kept (so that the main hump is never cut).
   const bool cut = s.short_wave_cutoff > 0.0;
   const double lambda_cut =
       cut ? std::max(2.0, std::sqrt(2.0 * std::numbers::pi / (k0_hat * s.short_wave_cutoff * s.cutoff_length))) : 0.0;

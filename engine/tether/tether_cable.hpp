@@ -1,6 +1,6 @@
 // Lumped-mass tether: N rigid links of length l = L/N between N + 1 nodes, the end nodes driven by the robots'
 // attachment points. It checks the quasi-static catenary assumption of the paper (its Gazebo tether was a
-// 150-link chain; brief §5 item 7).
+// 150-link chain).
 //
 // Model (per interior node i, mass m = mu l, world frame z up):
 //   m dv_i/dt = -w l e_z - c l v_i - (1/2) rho Cd d l |v_n| v_n + constraint forces,

@@ -8,7 +8,7 @@
 // it already carries each float's location phase: the floats' x positions in the scene must match the mesh
 // (no e^{−ikx} factor is applied), and only waves along +x (heading 0) are available.
 //
-// Frequency domain with interaction (research brief §2.6, N floats): with T = blockdiag(T_1 … T_N),
+// Frequency domain with interaction (derived here, N floats; not in the paper): with T = blockdiag(T_1 … T_N),
 // T_i = (−r_z0, r_x0)_i,
 //   [ −ω² (diag I + Tᵀ A T) + iω (diag B_PTO + Tᵀ B T) + diag K_θ ] Θ = Tᵀ X,
 //   Q = X + (ω² A − iω B) T Θ − ρ g A_w (T Θ)_z,   F_h,i = Q_i + ω² m_i (T Θ)_i.

@@ -1,4 +1,4 @@
-// Linear frequency-domain model of a float pitching about its hinge (research brief §2.6; not in the paper,
+// Linear frequency-domain model of a float pitching about its hinge (derived here from the hinge kinematics; not in the paper,
 // kept as the independent check of the time domain). Linearised about θ0 with r_x0 = L cos θ0,
 // r_z0 = L sin θ0, the float centre moves by ξ = T δθ, T = (−r_z0, r_x0):
 //

@@ -1,4 +1,6 @@
-// Parameters of the hinged-float wave energy converter scene (issue 6; Heo & Koo, papers/wec_hinged_float.txt).
+// Parameters of the hinged-float wave energy converter scene (S. Heo, W. Koo, "Numerical procedures for
+// dynamic response and reaction force analysis of a heaving-point absorber wave energy converter", Ocean
+// Engineering 200 (2020) 107070).
 // SI units beside every field; angles in degrees only in fields named *_deg (converted in buildWecModel).
 #pragma once
 
