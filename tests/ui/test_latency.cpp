@@ -111,7 +111,7 @@ class TimingApplication : public QApplication {
 // What is bounded: the GUI thread's CPU time between two turns of its event loop (two ticks of a
 // 5 ms heartbeat), i.e. the longest stretch of work it does without answering the user. CPU time,
 // not wall time, so that other processes on CI's 2 cores do not stretch it as much; the wall-time
-// gap is reported beside it (docs/gui.md has both). The issue asks for ~50 ms. Measured here with
+// gap is reported beside it (docs/gui.md has both). The target is ~50 ms. Measured here with
 // 5–9 other jobs on the 2 cores: 73–193 ms of CPU time (wall gaps 0.28–0.98 s), the longest pieces
 // a replot of all points and a 3D redraw in one Mesa thread, both slowed by the shared caches.
 // 250 ms, best of three runs, tolerates that load; a change that puts a whole-window OpenGL
