@@ -16,7 +16,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 TEST(FivExact, LogarithmicDecrementOfTenPercentDampingIs0_63148) {
-  // Issue 8 / research brief T3: δ = 2πξ/√(1 − ξ²) = 0.63148 for ξ = 0.1 (5 digits given).
+  // Closed form: δ = 2πξ/√(1 − ξ²) = 0.63148 for ξ = 0.1 (5 digits given).
   EXPECT_NEAR(logarithmicDecrement(0.1), 0.63148, 5e-6);
 }
 
@@ -93,7 +93,7 @@ TEST(FivExact, DamperPowerOfASineIsHalfCOmegaSquaredASquared) {
 }
 
 TEST(FivExact, EfficiencyOfCaseC5MatchesTheWorkedNumbers) {
-  // Research brief T6 (hand calculation, 3–4 digits): C5, U = 2.2 m/s, A = 0.25 m, f = 0.48828 Hz,
+  // Hand calculation from the paper's definitions (3–4 digits): C5, U = 2.2 m/s, A = 0.25 m, f = 0.48828 Hz,
   // c = 30 N·s/m, L = 1 m, ρ = 998.2 kg/m³: P = 8.82 W, P_fluid = 3135.5 W, η = 0.475 % (± 0.5 %).
   const double power = sinusoidDamperPower(30.0, 2.0 * kPi * 0.48828, 0.25);
   const double fluid = sweptFluidPower(998.2, 2.2, 1.0, 0.09, 0.25);
@@ -116,8 +116,8 @@ ImportedSeries paperRecord(double f1, double f2) {
 }
 
 TEST(FivExact, SpectrumReportsThePapersFftBinsExactly) {
-  // Research brief T8: a sine at bin 20 (0.48828125 Hz) or 22 (0.537109375 Hz) of a 8192-sample
-  // record at 0.005 s is reported at that bin (no leakage, so the parabolic refinement does not move it).
+  // The paper's frequencies are FFT bins (1/40.96 Hz apart): a sine at bin 20 (0.48828125 Hz) or 22
+  // (0.537109375 Hz) of a 8192-sample record at 0.005 s is reported at that bin (no leakage, so the parabolic refinement does not move it).
   for (int bin : {20, 22}) {
     const ImportedSeries s = paperRecord(bin / 40.96, 3.41026);
     const SpectralPeaks p = analyseSpectra(s.y, s.lift, 0.005);

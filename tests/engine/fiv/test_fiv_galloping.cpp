@@ -14,7 +14,7 @@ namespace maris::fiv {
 namespace {
 
 TEST(FivGalloping, AveragedParkinsonCoefficientHasTheHandDerivedExtremes) {
-  // Research brief §5.5 (derived by hand from A1..A7 = 2.69, 168, 6270, 59900):
+  // Derived by hand from Parkinson's polynomial with A1..A7 = 2.69, 168, 6270, 59900:
   // G(r) = A1 − ¾A3 r² + ⅝A5 r⁴ − 35/64 A7 r⁶ has a minimum 1.4657 at r = 0.1494, a maximum 2.1738 at
   // r = 0.2396 and its root at 0.29327. Our G is a quadrature of C_y(r sinθ) sinθ (exact for polynomials).
   const FivModel model = buildFivModel(testing::gallopingOnly());
@@ -49,7 +49,7 @@ TEST(FivGalloping, HighSpeedAmplitudeApproachesTheParkinsonAsymptote) {
   // Weakly nonlinear set (n_m = 1e-4, ξ = 2e-4) at U' = U/(ω_n D) = 100: S = 2ξ/(n_m U') = 0.04, so
   // harmonic balance puts r = Aω_n/U within 0.1 % of the U' → ∞ root 0.29327. Time integration must
   // agree with harmonic balance to 1 % (averaging neglects O(n_m U' A1) ≈ 3 % corrections of the wave
-  // form, which move the amplitude much less) and sit within 1 % of 0.2933 (brief T11).
+  // form, which move the amplitude much less) and sit within 1 % of 0.2933 (the quasi-steady asymptote).
   const FivParameters p = testing::weaklyNonlinearGalloping(1e-4, 2e-4);
   const FivModel model = buildFivModel(p);
   const double speed = 100.0 * model.omega_n * model.side;
@@ -69,7 +69,7 @@ TEST(FivGalloping, HighSpeedAmplitudeApproachesTheParkinsonAsymptote) {
 }
 
 TEST(FivGalloping, UpAndDownSweepsShowTheHarmonicBalanceHysteresisBand) {
-  // Brief T12/T13: with S = 2c/(ρDLU), two stable cycles coexist for S in (1.4657, 2.1738). The up-sweep
+  // Quasi-steady theory: with S = 2c/(ρDLU), two stable cycles coexist for S in (1.4657, 2.1738). The up-sweep
   // (from a small seed) stays on the small branch until S < 1.4657, the down-sweep on the large branch
   // until S > 2.1738. Branch amplitudes agree with the harmonic-balance roots within 3 % (weak
   // nonlinearity n_m U' A1 ≈ 0.1 leaves averaging errors of a few per mille to ~2 %).

@@ -103,7 +103,7 @@ TEST(FivScene, SweepPublishesGrowingPartialResultsWhoseRowsMatchTheFinishedRun) 
 }
 
 TEST(FivScene, ReynoldsNumbersReproduceThePapersPairsWithinOnePercent) {
-  // Brief T1: Re = UD/ν, D = 0.09 m, ν = 1.118e-6 m²/s; paper pairs (U [m/s], Re) from its text.
+  // Re = UD/ν with D = 0.09 m and ν = 1.118e-6 m²/s (both inferred from the paper's (U, Re) pairs and h/h*); paper pairs (U [m/s], Re) from its text.
   const Results r = run(builtin("fiv_default", {"sweep.speed_count=24", "free_surface.submergence_ratios=[]",
                                                 "sweep.sweep_down=false"}));
   const Table* t = r.findTable("sweep");

@@ -157,7 +157,7 @@ TEST(RiserDynamics, RelaxationDamperDrainsTwiceItsRateTimesTheKineticEnergy) {
   EXPECT_NEAR(power, loads.power_damping, 1e-12 * kinetic);
 }
 
-// A horizontal cable sinking broadside in still water reaches v_t = √(2 w / (ρ_w D C_dn)) (brief §5.12),
+// A horizontal cable sinking broadside in still water reaches v_t = √(2 w / (ρ_w D C_dn)) (balance of submerged weight and normal drag),
 // w = submerged weight per length. Both ends free; 3 s ≈ 20 time constants. Tolerance 1e-6 relative.
 TEST(RiserDynamics, HorizontalCableSinksAtTerminalVelocity) {
   RiserParameters p = test::calmInAir();
@@ -186,7 +186,7 @@ TEST(RiserDynamics, HorizontalCableSinksAtTerminalVelocity) {
   EXPECT_NEAR(column(r, "top_z").back(), z.back(), 1e-9) << "the cable must stay horizontal";
 }
 
-// The two formulations describe the same system (brief §5.9): on a 3D case with current and top
+// The two formulations describe the same system (as the paper states): on a 3D case with current and top
 // motion, positions agree within 1e-6 L and the end reactions within 1e-6 relative to the top tension
 // at a tight setting (RK4, h = 2.5 ms, below the torsional stability limit). The reactions are the ideal
 // constraint forces (no Baumgarte term, see RiserRecorder), so their difference is integration error:
@@ -232,7 +232,7 @@ TEST(RiserDynamics, JointAndAbsoluteReactionsConvergeWithTheStep) {
 }
 
 // With a moving top and current, E(t) - E(0) = W_drag + W_damping + W_top (the power of the top
-// reaction, brief §5.8). Relative tolerance 1e-8: RK4 at the automatic step.
+// reaction). Relative tolerance 1e-8: RK4 at the automatic step.
 TEST(RiserDynamics, EnergyChangeEqualsWorkOfTopAndDrag) {
   RiserParameters p;
   p.segment_count = 10;

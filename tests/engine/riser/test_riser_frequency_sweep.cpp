@@ -45,7 +45,7 @@ TEST(RiserFrequencySweep, GalerkinWithoutFlowOrWeightIsEquation66) {
     const double exact = tensionedBeamFrequency(k + 1, 10.0, 100.0, 1.0, 1000.0);
     EXPECT_NEAR(w[k], exact, 1e-10 * exact) << "mode " << k + 1;  // round-off of an 8x8 eigen solve
   }
-  EXPECT_NEAR(tensionedBeamFrequency(1, 10.0, 100.0, 1.0, 1000.0), 4.42838, 1e-5);  // brief §5.3
+  EXPECT_NEAR(tensionedBeamFrequency(1, 10.0, 100.0, 1.0, 1000.0), 4.42838, 1e-5);  // eq (66)
 }
 
 // Paper Sect. 8.2: frequencies rise with pretension, and at n = 50 the SM is within 0.1 % of the

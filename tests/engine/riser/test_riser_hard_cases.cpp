@@ -1,4 +1,4 @@
-// Hard cases of the segment chain (issue 10): where the numerics could break. Each test states the
+// Hard cases of the segment chain : where the numerics could break. Each test states the
 // physical law it checks and why its tolerance is what it is.
 #include <gtest/gtest.h>
 
@@ -159,7 +159,7 @@ TEST(RiserHardCases, SlackChainWhipsThroughTheImplicitSwingTwistChart) {
 // Segments along ±z (vertical) and along ±x, ±y (horizontal: the paper's singular direction of global
 // ZYX angles is its z, our y): a weightless cantilever clamped along direction d with a tip force
 // perpendicular to d must deflect PL³/(3EI)·(1 - 1/(4n²)) along the force, which is exact for the SM
-// (brief §5.5), whatever d is. Tolerance 1e-6 relative: the Newton tolerance of statics and the
+// with C = EI/Δ (closed form of the rigid-segment chain), whatever d is. Tolerance 1e-6 relative: the Newton tolerance of statics and the
 // geometric nonlinearity at PL²/EI = 1e-4 (≈ 1e-8).
 class CantileverDirection : public ::testing::TestWithParam<std::tuple<double, double>> {};
 TEST_P(CantileverDirection, TipDeflectionIsExactAlongEveryAxis) {

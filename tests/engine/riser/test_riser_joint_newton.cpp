@@ -192,7 +192,7 @@ TEST(RiserJointNewton, TwinMatrixGivesTheDenseTrajectoryWithComparableNewtonIter
 namespace maris::riser {
 namespace {
 
-// Statics in O(n) (issue 3): the paper's case-5 riser (500 m, tensioner, pinned bottom, 1 m/s current, torsion)
+// Statics in O(n): the paper's case-5 riser (500 m, tensioner, pinned bottom, 1 m/s current, torsion)
 // at n = 60 and n = 240 is solved by the banded pseudo-time Newton without the dense fallback, to the dense
 // path's tolerance, with iteration counts that do not grow with n by more than a few (a dense-cost method
 // would show in the run time only; this checks the path and its convergence, which can fail).

@@ -1,4 +1,4 @@
-// Natural frequencies of the linearised chain against closed forms (brief §5.2, §5.3, §5.5, §5.7),
+// Natural frequencies of the linearised chain against closed forms (hanging chain, tensioned beam eq (66), cantilever, torsion),
 // an independent finite-difference solution, and each other (joint vs absolute linearisation).
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ std::vector<double> distinctFrequencies(const RiserParameters& p, int count,
 
 // Pinned-pinned tensioned beam, eq (66): ω_k = (kπ/L)√(T/m* + (kπ/L)² EI/m*). L = 10 m, m* = 1 kg/m,
 // EI = 1000 N·m², T = 100 N: 4.42838, 13.97616, 29.62837 rad/s. The SM errors are O(1/n²):
-// +0.21 %, +0.33 %, +0.32 % at n = 10 (brief §5.3); tolerance 0.5 % at n = 10, and halving Δ
+// +0.21 %, +0.33 %, +0.32 % at n = 10 (an independent planar prototype of the segment method (outside this repository)); tolerance 0.5 % at n = 10, and halving Δ
 // must reduce each error about 4x (3 to 5).
 TEST(RiserModes, TensionedPinnedBeamMatchesEquation66) {
   const double exact[3] = {4.42838, 13.97616, 29.62837};
@@ -68,7 +68,7 @@ TEST(RiserModes, TensionedPinnedBeamMatchesEquation66) {
 }
 
 // Hanging chain (top pinned, bottom free, EI ≈ 0): ω_k = (j_0,k / 2)√(g/L), j_0,k = 2.404826,
-// 5.520078, 8.653728. SM errors at n = 20: +0.007 %, +0.25 %, +1.03 % (brief §5.2): tolerance 1.5 %.
+// 5.520078, 8.653728. SM errors at n = 20: +0.007 %, +0.25 %, +1.03 % (the same prototype): tolerance 1.5 %.
 TEST(RiserModes, HangingChainMatchesBesselZeros) {
   const RiserParameters p = test::chainInAir(20);
   const std::vector<double> w = distinctFrequencies(p, 3);
@@ -81,7 +81,7 @@ TEST(RiserModes, HangingChainMatchesBesselZeros) {
 }
 
 // Cantilever: ω_k = (β_k L)² √(EI/(μ L⁴)), β_k L = 1.875104, 4.694091, 7.854757. SM errors at n = 20:
-// +0.057 %, +0.20 %, +0.33 % (brief §5.5): tolerance 0.5 % (rotary inertia adds < 0.01 %).
+// +0.057 %, +0.20 %, +0.33 % (the same prototype): tolerance 0.5 % (rotary inertia adds < 0.01 %).
 TEST(RiserModes, CantileverMatchesEulerBernoulli) {
   RiserParameters p = test::tipLoadedCantilever(20, 0.0);
   p.point_loads.clear();
@@ -133,7 +133,7 @@ TEST(RiserModes, StringLimitMatchesTautStringFrequencies) {
   }
 }
 
-// Fixed-free torsion (top clamped, bottom free, no gravity): ω_k = (2k-1)π/(2L)·√(GJ/ι) (brief §5.7).
+// Fixed-free torsion (top clamped, bottom free, no gravity): ω_k = (2k-1)π/(2L)·√(GJ/ι).
 // The torsion modes are those with torsion_share > 0.99 (the others are bending modes). The chain is a
 // lumped second-order string in twist: relative error -((2k-1)π/(2n))²/24 to leading order; tolerance
 // 1.2x that and a ratio of about 4 (3 to 5) when Δ is halved.

@@ -163,7 +163,7 @@ TEST(RiserNewton, ProjectionRestoresTheConstraints) {
   }
 }
 
-// n = 1000 (issue 10: "runs at all"): a 1000 m riser in absolute coordinates with torsion, implicit steps of
+// n = 1000 ("runs at all"): a 1000 m riser in absolute coordinates with torsion, implicit steps of
 // 50 ms (the explicit torsion limit is ~0.2 ms) over 0.5 s at tolerance 1e-6, no current (the straight shape is the
 // static one, skipping the dense statics), top starting its elliptical motion: its 10 steps, none rejected, finite
 // results and joints held together (|Φ| < 1e-6 m, projected after every step). The whole case 5 at n = 1000 (36 s,

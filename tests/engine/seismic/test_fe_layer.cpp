@@ -1,6 +1,7 @@
 // 1D SV resonance of a soft layer over a half-space, by the FE engine on a periodic column with a
 // Lysmer (dashpot) bottom driven by F = 2ρc·v_incident (exact 1D input for a dashpot boundary).
-// Reference (research brief §5.3): |u_surface/u_outcrop| = 1/|cos kH + iα sin kH|, k = ω/v₁,
+// Reference (closed form of an elastic layer on an elastic half-space, vertical incidence):
+// |u_surface/u_outcrop| = 1/|cos kH + iα sin kH|, k = ω/v₁,
 // α = ρ₁v₁/(ρ₂v₂): peaks at f₁ = v₁/(4H) with value 1/α.
 #include <complex>
 #include <numbers>

@@ -125,7 +125,7 @@ namespace maris::seismic {
 namespace {
 
 TEST(FeWaves, VerificationBoxMatchesTheFreeFieldAtOtherAnglesAndWithoutWater) {
-  // Brief B5: the verification-box check (B4, same tolerances: peak 3 %, pointwise 5 % of the peak
+  // The verification-box check (as above, same tolerances: peak 3 %, pointwise 5 % of the peak
   // over 3 s at the seabed B, x = 0) for P 0° and 75°, SV 0° and 20° with water and P 30° without.
   // A 0.4 s pulse on a coarser 7 Hz mesh (Δ ≈ 21 m, ≥ 10 cells per wavelength up to 7 Hz) keeps the
   // five runs inside the test budget.
@@ -169,7 +169,7 @@ namespace maris::seismic {
 namespace {
 
 TEST(FeWaves, WaterLayerResonatesAtTheQuarterWaveFrequency) {
-  // Brief B7: vertical P under 600 m of water on the box (1400 m wide, 600 m seabed), 1 s pulse, 30 s
+  // Vertical P under 600 m of water on the box (1400 m wide, 600 m seabed), 1 s pulse, 30 s
   // of ringing on a coarse mesh (f_cut 3 Hz, Δ ≈ 48 m: > 40 cells per water wavelength at 0.6 Hz).
   // The Fourier ratio |u_A|/|u_B| (water surface over seabed, x = 0) peaks at the water column's
   // quarter-wave frequency c_f/(4h) = 0.6042 Hz, where the free-field seabed stands still: peak within

@@ -1,6 +1,7 @@
 // Free field of a half-space under a water layer (engine/seismic/free_field.hpp) against closed forms
-// and the reference values of research/reef_seismic.md §5.3 (computed there by an independent script
-// and, for the no-water case, checked against Aki & Richards).
+// and reference values computed by an independent implementation (a separate pure-Python script, outside
+// this repository; for the no-water case checked against K. Aki, P. G. Richards, Quantitative Seismology,
+// 2nd ed., 2002, eq 5.32).
 #include <cmath>
 #include <numbers>
 
@@ -171,7 +172,7 @@ TEST(FreeField, SvCriticalAngleIsReported) {
 }
 
 TEST(FreeField, ObliquePWaterResonanceStopsTheSeabedVertically) {
-  // Brief A6: the water layer's reactive impedance on the seabed, ρ_f ω tan(ωhη_f)/η_f, is infinite at
+  // The water layer's reactive impedance on the seabed, ρ_f ω tan(ωhη_f)/η_f, is infinite at
   // ωhη_f = π/2, i.e. f₁ = c_f/(4h cosθ_f) with sinθ_f = c_f sinθ/v_p: there the seabed cannot move
   // vertically (round-off, 1e-9), while just off resonance it does (> 0.05).
   for (double deg : {30.0, 45.0, 70.0}) {

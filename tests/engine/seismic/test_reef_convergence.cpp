@@ -1,4 +1,4 @@
-// Mesh convergence of the reef-flat amplification (research brief §6 B10): halving Δ changes the
+// Mesh convergence of the reef-flat amplification: halving Δ changes the
 // peak ratios along the flat by < 2 %.
 #include <algorithm>
 #include <numeric>
@@ -18,7 +18,7 @@ TEST(ReefConvergence, HalvingTheElementSizeChangesTheFlatAmplificationByLessThan
   // Placeholder reef with water, Ricker 0.5 Hz P at 30° (content up to ≈ 1.3 Hz: ≥ 12 cells per
   // S wavelength in the 800 m/s top layer on the coarse mesh). Meshes Δ = 50 m and 25 m, both with
   // every layer interface on a grid line (the flanks stay staircases, an O(Δ) geometry error).
-  // Brief B10: the largest and the mean R_u, R_a (x and y) along the flat change by < 2 %.
+  // Target: the largest and the mean R_u, R_a (x and y) along the flat change by < 2 %.
   SeismicParameters p;
   p.wave_type = "P";
   p.angle_deg = 30.0;

@@ -1,4 +1,4 @@
-// Paper-trend checks (research brief §6 C) on the PLACEHOLDER reef (brief §5.4), Ricker 1 Hz input,
+// Paper-trend checks on the PLACEHOLDER reef (assumed layers, see docs/seismic.md), Ricker 1 Hz input,
 // Δ = 25 m. The paper's reef (Table 1) is unknown, so these are smoke checks of the qualitative
 // findings that the placeholder does reproduce; the ones it does not reproduce are listed in
 // docs/seismic.md ("Paper trends"), not asserted here.
@@ -28,7 +28,7 @@ PeakRatios reefRatios(const std::string& wave, double angle_deg) {
 }
 
 TEST(ReefTrends, ObliquePAmplifiesHorizontalMostAtModerateAnglesAndVerticalLessWithAngle) {
-  // Paper §4.2 / brief C1: the largest horizontal R_a along the flat peaks at an intermediate angle
+  // Paper §4.2: the largest horizontal R_a along the flat peaks at an intermediate angle
   // (paper: 30°) and the vertical response decreases with θ (vertical incidence is the worst case).
   // Measured (placeholder): max R_a,x 1.65, 1.76, 1.71, 1.23 at 0, 30, 60, 75°; mean R_a,y 1.77, 1.63,
   // 1.18, 0.76. The 30°-vs-60° margin is 3 %, larger than the 0.4 % mesh change measured in B10.
@@ -42,7 +42,7 @@ TEST(ReefTrends, ObliquePAmplifiesHorizontalMostAtModerateAnglesAndVerticalLessW
 }
 
 TEST(ReefTrends, VerticalSvAmplifiesTheWholeFlatHorizontally) {
-  // Paper §5.2 / brief C2: under SV the horizontal response exceeds the reference (R_x > 1) on almost
+  // Paper §5.2: under SV the horizontal response exceeds the reference (R_x > 1) on almost
   // all of the flat (asserted: ≥ 90 % of the stations), the mean horizontal R_a decreases from 0° to
   // 25°, and the vertical R_a stays about 0.5–1 (asserted: mean in [0.5, 1]).
   const PeakRatios vertical = reefRatios("SV", 0.0), oblique = reefRatios("SV", 25.0);

@@ -25,7 +25,7 @@ TEST(SeismicInputs, BsplinePulseHasUnitPeakAndCompactSupport) {
 }
 
 TEST(SeismicInputs, BsplinePulseSpectrumHasItsFirstZeroAtFourOverT) {
-  // |U(f)|/|U(0)| = [sin(πfT/4)/(πfT/4)]⁴ (research brief §3.4): 0.657 at 5 Hz, 0 at 20 Hz for T = 0.2 s.
+  // |U(f)|/|U(0)| = [sin(πfT/4)/(πfT/4)]⁴ (Fourier transform of the cubic B-spline): 0.657 at 5 Hz, 0 at 20 Hz for T = 0.2 s.
   // Rectangle-rule quadrature at 0.1 ms: error ~1e-6.
   const double T = 0.2, dt = 1e-4;
   auto amplitude = [&](double f) {

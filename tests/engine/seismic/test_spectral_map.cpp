@@ -1,6 +1,6 @@
 // The spectral-ratio map H_a(x, f) (seismic_spectral_map.cpp) on a model with a closed-form answer:
 // the box without water is a homogeneous half-space, whose surface moves with frequency-independent
-// amplitudes (Aki & Richards free surface; research/reef_seismic.md §5.3 table). With the reference
+// amplitudes (Aki & Richards free surface, checked against an independent reference computation). With the reference
 // motion twice the incident one, H_a,x = |u_x|/2 and H_a,y = |u_y|/2 at every station and frequency.
 #include <cmath>
 #include <cstdio>
