@@ -1,5 +1,5 @@
 // Boundary-layer displacement thickness and the tangency correction (paper eqs 9–11): flat-plate limits,
-// thin-body edge velocity, exact reproduction when switched off, and the sign of the effect (brief T4).
+// thin-body edge velocity, exact reproduction when switched off, and the sign of the effect (as the paper reports).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -96,7 +96,7 @@ TEST(BoundaryLayer, SwitchedOffSettingsReproduceTheUncorrectedResultExactly) {
 }
 
 TEST(BoundaryLayer, TangencyCorrectionLowersTheWigleyMainHump) {
-  // Brief T4 / paper R4: with δ* growing aft, the stern source weakens and the bow–stern interference hump of
+  // The paper's finding: with δ* growing aft, the stern source weakens and the bow–stern interference hump of
   // the Wigley hull (Fn ≈ 0.5, L = 4 m model in fresh water at 15 °C) drops.
   const HullGrid g = sampleHull(makeParametricHull(4.0, 0.4, 0.25), 257, 51);
   auto correction = std::make_shared<const TangencyCorrection>(g, 0.05);

@@ -46,7 +46,7 @@ TEST(HullGeometry, WigleyParticularsMatchClosedForms) {
   EXPECT_NEAR(p.kb, 5.0 * T / 8.0, 1e-12);
   EXPECT_NEAR(p.length_wl, L, 1e-12);
   EXPECT_NEAR(p.beam_wl, B, 1e-12);
-  // S/L² = 0.1487906 (brief §3.2, exact surface integral). The triangulated grid surface converges at
+  // S/L² = 0.1487906 (exact surface integral, evaluated independently). The triangulated grid surface converges at
   // second order; at 257×51 its error is below 2e-4 relative.
   EXPECT_NEAR(p.wetted_surface / (L * L), 0.1487906, 2e-4 * 0.1487906);
 }

@@ -15,7 +15,7 @@ using namespace maris;
 using namespace maris::ship;
 
 TEST(MichellSpectrum, SpectrumIntegratesToTheWaveResistance) {
-  // Brief P6: ∫ dR_W/dθ dθ over [0, θ_c] equals R_W integrated over λ ∈ [1, sec θ_c] (same range through
+  // Identity: ∫ dR_W/dθ dθ over [0, θ_c] equals R_W integrated over λ ∈ [1, sec θ_c] (same range through
   // the short-wave cut-off). Simpson on 40 001 angles of the smooth closed-form Wigley spectrum: 1e-6.
   const double L = 1.0, g = 9.81, rho = 1000.0, fn = 0.5, U = fn * std::sqrt(g * L), k0 = g / (U * U);
   const double lambda_c = 6.0, theta_c = std::acos(1.0 / lambda_c);

@@ -1,4 +1,4 @@
-// Exact properties of the uncorrected Michell integral (brief §6.3) and the transom end terms.
+// Exact properties of the uncorrected Michell integral and the transom end terms.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -52,7 +52,7 @@ TEST(MichellProperties, ResistanceIsQuadraticInBeam) {
 }
 
 TEST(MichellProperties, DoublingTheHullQuadruplesResistance) {
-  // Brief P5: a coincident duplicate hull (twice the source strength) gives 4 R_W.
+  // A coincident duplicate hull (twice the source strength) gives 4 R_W.
   HullGrid g = asymmetricGrid(1.0);
   const double U = 0.25 * std::sqrt(kG * 2.0);
   const double r1 = onGrid(g, U).resistance;
@@ -61,7 +61,7 @@ TEST(MichellProperties, DoublingTheHullQuadruplesResistance) {
 }
 
 TEST(MichellProperties, ReversingBowAndSternLeavesResistanceUnchanged) {
-  // Brief P3: Y(x, z) → Y(L − x, z) conjugates P + iQ (up to a phase), so |P + iQ|² and R_W are unchanged.
+  // Y(x, z) → Y(L − x, z) conjugates P + iQ (up to a phase), so |P + iQ|² and R_W are unchanged.
   const HullGrid g = asymmetricGrid(1.0);
   for (double fn : {0.18, 0.3, 0.5}) {
     const double U = fn * std::sqrt(kG * 2.0);

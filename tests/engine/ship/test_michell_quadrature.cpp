@@ -1,5 +1,5 @@
 // Quadrature building blocks of Michell's integral: exactness on polynomials at tiny and huge frequencies
-// (research brief §6.1 U2–U5).
+// and the Wigley Kochin function against independent reference values.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -87,9 +87,9 @@ TEST(MichellQuadrature, ExpTrapezoidConvergesAtSecondOrderForQuadratics) {
   }
 }
 
-TEST(MichellQuadrature, WigleyKochinMatchesBriefReferenceValues) {
-  // Brief §6.1 U5: |P+iQ|² for L = 1, B = 0.1, T = 0.0625, computed there by brute-force 2-D Gauss–Legendre
-  // to 13 digits. k0 = 1/Fn² for L = 1. Analytic path: 1e-10; offsets path on 251×51... here 257×51: 2e-3.
+TEST(MichellQuadrature, WigleyKochinMatchesIndependentReferenceValues) {
+  // |P+iQ|² for L = 1, B = 0.1, T = 0.0625, computed by an independent long-double implementation of the theory (outside this repository)
+  // and checked there by brute-force 2-D Gauss–Legendre to 13 digits. k0 = 1/Fn² for L = 1. Analytic path: 1e-10; offsets path on 251×51... here 257×51: 2e-3.
   struct Row {
     double fn, lambda, value;
   };

@@ -1,6 +1,5 @@
 // Michell wave resistance of the Wigley hull: closed-form Kochin path vs the published anchor, the offsets
-// (grid) path vs the closed form, grid convergence order, and the hard cases Fn = 0.05 and Fn = 2
-// (research brief §6.2 W1–W6).
+// (grid) path vs the closed form, grid convergence order, and the hard cases Fn = 0.05 and Fn = 2.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +13,7 @@ namespace {
 
 constexpr double kL = 1.0, kB = 0.1, kT = 0.0625;  // [m] B/L = 0.1, T/L = 0.0625
 constexpr double kG = 9.81, kRho = 1000.0;
-constexpr double kWettedSurface = 0.1487906;       // [m²] S/L² of the Wigley hull (brief §3.2, exact surface integral)
+constexpr double kWettedSurface = 0.1487906;       // [m²] S/L² of the Wigley hull (exact surface integral)
 
 double speedAt(double fn) { return fn * std::sqrt(kG * kL); }
 double waveCoefficient(const WaveResistance& r, double fn) {
@@ -40,7 +39,7 @@ WaveResistance gridWigley(double fn, int nx, int nz, double rtol = 1e-5) {
 
 TEST(MichellWigley, ClosedFormMatchesDoctorsAndBeckAnchor) {
   // Doctors & Beck (1987), J. Ship Res. 31(1), Table 1 (quoted by risingtideresearch/michell): 10³C_W = 1.2486
-  // at Fn = 0.35, tolerance 0.5 % (brief W3). The brief's own high-precision value 1.247922 (6 digits) is
+  // at Fn = 0.35, tolerance 0.5 %. The high-precision value 1.247922 (6 digits) of an independent long-double implementation of the theory (outside this repository) is
   // checked at 1e-6 relative: our quadrature at rtol 1e-9 must reproduce the theory, not just the anchor.
   const WaveResistance r = exactWigley(0.35, 1e-9);
   const double cw = 1e3 * waveCoefficient(r, 0.35);
@@ -49,7 +48,7 @@ TEST(MichellWigley, ClosedFormMatchesDoctorsAndBeckAnchor) {
 }
 
 TEST(MichellWigley, OffsetsPathMatchesClosedFormWithinTenthOfPercent) {
-  // Brief W2: 0.1 % for 0.15 <= Fn <= 1 on a 251×51-class grid (257×51 here).
+  // Target: 0.1 % for 0.15 <= Fn <= 1 on a 251×51-class grid (257×51 here).
   for (double fn : {0.15, 0.2, 0.25, 0.3, 0.35, 0.42, 0.5, 0.7, 1.0}) {
     const double exact = exactWigley(fn, 1e-8).resistance;
     const WaveResistance grid = gridWigley(fn, 257, 51);
@@ -60,7 +59,7 @@ TEST(MichellWigley, OffsetsPathMatchesClosedFormWithinTenthOfPercent) {
 }
 
 TEST(MichellWigley, GridErrorConvergesAtSecondOrder) {
-  // Brief W5: the error ratio between successive halvings of (dx, dz) lies in [3, 5].
+  // Second order: the error ratio between successive halvings of (dx, dz) lies in [3, 5].
   const double fn = 0.35, exact = exactWigley(fn, 1e-10).resistance;
   const double e1 = std::abs(gridWigley(fn, 65, 13, 1e-9).resistance - exact);
   const double e2 = std::abs(gridWigley(fn, 129, 25, 1e-9).resistance - exact);
@@ -99,8 +98,8 @@ TEST(MichellWigley, TailEstimateHoldsAtFroudeTwo) {
   EXPECT_LE(std::abs(grid.resistance - reference.resistance), grid.error_estimate);
 }
 
-TEST(MichellWigley, ShortWaveCutoffReproducesBriefTable) {
-  // Brief §5.4 table (Wigley 101×21, λ ∈ [1, 2] always kept): 10³C_W at Fn 0.35 is 1.2466 without the
+TEST(MichellWigley, ShortWaveCutoffReproducesIndependentTable) {
+  // Table of the same independent implementation (Wigley 101×21, λ ∈ [1, 2] always kept): 10³C_W at Fn 0.35 is 1.2466 without the
   // cut and 1.1587 / 1.2265 / 1.2432 with r = 0.10 / 0.05 / 0.02. Four printed digits: 1e-3 relative.
   const double fn = 0.35, U = speedAt(fn);
   const std::pair<double, double> rows[] = {{0.0, 1.2466}, {0.10, 1.1587}, {0.05, 1.2265}, {0.02, 1.2432}};

@@ -1,7 +1,7 @@
 // Theory against towing-tank measurements: the KCS model of the Tokyo 2015 workshop (Case 2.1, KRISO; the
 // data set shipped as resources/data/ship/kcs_tokyo2015_case21_efd.csv, provenance in its README) and the
 // position of the Series 60 hump. These are not accuracy tests of our numerics (those compare with closed
-// forms elsewhere) but of the paper's claims (brief R7, R11), with tolerances from the physics the linear
+// forms elsewhere) but of the paper's claims (the Series 60 hump, the KCS curve), with tolerances from the physics the linear
 // theory leaves out, never fitted to our output.
 #include <gtest/gtest.h>
 
@@ -109,9 +109,9 @@ TEST(ShipExperiments, HoltropMennenMissesTheKcsGradientAboveFroudeZeroPointTwoFi
 }
 
 TEST(ShipExperiments, WaveNumberCorrectionDelaysTheSeries60HumpTowardsFroudeZeroPointThree) {
-  // Paper R7 / brief T5: measured hump near Fn 0.30, original theory 0.28. k̂0 = f·k0 maps C_W(Fn) of the
+  // Paper §4.2: measured hump near Fn 0.30, original theory 0.28. k̂0 = f·k0 maps C_W(Fn) of the
   // uncorrected theory to Fn·√f (the k0² prefactor stays, so C_W itself changes by 1/f), so the hump moves by
-  // √f: here f = 1.048 (s_FS/l_FS = 1.0129), 0.286 → 0.292, inside T5's ±0.01 of 0.30. One step 0.002.
+  // √f: here f = 1.048 (s_FS/l_FS = 1.0129), 0.286 → 0.292, inside ±0.01 of 0.30. One step 0.002.
   const BuiltinScenario* b = findBuiltin("ship_series60");
   ASSERT_NE(b, nullptr);
   Scenario s = b->scenario;

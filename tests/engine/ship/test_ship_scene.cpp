@@ -58,7 +58,7 @@ TEST(ShipScene, SweepDoesNotDependOnThreadCount) {
 }
 
 TEST(ShipScene, Series60MichellHumpAtFroudeZeroPointTwoEight) {
-  // Paper §4.2 (brief R7/T5): the original theory's C_T curve of the Series 60 C_B 0.6 has its last local
+  // Paper §4.2: the original theory's C_T curve of the Series 60 C_B 0.6 has its last local
   // maximum at Fn = 0.28 (measured ≈ 0.30). The paper's model is 3.0 m, ours 3.048 m: ±0.01 in Fn.
   const Results r = runBuiltin("ship_series60", {"speed.froude_min=0.24", "speed.froude_max=0.34", "speed.count=101",
                                                  "corrections.wave_number=false"});
@@ -114,9 +114,9 @@ TEST(ShipScene, CancellationStopsTheSweep) {
 }
 
 TEST(ShipScene, WigleySweepResolvesTheSameHumpsAndHollowsAsTheClosedForm) {
-  // Brief W4: the humps and hollows of the Wigley C_W curve, swept on 0.2 ≤ Fn ≤ 0.6 in steps of 0.004,
+  // The humps and hollows of the Wigley C_W curve, swept on 0.2 ≤ Fn ≤ 0.6 in steps of 0.004,
   // must sit at the same Froude numbers on the grid path (129×25, −0.4 % level error) as on the closed-form
-  // Kochin path, to one sweep step; the main hump lies near Fn 0.5 (brief §6.2: within ±0.05).
+  // Kochin path, to one sweep step; the main hump lies near Fn 0.5 (within ±0.05).
   const Results r = runBuiltin("ship_default", {"speed.froude_min=0.2", "speed.froude_max=0.6", "speed.count=101",
                                                 "numerics.stations=129", "numerics.waterlines=25",
                                                 "corrections.wave_number=false"});

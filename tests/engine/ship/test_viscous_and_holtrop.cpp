@@ -9,11 +9,11 @@
 using namespace maris::ship;
 
 TEST(ViscousResistance, Ittc57MatchesItsFormula) {
-  // Brief U1: C_F = 0.075/(log10 Re − 2)²: 0.075/16, 0.075/25, 0.075/49 exactly (1e-12 relative).
+  // ITTC-1957: C_F = 0.075/(log10 Re − 2)²: 0.075/16, 0.075/25, 0.075/49 exactly (1e-12 relative).
   EXPECT_NEAR(ittc57FrictionCoefficient(1e6), 0.0046875, 1e-12 * 0.0046875);
   EXPECT_NEAR(ittc57FrictionCoefficient(1e7), 0.003, 1e-12 * 0.003);
   EXPECT_NEAR(ittc57FrictionCoefficient(1e9), 0.075 / 49.0, 1e-12 * 0.075 / 49.0);
-  // Brief T2 (Wigley L = 4 m): 10³C_F = 3.6736, 3.2290, 2.9511 at the quoted Re (5 digits: 1e-4).
+  // Hand calculation (Wigley L = 4 m): 10³C_F = 3.6736, 3.2290, 2.9511 at the quoted Re (5 digits: 1e-4).
   EXPECT_NEAR(1e3 * ittc57FrictionCoefficient(3.2992e6), 3.6736, 1e-4 * 3.6736);
   EXPECT_NEAR(1e3 * ittc57FrictionCoefficient(6.5984e6), 3.2290, 1e-4 * 3.2290);
   EXPECT_NEAR(1e3 * ittc57FrictionCoefficient(1.0997e7), 2.9511, 1e-4 * 2.9511);
