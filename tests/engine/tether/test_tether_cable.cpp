@@ -1,4 +1,4 @@
-// Lumped-mass tether against the continuous catenary (brief E1-E3): the static discrete chain of N rigid links
+// Lumped-mass tether against the continuous catenary: the static discrete chain of N rigid links
 // converges to the catenary at second order in N, and the damped dynamic chain settles onto it.
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@ double maxVerticalDeviation(double span, double rise, int n) {
 
 TEST(TetherCable, StaticChainOfHundredFiftyLinksLiesOnTheCatenary) {
   // E1: N = 150 equal links with equal node weights; vertical deviation <= 5e-5 m for sags up to 0.6 m
-  // (brief measured 2.2e-6 to 3.9e-5); T_h/w -> 1/C within 1e-4 relative.
+  // (an independent Python implementation (outside this repository) measured 2.2e-6 to 3.9e-5); T_h/w -> 1/C within 1e-4 relative.
   for (double sag : {0.05, 0.2, 0.35, 0.6})
     for (double rise : {-0.2, 0.0, 0.3}) {
       const Catenary shape = catenaryFromShape(sag, rise, kL);
@@ -36,7 +36,7 @@ TEST(TetherCable, StaticChainOfHundredFiftyLinksLiesOnTheCatenary) {
 }
 
 TEST(TetherCable, StaticChainConvergesAtSecondOrder) {
-  // E2: tripling N divides the deviation by ~9 (second order); accepted [7, 11] as in the brief.
+  // E2: tripling N divides the deviation by ~9 (second order); accepted [7, 11].
   const Catenary shape = catenaryFromShape(0.35, 0.1, kL);
   const double ratio = maxVerticalDeviation(shape.span, 0.1, 50) / maxVerticalDeviation(shape.span, 0.1, 150);
   EXPECT_GE(ratio, 7.0);

@@ -1,5 +1,5 @@
 // Catenary functions against closed forms (paper eq. 2 special cases, length and span identities) and against an
-// independent long-double bisection of sinh(xi) - xi = (r - 1) xi (acceptance tests A1-A9 of the research brief).
+// independent long-double bisection of sinh(xi) - xi = (r - 1) xi (well-conditioned, extreme and round-trip cases).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,7 +17,7 @@ struct GridPoint {
   double sag, rise;
 };
 
-// The brief's grid H x dH restricted to shapes with the lowest point between the ends and 2H + dH < L.
+// A grid H x dH restricted to shapes with the lowest point between the ends and 2H + dH < L.
 std::vector<GridPoint> feasibleGrid() {
   std::vector<GridPoint> grid;
   for (double h : {1e-3, 0.05, 0.2, 0.35, 0.6, 0.74})
@@ -54,8 +54,8 @@ TEST(TetherCatenary, LengthAndSpanIdentitiesHoldOnGrid) {
   }
 }
 
-TEST(TetherCatenary, ShapeTableOfTheBriefIsReproduced) {
-  // Reference values of brief §4.1 (computed there independently; 9 significant digits shown).
+TEST(TetherCatenary, ShapeTableOfAnIndependentComputationIsReproduced) {
+  // Reference values computed by an independent Python implementation (outside this repository); 9 significant digits shown.
   struct Row {
     double H, dH, C, D, dD;
   } rows[] = {{0.35, 0.0, 1.590909091, 0.6358634302, 0.0},          {0.35, 0.2, 2.479724961, 0.4988829211, 0.1081829601},
@@ -70,7 +70,7 @@ TEST(TetherCatenary, ShapeTableOfTheBriefIsReproduced) {
 }
 
 TEST(TetherCatenary, InverseQuadraticRecoversSag) {
-  // H is the smaller root of A H^2 + B H + K = 0 (brief §2.2, from the authors' lab code); rel 1e-10 (the
+  // H is the smaller root of A H^2 + B H + K = 0 (the paper's eq. 2 inverted, as in the authors' public lab code); rel 1e-10 (the
   // quadratic itself loses digits to cancellation in K - this checks C, not the quadratic).
   for (const auto& g : feasibleGrid()) {
     if (g.sag < 0.01) continue;
@@ -128,7 +128,7 @@ Reference referenceFromSpan(double S, double dH, double L) {
 }
 
 TEST(TetherCatenary, LevelSpanSolveMatchesLongDoubleFromNearlyTautToVerticalHang) {
-  // Level spans: the solve is well conditioned in C; 1e-14 relative (brief A5, measured 1.5e-15 there).
+  // Level spans: the solve is well conditioned in C; 1e-14 relative (an independent implementation measured 1.5e-15).
   for (double gap : {1e-12, 1e-10, 1e-8, 1e-6, 1e-4, 1e-2, 0.1, 0.5, 0.9, 0.99, 0.999999, 1.0 - 1e-9}) {
     const double S = kL * (1.0 - gap);
     const Catenary c = catenaryFromSpan(S, 0.0, kL);
@@ -158,7 +158,7 @@ TEST(TetherCatenary, SlopedSpanSolveMatchesLongDoubleWithinConditioning) {
 }
 
 TEST(TetherCatenary, SpanSolveConvergesInFewIterationsOverTwentySixDecades) {
-  // r - 1 from 1e-14 to 1e12 (brief A9): <= 8 Newton iterations and a residual at round-off of ln r.
+  // r - 1 from 1e-14 to 1e12: <= 8 Newton iterations and a residual at round-off of ln r.
   for (double e = -14; e <= 12; e += 0.5) {
     const double r = 1.0 + std::pow(10.0, e);
     const double S = kL / r;
@@ -173,7 +173,7 @@ TEST(TetherCatenary, SpanSolveConvergesInFewIterationsOverTwentySixDecades) {
 }
 
 TEST(TetherCatenary, RoundTripShapeToSpanToShape) {
-  // Shape -> span -> shape: error ~ rounding of S amplified by the conditioning (brief A5b).
+  // Shape -> span -> shape: error ~ rounding of S amplified by the conditioning.
   for (const auto& g : feasibleGrid()) {
     const Catenary a = catenaryFromShape(g.sag, g.rise, kL);
     const Catenary b = catenaryFromSpan(a.span, a.rise, kL);

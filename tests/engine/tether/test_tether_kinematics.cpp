@@ -1,5 +1,5 @@
 // Features and interaction matrices: analytic Jacobians against central finite differences of the feature map
-// from robot poses (brief B1-B5), and the reference matrix M at s* = (0.5, 0.5, 0.5) of brief §4.1.
+// from robot poses, and the reference matrix M at s* = (0.5, 0.5, 0.5) of an independent computation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,7 +22,7 @@ Vector4 featuresAt(const TetherRig& rig, const RobotPose& follower, const RobotP
 }
 
 // Central differences of s along each body-twist direction; h = 1e-6 gives truncation ~h^2 and round-off
-// ~eps/h ~ 2e-10, so 1e-7 is a safe bound (brief B1/B4 measured <= 5e-10).
+// ~eps/h ~ 2e-10, so 1e-7 is a safe bound (an independent implementation measured <= 5e-10).
 void expectJacobiansMatchFiniteDifferences(const TetherRig& rig, const Features& s) {
   const RobotPose leader{{1.0, -0.5, -2.0}, 0.3};
   const RobotPose follower = followerPoseFromFeatures(rig, leader, s);
@@ -59,7 +59,7 @@ TEST(TetherKinematics, InteractionMatricesMatchFiniteDifferencesOnGrid) {
 }
 
 TEST(TetherKinematics, ShapeJacobianAtDesiredShapeMatchesReference) {
-  // Brief §4.1 (z-up convention), computed there independently; rel 1e-9.
+  // An independent Python implementation (outside this repository) (z-up convention); rel 1e-9.
   const InteractionMatrices im = interactionMatrices(paperRig(), Features{0.5, 0.5, 0.5, 0.0});
   Eigen::Matrix3d ref;
   ref << -0.9023964972, -0.5209988606, -0.7142857143, -0.3404919054, 0.5897492798, 0, 0, 0, 1;
@@ -69,7 +69,7 @@ TEST(TetherKinematics, ShapeJacobianAtDesiredShapeMatchesReference) {
 }
 
 TEST(TetherKinematics, SpanShrinksWithSagEverywhereOnGrid) {
-  // The paper's claim U + P < 0 (keeps row a of L finite), on the feasible grid of the brief.
+  // The paper's claim U + P < 0 (keeps row a of L finite), on a feasible grid.
   const TetherRig rig = paperRig();
   for (double sag : {1e-3, 0.05, 0.2, 0.35, 0.6, 0.74})
     for (double rise : {-0.3, -0.1, 0.0, 0.1, 0.3, 0.5}) {
@@ -99,7 +99,7 @@ TEST(TetherKinematics, InfeasibleTargetsAreRejectedWithReason) {
   const TetherRig rig = paperRig();
   EXPECT_NE(featureInfeasibility(rig, Features{1.0, 0.0, 1.0, 0.0}), "");  // (a, d) = (1, 1): 2H + dH > L
   EXPECT_NE(featureInfeasibility(rig, Features{0.5, 0.0, 0.0, 0.0}), "");  // (0.5, 0): H + dH < 0
-  EXPECT_EQ(featureInfeasibility(rig, Features{1.0, 0.0, 0.5, 0.0}), "");  // feasible per brief §2.4
+  EXPECT_EQ(featureInfeasibility(rig, Features{1.0, 0.0, 0.5, 0.0}), "");  // lowest point at the follower's end: feasible
   EXPECT_EQ(featureInfeasibility(rig, Features{0.5, 0.0, 1.0, 0.0}), "");
   EXPECT_NE(featureInfeasibility(rig, Features{0.5, 1.0, 0.5, 0.0}), "");
 }

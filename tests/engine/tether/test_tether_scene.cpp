@@ -1,5 +1,5 @@
 // The tether scene end to end: built-in scenarios validate and run, the paper's simulation outcomes are
-// reproduced where the text gives numbers (brief C5), bad input names the field (F1), a taut pull and
+// reproduced where the text gives numbers, bad input names the field (F1), a taut pull and
 // cancellation end the run with typed errors.
 #include <gtest/gtest.h>
 
@@ -48,8 +48,8 @@ TEST(TetherScene, EveryBuiltinScenarioValidatesAndRuns) {
 
 TEST(TetherScene, DefaultReachesTheTargetAndTheCableSettlesOnTheCatenary) {
   // Sim 7.1 (lambda = 1): "commands nearly zero after the 240th iteration"; with the 0.3 m/s saturation the
-  // error ratio at tick 240 must still be below 1e-3 (brief C5). The settled 150-link cable lies within 5e-5 m
-  // of the catenary (brief E1 bound for the discrete chain).
+  // error ratio at tick 240 must still be below 1e-3. The settled 150-link cable lies within 5e-5 m
+  // of the catenary (the bound measured for the static discrete chain, test_tether_cable.cpp).
   const Results r = run("tether_default");
   const Table* f = r.findTable("features");
   ASSERT_NE(f, nullptr);

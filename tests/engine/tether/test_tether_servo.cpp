@@ -1,4 +1,4 @@
-// Closed-loop behaviour of the servo law with exact features and a kinematic follower at 30 Hz (brief C1-C4):
+// Closed-loop behaviour of the servo law with exact features and a kinematic follower at 30 Hz:
 // the discrete error decays as (1 - lambda dt)^k, leader-velocity compensation removes the tracking error of a
 // moving leader, and L Lhat+ keeps eigenvalues with positive real parts under 40 % model errors.
 #include <gtest/gtest.h>
@@ -84,8 +84,8 @@ TEST(TetherServo, FourFeatureLawConvergesToTheUniquePose) {
 
 TEST(TetherServo, LeaderCompensationRemovesTrackingError) {
   // C3: leader at 0.1 m/s forward with lateral 0.05 sin(0.5 t) and vertical 0.03 cos(0.3 t), lambda = 2.
-  // With compensation the remaining error is what a twist held over one tick cannot cancel (brief measured
-  // 1.9e-8); without it the error stays of the order of |L1 v1|/lambda (brief measured 7.6e-2).
+  // With compensation the remaining error is what a twist held over one tick cannot cancel (an independent
+  // implementation measured 1.9e-8); without it the error stays of the order of |L1 v1|/lambda (measured there 7.6e-2).
   const TetherRig rig;
   const RobotPose leader{{0.0, 0.0, -1.0}, 0.0};
   const Features target{0.5, 0.2, 0.5, 0.0};
@@ -137,7 +137,7 @@ TEST(TetherServo, ClosedLoopStaysStableUnderFortyPercentModelError) {
       }
   }
   EXPECT_GT(min_real, 0.0);
-  EXPECT_LT(min_real, 1.0);  // errors do move the spectrum (brief: minimum 0.562)
+  EXPECT_LT(min_real, 1.0);  // errors do move the spectrum (independent implementation: minimum 0.562)
 }
 
 TEST(TetherServo, SaturationKeepsDirectionAndHoldNearSingularity) {

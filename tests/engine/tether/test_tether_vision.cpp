@@ -1,4 +1,4 @@
-// Synthetic camera and Gauss-Newton shape estimator (brief D1-D4): noiseless projections of the catenary are
+// Synthetic camera and Gauss-Newton shape estimator: noiseless projections of the catenary are
 // fitted exactly, noisy ones within the noise, and degenerate views hold the previous estimate without NaN.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 namespace maris::tether {
 namespace {
 
-// Attachment at (0, 0.10, 0.20) m in the camera frame (brief D1): camera 0.2 m behind and 0.1 m above P2.
+// Attachment at (0, 0.10, 0.20) m in the camera frame: camera 0.2 m behind and 0.1 m above P2.
 struct VisionRig {
   TetherRig rig;
   CameraModel camera;
@@ -26,13 +26,13 @@ struct VisionRig {
   }
 };
 
-TEST(TetherVision, AttachmentSitsWhereTheBriefPutsIt) {
+TEST(TetherVision, AttachmentSitsBehindAndAboveTheFollowersTetherPoint) {
   const VisionRig s;
   EXPECT_LE((attachmentInCamera(s.rig, s.camera) - Eigen::Vector3d(0.0, 0.10, 0.20)).norm(), 1e-15);
 }
 
 TEST(TetherVision, NoiselessProjectionsAreFittedExactly) {
-  // D1: from (0.5, 0.3), true (a, b) recovered to 1e-8 in <= 30 iterations (brief measured 12-13). The model and
+  // D1: from (0.5, 0.3), true (a, b) recovered to 1e-8 in <= 30 iterations (an independent implementation needed 12-13). The model and
   // the synthetic image share only the catenary; the projection is generic in both.
   const VisionRig s;
   for (const auto& truth : {std::pair{0.5, 0.5}, std::pair{0.3, 0.2}, std::pair{0.8, 0.6}}) {
@@ -50,7 +50,7 @@ TEST(TetherVision, NoiselessProjectionsAreFittedExactly) {
 }
 
 TEST(TetherVision, NoisyProjectionsAreFittedWithinTheNoise) {
-  // D2: sigma = 1e-3 normalised units: |a_hat - a|, |b_hat - b| <= 5e-3 (brief measured <= 1e-4).
+  // D2: sigma = 1e-3 normalised units: |a_hat - a|, |b_hat - b| <= 5e-3 (an independent implementation measured <= 1e-4).
   VisionRig s;
   s.camera.noise = 1e-3;
   std::mt19937 rng(7);

@@ -1,4 +1,4 @@
-// Float–float hydrodynamic interaction from multi-body Nemoh files (issue 6 items 1, 4, 6; research brief §2.6).
+// Float–float hydrodynamic interaction from multi-body Nemoh files (the coupled frequency domain is derived here; not in the paper).
 // Synthetic two-body files with a coupling whose effect is known in closed form: two identical floats whose
 // radiation matrices are A = A_1 ⊗ [[1, c], [c, 1]] (same for B) and whose excitations are equal (or opposite)
 // move in the symmetric (antisymmetric) mode θ_1 = ±θ_2, in which each float behaves exactly as a single float with
@@ -177,8 +177,8 @@ TEST(WecCoupled, ZeroCouplingEqualsIndependentFloats) {
 }
 
 // Time domain with the cross kernels (state-space fits of K_12 = c K_11 in each mode): the steady response of both
-// floats (H = 0.1 m) matches the coupled frequency domain within 1.5 % and 2° (brief T10), in the classical RK4 and
-// the augmented Newmark formulations, and the energy balance over both floats closes within 1 % (brief T13):
+// floats (H = 0.1 m) matches the coupled frequency domain within 1.5 % and 2°, in the classical RK4 and
+// the augmented Newmark formulations, and the energy balance over both floats closes within 1 %:
 // radiated power includes what each float's motion does against the other's radiation.
 TEST(WecCoupled, TimeDomainMatchesCoupledFrequencyDomain) {
   const fs::path pair = scratch("td_pair");

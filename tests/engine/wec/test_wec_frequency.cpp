@@ -10,7 +10,7 @@
 using namespace maris::wec;
 
 // Capture width ≤ 3λ/(2π) (surge–heave point absorber, Newman 1976) and P̄ ≤ |X_θ|²/(8B_θ) (optimal reactive
-// control) for every ω and several PTO dampings (brief T18, T13c). Holds exactly because X comes from Haskind.
+// control) for every ω and several PTO dampings. Holds exactly because X comes from Haskind.
 TEST(WecFrequency, CaptureWidthNeverExceedsPointAbsorberBound) {
   const WecModel m = wec_test::model(wec_test::defaults());
   for (double b : {1e5, 1e6, 3.52e6, 1e7, 1e8})
@@ -38,7 +38,7 @@ TEST(WecFrequency, OptimalPtoDampingMaximisesMeanPower) {
 }
 
 // Mirroring the geometry (x → −x, θ0 → π − θ0) together with the wave direction leaves |Θ| and |F_h| unchanged
-// (brief T16), to round-off.
+//, to round-off.
 TEST(WecFrequency, MirroredLayoutGivesIdenticalResponse) {
   auto p = wec_test::defaults();
   p.floats[0].hinge_x = 7.0;

@@ -1,4 +1,4 @@
-// Hard cases (issue 6): resonance without PTO, extreme frequencies, horizontal and vertical arms, time steps at
+// Hard cases: resonance without PTO, extreme frequencies, horizontal and vertical arms, time steps at
 // the RK4 stability limit; plus direct vs state-space memory, the phase-convention round trip, irregular seas.
 #include <gtest/gtest.h>
 
@@ -109,7 +109,7 @@ TEST(WecHardCases, DirectConvolutionMatchesStateSpace) {
   }
 }
 
-// Brief T14: coefficients written in the e^{−iωt} convention (Capytaine/NEMOH) and converted on import give the
+// Coefficients written in the e^{−iωt} convention (Capytaine/NEMOH) and converted on import give the
 // same time-domain response as the e^{+iωt} original, to 1e-9 rad.
 TEST(WecHardCases, PhaseConventionRoundTripGivesIdenticalResponse) {
   WecModel m = wec_test::model(wec_test::defaults());

@@ -32,7 +32,7 @@ TEST(WecHydro, HulmeHeaveNodesAreReproduced) {
   EXPECT_NEAR(hulmeSurgeDamping(1.0), 0.3535, 1e-12);
 }
 
-// Exact limits (rigid-lid and Dirichlet image problems, research brief §5.2) to 1e-4.
+// Exact limits (rigid-lid and Dirichlet image problems, closed forms) to 1e-4.
 TEST(WecHydro, AddedMassTendsToTheExactLimits) {
   EXPECT_NEAR(hulmeHeaveAddedMass(0.0), 0.8310, 1e-4);
   EXPECT_NEAR(hulmeHeaveAddedMass(1e6), 0.5, 1e-4);
@@ -45,7 +45,7 @@ TEST(WecHydro, AddedMassTendsToTheExactLimits) {
 }
 
 // Haskind–Newman in water of depth h (Newman 1976, axisymmetric body): |X3|² = 4ρgC_g B33/k and
-// |X1|² = 8ρgC_g B11/k hold for WAMIT's own excitation and damping to 1 % (brief T6; WAMIT's panel error),
+// |X1|² = 8ρgC_g B11/k hold for WAMIT's own excitation and damping to 1 % (WAMIT's panel error),
 // which also checks that the importer dimensionalises both files consistently. At T = 8 s (kh = 3.2) the
 // deep-water form 2ρg³B/ω³ is already 1.6 % off, so the finite-depth form is the reference.
 TEST(WecHydro, WamitImportSatisfiesHaskind) {
@@ -65,7 +65,7 @@ TEST(WecHydro, WamitImportSatisfiesHaskind) {
   EXPECT_NEAR(db->addedMassInfinityHeave() / (kRho * volume(5.0)), 0.5, 0.002);
 }
 
-// Hulme (deep water) against the WAMIT BEM run for ka in [0.3, 1.3] where kh ≥ 3 (brief T7): 1.5 % of the
+// Hulme (deep water) against the WAMIT BEM run for ka in [0.3, 1.3] where kh ≥ 3: 1.5 % of the
 // mode's peak coefficient (the table's 4 digits plus WAMIT's discretisation).
 TEST(WecHydro, HulmeAgreesWithWamitInDeepWater) {
   const auto db = readWamit(kSphere, kRho, kWamitG, 1.0);

@@ -1,4 +1,4 @@
-// Irregular seas (issue 6 items 3 and 5): response spectra of pitch and hinge reactions from the frequency domain
+// Irregular seas: response spectra of pitch and hinge reactions from the frequency domain
 // against the statistics of the time-domain run in the same sea, both formulations.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Nemoh/Capytaine import (issue 6 item 1): Tecplot files written here in Nemoh's layout and e^{−iωt} convention
+// Nemoh/Capytaine import: Tecplot files written here in Nemoh's layout and e^{−iωt} convention
 // from the independent WAMIT hemisphere run (tests/engine/wec/data), read back and compared with the WAMIT import;
 // A∞, which Nemoh does not write, recovered by Ogilvie and compared with WAMIT's own infinite-frequency solution.
 #include <gtest/gtest.h>

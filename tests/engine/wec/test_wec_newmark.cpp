@@ -1,6 +1,6 @@
 // The paper's two-loop integration of the augmented formulation (explicit Newmark β = 0, γ = ½ on θ, Newton–Raphson
 // on the position constraints): against the RK4 path, the frequency-domain RAO, its order, its drift and its
-// stability limit (research brief §2.5, T10–T12).
+// stability limit (the paper's eqs 18–31).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,7 +34,7 @@ double maxAbs(const std::vector<double>& a, const std::vector<double>& b, double
 }  // namespace
 
 // H = 2 m, ω = 1 rad/s, 200 s (paper Figs 6–7): Newmark agrees with the classical RK4 solution to 0.5 % of the θ
-// amplitude and 1 % of the hinge-force amplitude (brief T11). The constraints hold at position level to the
+// amplitude and 1 % of the hinge-force amplitude. The constraints hold at position level to the
 // Newton tolerance (|C| ≤ 1e-10 m) and at velocity level to round-off (|C_q q̇| ≤ 1e-9 m/s) at every step (T12).
 TEST(WecNewmark, AgreesWithClassicalRk4AndHasNoDrift) {
   const WecModel& m = defaultModel();
@@ -71,7 +71,7 @@ TEST(WecNewmark, AgreesWithClassicalRk4AndHasNoDrift) {
 }
 
 // Steady state in small waves (H = 0.1 m) equals the frequency-domain RAO within 1.5 % and 2° over 0.4–2.0 rad/s
-// (brief T10) with the Newmark path, hinge forces within 2 %.
+// with the Newmark path, hinge forces within 2 %.
 TEST(WecNewmark, RaoMatchesFrequencyDomain) {
   const WecModel& m = defaultModel();
   const TimeDomainOptions o = newmark(0.05, 1.0);
@@ -111,7 +111,7 @@ TEST(WecNewmark, ConvergesAtSecondOrder) {
   EXPECT_LT(order, 2.3) << err[0] << " " << err[1];
 }
 
-// Static equilibrium for 600 s to 1e-12 rad (brief T8).
+// Static equilibrium for 600 s to 1e-12 rad.
 TEST(WecNewmark, StaticEquilibriumHolds) {
   WaveField calm;
   calm.ramp_duration = 30.0;

@@ -31,7 +31,7 @@ double rhoV() { return kRho * 2.0 / 3.0 * std::numbers::pi * kA * kA * kA; }
 }  // namespace
 
 // Ogilvie (1964): A∞ = A(ω) + (1/ω)∫K sin ωt dt recovers 0.5ρV (the exact Dirichlet limit) from Hulme's
-// finite-frequency A and B at every ω, within 1 % (brief T3; the tables' 4 digits and interpolation).
+// finite-frequency A and B at every ω, within 1 % (the tables' 4 digits and interpolation).
 TEST(WecRadiation, OgilvieRecoversHeaveAddedMassAtInfinity) {
   for (double w : {0.5, 0.8, 1.0, 1.2, 1.5, 2.0}) {
     const double ratio = ogilvieAddedMassInfinity(heaveKernel(), w, heaveAddedMass(w)) / rhoV();
@@ -49,8 +49,8 @@ TEST(WecRadiation, OgilvieRecoversSurgeAddedMassAtInfinity) {
   }
 }
 
-// K33(0) = (2/π)∫B dω = 3.58e4 N/m (brief §3.3, independent quadrature, ±3 %); K decays below 1e-3 K(0)
-// by 40 s; ∫K dt = B(0) = 0 to 1 % of ∫|K| dt (brief T4).
+// K33(0) = (2/π)∫B dω = 3.58e4 N/m (independent quadrature of Hulme's B(ω), ±3 %); K decays below 1e-3 K(0)
+// by 40 s; ∫K dt = B(0) = 0 to 1 % of ∫|K| dt.
 TEST(WecRadiation, HeaveKernelHasTheExpectedShape) {
   const auto& k = heaveKernel();
   EXPECT_NEAR(k.values[0], 3.58e4, 0.03 * 3.58e4);
@@ -65,7 +65,7 @@ TEST(WecRadiation, HeaveKernelHasTheExpectedShape) {
   EXPECT_LT(std::abs(integral), 0.01 * magnitude);
 }
 
-// The modal fit (brief T5): stable poles, R² ≥ 0.99 on K(t), B(ω) and ω(A(ω) − A∞) reconstructed within 3 %
+// The modal fit: stable poles, R² ≥ 0.99 on K(t), B(ω) and ω(A(ω) − A∞) reconstructed within 3 %
 // of max B on 0.3–3 rad/s, and Re K̂ ≥ −1 % of max B (passivity up to the fit error).
 TEST(WecRadiation, StateSpaceFitIsStableAccurateAndPassive) {
   struct Case {

@@ -1,5 +1,5 @@
 // Time domain against the frequency domain and against itself (classical vs augmented, state-space vs direct),
-// equilibrium, free decay, energy balance (research brief §6, T8–T15).
+// equilibrium, free decay, energy balance (the paper's classical and augmented formulations against each other and the frequency domain).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,7 +22,7 @@ WaveField calm() {
 }
 }  // namespace
 
-// No waves, θ(0) = θ0: both formulations stay at rest for 600 s to 1e-12 rad (brief T8). Weight and still-water
+// No waves, θ(0) = θ0: both formulations stay at rest for 600 s to 1e-12 rad. Weight and still-water
 // buoyancy cancel and z_h + L sin θ0 = 0 exactly, so any motion would be a modelling error.
 TEST(WecTime, StaticEquilibriumHoldsFor600Seconds) {
   for (bool augmented : {false, true}) {
@@ -36,7 +36,7 @@ TEST(WecTime, StaticEquilibriumHoldsFor600Seconds) {
   }
 }
 
-// Free decay without PTO (brief T9): the frequency from zero crossings matches the imaginary part of the complex
+// Free decay without PTO: the frequency from zero crossings matches the imaginary part of the complex
 // root of the linear impedance Z(s) within 1 %, and the undamped root ω_n of K_θ = ω²J(ω) within 2 % (radiation
 // damping, ζ ≈ 0.09, and the steep A33(ω) near ω_n move the decay frequency 1.6 % below ω_n). The
 // mechanical energy never exceeds its initial value; E(t) + W_rad(t) = E(0) to the RK4 error (1e-4 of E(0)).
@@ -71,7 +71,7 @@ TEST(WecTime, FreeDecayMatchesFrequencyDomainRootAndLosesEnergy) {
 
 // Steady state in small regular waves (H = 0.1 m, 30 s ramp, DFT over the last 10 periods) equals the
 // frequency-domain RAO within 1.5 % in amplitude and 2° in phase for ω in 0.4–2.0 rad/s, and the hinge forces
-// within 2 % (brief T10). Residual differences: RK4 step error and the state-space fit of K(t).
+// within 2 %. Residual differences: RK4 step error and the state-space fit of K(t).
 TEST(WecTime, TimeDomainRaoMatchesFrequencyDomain) {
   const WecModel& m = defaultModel();
   TimeDomainOptions o;
@@ -86,8 +86,8 @@ TEST(WecTime, TimeDomainRaoMatchesFrequencyDomain) {
 }
 
 // Classical and augmented formulations (H = 2 m, ω = 1 rad/s, 200 s, same hydrodynamics): θ within 0.5 % of its
-// amplitude, hinge forces within 1 % of their amplitude (brief T11; paper R1, R2). The moment about the hinge
-// equals I θ̈ (paper eq 8) in both to 1e-9 of its range: the paper's 15.2 % vs 15.5 % gap cannot come from here.
+// amplitude, hinge forces within 1 % of their amplitude (the paper's comparison of the two). The moment about
+// the hinge equals I θ̈ (paper eq 8) in both to 1e-9 of its range: the paper's 15.2 % vs 15.5 % gap cannot come from here.
 TEST(WecTime, ClassicalAndAugmentedFormulationsAgree) {
   const WecModel& m = defaultModel();
   const WaveField waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
@@ -118,7 +118,7 @@ TEST(WecTime, ClassicalAndAugmentedFormulationsAgree) {
   }
 }
 
-// Constraint drift of the augmented formulation (brief T12): with projection the drift removed per step stays
+// Constraint drift of the augmented formulation: with projection the drift removed per step stays
 // at the RK4 local error (< 1e-5 m); with Baumgarte stabilisation only (α = 10/s) |C| stays below 1e-5 m for
 // 1000 s of H = 2 m waves.
 TEST(WecTime, ConstraintDriftStaysBounded) {
@@ -136,7 +136,7 @@ TEST(WecTime, ConstraintDriftStaysBounded) {
 }
 
 // Over whole periods in steady state: mean excitation power = mean PTO power + mean radiated power within 1 %,
-// and the TD mean PTO power equals ½B_PTO ω²|Θ|²a² of the frequency domain within 1.5 % (brief T13).
+// and the TD mean PTO power equals ½B_PTO ω²|Θ|²a² of the frequency domain within 1.5 %.
 TEST(WecTime, PtoEnergyBalanceCloses) {
   const WecModel& m = defaultModel();
   TimeDomainOptions o;
@@ -149,7 +149,7 @@ TEST(WecTime, PtoEnergyBalanceCloses) {
 }
 
 // The PTO damping that maximises the time-domain mean power (parabola through log B = log B_opt ± 0.15) lies
-// within 5 % of the frequency-domain formula √(B_θ² + (ωJ − K_θ/ω)²) (brief T15).
+// within 5 % of the frequency-domain formula √(B_θ² + (ωJ − K_θ/ω)²).
 TEST(WecTime, TimeDomainOptimumDampingMatchesFormula) {
   const double w = 1.0;
   const double b_opt = solveFrequency(defaultModel(), defaultModel().floats[0], w).optimal_damping;
