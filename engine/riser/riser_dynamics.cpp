@@ -424,8 +424,8 @@ double projectConstraints(const RiserModel& m, RiserWorkspace& ws, double t, Eig
   // four times): end-point error before the snap 1.3e-3 … 8.3e-5 of L (ratio 2.0) with the velocities
   // translated, 2.8e-5 … 1.8e-6 (ratio 4) without; on the cables and case 5 the errors, steps and rejections
   // changed by under 15 % (bench rows of docs/riser_work_precision.md). Earlier, the top's velocity mismatch
-  // carried down the chain made the cable first order (n = 20: 4.6e-3 at 20 ms against 1.6e-4), and projected mass-weighted it kinked the top
-  // (n = 400: 41 of 204 steps rejected).
+  // carried down the chain made the cable first order (n = 20: 4.6e-3 at 20 ms against 1.6e-4), and projected
+  // mass-weighted it kinked the top (n = 400: 41 of 204 steps rejected).
   // spreadBottomMismatch closes the joints it opens itself, so each sweep starts from closed joints.
   const bool held = bottomHeld(m);
   closeJointsByTranslation(m, ws, t, y);
