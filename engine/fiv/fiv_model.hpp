@@ -10,8 +10,7 @@
 // C_y: quasi-steady transverse force (Parkinson & Smith 1964; Barrero-Gil et al. 2010; or a table),
 // q: Facchinetti, de Langre & Biolley (2004) wake variable with acceleration coupling, combined
 // additively as Tamura & Shimada (1987). κ(h*) = 1 − a exp(−b(h* − ½)) is our calibrated free-surface
-// factor (no published correlation for square-cylinder FIV near a free surface is known to us: a and b
-// are fitted to the paper's power ratios between submergences); κ = 1 for h* = ∞.
+// factor (no published correlation is known to us; a, b fitted to the paper's power ratios); κ = 1 for h* = ∞.
 #pragma once
 
 #include <array>

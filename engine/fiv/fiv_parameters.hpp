@@ -5,9 +5,8 @@
 //
 // Defaults reproduce the set-up of Zhang, Song, Li, Su & Ding (square cylinder near a free surface,
 // 2D URANS): D = 0.09 m, damping ratio 0.1, c ≈ 30 N·s/m. Mass, stiffness and length are not in the
-// paper text; the defaults (m + m_a = 47.7 kg, k = 471 N/m, L = 1 m, f_n,water = 0.50 Hz) are placeholders made
-// consistent with the text: f_n,water ≈ 0.5 Hz from the galloping frequencies it quotes (0.49–0.54 Hz at
-// 2.2 m/s), then m_t = c/(2ξω_n) and k = m_t ω_n².
+// paper text; the defaults (m + m_a = 47.7 kg, k = 471 N/m, L = 1 m, f_n,water = 0.50 Hz) are placeholders:
+// f_n,water ≈ 0.5 Hz from its galloping frequencies (0.49–0.54 Hz at 2.2 m/s), m_t = c/(2ξω_n), k = m_t ω_n².
 #pragma once
 
 #include <string>

@@ -102,8 +102,7 @@ void normaliseState(const RiserModel& m, Eigen::VectorXd& y);
 double totalEnergy(const RiserModel& m, const RiserPose& pose);
 
 // Estimated highest natural frequency [rad/s] (bending 9√(EI/μ)/Δ², torsion 2√(GJ/ι)/Δ, tension
-// 4√(T/μ)/Δ, bounds of the chain's discrete spectra; times β ω when the spring dampers are overdamped), used for
-// the automatic RK4 step.
+// 4√(T/μ)/Δ, discrete-spectrum bounds; times β ω when the spring dampers are overdamped), for the automatic RK4 step.
 double highestFrequencyEstimate(const RiserModel& m);
 
 }  // namespace maris::riser

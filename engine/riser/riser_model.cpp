@@ -19,8 +19,7 @@ SectionRow sectionAt(const RiserParameters& p, double s) {
 
 // Newton-Euler mass matrix of a uniform straight segment about its origin, in its own frame:
 // [[m I, -m[c]x], [m[c]x, I_A]] with c = (l/2) e1, I_A = diag(ι l, m l²/3 + ι l/2, m l²/3 + ι l/2)
-// (the inertia about the origin of a slender rod with polar inertia ι per length: J = diag(μ l³/3,
-// ι l/2, ι l/2) in the paper's notation, I' = tr(J) 1 - J).
+// (slender rod about its end, polar inertia ι per length: J = diag(μ l³/3, ι l/2, ι l/2), I' = tr(J) 1 - J).
 Mat6 segmentMass(double mass, double length, double polar_inertia_per_length) {
   const Vec3 c(length / 2, 0, 0);
   const double transverse = mass * length * length / 3.0 + polar_inertia_per_length * length / 2.0;
@@ -198,9 +197,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     g.fluid_mass_per_length = contents;
     m.segments.push_back(g);
   }
-  // Joints: stiffness of the primary element they represent, C = (GJ, EI, EI)/Δ (the rule of the rigid
-  // finite element method, which reproduces Euler–Bernoulli results with an O(1/n²) error; the paper does
-  // not print its stiffnesses).
+  // Joints: stiffness of the primary element they represent, C = (GJ, EI, EI)/Δ (rigid-FE rule; the paper prints none).
   m.joints.resize(m.n + 1);
   for (int i = 1; i <= m.n; ++i) {
     const SectionRow sec = sectionAt(p, (i - 0.5) * d);

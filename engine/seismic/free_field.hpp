@@ -1,7 +1,5 @@
 // Free field of an elastic half-space under a water layer, driven by a plane P or SV wave
-// (Bao, Liu, Li, Wang & Wang, "Seismic response analysis of the reef–seawater system under obliquely
-// incident P and SV waves", Ocean Engineering, c. 2020, §3.2; Aki & Richards, Quantitative Seismology, 2nd ed.,
-// 2002, for the free-surface reflection coefficients).
+// (Bao, Liu, Li, Wang & Wang, Ocean Engineering c. 2020, §3.2; reflection coefficients: Aki & Richards 2002).
 //
 // Conventions for the whole seismic scene:
 //   x horizontal, to the right; y vertical, up. y = 0 is the seabed of the free-field model, the

@@ -1,7 +1,6 @@
 // Incident-wave time functions: the displacement u0(t) of the incident wave at the origin.
-//   - the paper's 0.2 s pulse, read as Liu's cubic B-spline displacement pulse (the available
-//     text names the pulse but not its form; this reading has unit peak at T/2,
-//     spectrum [sin(πfT/4)/(πfT/4)]^4 with its first zero at 4/T);
+//   - the paper's 0.2 s pulse, read as Liu's cubic B-spline displacement pulse (the text does not
+//     give its form): unit peak at T/2, spectrum [sin(πfT/4)/(πfT/4)]^4 with its first zero at 4/T;
 //   - a Ricker wavelet (displacement), peak frequency f_p, centred at t_c;
 //   - a recorded accelerogram (time [s], acceleration [m/s^2] CSV), baseline-corrected, scaled to a
 //     target peak acceleration and integrated twice.

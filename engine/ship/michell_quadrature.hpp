@@ -36,8 +36,7 @@ double expTrapezoidShallowWeight(double K);
 
 // Wigley hull Y = (B/2)(1-(2ξ/L)²)(1-(z/T)²): Michell's Kochin function |P + iQ|² at wave number
 // k0 = g/U² [1/m] and λ = sec θ, in closed form:  |P+iQ|² = X(κ)² Z(b)², κ = k0 λ, b = k0 λ²,
-//   X = (8B/L²)[sin(κL/2)/κ² − (L/2) cos(κL/2)/κ],  Z = ∫_{-T}^0 (1 − z²/T²) e^{bz} dz  (derived here from
-// the hull equation).
+//   X = (8B/L²)[sin(κL/2)/κ² − (L/2) cos(κL/2)/κ],  Z = ∫_{-T}^0 (1 − z²/T²) e^{bz} dz  (from the hull equation).
 double wigleyKochinSquared(double length, double beam, double draft, double k0, double lambda);
 // The two factors, exposed for tests (series used near zero arguments).
 double wigleyLengthFactor(double length, double beam, double kappa);

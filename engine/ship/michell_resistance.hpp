@@ -1,5 +1,4 @@
-// Michell's thin-ship wave resistance (J. H. Michell, "The wave-resistance of a ship", Philosophical Magazine 45, 1898;
-// paper eqs 5–8):
+// Michell's thin-ship wave resistance (J. H. Michell, Philosophical Magazine 45, 1898; paper eqs 5–8):
 //
 //   R_W = (4 ρ g² / (π U²)) ∫_1^∞ |P + iQ|²(λ) λ² / √(λ² − 1) dλ,
 //   P + iQ = ∬ ∂Y/∂x e^{k z} e^{i κ x} dx dz,   κ = k0 λ, k = k0 λ², k0 = g/U², λ = sec θ,

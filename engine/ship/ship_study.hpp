@@ -39,9 +39,7 @@ struct ShipModel {
 
 ShipModel buildShipModel(const ShipParameters& p, RunContext& context);
 
-// k̂0/k0 = 1 + 3.7 (s_FS/l_FS − 1), the paper's eq 12 (coefficient 3.7 as printed; the sign is lost in the
-// available text: '+', so that k̂0 > k0 delays the hump, which the uncorrected theory puts too early — Series
-// 60 at Fn 0.28 against 0.30 measured).
+// k̂0/k0 = 1 + 3.7 (s_FS/l_FS − 1), the paper's eq 12 (3.7 as printed; sign '+': k̂0 > k0 delays the hump).
 double waveNumberCorrectionFactor(const ForeShoulder& fore_shoulder);
 
 struct ResistanceCurves {

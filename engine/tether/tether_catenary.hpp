@@ -8,9 +8,8 @@
 //     H  [m]  sag: height of P2 above the lowest point of the catenary (the paper's H₂);
 //     L  [m]  tether length (inextensible);
 //     C  [1/m] catenary constant: z = (cosh(C (x - x0)) - 1)/C above the vertex at x0.
-//   - Source: Laranjeira, Dune & Hugel, Ocean Eng. 200 (2020) 107018, eqs. (1)-(7) and App. A.4. The available
-//     text lost eq. 2's '+' sign; the root taken here is the one that satisfies the length identity
-//     L² − ΔH² = (2 sinh(CS/2)/C)² (checked to round-off in the tests).
+//   - Source: Laranjeira, Dune & Hugel, Ocean Eng. 200 (2020) 107018, eqs. (1)-(7) and App. A.4; eq. 2's '+' root
+//     (the sign is lost in the available text) is the one with L² − ΔH² = (2 sinh(CS/2)/C)², as tested.
 //
 // No function returns NaN: every input is classified into a named regime (CatenaryRegime). Geometry fields are
 // filled whenever a catenary exists (Regular, NearlyTaut, VertexOutsideSpan) and for the VerticalHang limit.

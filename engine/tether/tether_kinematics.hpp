@@ -11,8 +11,7 @@
 // Features (paper eqs. 14, 22): a = H/H_max, b = sin(alpha2), d = (dH + dH_max)/(2 dH_max), b1 = sin(alpha1),
 // with H the sag at P2 and dH = z(P1) - z(P2). b may be negative (the paper's mirror image) so that the controller
 // sees the side of the tether. The interaction matrices follow the paper's eqs. (25)-(45) in this z-up/FLU
-// convention. The available text lost most minus signs; the signs here are derived from the catenary model
-// and checked against finite differences of the features (tests/engine/tether/test_tether_kinematics.cpp).
+// convention, signs (lost in the available text) derived from the catenary model and checked by finite differences.
 #pragma once
 
 #include <Eigen/Core>
@@ -72,8 +71,7 @@ struct Features {
 Features featuresOf(const TetherRig& rig, const TetherState& state);
 
 // Why a feature vector cannot be a shape of the paper's model ("" if it can): sag and rise inside the feasible box
-// max(0, -dH) <= H < (L - dH)/2 (the lowest point between the ends), |b|, |b1| < 1, and the catenary regime
-// Regular or NearlyTaut.
+// max(0, -dH) <= H < (L - dH)/2 (lowest point between the ends), |b|, |b1| < 1, catenary regime Regular or NearlyTaut.
 std::string featureInfeasibility(const TetherRig& rig, const Features& s);
 
 // The follower pose that realises features s (a, b, d, b1) behind a given leader. Throws InputError (path

@@ -1,6 +1,4 @@
-// Parameters of the hinged-float wave energy converter scene (S. Heo, W. Koo, "Numerical procedures for
-// dynamic response and reaction force analysis of a heaving-point absorber wave energy converter", Ocean
-// Engineering 200 (2020) 107070).
+// Parameters of the hinged-float wave energy converter scene (S. Heo, W. Koo, Ocean Engineering 200 (2020) 107070).
 // SI units beside every field; angles in degrees only in fields named *_deg (converted in buildWecModel).
 #pragma once
 

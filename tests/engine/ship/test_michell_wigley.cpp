@@ -39,7 +39,8 @@ WaveResistance gridWigley(double fn, int nx, int nz, double rtol = 1e-5) {
 
 TEST(MichellWigley, ClosedFormMatchesDoctorsAndBeckAnchor) {
   // Doctors & Beck (1987), J. Ship Res. 31(1), Table 1 (quoted by risingtideresearch/michell): 10³C_W = 1.2486
-  // at Fn = 0.35, tolerance 0.5 %. The high-precision value 1.247922 (6 digits) of an independent long-double implementation of the theory (outside this repository) is
+  // at Fn = 0.35, tolerance 0.5 %. The high-precision value 1.247922 (6 digits) of an independent long-double
+  // implementation of the theory (outside this repository) is
   // checked at 1e-6 relative: our quadrature at rtol 1e-9 must reproduce the theory, not just the anchor.
   const WaveResistance r = exactWigley(0.35, 1e-9);
   const double cw = 1e3 * waveCoefficient(r, 0.35);
@@ -99,7 +100,7 @@ TEST(MichellWigley, TailEstimateHoldsAtFroudeTwo) {
 }
 
 TEST(MichellWigley, ShortWaveCutoffReproducesIndependentTable) {
-  // Table of the same independent implementation (Wigley 101×21, λ ∈ [1, 2] always kept): 10³C_W at Fn 0.35 is 1.2466 without the
+  // Independent implementation's table (Wigley 101×21, λ ∈ [1, 2] kept): 10³C_W at Fn 0.35 is 1.2466 without the
   // cut and 1.1587 / 1.2265 / 1.2432 with r = 0.10 / 0.05 / 0.02. Four printed digits: 1e-3 relative.
   const double fn = 0.35, U = speedAt(fn);
   const std::pair<double, double> rows[] = {{0.0, 1.2466}, {0.10, 1.1587}, {0.05, 1.2265}, {0.02, 1.2432}};

@@ -82,8 +82,7 @@ TEST(ShipViscousInputs, ProhaskaWithoutUsablePointsIsAnInputError) {
 TEST(ShipViscousInputs, WigleyForeShoulderRatioMatchesTheArcLength) {
   // The Wigley design waterline from the FP to midship (its fore shoulder) has s_FS/l_FS =
   // 1.006627, so k̂0/k0 = 1 + 3.7 × 0.006627 = 1.024521. The chord polyline on 257 stations underestimates
-  // the arc by ~1e-7 relative; the reference (arc length of the closed-form
-  // waterline, computed independently) has 7 digits: tolerance 1e-6.
+  // the arc by ~1e-7 relative; the independent arc length has 7 digits: 1e-6.
   ShipParameters p;
   p.wave_number_correction = true;
   RunContext ctx;
