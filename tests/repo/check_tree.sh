@@ -8,7 +8,8 @@
 #   - absolute paths of a development machine (home, root or work folders).
 # Usage: check_tree.sh SOURCE_DIR. Scans the files git knows (tracked, or untracked and not ignored) when
 # SOURCE_DIR is a git checkout, else every file below it except build folders.
-# The patterns use character classes so that this file does not match itself.
+# The patterns use character classes so that this file does not match itself. LICENSE is the GPL's text,
+# kept verbatim, and is not scanned.
 set -euo pipefail
 src="${1:?usage: check_tree.sh SOURCE_DIR}"
 cd "$src"
@@ -33,7 +34,7 @@ list_files() {
   fi
 }
 
-hits="$(list_files | while IFS= read -r -d '' f; do [ -f "$f" ] && printf '%s\0' "$f"; done |
+hits="$(list_files | while IFS= read -r -d '' f; do [ -f "$f" ] && [ "${f#./}" != LICENSE ] && printf '%s\0' "$f"; done |
           xargs -0 -r grep -nHIE -- "$regex" || true)"
 if [ -n "$hits" ]; then
   echo "Files of the source tree name insider material: cite the sources themselves (authors, title, journal,"
