@@ -77,15 +77,25 @@ bool insideBox(const TetherRig& rig, double a, double b, double rise, double mar
 }
 
 // Levenberg–Marquardt (core/least_squares.hpp) on (a, b) from `est`, with the Jacobian by central differences;
-// trial points stay in the feasible box by step halving.
+// trial points stay in the feasible box by step halving. A point whose difference stencil leaves the model's
+// shapes counts as undefined, so the Jacobian is formed with every residual and kept for the accepted point.
 ShapeEstimate fitShape(const TetherRig& rig, const Eigen::Vector3d& p2c, double rise,
                        const std::vector<ImagePoint>& image, ShapeEstimate est) {
+  Eigen::Vector2d jac_at(NAN, NAN);
+  Eigen::MatrixXd jac_there;
   LeastSquaresProblem problem;
   problem.residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
-    return residuals(rig, p2c, rise, image, x[0], x[1], r, nullptr) >= kMinPoints;
+    jac_at = x;
+    const bool defined = residuals(rig, p2c, rise, image, x[0], x[1], r, &jac_there) >= kMinPoints;
+    if (!defined) jac_at.setConstant(NAN);
+    return defined;
   };
   problem.jacobian = [&](const Eigen::VectorXd& x, const Eigen::VectorXd&, Eigen::MatrixXd& jac) {
     Eigen::VectorXd r;
+    if (x == Eigen::VectorXd(jac_at)) {
+      jac = jac_there;
+      return true;
+    }
     return residuals(rig, p2c, rise, image, x[0], x[1], r, &jac) >= kMinPoints;
   };
   problem.trial_point = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
