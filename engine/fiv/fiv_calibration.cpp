@@ -23,12 +23,6 @@ double sigmaOf(const std::optional<double>& sigma, double value) {
   return s > 0.0 ? s : 1e-12 + 0.05 * std::abs(value);
 }
 
-double costOf(const std::vector<CalibrationResidual>& r) {
-  double c = 0.0;
-  for (const auto& x : r) c += x.normalised() * x.normalised();
-  return c;
-}
-
 Eigen::VectorXd vectorOf(const std::vector<CalibrationResidual>& r) {
   Eigen::VectorXd v(static_cast<Eigen::Index>(r.size()));
   for (std::size_t i = 0; i < r.size(); ++i) v[static_cast<Eigen::Index>(i)] = r[i].normalised();
