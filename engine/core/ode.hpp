@@ -24,7 +24,7 @@ namespace maris {
 // Error estimate: the FSAL-embedded 3rd-order solution b̂ = (1/6, 1/3, 1/3, 0, 1/6) using
 // k5 = F(t+h, y_{n+1}) (which is the next step's k1, so it costs nothing): local error ≈ h (k4 − k5)/6.
 // It measures the 3rd-order companion, so it over-estimates RK4's own error (by O(1/h)).
-// RHS evaluations: 4 per step + 1.
+// RHS evaluations: 4 per step + 1. OdeOptions::after_step (if set) may change the state after each step.
 // Throws SolverError (non-finite state, bad options), RunCancelled.
 OdeStats integrateRk4(const OdeRhs& rhs, Eigen::VectorXd& y, const OdeOptions& options, RunContext& ctx,
                       const OdeObserver& observer = {});

@@ -26,6 +26,7 @@ inline void checkOptions(const OdeOptions& o, const char* integrator, bool step_
     fail("need rtol >= 0, atol >= 0 and not both 0");
   if (!(o.min_step > 0.0) || !(o.max_step > 0.0)) fail("min_step and max_step must be positive");
   if (o.output_interval < 0.0) fail("output_interval must be >= 0");
+  if (o.after_step && std::string(integrator) != "integrateRk4") fail("after_step is supported by integrateRk4 only");
 }
 
 inline std::string componentName(const OdeOptions& o, Eigen::Index i) {

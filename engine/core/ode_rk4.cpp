@@ -50,6 +50,10 @@ OdeStats integrateRk4(const OdeRhs& rhs, Eigen::VectorXd& y, const OdeOptions& o
     rhs(t_new, stage, k4);
     y_new = y + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
     if (!y_new.allFinite()) throwNonFiniteStep({&k1, &k2, &k3, &k4}, y_new, t_new, k, options);
+    if (options.after_step) {
+      options.after_step(t_new, y_new);
+      throwIfNotFinite(y_new, t_new, k, options.state_name);
+    }
     // k5 = F(t_new, y_new): the 3rd-order embedded estimate, the Hermite end slope and the next k1.
     rhs(t_new, y_new, k5);
     stats.rhs_evaluations += 4;

@@ -27,6 +27,10 @@ struct OdeOptions {
   long max_steps = 50'000'000;  // more accepted steps than this is a SolverError
   double output_interval = 0.0;  // [s] observer spacing from t0; 0 = after every accepted step
   std::function<std::string(Eigen::Index)> state_name;  // names a state component in errors ("node 3 x")
+  // integrateRk4 only (the others reject it): called after every step with the new state, which it may
+  // change (project it back onto constraints, advance a stored history); the step's end slope, error
+  // estimate and the observer then use the changed state. A non-finite state afterwards is a SolverError.
+  std::function<void(double t, Eigen::VectorXd& y)> after_step;
 };
 
 struct OdeStats {

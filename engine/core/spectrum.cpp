@@ -1,78 +1,79 @@
-// FFT (radix-2 + Bluestein), amplitude spectra and single-harmonic fits (contract in core/spectrum.hpp).
+// FFT (FFTW3), amplitude spectra and single-harmonic fits (contract in core/spectrum.hpp).
 #include "core/spectrum.hpp"
 
 #include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include <Eigen/QR>
+#include <fftw3.h>
 
 namespace maris {
 namespace {
 
 using Complex = std::complex<double>;
 
-bool isPowerOfTwo(std::size_t n) { return n > 0 && (n & (n - 1)) == 0; }
+// FFTW plans for in-place complex transforms of one length and direction, and out-of-place real-to-complex
+// ones, made once per length with FFTW_ESTIMATE (the same plan, hence the same bits, on every run) and
+// FFTW_UNALIGNED (so any std::vector's storage can be passed to the new-array execute functions).
+// Creating or destroying a plan is not thread-safe in FFTW; executing one is. Runs happen on worker
+// threads and studies run scenes in parallel, so plan lookup and creation hold one mutex; execution does not.
+// Plans live until the program exits (one per length and kind used: a few kilobytes each).
+class PlanCache {
+ public:
+  fftw_plan complexPlan(std::size_t n, int sign) {
+    return find(complex_[sign < 0 ? 0 : 1], n, [&] {
+      auto* scratch = fftw_alloc_complex(n);
+      fftw_plan plan = fftw_plan_dft_1d(static_cast<int>(n), scratch, scratch, sign < 0 ? FFTW_FORWARD : FFTW_BACKWARD,
+                                        FFTW_ESTIMATE | FFTW_UNALIGNED);
+      fftw_free(scratch);
+      return plan;
+    });
+  }
+  fftw_plan realPlan(std::size_t n) {
+    return find(real_, n, [&] {
+      double* in = fftw_alloc_real(n);
+      fftw_complex* out = fftw_alloc_complex(n / 2 + 1);
+      fftw_plan plan = fftw_plan_dft_r2c_1d(static_cast<int>(n), in, out, FFTW_ESTIMATE | FFTW_UNALIGNED);
+      fftw_free(in);
+      fftw_free(out);
+      return plan;
+    });
+  }
 
-// In-place iterative radix-2 FFT; sign = −1 forward, +1 inverse (unnormalised). n must be a power of 2.
-void radix2(std::vector<Complex>& x, int sign) {
-  const std::size_t n = x.size();
-  // Bit-reversal permutation.
-  for (std::size_t i = 1, j = 0; i < n; ++i) {
-    std::size_t bit = n >> 1;
-    for (; j & bit; bit >>= 1) j ^= bit;
-    j ^= bit;
-    if (i < j) std::swap(x[i], x[j]);
+ private:
+  template <class Make>
+  fftw_plan find(std::map<std::size_t, fftw_plan>& plans, std::size_t n, Make make) {
+    if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      throw std::invalid_argument("fft: length " + std::to_string(n) + " exceeds FFTW's int range");
+    const std::lock_guard<std::mutex> lock(mutex_);
+    auto it = plans.find(n);
+    if (it != plans.end()) return it->second;
+    fftw_plan plan = make();
+    if (!plan) throw std::runtime_error("fft: FFTW could not plan a transform of length " + std::to_string(n));
+    plans.emplace(n, plan);
+    return plan;
   }
-  // Butterflies; twiddles computed directly (not by repeated multiplication) to keep round-off at eps.
-  std::vector<Complex> twiddle;
-  for (std::size_t len = 2; len <= n; len <<= 1) {
-    const std::size_t half = len / 2;
-    twiddle.resize(half);
-    for (std::size_t k = 0; k < half; ++k)
-      twiddle[k] = std::polar(1.0, sign * 2.0 * std::numbers::pi * static_cast<double>(k) / static_cast<double>(len));
-    for (std::size_t start = 0; start < n; start += len) {
-      for (std::size_t k = 0; k < half; ++k) {
-        const Complex even = x[start + k];
-        const Complex odd = x[start + k + half] * twiddle[k];
-        x[start + k] = even + odd;
-        x[start + k + half] = even - odd;
-      }
-    }
-  }
+  std::mutex mutex_;
+  std::map<std::size_t, fftw_plan> complex_[2];
+  std::map<std::size_t, fftw_plan> real_;
+};
+
+PlanCache& plans() {
+  static PlanCache cache;
+  return cache;
 }
 
-// Bluestein: jk = (j² + k² − (k−j)²)/2 turns the DFT into a convolution with the chirp exp(iπ j²/N),
-// done by power-of-two FFTs of length M ≥ 2N − 1.
-void bluestein(std::vector<Complex>& x, int sign) {
-  const std::size_t n = x.size();
-  std::size_t m = 1;
-  while (m < 2 * n - 1) m <<= 1;
-  // chirp_j = exp(sign·iπ j²/N), with j² reduced mod 2N in integers so the angle stays small and exact.
-  std::vector<Complex> chirp(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    const unsigned long long j2 = (static_cast<unsigned long long>(j) * j) % (2ULL * n);
-    chirp[j] = std::polar(1.0, sign * std::numbers::pi * static_cast<double>(j2) / static_cast<double>(n));
-  }
-  std::vector<Complex> a(m, Complex(0.0)), b(m, Complex(0.0));
-  for (std::size_t j = 0; j < n; ++j) a[j] = x[j] * chirp[j];
-  b[0] = std::conj(chirp[0]);
-  for (std::size_t j = 1; j < n; ++j) b[j] = b[m - j] = std::conj(chirp[j]);
-  radix2(a, -1);
-  radix2(b, -1);
-  for (std::size_t i = 0; i < m; ++i) a[i] *= b[i];
-  radix2(a, +1);
-  const double inv_m = 1.0 / static_cast<double>(m);
-  for (std::size_t k = 0; k < n; ++k) x[k] = a[k] * inv_m * chirp[k];
-}
+// std::complex<double> and fftw_complex (double[2]) share their layout (FFTW manual §4.1.1).
+fftw_complex* asFftw(std::vector<Complex>& x) { return reinterpret_cast<fftw_complex*>(x.data()); }
 
 void transform(std::vector<Complex>& x, int sign) {
   if (x.size() <= 1) return;
-  if (isPowerOfTwo(x.size()))
-    radix2(x, sign);
-  else
-    bluestein(x, sign);
+  fftw_execute_dft(plans().complexPlan(x.size(), sign), asFftw(x), asFftw(x));
 }
 
 }  // namespace
@@ -90,10 +91,12 @@ std::vector<Complex> inverseFft(std::vector<Complex> spectrum) {
 }
 
 std::vector<Complex> realFft(const Eigen::VectorXd& samples) {
-  std::vector<Complex> x(samples.data(), samples.data() + samples.size());
-  transform(x, -1);
-  if (!x.empty()) x.resize(x.size() / 2 + 1);
-  return x;
+  const auto n = static_cast<std::size_t>(samples.size());
+  if (n <= 1) return std::vector<Complex>(samples.data(), samples.data() + samples.size());
+  std::vector<double> in(samples.data(), samples.data() + samples.size());
+  std::vector<Complex> out(n / 2 + 1);
+  fftw_execute_dft_r2c(plans().realPlan(n), in.data(), asFftw(out));
+  return out;
 }
 
 AmplitudeSpectrum amplitudeSpectrum(const Eigen::VectorXd& samples, double sample_interval_s) {

@@ -11,8 +11,8 @@
 namespace maris {
 
 // X_k = Σ_{j=0}^{N−1} x_j·exp(−2πi·jk/N), k = 0 … N−1, unnormalised, for any N ≥ 0.
-// Powers of two use an iterative radix-2 Cooley–Tukey FFT; other lengths Bluestein's chirp-z
-// transform through a power-of-two FFT (O(N log N) for every N). Round-off ~ eps·log2(N)·|x|.
+// Computed by FFTW3 (Frigo & Johnson, Proc. IEEE 93(2), 2005), O(N log N) for every N, round-off
+// ~ eps·log2(N)·|x|. Thread-safe: plans are made once per length under a mutex (spectrum.cpp).
 std::vector<std::complex<double>> fft(std::vector<std::complex<double>> x);
 
 // x_j = (1/N) Σ_k X_k·exp(+2πi·jk/N): the inverse of fft().

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <sstream>
 
 #include <Eigen/Dense>
 
 #include "core/errors.hpp"
+#include "core/least_squares.hpp"
 #include "fiv/fiv_limit_cycle.hpp"
 #include "fiv/fiv_sweep.hpp"
 
@@ -18,12 +21,6 @@ namespace {
 double sigmaOf(const std::optional<double>& sigma, double value) {
   const double s = sigma.value_or(0.05 * std::abs(value));
   return s > 0.0 ? s : 1e-12 + 0.05 * std::abs(value);
-}
-
-double costOf(const std::vector<CalibrationResidual>& r) {
-  double c = 0.0;
-  for (const auto& x : r) c += x.normalised() * x.normalised();
-  return c;
 }
 
 Eigen::VectorXd vectorOf(const std::vector<CalibrationResidual>& r) {
@@ -85,60 +82,56 @@ CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferenceP
     ranges.push_back(schema.find(res.names[i])->range);
     res.initial.push_back(*v);
   }
-  // Levenberg–Marquardt with Marquardt's diagonal scaling.
-  auto residuals = [&](const Eigen::VectorXd& at) {
+  // Levenberg–Marquardt (core/least_squares.hpp) with Marquardt's diagonal scaling; trial points are clamped
+  // to the schema ranges. Forward differences with 2 % steps stay above the limit-cycle convergence noise
+  // (tolerance 1e-3). Every evaluated point's residuals are kept so the accepted one needs no rerun.
+  std::vector<std::pair<Eigen::VectorXd, std::vector<CalibrationResidual>>> evaluated;
+  LeastSquaresProblem problem;
+  problem.residuals = [&](const Eigen::VectorXd& at, Eigen::VectorXd& r) {
+    auto values = calibrationResiduals(withCoefficients(p, res.names, at, ranges), points, context, &res.limit_cycles);
+    r = vectorOf(values);
+    evaluated.emplace_back(at, std::move(values));
+    return true;
+  };
+  problem.trial_point = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& step) {
+    FivParameters trial = withCoefficients(p, res.names, at + step, ranges);
+    Eigen::VectorXd clamped(static_cast<Eigen::Index>(n));  // the clamped values actually tried
+    for (std::size_t i = 0; i < n; ++i) clamped[static_cast<Eigen::Index>(i)] = *coefficientByPath(trial, res.names[i]);
+    return clamped;
+  };
+  LeastSquaresOptions options;
+  options.max_iterations = p.calibration_iterations;
+  options.max_trials = 8;
+  options.initial_damping = 1e-2;
+  options.min_damping = 1e-7;
+  options.max_damping = std::numeric_limits<double>::infinity();
+  options.cost_tolerance = 1e-4;  // a step gaining less than 0.01 % of the cost: stalled, done
+  options.difference_step = 0.02;
+  options.difference_floor = 0.05;
+  options.progress_stage = "calibration";
+  const LeastSquaresReport fit = levenbergMarquardt(problem, x, options, &context);
+  auto residualsAt = [&](const Eigen::VectorXd& at) {
+    for (const auto& [point, values] : evaluated)
+      if (point == at) return values;
     return calibrationResiduals(withCoefficients(p, res.names, at, ranges), points, context, &res.limit_cycles);
   };
-  res.residuals_initial = residuals(x);
-  std::vector<CalibrationResidual> current = res.residuals_initial;
-  double cost = costOf(current), lambda = 1e-2;
-  res.cost_initial = cost;
+  res.residuals_initial = evaluated.front().second;
+  res.cost_initial = fit.initial_cost;
+  res.iterations = fit.iterations;
+  res.converged = fit.converged;
+  res.stop_reason = describe(fit.stop);
+  x = fit.x;
+  const std::vector<CalibrationResidual> current = residualsAt(x);
+  const double cost = fit.cost;
+  const Eigen::MatrixXd& jac = fit.jacobian;
   const auto m = static_cast<Eigen::Index>(current.size());
-  Eigen::MatrixXd jac(m, static_cast<Eigen::Index>(n));
-  for (int it = 0; it < p.calibration_iterations; ++it) {
-    res.iterations = it + 1;
-    context.progress(static_cast<double>(it) / p.calibration_iterations, "calibration");
-    // Forward differences; 2 % steps stay above the limit-cycle convergence noise (tolerance 1e-3).
-    const Eigen::VectorXd r0 = vectorOf(current);
-    for (std::size_t j = 0; j < n; ++j) {
-      Eigen::VectorXd xp = x;
-      const double h = 0.02 * std::max(std::abs(x[static_cast<Eigen::Index>(j)]), 0.05);
-      xp[static_cast<Eigen::Index>(j)] += h;
-      jac.col(static_cast<Eigen::Index>(j)) = (vectorOf(residuals(xp)) - r0) / h;
-    }
-    const Eigen::MatrixXd jtj = jac.transpose() * jac;
-    const Eigen::VectorXd grad = jac.transpose() * r0;
-    bool improved = false;
-    for (int tries = 0; tries < 8 && !improved; ++tries) {
-      Eigen::MatrixXd a = jtj;
-      a.diagonal() += lambda * jtj.diagonal().cwiseMax(1e-12);
-      const Eigen::VectorXd step = a.ldlt().solve(-grad);
-      FivParameters trial_p = withCoefficients(p, res.names, x + step, ranges);
-      Eigen::VectorXd trial_x(static_cast<Eigen::Index>(n));  // the clamped values actually tried
-      for (std::size_t i = 0; i < n; ++i) trial_x[static_cast<Eigen::Index>(i)] = *coefficientByPath(trial_p, res.names[i]);
-      auto trial = calibrationResiduals(trial_p, points, context, &res.limit_cycles);
-      const double trial_cost = costOf(trial);
-      if (trial_cost < cost) {
-        improved = true;
-        const double gain = (cost - trial_cost) / std::max(cost, 1e-300);
-        x = trial_x;
-        current = std::move(trial);
-        cost = trial_cost;
-        lambda = std::max(lambda / 3.0, 1e-7);
-        if (gain < 1e-4) it = p.calibration_iterations;  // stalled: done
-      } else {
-        lambda *= 4.0;
-      }
-    }
-    if (!improved) break;
-  }
   res.parameters = withCoefficients(p, res.names, x, ranges);
   res.residuals = current;
   res.cost = cost;
   for (std::size_t i = 0; i < n; ++i) res.fitted.push_back(x[static_cast<Eigen::Index>(i)]);
   // Standard errors from the last Jacobian: cov = s² (JᵀJ)⁻¹, s² = cost/(m − n).
   res.standard_error.assign(n, 0.0);
-  if (m > static_cast<Eigen::Index>(n)) {
+  if (m > static_cast<Eigen::Index>(n) && jac.rows() == m) {
     const Eigen::MatrixXd cov = (jac.transpose() * jac).completeOrthogonalDecomposition().pseudoInverse() *
                                 (cost / static_cast<double>(m - static_cast<Eigen::Index>(n)));
     for (std::size_t i = 0; i < n; ++i)
@@ -158,6 +151,12 @@ void addCalibrationResults(Results& results, const CalibrationResult& cal) {
   }
   results.addScalar("calibration_cost_initial", cal.cost_initial, "-", "Σ((model − reference)/σ)² before the fit");
   results.addScalar("calibration_cost", cal.cost, "-", "Σ((model − reference)/σ)² after the fit");
+  results.addScalar("calibration_iterations", cal.iterations, "-",
+                    "Levenberg–Marquardt iterations; " + std::string(cal.converged ? "converged" : "not converged") +
+                        " (" + cal.stop_reason + ")");
+  if (!cal.converged)
+    results.warnings.push_back("calibration did not converge (" + cal.stop_reason + " after " +
+                               std::to_string(cal.iterations) + " iterations): the fitted values are the best found");
   results.addScalar("calibration_rms_residual", std::sqrt(cal.cost / std::max<std::size_t>(1, cal.residuals.size())),
                     "-", "RMS of the normalised residuals after the fit");
   results.warnings.push_back(note.str());

@@ -32,7 +32,9 @@ struct CalibrationResult {
   std::vector<double> standard_error;     // from (JᵀJ)⁻¹ scaled by the residual variance (0 if m <= n)
   std::vector<CalibrationResidual> residuals_initial, residuals;  // before and after
   double cost_initial = 0.0, cost = 0.0;  // Σ normalised residual²
-  int iterations = 0;
+  int iterations = 0;                     // Levenberg–Marquardt iterations (Jacobian evaluations)
+  bool converged = false;                 // the last step gained less than 0.01 % of the cost
+  std::string stop_reason;                // why the fit stopped (core/least_squares.hpp describe())
   long limit_cycles = 0;                  // simulations run
 };
 

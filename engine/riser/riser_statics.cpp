@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
 
 #include "core/errors.hpp"
+#include "core/least_squares.hpp"
 #include "core/text_format.hpp"
 #include "riser/riser_dynamics.hpp"
 #include "riser/riser_joint_newton.hpp"
@@ -172,22 +172,31 @@ bool newton(StaticProblem& problem, Configuration& x, double lambda, int& iterat
         break;
       }
     }
-    // A failed or heavily shortened Newton step (soft, nearly singular modes of slack cables): try
-    // Levenberg-Marquardt steps (JᵀJ + μI) du = -Jᵀr, which descend for μ large enough, keep the best.
+    // A failed or heavily shortened Newton step (soft, nearly singular modes of slack cables): one
+    // Levenberg–Marquardt iteration (core/least_squares.hpp) in the increments du from x, damping
+    // (JᵀJ + μ·max diag(JᵀJ)·I) du = −Jᵀr with μ = 1e-10 … 1e5 rising tenfold until the residual falls.
     if (accepted_length < 0.25) {
-      const Eigen::MatrixXd normal = jac.transpose() * jac;
-      const Eigen::VectorXd gradient = jac.transpose() * r;
-      const double top = normal.diagonal().maxCoeff();
-      for (double mu = 1e-10 * top; mu < 1e6 * top; mu *= 10) {
-        const Eigen::VectorXd step = (normal + mu * Eigen::MatrixXd::Identity(n, n)).ldlt().solve(-gradient);
-        Configuration trial = problem.update(x, step);
-        Eigen::VectorXd rt = problem.residual(trial, lambda);
-        if (rt.allFinite() && rt.norm() < (accepted ? r.norm() : merit)) {
-          x = std::move(trial);
-          r = std::move(rt);
-          accepted = true;
-          break;
-        }
+      LeastSquaresProblem descent;
+      descent.residuals = [&](const Eigen::VectorXd& du, Eigen::VectorXd& rt) {
+        rt = du.isZero(0.0) ? r : problem.residual(problem.update(x, du), lambda);
+        return true;
+      };
+      descent.jacobian = [&](const Eigen::VectorXd&, const Eigen::VectorXd&, Eigen::MatrixXd& j) {
+        j = jac;
+        return true;
+      };
+      LeastSquaresOptions options;
+      options.max_iterations = 1;
+      options.damping = LeastSquaresDamping::Levenberg;
+      options.initial_damping = 1e-10;
+      options.damping_increase = 10.0;
+      options.max_damping = 5e5;  // the last μ tried is 1e5
+      options.step_tolerance = 0.0;
+      const LeastSquaresReport step = levenbergMarquardt(descent, Eigen::VectorXd::Zero(n), options);
+      if (step.accepted_steps > 0) {
+        x = problem.update(x, step.x);
+        r = step.residuals;
+        accepted = true;
       }
     }
     if (!accepted) {

@@ -34,6 +34,7 @@ Table featureTable(const TetherParameters& p, const SimulationOutput& sim) {
   t.add("a_measured", "-", column(sim, [](const TickRecord& r) { return r.measured.a; }));
   t.add("b_measured", "-", column(sim, [](const TickRecord& r) { return r.measured.b; }));
   t.add("vision_held", "-", column(sim, [](const TickRecord& r) { return r.vision_held ? 1.0 : 0.0; }));
+  t.add("vision_fit_converged", "-", column(sim, [](const TickRecord& r) { return r.vision_converged ? 1.0 : 0.0; }));
   t.add("visible_points", "-", column(sim, [](const TickRecord& r) { return double(r.visible_points); }));
   t.add("error_norm", "-", column(sim, [](const TickRecord& r) { return std::max(r.error.norm(), 1e-16); }));
   t.add("sag", "m", column(sim, [](const TickRecord& r) { return r.sag; }));

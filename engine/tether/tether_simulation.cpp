@@ -134,6 +134,7 @@ SimulationOutput simulateTether(const TetherParameters& p, RunContext& context) 
       rec.measured.a = estimate.a;
       rec.measured.b = estimate.b;
       rec.vision_held = estimate.held;
+      rec.vision_converged = !estimate.held && estimate.converged;
       rec.visible_points = static_cast<int>(image.size());
     }
     const Features model = withModelError(p, rec.measured);

@@ -20,6 +20,7 @@ struct TickRecord {
   Features features;                  // true features of the catenary at the tick
   Features measured;                  // what the controller sees (estimated a, b when vision is on)
   bool vision_held = false;           // the estimator held its previous estimate (degenerate or empty view)
+  bool vision_converged = false;      // the shape fit met its tolerance (false when held or stopped early)
   int visible_points = 0;             // tether points inside the camera's field of view
   Vector4 error = Vector4::Zero();    // [-] s - s* (b1 entry 0 for the 3-feature law)
   Vector4 command = Vector4::Zero();  // follower body twist (m/s, rad/s) from the servo

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
+#include "core/least_squares.hpp"
 #include "tether/tether_cable.hpp"
 
 namespace maris::tether {
@@ -76,49 +76,45 @@ bool insideBox(const TetherRig& rig, double a, double b, double rise, double mar
   return std::abs(b) + margin < 0.99;
 }
 
-// Damped Gauss-Newton on (a, b) from `est`; iterates stay in the feasible box by step halving.
-ShapeEstimate levenbergMarquardt(const TetherRig& rig, const Eigen::Vector3d& p2c, double rise,
-                                 const std::vector<ImagePoint>& image, ShapeEstimate est) {
-  Eigen::VectorXd r;
-  Eigen::MatrixXd jac;
-  int used = residuals(rig, p2c, rise, image, est.a, est.b, r, &jac);
-  est.points_used = used;
-  if (used < kMinPoints) return est;
-  double cost = r.squaredNorm() / used;
-  double mu = 1e-3;
-  for (est.iterations = 1; est.iterations <= kMaxIterations; ++est.iterations) {
-    const Eigen::Matrix2d normal = jac.transpose() * jac;
-    const Eigen::Vector2d gradient = jac.transpose() * r;
-    Eigen::Matrix2d damped = normal;
-    damped.diagonal() *= 1.0 + mu;
-    Eigen::Vector2d step = -damped.ldlt().solve(gradient);
-    double factor = 1.0;
-    while (!insideBox(rig, est.a + factor * step[0], est.b + factor * step[1], rise, kDerivativeStep) &&
-           factor > 1e-6)
-      factor *= 0.5;
-    step *= factor;
-    Eigen::VectorXd r_new;
-    Eigen::MatrixXd jac_new;
-    const int used_new = residuals(rig, p2c, rise, image, est.a + step[0], est.b + step[1], r_new, &jac_new);
-    const double cost_new = used_new >= kMinPoints ? r_new.squaredNorm() / used_new : 1e300;
-    if (cost_new < cost) {
-      est.a += step[0];
-      est.b += step[1];
-      const bool converged = cost - cost_new <= 1e-14 * cost || step.norm() < 1e-11;
-      r = std::move(r_new);
-      jac = std::move(jac_new);
-      used = used_new;
-      cost = cost_new;
-      mu = std::max(mu / 3.0, 1e-12);
-      if (converged) break;
-    } else {
-      mu *= 4.0;
-      if (mu > 1e8 || step.norm() < 1e-12) break;
+// Levenberg–Marquardt (core/least_squares.hpp) on (a, b) from `est`, with the Jacobian by central differences;
+// trial points stay in the feasible box by step halving. A point whose difference stencil leaves the model's
+// shapes counts as undefined, so the Jacobian is formed with every residual and kept for the accepted point.
+ShapeEstimate fitShape(const TetherRig& rig, const Eigen::Vector3d& p2c, double rise,
+                       const std::vector<ImagePoint>& image, ShapeEstimate est) {
+  Eigen::Vector2d jac_at(NAN, NAN);
+  Eigen::MatrixXd jac_there;
+  LeastSquaresProblem problem;
+  problem.residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    jac_at = x;
+    const bool defined = residuals(rig, p2c, rise, image, x[0], x[1], r, &jac_there) >= kMinPoints;
+    if (!defined) jac_at.setConstant(NAN);
+    return defined;
+  };
+  problem.jacobian = [&](const Eigen::VectorXd& x, const Eigen::VectorXd&, Eigen::MatrixXd& jac) {
+    Eigen::VectorXd r;
+    if (x == Eigen::VectorXd(jac_at)) {
+      jac = jac_there;
+      return true;
     }
-  }
-  est.iterations = std::min(est.iterations, kMaxIterations);
-  est.points_used = used;
-  est.rms_residual = std::sqrt(cost);
+    return residuals(rig, p2c, rise, image, x[0], x[1], r, &jac) >= kMinPoints;
+  };
+  problem.trial_point = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
+    double factor = 1.0;
+    while (!insideBox(rig, x[0] + factor * step[0], x[1] + factor * step[1], rise, kDerivativeStep) && factor > 1e-6)
+      factor *= 0.5;
+    return Eigen::VectorXd(x + factor * step);
+  };
+  LeastSquaresOptions options;
+  options.max_iterations = kMaxIterations;
+  options.initial_damping = 1e-3;
+  const LeastSquaresReport fit = levenbergMarquardt(problem, Eigen::Vector2d(est.a, est.b), options);
+  est.points_used = fit.stop == LeastSquaresStop::InvalidStart ? 0 : static_cast<int>(fit.residuals.size());
+  if (est.points_used < kMinPoints) return est;
+  est.a = fit.x[0];
+  est.b = fit.x[1];
+  est.iterations = fit.iterations;
+  est.converged = fit.converged;
+  est.rms_residual = std::sqrt(fit.cost / est.points_used);
   return est;
 }
 
@@ -184,7 +180,7 @@ ShapeEstimate estimateShape(const TetherRig& rig, const CameraModel& camera, con
   est.held = false;
   if (!insideBox(rig, est.a, est.b, rise, kDerivativeStep))
     est.a = 0.5 * (0.5 * (rig.length - rise) + std::max(0.0, -rise)) / rig.sag_max;
-  est = levenbergMarquardt(rig, p2c, rise, image, est);
+  est = fitShape(rig, p2c, rise, image, est);
   // A poor fit (the paper starts from the lowest detected point; we have no image processing) is retried from the
   // best point of a coarse grid over the feasible box: the cost has local minima near b = 0, where the tether
   // plane passes close to the camera and the curve collapses to a vertical segment.
@@ -203,7 +199,7 @@ ShapeEstimate estimateShape(const TetherRig& rig, const CameraModel& camera, con
           best.b = b;
         }
       }
-    const ShapeEstimate retry = levenbergMarquardt(rig, p2c, rise, image, best);
+    const ShapeEstimate retry = fitShape(rig, p2c, rise, image, best);
     if (retry.points_used >= kMinPoints && (est.points_used < kMinPoints || retry.rms_residual < est.rms_residual))
       est = retry;
   }

@@ -46,7 +46,8 @@ bool modelOrdinate(const TetherRig& rig, const Eigen::Vector3d& p2_camera, doubl
 struct ShapeEstimate {
   double a = 0.0, b = 0.0;  // [-] fitted features
   bool held = false;        // degenerate view or too few points: the previous estimate is returned
-  int iterations = 0;
+  int iterations = 0;       // Levenberg–Marquardt iterations (Jacobian evaluations) of the fit kept
+  bool converged = false;   // the fit met its cost or step tolerance (false: stopped without descent or at 50)
   int points_used = 0;
   double rms_residual = 0.0;  // [-] image units
 };

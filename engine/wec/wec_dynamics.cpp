@@ -311,10 +311,4 @@ void WecDynamics::advanceHistory(const Eigen::VectorXd& y) {
   }
 }
 
-std::vector<int> WecDynamics::thetaIndices() const {
-  std::vector<int> idx;
-  for (const auto& s : systems_) idx.push_back(s.offset + (o_.augmented ? 2 : 0));
-  return idx;
-}
-
 }  // namespace maris::wec

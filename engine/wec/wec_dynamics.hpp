@@ -67,7 +67,6 @@ class WecDynamics {
   void velocities(const Eigen::VectorXd& y, Eigen::VectorXd& v) const;
 
   long evaluations() const { return evaluations_; }
-  std::vector<int> thetaIndices() const;
   const std::vector<FloatSystem>& floats() const { return systems_; }
   const std::vector<MemoryChannel>& channels() const { return channels_; }
   const TimeDomainOptions& options() const { return o_; }

@@ -263,6 +263,9 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   res.stats.rhs_evaluations = main.rhs_evaluations;
   res.stats.error_estimate = main.error_estimate;
   res.stats.error_unit = "rad (theta, sum of embedded RK4 local-error estimates)";
+  if (!(base.augmented && base.newmark))
+    res.addScalar("error_estimate_relative", main.relative_error_estimate, "-",
+                  "Shared RK4's own estimate (core/ode.hpp): sum of embedded local errors over all states / max |state|");
   if (both) {
     TimeDomainOptions aug = base;
     aug.augmented = true;

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "core/errors.hpp"
+#include "core/ode.hpp"
 #include "wec/wec_dynamics.hpp"
 #include "wec/wec_frequency.hpp"
 
@@ -71,49 +72,64 @@ TimeDomainResult simulateTimeDomain(const WecModel& model, const WaveField& wave
              " s, radiation " + (o.state_space ? "state-space" : "direct convolution");
   const double h = o.time_step;
   const long n_steps = std::lround(o.duration / h);
-  Eigen::VectorXd y = sim.initialState(), k1(sim.size()), k2(sim.size()), k3(sim.size()), k4(sim.size()), tmp(sim.size());
+  Eigen::VectorXd y = sim.initialState();
   std::vector<FloatLoads> loads(nf);
   HistoryRecorder recorder(r, nf);
   sim.advanceHistory(y);
 
-  const std::vector<int> theta_index = sim.thetaIndices();
-  for (long n = 0;; ++n) {
-    const double t = h * static_cast<double>(n);
-    sim.rhs(t, 0.0, y, k1, &loads);
-    // Local error of the previous step from the embedded companion (k1 here is that step's k5).
-    if (n > 0) {
+  // The shared RK4 (core/ode.hpp). The step's start time gives the direct memory its position inside the
+  // step; the evaluation at a step point (the first stage, FSAL) also fills the loads that are recorded.
+  // The error estimate of θ [rad] compares the last stage (k4, at the step's end) with the end slope k5 (the
+  // next step's first stage) on the θ components: h |k4 − k5| / 6, the shared estimator restricted to θ.
+  double step_start = 0.0;
+  std::vector<Eigen::Index> theta_index;
+  for (const auto& f : sim.floats()) theta_index.push_back(f.offset + (o.augmented ? 2 : 0));
+  Eigen::VectorXd k4_theta(static_cast<Eigen::Index>(nf));
+  bool have_k4 = false;
+  const OdeRhs rhs = [&](double t, const Eigen::VectorXd& state, Eigen::VectorXd& dy) {
+    const double frac = std::clamp((t - step_start) / h, 0.0, 1.0);
+    sim.rhs(t, frac, state, dy, frac == 0.0 ? &loads : nullptr);
+    if (frac > 1.0 - 1e-9) {
+      for (std::size_t i = 0; i < nf; ++i) k4_theta[static_cast<Eigen::Index>(i)] = dy[theta_index[i]];
+      have_k4 = true;
+    } else if (frac == 0.0 && have_k4) {
       double local = 0.0;
-      for (int i : theta_index) local = std::max(local, std::abs(k4[i] - k1[i]));
+      for (std::size_t i = 0; i < nf; ++i)
+        local = std::max(local, std::abs(k4_theta[static_cast<Eigen::Index>(i)] - dy[theta_index[i]]));
       r.error_estimate += h / 6.0 * local;
+      have_k4 = false;
     }
+  };
+  OdeOptions ode;
+  ode.t1 = h * static_cast<double>(n_steps);
+  ode.step = h;
+  ode.state_name = [&](Eigen::Index k) {
+    std::string what = "state " + std::to_string(k);
+    if (h > r.stability_step)
+      what += " (time step above the estimated RK4 stability limit " + std::to_string(r.stability_step) + " s)";
+    return what;
+  };
+  // After each step: projection onto the hinge constraints (augmented), then the velocity history (direct).
+  ode.after_step = [&](double t, Eigen::VectorXd& state) {
+    if (o.augmented) sim.project(state, r.max_position_drift, r.max_velocity_drift);
+    if (state.allFinite()) sim.advanceHistory(state);
+    step_start = t;
+  };
+  long n = 0;
+  const OdeObserver record = [&](double t, const Eigen::VectorXd&) {
     recorder.accumulate(loads, n > 0 ? h : 0.0);
     if (n % o.output_stride == 0 || n == n_steps) {
       recorder.record(t, waves.elevation(0.0, t), loads);
       if (observe && context && n < n_steps && context->wantsPartialResults()) observe(r);
     }
-    if (n == n_steps) break;
-    // One RK4 step.
-    tmp = y + 0.5 * h * k1;
-    sim.rhs(t + 0.5 * h, 0.5, tmp, k2, nullptr);
-    tmp = y + 0.5 * h * k2;
-    sim.rhs(t + 0.5 * h, 0.5, tmp, k3, nullptr);
-    tmp = y + h * k3;
-    sim.rhs(t + h, 1.0, tmp, k4, nullptr);
-    y += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-    if (o.augmented) sim.project(y, r.max_position_drift, r.max_velocity_drift);
-    throwIfNotFinite(y, t + h, n + 1, [&](Eigen::Index k) {
-      std::string what = "state " + std::to_string(k);
-      if (h > r.stability_step) what += " (time step above the estimated RK4 stability limit " +
-                                        std::to_string(r.stability_step) + " s)";
-      return what;
-    });
-    sim.advanceHistory(y);
-    if (context && n % 64 == 0) {
-      context->throwIfCancelled();
-      context->progress(static_cast<double>(n) / static_cast<double>(n_steps), "time integration");
-    }
-  }
-  r.steps = n_steps;
+    ++n;
+  };
+  Eigen::VectorXd initial_slope(sim.size());
+  sim.rhs(0.0, 0.0, y, initial_slope, &loads);  // the loads at t = 0 (the observer sees t0 before any stage)
+  RunContext quiet;
+  const OdeStats stats = integrateRk4(rhs, y, ode, context ? *context : quiet, record);
+  r.steps = stats.steps;
+  r.relative_error_estimate = stats.error_estimate;
   r.rhs_evaluations = sim.evaluations();
   return r;
 }

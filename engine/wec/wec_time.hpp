@@ -10,12 +10,12 @@
 //   [M C_qᵀ; C_q 0][q̈; λ] = [Q; Q_c − 2αĊ − α²C], solved by a 2×2 Schur complement;
 //   the multipliers λ are the hinge reaction on the structure.
 //
-// Integrator: classical fourth-order Runge–Kutta with a fixed step, written here rather than taken from
-// engine/core because the augmented formulation projects (x, z, ẋ, ż) back onto the constraints after
-// every step (recording the drift it removes) and the direct convolution advances its velocity history
-// once per completed step. The radiation memory is a modal state-space system integrated with the
-// mechanics (ẇ = p w + u̇), or direct trapezoidal convolution over the stored velocity history with
-// the memory force extrapolated linearly across each step (second order).
+// Integrator: the shared fixed-step RK4 (core/ode.hpp integrateRk4). Its after_step hook projects the
+// augmented formulation's (x, z, ẋ, ż) back onto the constraints after every step (recording the drift it
+// removes) and advances the direct convolution's velocity history once per completed step. The radiation
+// memory is a modal state-space system integrated with the mechanics (ẇ = p w + u̇), or direct trapezoidal
+// convolution over the stored velocity history with the memory force extrapolated linearly across each step
+// (second order).
 // The augmented formulation can instead use the paper's own scheme (options.newmark; wec_newmark.cpp): explicit
 // Newmark-β (β = 0, γ = ½) on θ with an inner Newton–Raphson loop on the position constraints, which satisfies
 // the constraints at position, velocity and acceleration level with no drift.
@@ -64,9 +64,11 @@ struct TimeDomainResult {
   double max_position_drift = 0.0;         // [m] max |C| over the run (before projection)
   double max_velocity_drift = 0.0;         // [m/s] max |C_q q̇|
   double stability_step = 0.0;             // [s] estimated stability limit of the integrator (fastest mode)
-  // [rad] Σ over steps of the local error of θ from the embedded 3rd-order companion, h|k4 − k5|/6 with
-  // k5 = the next step's k1 (as in core/ode.hpp); an over-estimate of RK4's global error.
+  // [rad] RK4: Σ over steps of the local error of θ from the embedded 3rd-order companion, h|k4 − k5|/6 with
+  // k5 = the next step's k1 (core/ode.hpp's estimator on the θ components only); an over-estimate of RK4's
+  // global error. Newmark: Σ h²/6 |Δθ̈| (wec_newmark.cpp).
   double error_estimate = 0.0;
+  double relative_error_estimate = 0.0;    // [-] RK4: OdeStats::error_estimate of the shared integrator (all states)
   int max_newton_iterations = 0;           // Newmark: most position (Newton–Raphson) iterations in one step
   int max_velocity_iterations = 0;         // Newmark: most velocity fixed-point iterations in one step
   long steps = 0;
