@@ -168,7 +168,10 @@ void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, Seg
   loads.power_drag = loads.power_damping = loads.power_point = loads.power_flow = 0.0;
   addSpringMoments(m, pose, loads);
   if (m.gravity > 0) addGravityAndBuoyancy(m, pose, factor, loads);
-  addDrag(m, pose, factor, loads);
+  if (m.sea)
+    addMorisonInWaves(m, pose, factor, loads);
+  else
+    addDrag(m, pose, factor, loads);
   if (!m.point_loads.empty()) addPointLoads(m, pose, factor, loads);
   if (m.flow_speed != 0.0) addInternalFlow(m, pose, loads);
   if (m.bottom == BottomCondition::Spring) addBottomSpring(m, pose, loads);

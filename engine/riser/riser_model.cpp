@@ -195,6 +195,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     g.normal_drag = 0.5 * p.water_density * sec.outer_diameter * sec.normal_drag_coefficient;
     g.tangential_drag = 0.5 * p.water_density * sec.outer_diameter * sec.tangential_drag_coefficient;
     g.fluid_mass_per_length = contents;
+    g.fluid_inertia_per_length = p.water_density * (1.0 + sec.added_mass_coefficient) * a_out;
     m.segments.push_back(g);
   }
   // Joints: stiffness of the primary element they represent, C = (GJ, EI, EI)/Δ (rigid-FE rule; the paper prints none).
@@ -209,6 +210,8 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     j.damping = p.stiffness_damping * j.stiffness;
     j.bending_modulus = kPi / 32 * i4 / sec.outer_diameter;
     j.torsion_modulus = kPi / 16 * i4 / sec.outer_diameter;
+    j.wall_area = kPi / 4 * (sec.outer_diameter * sec.outer_diameter - sec.inner_diameter * sec.inner_diameter);
+    j.wall_thickness = 0.5 * (sec.outer_diameter - sec.inner_diameter);
   }
   // Boundary conditions and loads.
   const auto& tc = p.top_condition;
@@ -236,6 +239,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   m.current_seabed = p.current_speed_seabed;
   m.current_direction = p.current_direction;
   m.point_loads = p.point_loads;
+  m.sea = buildRiserSea(p);
 
   // Initial shape: joint positions, then frames by parallel transport of the tangents.
   std::vector<double> s(m.n + 2);

@@ -15,6 +15,7 @@
 //   are singular only at a 90° bend between neighbouring segments.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include <Eigen/Geometry>
 
 #include "riser/riser_parameters.hpp"
+#include "riser/riser_waves.hpp"
 
 namespace maris::riser {
 
@@ -54,6 +56,7 @@ struct Segment {
   double normal_drag = 0.0;         // [kg/m²] ½ ρ_w D_out D_yz
   double tangential_drag = 0.0;     // [kg/m²] ½ ρ_w D_out D_x
   double fluid_mass_per_length = 0.0;  // [kg/m] ρ_f A_inn of the contents (internal flow, eq 46)
+  double fluid_inertia_per_length = 0.0;  // [kg/m] ρ_w A_out (1 + C_a): Morison inertia on the wave acceleration
 };
 
 // One spring-damping element between segments i-1 and i (i = 1..n).
@@ -62,6 +65,8 @@ struct Joint {
   Vec3 damping = Vec3::Zero();    // [N·m·s/rad] β·C
   double bending_modulus = 0.0;   // [m³] w_B = π(D_out⁴ - D_inn⁴)/(32 D_out)
   double torsion_modulus = 0.0;   // [m³] w_T = π(D_out⁴ - D_inn⁴)/(16 D_out)
+  double wall_area = 0.0;         // [m²] π(D_out² - D_inn²)/4 (tension stress, fatigue)
+  double wall_thickness = 0.0;    // [m] (D_out - D_inn)/2 (S-N thickness correction)
 };
 
 // Prescribed top position, velocity and acceleration at one time.
@@ -109,6 +114,7 @@ struct RiserModel {
   double flow_speed = 0.0;                     // [m/s] u of the internal flow (eqs 43-52)
   double current_surface = 0.0, current_seabed = 0.0, current_direction = 0.0;  // [m/s], [m/s], [rad]
   std::vector<PointLoadRow> point_loads;
+  std::shared_ptr<const RiserSea> sea;                  // waves (riser_waves.hpp); null: none
   std::vector<Eigen::Quaterniond> initial_orientation;  // n+1 segment orientations R_GS of the initial shape
   Vec3 initial_top = Vec3::Zero();                      // [m] top position of the initial shape
 

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "riser/riser_fatigue.hpp"
+#include "riser/riser_waves.hpp"
+
 namespace maris::riser {
 namespace {
 
@@ -118,6 +121,8 @@ SchemaBinder<P> makeBinder() {
          "Initial direction from the top, measured from straight down (free or spring bottom)");
   b.real("initial.azimuth", &P::initial_azimuth, "rad", Range::closed(-7, 7), "Heading of the initial direction");
   b.boolean("initial.solve_statics", &P::solve_statics, "Start from static equilibrium");
+  bindWaveParameters(b);
+  bindFatigueParameters(b);
   b.table("point_loads", &P::point_loads, pointLoadBinder(), 0, 1000, "Forces and moments at nodes (box pulses)");
   b.real("solver.end_time", &P::end_time, "s", Range::nonNegative(1e6), "Simulated time");
   b.real("solver.time_step", &P::time_step, "s", Range::nonNegative(10.0),
@@ -236,6 +241,10 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
                    "must be a whole number in [2, 1000]"});
   if (!p.convergence_segment_counts.empty() && p.end_time <= 0)
     e.push_back({"solver.end_time", num(p.end_time), "a stress convergence study repeats the time history: must be > 0"});
+  checkWaveParameters(p, e);
+  if (p.fatigue_enabled && p.fatigue_start_time >= p.end_time)
+    e.push_back({"fatigue.start_time", num(p.fatigue_start_time),
+                 "must be before solver.end_time = " + num(p.end_time) + " (no cycles would be counted)"});
   if ((!p.sweep_pretension_ratios.empty() || !p.sweep_segment_counts.empty()) && !p.solve_statics)
     e.push_back({"initial.solve_statics", "false", "frequency sweeps linearise about the static state: must be true"});
   // Each convergence row is a whole run at its n: fields that depend on n (point load nodes, both ends clamped) must
@@ -265,6 +274,14 @@ std::vector<std::string> upgradeRiserParameters(Json& parameters) {
   if (parameters.is_object() && !parameters.contains("stress_convergence")) {
     parameters["stress_convergence"] = riserBinder().write(RiserParameters{})["stress_convergence"];
     notes.push_back("stress_convergence added without a study (new in the riser schema; save the scenario to keep it)");
+  }
+  if (parameters.is_object() && !parameters.contains("fatigue")) {
+    parameters["fatigue"] = riserBinder().write(RiserParameters{})["fatigue"];
+    notes.push_back("fatigue added, off (new in the riser schema; save the scenario to keep it)");
+  }
+  if (parameters.is_object() && !parameters.contains("waves")) {
+    parameters["waves"] = riserBinder().write(RiserParameters{})["waves"];
+    notes.push_back("waves added as none (new in the riser schema; save the scenario to keep it)");
   }
   auto output = parameters.find("output");
   if (output == parameters.end() || !output->is_object()) return notes;

@@ -52,6 +52,12 @@ struct ProbeRow {
   double arc_length = 50.0;  // [m] arc length from the top (0 = top end, L = bottom end)
 };
 
+// One row of a user wave spectrum (waves.type = spectrum_table): S(ω), linear between rows, zero outside.
+struct WaveSpectrumRow {
+  double omega = 0.5;    // [rad/s]
+  double density = 0.0;  // [m^2*s/rad] one-sided S(ω)
+};
+
 struct RiserParameters {
   // geometry
   double length = 100.0;   // [m] unstretched length L
@@ -107,6 +113,29 @@ struct RiserParameters {
   double initial_inclination = 0.0;  // [rad] first direction from the top, from straight down (π/2 = horizontal)
   double initial_azimuth = 0.0;      // [rad] heading of that direction in the xy-plane
   bool solve_statics = true;         // start from static equilibrium (top at its mean position, current on)
+  // waves (riser_waves.hpp; bound there): linear waves from the still-water level over depth water_level − seabed_level
+  std::string wave_type = "none";          // none | airy | jonswap | pierson_moskowitz | spectrum_table
+  double wave_height = 2.0;                // [m] airy: crest-to-trough height H
+  double wave_period = 10.0;               // [s] airy: period T
+  double wave_phase_deg = 0.0;             // [deg] airy: phase (η = H/2 cos(phase) at x = y = 0, t = 0)
+  double wave_significant_height = 4.0;    // [m] jonswap, pierson_moskowitz: Hs
+  double wave_peak_period = 10.0;          // [s] jonswap, pierson_moskowitz: Tp
+  double wave_peak_enhancement = 3.3;      // [-] jonswap: γ
+  std::vector<WaveSpectrumRow> wave_spectrum_table;  // spectrum_table: (ω, S) rows
+  int wave_component_count = 200;          // [-] irregular seas: number of components
+  std::string wave_discretisation = "random_frequency";  // random_frequency | equal_energy
+  int wave_seed = 1;                       // [-] irregular seas: phases (and frequencies) from mt19937_64(seed)
+  double wave_direction_deg = 0.0;         // [deg] direction the waves travel towards, from +x towards +y
+  std::string wave_stretching = "wheeler"; // wheeler | vertical: kinematics up to the instantaneous surface
+  double wave_ramp_time = 20.0;            // [s] half-cosine start of the waves (> 0: statics sees calm water)
+  double wave_elevation_x = 0.0;           // [m] where the wave_elevation history is recorded
+  double wave_elevation_y = 0.0;           // [m]
+  // fatigue at the joints (riser_fatigue.hpp; bound there)
+  bool fatigue_enabled = false;                  // rainflow + Miner at 8 points around every joint
+  std::string fatigue_sn_curve = "F1";           // DNVGL-RP-C203 (2016) curve name
+  std::string fatigue_environment = "seawater_cathodic_protection";  // air | seawater_cathodic_protection
+  double fatigue_stress_concentration_factor = 1.0;  // [-] SCF on the nominal stress
+  double fatigue_start_time = 0.0;               // [s] count cycles from here on (skip start-up transients)
   // loads
   std::vector<PointLoadRow> point_loads;  // forces and moments at nodes
   // solver

@@ -78,6 +78,25 @@ RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, 
   return p;
 }
 
+namespace {
+// The sea surface z = water_level + η(x, y, t) on a 25 × 25 grid over a square of half-width `half` about the top.
+Shape3D seaSurface(const RiserSea& sea, const Vec3& centre, double half, double t) {
+  Shape3D s;
+  s.kind = Shape3D::Kind::Surface;
+  s.name = "sea surface";
+  s.grid_u = s.grid_v = 25;
+  for (int v = 0; v < s.grid_v; ++v)
+    for (int u = 0; u < s.grid_u; ++u) {
+      const double x = centre.x() + half * (2.0 * u / (s.grid_u - 1) - 1.0);
+      const double y = centre.y() + half * (2.0 * v / (s.grid_v - 1) - 1.0);
+      s.points.emplace_back(x, y, sea.water_level + sea.elevation(x, y, t));
+    }
+  s.color = Vec3(0.2, 0.45, 0.75);
+  s.opacity = 0.45;
+  return s;
+}
+}  // namespace
+
 // The time-history plots (shared by the final and the partial results, so live plots keep their tabs).
 void RiserRecorder::addHistoryPlots(Results& out) const {
   for (std::size_t k = 0; k < probes_.size(); ++k)
@@ -93,6 +112,7 @@ void RiserRecorder::addHistoryPlots(Results& out) const {
   for (std::size_t k = 0; k < probes_.size(); ++k) stresses.push_back(probeColumn(k, "bending_stress"));
   for (std::size_t k = 0; k < probes_.size(); ++k) stresses.push_back(probeColumn(k, "torsional_stress"));
   out.plots.push_back(makePlot("probe_stress", "Stress at the probes", "history", "time", stresses));
+  if (m_.sea) out.plots.push_back(makePlot("wave_elevation", "Wave elevation", "history", "time", {"wave_elevation"}));
 }
 
 // probe_max_displacement (first probe, kept for scripts), probe2_max_displacement, ...
@@ -128,6 +148,15 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
     for (const char* c : {"dx", "dy", "dz"}) history_.add(probeColumn(k, c), "m");
     for (const char* c : {"bending_stress", "torsional_stress"}) history_.add(probeColumn(k, c), "Pa");
   }
+  if (m_.sea) history_.add("wave_elevation", "m");  // η at (waves.elevation_x, waves.elevation_y)
+  if (parameters.fatigue_enabled)
+    for (int k = 1; k <= m_.n; ++k) {
+      JointStressSeries s;
+      s.arc_length = (k - 0.5) * m_.element_length;
+      s.wall_area = m_.joints[k].wall_area;
+      s.wall_thickness = m_.joints[k].wall_thickness;
+      fatigue_.push_back(std::move(s));
+    }
   nodes_.name = "node_positions";
   nodes_.title = "Node positions of every stored frame";
   nodes_.add("time", "s");
@@ -193,6 +222,16 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
                              bottom.x(), bottom.y(), bottom.z(), kin, spr, grav, total, wd, wdamp, wb, wf, balance,
                              ws_.constraint_drift, first_bending, first_torsion};
   row.insert(row.end(), extra.begin(), extra.end());
+  if (m_.sea) row.push_back(m_.sea->elevation(m_.sea->elevation_x, m_.sea->elevation_y, t));
+  if (!fatigue_.empty()) {
+    fatigue_time_.push_back(t);
+    for (int k = 1; k <= m_.n; ++k) {
+      JointStressSeries& s = fatigue_[static_cast<std::size_t>(k - 1)];
+      s.tension.push_back(prof.tension[k]);
+      s.stress_xy.push_back(prof.stress_xy[k]);
+      s.stress_xz.push_back(prof.stress_xz[k]);
+    }
+  }
   for (std::size_t c = 0; c < row.size(); ++c) history_.columns[c].values.push_back(row[c]);
   for (int k = 0; k < nodes; ++k) {
     max_bending_ = std::max(max_bending_, prof.bending_stress[k]);
@@ -218,6 +257,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     top.points = {prof.position.front()};
     top.color = Vec3(0.9, 0.5, 0.1);
     fr.shapes.push_back(std::move(top));
+    if (m_.sea) fr.shapes.push_back(seaSurface(*m_.sea, m_.top_mean, 0.5 * m_.length, t));
     r_.view.frames.push_back(std::move(fr));
     for (int k = 0; k < nodes; ++k) {
       const double vals[6] = {t, double(k), prof.arc_length[k], prof.position[k].x(), prof.position[k].y(),
@@ -314,6 +354,13 @@ Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& st
   const double scale = std::max(energy_scale_, 1e-300);
   out.tables.push_back(history_);
   out.tables.push_back(nodes_);
+  if (!fatigue_.empty()) {
+    const auto joints = jointFatigue(fatigue_time_, fatigue_, fatigueCurve(p_), p_.fatigue_stress_concentration_factor,
+                                     p_.fatigue_start_time);
+    auto first = std::lower_bound(fatigue_time_.begin(), fatigue_time_.end(), p_.fatigue_start_time);
+    const double window = first == fatigue_time_.end() ? 0.0 : fatigue_time_.back() - *first;
+    addFatigueResults(joints, fatigueCurve(p_), window, out);
+  }
   Table probes;
   probes.name = "probes";
   probes.title = "Probe points: largest displacement and bending stress over the run (stresses interpolated "

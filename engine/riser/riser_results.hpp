@@ -11,6 +11,7 @@
 #include "core/results.hpp"
 #include "core/run_context.hpp"
 #include "riser/riser_dynamics.hpp"
+#include "riser/riser_fatigue.hpp"
 #include "riser/riser_modes.hpp"
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_statics.hpp"
@@ -76,6 +77,8 @@ class RiserRecorder {
   double max_bending_ = 0.0, max_torsion_ = 0.0, max_tension_ = 0.0;
   bool first_ = true;
   RunContext* live_ = nullptr;
+  std::vector<double> fatigue_time_;             // [s] samples kept for fatigue (fatigue.enabled)
+  std::vector<JointStressSeries> fatigue_;       // joints 1..n
 
   std::shared_ptr<const Results> partialResults() const;
   void addHistoryPlots(Results& out) const;

@@ -339,11 +339,13 @@ bool relaxThenNewton(const RiserModel& m, StaticProblem& problem, Configuration&
 // The model held at its t = 0 top position with no top motion: a prescribed top acceleration at t = 0 (a
 // clamped spline table, or harmonic motion without a ramp) would otherwise enter a(q) and no shape would
 // have a(q) = 0 (riser_top_motion_table fell back to the dense path for this), and a top velocity the drag.
+// Waves are left out as well: the static shape is the one in calm water.
 RiserModel atRest(const RiserModel& model) {
   RiserModel m = model;
   m.top_mean = model.topAt(0.0).position;
   m.top_table = TopMotionSpline{};
   m.motion_amplitude.setZero();
+  m.sea = nullptr;  // calm water (the waves start from it with their ramp)
   return m;
 }
 

@@ -1,0 +1,167 @@
+// Waves on the riser (contract in riser/riser_waves.hpp).
+#include "riser/riser_waves.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "riser/riser_loads.hpp"
+#include "riser/riser_model.hpp"
+
+namespace maris::riser {
+namespace {
+
+using P = RiserParameters;
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegree = kPi / 180.0;
+
+SchemaBinder<WaveSpectrumRow> spectrumRowBinder() {
+  SchemaBinder<WaveSpectrumRow> b;
+  b.real("omega", &WaveSpectrumRow::omega, "rad/s", Range::nonNegative(100.0), "Angular frequency ω");
+  b.real("density", &WaveSpectrumRow::density, "m^2*s/rad", Range::nonNegative(1e6), "One-sided spectral density S(ω)");
+  return b;
+}
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+ocean::WaveSpectrum spectrumOf(const RiserParameters& p) {
+  if (p.wave_type == "jonswap")
+    return ocean::jonswap(p.wave_significant_height, p.wave_peak_period, p.wave_peak_enhancement);
+  if (p.wave_type == "pierson_moskowitz") return ocean::piersonMoskowitz(p.wave_significant_height, p.wave_peak_period);
+  std::vector<double> omega, density;
+  for (const auto& r : p.wave_spectrum_table) {
+    omega.push_back(r.omega);
+    density.push_back(r.density);
+  }
+  return ocean::spectrumTable(std::move(omega), std::move(density));
+}
+
+}  // namespace
+
+void bindWaveParameters(SchemaBinder<RiserParameters>& b) {
+  b.choice("waves.type", &P::wave_type, {"none", "airy", "jonswap", "pierson_moskowitz", "spectrum_table"},
+           "Waves: none, a regular Airy wave, an irregular sea from a JONSWAP, Pierson–Moskowitz or tabulated "
+           "spectrum (linear kinematics over depth water_level − seabed_level)");
+  b.real("waves.height", &P::wave_height, "m", Range::positive(100.0), "Airy wave height H (crest to trough)");
+  b.real("waves.period", &P::wave_period, "s", Range::positive(100.0), "Airy wave period T");
+  b.real("waves.phase_deg", &P::wave_phase_deg, "deg", Range::closed(-360, 360),
+         "Airy wave phase (crest at x = y = 0, t = 0 for 0)");
+  b.real("waves.significant_height", &P::wave_significant_height, "m", Range::positive(50.0),
+         "Significant wave height Hs = 4√m0 (jonswap, pierson_moskowitz)");
+  b.real("waves.peak_period", &P::wave_peak_period, "s", Range::positive(100.0), "Spectral peak period Tp");
+  b.real("waves.peak_enhancement", &P::wave_peak_enhancement, "-", Range::closed(1.0, 20.0),
+         "JONSWAP peak enhancement γ (σ = 0.07 below the peak, 0.09 above)");
+  b.table("waves.spectrum_table", &P::wave_spectrum_table, spectrumRowBinder(), 0, 10000,
+          "User spectrum S(ω) (spectrum_table): rows of increasing ω, linear in between, zero outside");
+  b.integer("waves.component_count", &P::wave_component_count, "-", Range::closed(1, 5000),
+            "Components of an irregular sea");
+  b.choice("waves.discretisation", &P::wave_discretisation, {"random_frequency", "equal_energy"},
+           "Irregular sea frequencies: random within equal-width bins, or at the centroids of equal-energy bins "
+           "(neither repeats with a common period)");
+  b.integer("waves.seed", &P::wave_seed, "-", Range::closed(0, 2147483647),
+            "Seed of the phases (mt19937_64; the same seed gives the bitwise same sea)");
+  b.real("waves.direction_deg", &P::wave_direction_deg, "deg", Range::closed(-360, 360),
+         "Direction the waves travel towards, from +x towards +y");
+  b.choice("waves.stretching", &P::wave_stretching, {"wheeler", "vertical"},
+           "Kinematics up to the instantaneous surface: Wheeler stretching or vertical extrapolation of the z = 0 "
+           "values");
+  b.real("waves.ramp_time", &P::wave_ramp_time, "s", Range::positive(1e5),
+         "Half-cosine start of the waves (statics is solved in calm water)");
+  b.real("waves.elevation_x", &P::wave_elevation_x, "m", Range::any(), "x of the recorded wave elevation");
+  b.real("waves.elevation_y", &P::wave_elevation_y, "m", Range::any(), "y of the recorded wave elevation");
+}
+
+void checkWaveParameters(const RiserParameters& p, std::vector<FieldError>& e) {
+  if (p.wave_type == "none") return;
+  if (!(p.water_level > p.seabed_level))
+    e.push_back({"environment.seabed_level", num(p.seabed_level),
+                 "waves need the sea bed below environment.water_level = " + num(p.water_level) + " (the depth)"});
+  if (p.wave_type != "spectrum_table") return;
+  if (p.wave_spectrum_table.size() < 2)
+    e.push_back({"waves.spectrum_table", std::to_string(p.wave_spectrum_table.size()) + " rows",
+                 "waves.type = spectrum_table needs at least 2 rows"});
+  bool any = false;
+  for (std::size_t k = 0; k < p.wave_spectrum_table.size(); ++k) {
+    any = any || p.wave_spectrum_table[k].density > 0.0;
+    if (k > 0 && !(p.wave_spectrum_table[k].omega > p.wave_spectrum_table[k - 1].omega))
+      e.push_back({"waves.spectrum_table[" + std::to_string(k) + "].omega", num(p.wave_spectrum_table[k].omega),
+                   "must be greater than the previous row's omega " + num(p.wave_spectrum_table[k - 1].omega)});
+  }
+  if (p.wave_spectrum_table.size() >= 2 && !any)
+    e.push_back({"waves.spectrum_table", "all densities 0", "the spectrum has no energy"});
+}
+
+double RiserSea::ramp(double t) const {
+  if (t <= 0.0) return 0.0;
+  if (t >= ramp_time) return 1.0;
+  return 0.5 * (1.0 - std::cos(kPi * t / ramp_time));
+}
+
+double RiserSea::rampRate(double t) const {
+  if (t <= 0.0 || t >= ramp_time) return 0.0;
+  return 0.5 * kPi / ramp_time * std::sin(kPi * t / ramp_time);
+}
+
+double RiserSea::elevation(double x, double y, double t) const { return ramp(t) * field.elevation(x, y, t); }
+
+ocean::FluidKinematics RiserSea::at(const Eigen::Vector3d& point, double t) const {
+  const double r = ramp(t);
+  if (r == 0.0) {  // calm water: wet below the still-water level, nothing moving
+    ocean::FluidKinematics calm;
+    calm.wet = point.z() <= water_level;
+    return calm;
+  }
+  return field.kinematics(Eigen::Vector3d(point.x(), point.y(), point.z() - water_level), t, r, rampRate(t));
+}
+
+std::shared_ptr<const RiserSea> buildRiserSea(const RiserParameters& p) {
+  if (p.wave_type == "none") return nullptr;
+  auto sea = std::make_shared<RiserSea>();
+  const double depth = p.water_level - p.seabed_level, direction = p.wave_direction_deg * kDegree;
+  const auto stretching = p.wave_stretching == "vertical" ? ocean::Stretching::Vertical : ocean::Stretching::Wheeler;
+  if (p.wave_type == "airy") {
+    sea->field = ocean::airyWave(p.wave_height, p.wave_period, direction, p.wave_phase_deg * kDegree, depth, p.gravity,
+                                 stretching);
+  } else {
+    const auto method = p.wave_discretisation == "equal_energy" ? ocean::Discretisation::EqualEnergy
+                                                                : ocean::Discretisation::RandomFrequency;
+    sea->field = ocean::irregularSea(spectrumOf(p), p.wave_component_count, method,
+                                     static_cast<std::uint64_t>(p.wave_seed), direction, depth, p.gravity, stretching);
+  }
+  sea->water_level = p.water_level;
+  sea->ramp_time = p.wave_ramp_time;
+  sea->elevation_x = p.wave_elevation_x;
+  sea->elevation_y = p.wave_elevation_y;
+  return sea;
+}
+
+void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+  const RiserSea& sea = *m.sea;
+  for (int i = 0; i <= m.n; ++i) {
+    const Segment& seg = m.segments[i];
+    const Mat3& r = pose.rotation[i];
+    const Vec3 t = r.col(0);
+    for (int q = 0; q < 3; ++q) {
+      const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
+      const Vec3 p = pose.position[i] + xi * t;
+      const ocean::FluidKinematics fluid = sea.at(p, pose.time);
+      if (!fluid.wet) continue;
+      const Vec3 v = pose.velocity[i] + pose.omega[i].cross(xi * t);
+      const Vec3 local = r.transpose() * (v - m.currentAt(p.z()) - fluid.velocity);
+      const double vn = std::hypot(local.y(), local.z());
+      const Vec3 drag_local(-seg.tangential_drag * std::abs(local.x()) * local.x(), -seg.normal_drag * vn * local.y(),
+                            -seg.normal_drag * vn * local.z());
+      const Vec3 normal_acceleration = fluid.acceleration - fluid.acceleration.dot(t) * t;
+      const Vec3 f = factor * w * (r * drag_local + seg.fluid_inertia_per_length * normal_acceleration);
+      loads.force[i] += f;
+      loads.moment[i] += (xi * t).cross(f);
+      loads.power_drag += f.dot(v);
+    }
+  }
+}
+
+}  // namespace maris::riser
