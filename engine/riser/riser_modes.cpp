@@ -280,6 +280,18 @@ std::string slowGrowthNote(int count, double growth_rate, double growth_per_radi
                     count, growth_rate, growth_per_radian, 1.0 / growth_rate);
 }
 
+int modesEigenOrder(const RiserModel& model) {
+  const int per_segment = model.torsion ? 3 : 2;
+  const int order = per_segment * (model.last_dynamic - model.first_dynamic + 1) + 3;
+  return model.flow_speed != 0.0 ? 2 * order : order;
+}
+
+double modesSolveSeconds(const RiserModel& model) {
+  // Eigen::EigenSolver (real, non-symmetric, with eigenvectors) on one core.
+  constexpr double kSecondsPerOrderCubed = 2e-9;
+  return kSecondsPerOrderCubed * std::pow(static_cast<double>(modesEigenOrder(model)), 3);
+}
+
 RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count, Formulation linearisation) {
   const RiserModel m = undampedModel(model, linearisation);
   const Coordinates q = makeCoordinates(m, statics);
