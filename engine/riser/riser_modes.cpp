@@ -287,8 +287,9 @@ int modesEigenOrder(const RiserModel& model) {
 }
 
 double modesSolveSeconds(const RiserModel& model) {
-  // Eigen::EigenSolver (real, non-symmetric, with eigenvectors) on one core.
-  constexpr double kSecondsPerOrderCubed = 2e-9;
+  // Eigen::EigenSolver (real, non-symmetric, with eigenvectors), one core: 2.5e-8 s·N⁻³ measured at N = 300…900
+  // on a loaded 2-core machine (5.3 s at N = 600); taken as 1e-8 for an unloaded core.
+  constexpr double kSecondsPerOrderCubed = 1e-8;
   return kSecondsPerOrderCubed * std::pow(static_cast<double>(modesEigenOrder(model)), 3);
 }
 

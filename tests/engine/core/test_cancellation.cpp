@@ -1,6 +1,7 @@
 // Cancellation within 1 s in every scene's most expensive stage: the run starts on a worker thread, the cancel
 // flag is raised from this thread once the stage is reached, and the solver must throw RunCancelled within
-// kPromisedLatency of the flag (the promise README makes for Ctrl-C). The settings push each stage far beyond
+// kPromisedLatency of the flag (the promise README makes for Ctrl-C; dense eigen solves and FFTs cannot be
+// interrupted and are bounded by the work limit instead). The settings push each stage far beyond
 // a second, so a run that finishes instead of cancelling fails too. Also: the work estimates refuse the
 // uncancellable dense eigen solve of a riser frequency sweep at large n, and the run-away settings found by a
 // fault campaign, naming the parameter.
@@ -96,11 +97,10 @@ INSTANTIATE_TEST_SUITE_P(
               "", 1.0},
         Stage{"riser statics at n = 2000", "riser_default", {"geometry.segment_count=2000"}, "statics", 0.3},
         Stage{"wec radiation kernels", "wec_default", {"time.time_step=1e-5"}, "radiation kernels", 0.3},
-        Stage{"wec time integration", "wec_default", {"time.time_step=1e-4", "time.duration=1e4"}, "time integration", 0.3},
-        Stage{"seismic boundary drive and FE steps", "seismic_default", {"solver.courant_fraction=0.002"},
-              "finite-element runs", 0.5},
+        Stage{"wec time integration", "wec_default", {"time.duration=1e5"}, "time integration", 0.3},
+        Stage{"seismic FE steps", "seismic_default", {"solver.duration=200"}, "finite-element runs", 0.5},
         Stage{"ship Michell sweep, 1001 waterlines", "ship_default", {"numerics.waterlines=1001"}, "", 0.5},
-        Stage{"tether cable", "tether_default", {"cable.segments=5000", "simulation.duration=3600"}, "closed loop", 0.3},
+        Stage{"tether cable", "tether_default", {"cable.substeps=1000", "simulation.duration=3600"}, "closed loop", 0.3},
         Stage{"fiv limit cycles", "fiv_default", {"sweep.speed_count=2000", "numerics.max_cycles=100000"},
               "limit cycles", 0.3}),
     [](const ::testing::TestParamInfo<Stage>& info) {
