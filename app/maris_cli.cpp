@@ -1,6 +1,7 @@
 // maris-cli: the headless runner over the same engine as the GUI.
 //   maris-cli list | show NAME | schema SCENE [--json] | run FILE|NAME [--set path=value ...] [--out DIR]
-// Exit codes: 0 success, 1 usage/internal error, 2 invalid input, 3 solver failure, 130 cancelled.
+// Exit codes: 0 success, 1 usage/internal error or output folder refused, 2 invalid input (also a run beyond the
+// work limits), 3 solver failure, 130 cancelled by SIGINT, 143 by SIGTERM.
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <unistd.h>
 
 #include "core/errors.hpp"
+#include "core/run_folder.hpp"
 #include "core/run_output.hpp"
 #include "catalog.hpp"
 #include "plot_writer.hpp"
@@ -20,11 +22,29 @@ namespace {
 
 using namespace maris;
 
-enum ExitCode { kOk = 0, kUsage = 1, kInvalidInput = 2, kSolverFailure = 3, kCancelled = 130 };
+enum ExitCode { kOk = 0, kUsage = 1, kInvalidInput = 2, kSolverFailure = 3 };
 
 std::atomic<bool> g_cancel{false};
+std::atomic<int> g_signal{SIGINT};
 
-extern "C" void onSigint(int) { g_cancel.store(true); }
+extern "C" void onCancelSignal(int signal) {
+  g_signal.store(signal);
+  g_cancel.store(true);
+}
+
+// SIGINT and SIGTERM cancel the run (exit 128 + signal); a file-size limit becomes a write error, not a crash.
+void installSignalHandlers() {
+  struct sigaction action {};
+  action.sa_handler = onCancelSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  std::signal(SIGXFSZ, SIG_IGN);
+}
+
+void throwIfCancelled() {
+  if (g_cancel.load()) throw RunCancelled();
+}
 
 const char* kUsageText =
     "usage: maris-cli <command> [options]\n"
@@ -33,11 +53,14 @@ const char* kUsageText =
     "  schema SCENE [--json]        the parameter schema of a scene (names, units, defaults, ranges)\n"
     "  scenes                       the scenes compiled in\n"
     "  default                      the name of the default built-in scenario\n"
-    "  run FILE|NAME [--set path=value ...] [--out DIR] [--no-plots]\n"
+    "  run FILE|NAME [--set path=value ...] [--out DIR] [--force] [--allow-large] [--no-plots]\n"
     "                               run a scenario file or a built-in scenario; writes scenario.json,\n"
     "                               summary.json, one CSV per result table and PNG plots into DIR\n"
-    "                               (default: maris-results/<name>)\n"
-    "exit codes: 0 success, 2 invalid input, 3 solver failure, 130 cancelled\n";
+    "                               (default: maris-results/<name>) as a whole, or nothing;\n"
+    "                               --force replaces an earlier run in DIR, --allow-large runs beyond\n"
+    "                               the work limits\n"
+    "exit codes: 0 success, 1 usage error or output folder refused, 2 invalid input or work limit,\n"
+    "            3 solver failure, 130 cancelled (SIGINT), 143 cancelled (SIGTERM)\n";
 
 int cmdList() {
   std::printf("%-34s %-8s %s\n", "NAME", "SCENE", "DESCRIPTION");
@@ -103,17 +126,20 @@ RunContext::ProgressFn makeProgressPrinter() {
 int cmdRun(const std::vector<std::string>& args, int argc, char** argv) {
   std::string target, out_dir;
   std::vector<std::string> overrides;
-  bool plots = true;
+  bool plots = true, force = false, allow_large = false, out_given = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const auto& a = args[i];
     if (a == "--set" && i + 1 < args.size()) overrides.push_back(args[++i]);
-    else if (a == "--out" && i + 1 < args.size()) out_dir = args[++i];
+    else if (a == "--out" && i + 1 < args.size()) out_dir = args[++i], out_given = true;
     else if (a == "--no-plots") plots = false;
+    else if (a == "--force") force = true;
+    else if (a == "--allow-large") allow_large = true;
     else if (!a.empty() && a[0] == '-') throw InputError(a, "", "is not an option of `run`\n" + std::string(kUsageText));
     else if (target.empty()) target = a;
     else throw InputError(a, "", "unexpected extra argument");
   }
   if (target.empty()) throw InputError("run", "", "needs a scenario file or a built-in scenario name");
+  if (out_given && out_dir.empty()) throw std::runtime_error("--out needs a folder name (it was empty)");
 
   Scenario scenario;
   std::string id;
@@ -132,22 +158,27 @@ int cmdRun(const std::vector<std::string>& args, int argc, char** argv) {
   for (const auto& o : overrides) applyOverride(scenario, o);
   if (out_dir.empty()) out_dir = "maris-results/" + id;
 
-  std::signal(SIGINT, onSigint);
-  std::signal(SIGTERM, onSigint);
+  // Everything that can refuse the run does so before the solve: work limits, then the output folder.
+  const WorkEstimate estimate = estimateWork(scene, scenario.parameters);
+  if (auto errors = workLimitErrors(estimate); !allow_large && !errors.empty()) throw InputError(errors);
+  installSignalHandlers();
+  RunFolder folder(out_dir, {force, static_cast<std::uintmax_t>(estimate.output_bytes)});
   RunContext context(makeProgressPrinter(), &g_cancel);
   std::fprintf(stderr, "running %s (%s)\n", id.c_str(), scene.title.c_str());
   Results results = runScenario(scene, scenario, context);
+  throwIfCancelled();
   for (const auto& w : results.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
-  auto files = writeRunFolder(out_dir, scenario, results);
-  if (plots) {
-    for (auto& f : writePlotPngs(out_dir, results, argc, argv)) files.push_back(f);
-  }
+  // A signal while writing cancels too: the staged folder is removed, the target left as it was.
+  writeRunFolder(folder.staging(), scenario, results);
+  if (plots) writePlotPngs(folder.staging(), results, argc, argv);
+  throwIfCancelled();
+  folder.commit();
   for (const auto& s : results.scalars)
     std::printf("%-28s %14.6g %-8s %s\n", s.name.c_str(), s.value, s.unit.c_str(), s.description.c_str());
   std::printf("wall time %.3f s, %ld steps (%ld rejected)\n", results.stats.wall_time_s, results.stats.steps,
               results.stats.rejected_steps);
-  std::printf("results written to %s\n", std::filesystem::absolute(out_dir).lexically_normal().c_str());
+  std::printf("results written to %s\n", folder.target().c_str());
   return kOk;
 }
 
@@ -183,7 +214,7 @@ int main(int argc, char** argv) {
     return kSolverFailure;
   } catch (const RunCancelled&) {
     std::fprintf(stderr, "\ncancelled; nothing was written for this run\n");
-    return kCancelled;
+    return 128 + g_signal.load();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return kUsage;

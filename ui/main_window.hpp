@@ -93,6 +93,8 @@ class MainWindow : public QMainWindow {
   void updateTitle();
   void updateRunEnabled();
   bool confirmDiscard();
+  // Asks before a run beyond the work limits (core/work_estimate.hpp); true to go ahead.
+  bool confirmLargeRun();
   bool loadScenario(const Scenario& scenario, const QString& path, const QString& example_id);
   void showRecord(const RunRecord& record);
   void restoreShownRun();

@@ -3,6 +3,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QMessageBox>
 #include <QRegularExpression>
 #include <QStandardPaths>
 
@@ -142,12 +143,27 @@ bool MainWindow::startRun() {
     if (!document_->isValid()) status(tr("Fix the invalid values first (marked red in the parameter editor)."));
     return false;
   }
+  if (!confirmLargeRun()) return false;
   live_->restart();
   const quint64 id = runs_->start(*document_->scene(), document_->scenario());
   run_panel_->log(RunPanel::Level::Info,
                   tr("Run %1 started: %2").arg(id).arg(QString::fromStdString(document_->scenario().name)));
   status(tr("Running…"), 0);
   return id != 0;
+}
+
+bool MainWindow::confirmLargeRun() {
+  const auto errors = workLimitErrors(estimateWork(*document_->scene(), document_->scenario().parameters));
+  if (errors.empty()) return true;
+  QStringList lines;
+  for (const auto& e : errors) lines << QString::fromStdString(e.str());
+  const auto answer = QMessageBox::warning(
+      this, tr("Large run"),
+      tr("This run is beyond the work limits:\n\n%1\n\nRun it anyway?").arg(lines.join(QStringLiteral("\n\n"))),
+      QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+  if (answer == QMessageBox::Yes) return true;
+  status(tr("Run not started: beyond the work limits."));
+  return false;
 }
 
 void MainWindow::cancelRun() {

@@ -22,6 +22,13 @@ std::vector<FieldError> validateParameters(const SceneDefinition& scene, const J
   return errors;
 }
 
+WorkEstimate estimateWork(const SceneDefinition& scene, const Json& parameters) {
+  if (!scene.estimate || !validateParameters(scene, parameters).empty()) return {};
+  Json upgraded = parameters;
+  upgradeParameters(scene, upgraded);
+  return scene.estimate(upgraded);
+}
+
 Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunContext& context) {
   if (scenario.scene != scene.name)
     throw InputError("scene", "\"" + scenario.scene + "\"", "does not match the solver's scene \"" + scene.name + "\"");

@@ -11,6 +11,7 @@
 #include "core/run_context.hpp"
 #include "core/scenario.hpp"
 #include "core/schema_binder.hpp"
+#include "core/work_estimate.hpp"
 
 namespace maris {
 
@@ -28,7 +29,17 @@ struct SceneDefinition {
   // replaced field) in place and returns one note per change. Scenario files keep loading after a
   // schema change without a new "maris-scenario/N" format; empty when the schema never changed.
   std::function<std::vector<std::string>(Json& parameters)> upgrade;
+  // Optional: the run's steps, unknowns, stored values, memory and output size, estimated from validated
+  // parameters in well under a second (no solve). Front ends refuse a run beyond defaultWorkLimits() unless
+  // the user allows a large run (workLimitErrors(estimateWork(...))); a scene without it is never refused.
+  std::function<WorkEstimate(const Json& parameters)> estimate;
 };
+
+// Sets scene.estimate from a typed estimator over the scene's parameter struct.
+template <class P>
+void setWorkEstimate(SceneDefinition& scene, SchemaBinder<P> binder, std::function<WorkEstimate(const P&)> estimate) {
+  scene.estimate = [binder, estimate](const Json& j) { return estimate(binder.read(j)); };
+}
 
 // Builds a type-erased scene from a typed parameter struct P, its binder, a checker and a solver.
 template <class P>
@@ -52,6 +63,9 @@ std::vector<std::string> upgradeParameters(const SceneDefinition& scene, Json& p
 // Every error of the scenario's parameters (schema first, then the scene's cross-field checks),
 // judged after upgradeParameters on a copy, so an old file is as valid as it runs.
 std::vector<FieldError> validateParameters(const SceneDefinition& scene, const Json& parameters);
+
+// The scene's estimate for these parameters (upgraded; all zero without an estimator or for invalid parameters).
+WorkEstimate estimateWork(const SceneDefinition& scene, const Json& parameters);
 
 // Upgrades a copy of the parameters (notes become warnings), validates (throws InputError with every
 // problem), then runs. Fills stats.wall_time_s and warnings.

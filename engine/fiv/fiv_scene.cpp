@@ -117,11 +117,29 @@ Results solveFiv(const FivParameters& input, RunContext& ctx) {
   return r;
 }
 
+// RK4 steps of the sweep (every speed of every submergence, up and down, at most max_cycles periods) and of the
+// detail point; the 3D frames and tables it keeps.
+WorkEstimate estimateFivWork(const FivParameters& p) {
+  constexpr double kColumnsPerSpeed = 16;
+  const double curves = static_cast<double>(p.submergence_ratios.size()) + (p.include_deep ? 1.0 : 0.0);
+  const double speeds = curves * p.speed_count * (p.sweep_down ? 2.0 : 1.0);
+  const double detail = static_cast<double>(p.detail_cycles) * p.steps_per_period;
+  WorkEstimate w;
+  if (p.analysis != "sweep") return w;
+  w.steps = {speeds * p.max_cycles * p.steps_per_period + detail,
+             {"sweep.speed_count", "numerics.max_cycles", "numerics.steps_per_period", "free_surface.submergence_ratios"}};
+  w.cells = {1.0, {}};
+  w.samples = {kColumnsPerSpeed * speeds + 4.0 * detail, {"sweep.speed_count", "detail.cycles"}};
+  w.memory_bytes = {8.0 * w.samples.value, w.samples.parameters};
+  w.output_bytes = csvOutputBytes(w.samples.value, 8);
+  return w;
+}
+
 }  // namespace
 }  // namespace fiv
 
 SceneDefinition makeFivScene() {
-  return makeScene<fiv::FivParameters>(
+  SceneDefinition scene = makeScene<fiv::FivParameters>(
       "fiv", "Flow-induced vibration near a free surface",
       "1-DOF elastically mounted square cylinder in a current under a free surface: quasi-steady galloping "
       "(Parkinson & Smith 1964) plus a Facchinetti (2004) wake oscillator for VIV, with a calibrated free-surface "
@@ -129,6 +147,8 @@ SceneDefinition makeFivScene() {
       "submergence (after Zhang, Song, Li, Su & Ding, square cylinder near a free surface), calibration to "
       "reference points and post-processing of imported records.",
       fiv::fivBinder(), fiv::checkFivParameters, fiv::solveFiv);
+  setWorkEstimate<fiv::FivParameters>(scene, fiv::fivBinder(), fiv::estimateFivWork);
+  return scene;
 }
 
 }  // namespace maris

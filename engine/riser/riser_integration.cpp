@@ -115,8 +115,8 @@ void integrateExplicit(const RiserModel& m, const RiserParameters& p, const Inte
   for (const Sample& s : samples) {
     options.t0 = t;
     options.t1 = s.t;
-    RunContext chunk([&](double f, const std::string& stage) { context.progress((t + f * (s.t - t)) / end, stage); },
-                     nullptr);
+    // A part of `context`: the integrator sees its cancel flag at every step.
+    RunContext chunk = context.part(t / end, s.t / end, "");
     OdeStats st;
     try {
       st = plan.method == Integrator::Rk4 ? integrateRk4(rhs, y, options, chunk) : integrateDopri5(rhs, y, options, chunk);

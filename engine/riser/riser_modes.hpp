@@ -56,6 +56,13 @@ struct RiserModes {
 RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count,
                         Formulation linearisation = Formulation::Joint);
 
+// Order of computeModes' dense eigenproblem (joint linearisation): 3 coordinates per dynamic segment (2 without
+// torsion), doubled with internal flow (the state-space problem). Cannot be cancelled once started.
+int modesEigenOrder(const RiserModel& model);
+// Its wall time, estimated from the order (kModesSecondsPerOrderCubed, measured); front ends refuse a run whose
+// uninterruptible stretch exceeds the work limit (core/work_estimate.hpp).
+double modesSolveSeconds(const RiserModel& model);
+
 // Flow speed |u| at which the lowest frequency reaches zero (divergence: the stiffness A(u) becomes
 // singular; the Coriolis term cannot move an eigenvalue through zero). The flow's shape-dependent force
 // is −m_f l u² k, so A(u) = A0 + u² A1 exactly at a fixed shape, and u_c² is the smallest positive

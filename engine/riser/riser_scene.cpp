@@ -74,6 +74,7 @@ SceneDefinition makeRiserScene() {
       "block-tridiagonal reaction solve.",
       riser::riserBinder(), riser::checkRiserParameters, riser::solveRiser);
   scene.upgrade = riser::upgradeRiserParameters;
+  setWorkEstimate<riser::RiserParameters>(scene, riser::riserBinder(), riser::estimateRiserWork);
   return scene;
 }
 

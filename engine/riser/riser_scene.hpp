@@ -3,6 +3,7 @@
 
 #include "core/results.hpp"
 #include "core/run_context.hpp"
+#include "core/work_estimate.hpp"
 #include "riser/riser_modes.hpp"
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_statics.hpp"
@@ -11,6 +12,10 @@ namespace maris::riser {
 
 // Runs a validated parameter set. Throws SolverError (diverging run, no static equilibrium) or RunCancelled.
 Results solveRiser(const RiserParameters& p, RunContext& context);
+
+// Steps, unknowns, stored values, memory and the longest uninterruptible stretch (the dense modal solve) of
+// solveRiser(p), without solving (the scene's work estimate).
+WorkEstimate estimateRiserWork(const RiserParameters& p);
 
 // The parts of solveRiser that a study repeating the run needs:
 // the initial shape, static equilibrium when p.solve_statics, else the built-in straight/arc shape;

@@ -16,7 +16,7 @@ BoundaryDrive::BoundaryDrive(const FeModel& model, const FreeField& field,
   const int n = static_cast<int>(std::ceil((steps * dt + 2.0 * lead) / dt)) + 4;
   std::vector<double> u0(n);
   for (int k = 0; k < n; ++k) u0[k] = incident(trace_t0_ + k * dt);
-  const FreeFieldSynthesis synthesis(field, u0, trace_t0_, dt);
+  const FreeFieldSynthesis synthesis(field, u0, trace_t0_, dt, ctx);
 
   // Which rows have layer nodes in the solid / in the water.
   std::vector<char> row_solid(m.ny + 1, 0), row_water(m.ny + 1, 0);

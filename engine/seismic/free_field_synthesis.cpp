@@ -9,8 +9,8 @@
 namespace maris::seismic {
 
 FreeFieldSynthesis::FreeFieldSynthesis(const FreeField& field, const std::vector<double>& incident, double t0,
-                                       double dt)
-    : field_(field), t0_(t0), dt_(dt), n_out_(static_cast<int>(incident.size())) {
+                                       double dt, const RunContext* context)
+    : field_(field), t0_(t0), dt_(dt), n_out_(static_cast<int>(incident.size())), context_(context) {
   if (field.reflectedPEvanescent()) {
     // Beyond the SV critical angle the reflection coefficients are complex constants: the reflected
     // waves carry a Hilbert-transformed copy of the input whose tails reach before the arrival (the
@@ -38,6 +38,7 @@ FreeFieldSynthesis::FreeFieldSynthesis(const FreeField& field, const std::vector
   input_spectrum_.resize(half + 1);
   amplitudes_.resize(half + 1);
   for (std::size_t k = 0; k <= half; ++k) {
+    checkCancel(k);
     omega_[k] = Complex(2.0 * std::numbers::pi * static_cast<double>(k) / window, eps_);
     // Undamped: the water potential φ = a/(iω) has a finite limit at ω → 0 that the formula cannot
     // evaluate at 0 itself; the zero bin is taken 1e-6 of a bin above it (relative error ~1e-6 in that bin).
@@ -51,6 +52,7 @@ void FreeFieldSynthesis::invertPair(const std::vector<Complex>& first, const std
                                     std::vector<double>& out_first, std::vector<double>& out_second) const {
   const std::size_t half = n_fft_ / 2;
   const Complex i(0.0, 1.0);
+  checkCancel(0);
   std::vector<Complex> z(n_fft_);
   for (std::size_t k = 0; k <= half; ++k) {
     // The Nyquist bin of a real signal is real; dropping its imaginary part keeps the pair separable.
@@ -76,6 +78,7 @@ SolidHistory FreeFieldSynthesis::solid(double y) const {
   std::vector<Complex> ux(m), uy(m), vx(m), vy(m), ax(m), ay(m), sxx(m), syy(m), sxy(m);
   const Complex i(0.0, 1.0);
   for (std::size_t k = 0; k < m; ++k) {
+    checkCancel(k);
     const FreeFieldPoint f = field_.solidAt(amplitudes_[k], omega_[k], 0.0, y);
     const Complex u0 = input_spectrum_[k];
     const Complex d = -i * omega_[k];  // time derivative
@@ -104,6 +107,7 @@ WaterHistory FreeFieldSynthesis::water(double y) const {
   std::vector<Complex> phi(m), phi_dot(m), phi_ddot(m), pressure(m), ux(m), uy(m);
   const Complex i(0.0, 1.0);
   for (std::size_t k = 0; k < m; ++k) {
+    checkCancel(k);
     const FreeFieldPoint f = field_.waterAt(amplitudes_[k], omega_[k], 0.0, y);
     const Complex u0 = input_spectrum_[k];
     const Complex d = -i * omega_[k];

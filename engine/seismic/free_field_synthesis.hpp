@@ -15,6 +15,7 @@
 
 #include <vector>
 
+#include "core/run_context.hpp"
 #include "seismic/free_field.hpp"
 
 namespace maris::seismic {
@@ -33,7 +34,9 @@ struct WaterHistory {
 class FreeFieldSynthesis {
  public:
   // `incident` = u0 at t0 + k·dt, k < incident.size(); it should be zero at the start (causal input).
-  FreeFieldSynthesis(const FreeField& field, const std::vector<double>& incident, double t0, double dt);
+  // `context` (if given, outliving this object) is checked for cancellation every few thousand frequencies.
+  FreeFieldSynthesis(const FreeField& field, const std::vector<double>& incident, double t0, double dt,
+                     const RunContext* context = nullptr);
 
   SolidHistory solid(double y) const;
   WaterHistory water(double y) const;
@@ -44,6 +47,10 @@ class FreeFieldSynthesis {
   const FreeField& field() const { return field_; }
 
  private:
+  // Throws RunCancelled every 4096th k when the context asks (cheap against the free-field solve per k).
+  void checkCancel(std::size_t k) const {
+    if (context_ && k % 4096 == 0) context_->throwIfCancelled();
+  }
   // Inverts two Hermitian half spectra (k = 0..N/2) at once and undoes the damping.
   void invertPair(const std::vector<Complex>& first, const std::vector<Complex>& second, std::vector<double>& out_first,
                   std::vector<double>& out_second) const;
@@ -53,6 +60,7 @@ class FreeFieldSynthesis {
   int n_out_;
   std::size_t n_fft_;
   std::vector<Complex> omega_;          // ω_k + iε, k = 0..N/2
+  const RunContext* context_ = nullptr;
   std::vector<Complex> input_spectrum_; // U0(ω_k + iε)
   std::vector<FreeFieldAmplitudes> amplitudes_;
 };

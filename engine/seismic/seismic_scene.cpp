@@ -7,7 +7,7 @@ namespace maris {
 
 SceneDefinition makeSeismicScene() {
   using seismic::SeismicParameters;
-  return makeScene<SeismicParameters>(
+  SceneDefinition scene = makeScene<SeismicParameters>(
       "seismic", "Reef–seawater seismic response (2D)",
       "2D plane-strain reef on an elastic seabed with the surrounding seawater under obliquely incident P or SV "
       "plane waves (Bao, Liu et al., Ocean Engineering ~2020): analytic free field of a half-space under a water "
@@ -15,6 +15,8 @@ SceneDefinition makeSeismicScene() {
       "input; amplification along the reef flat, spectral ratios, effect of the water. The default reef is a "
       "placeholder (the paper's Table 1 is not available).",
       seismic::seismicBinder(), seismic::checkSeismicParameters, seismic::solveSeismic);
+  setWorkEstimate<SeismicParameters>(scene, seismic::seismicBinder(), seismic::estimateSeismicWork);
+  return scene;
 }
 
 }  // namespace maris

@@ -7,6 +7,7 @@
 
 #include "core/results.hpp"
 #include "core/run_context.hpp"
+#include "core/work_estimate.hpp"
 #include "seismic/free_field.hpp"
 #include "seismic/seismic_parameters.hpp"
 
@@ -105,5 +106,8 @@ void addModalResults(const SeismicParameters& p, Results& results, RunContext& c
 
 // The whole run: free field, then the finite-element model(s) and their post-processing.
 Results solveSeismic(const SeismicParameters& p, RunContext& ctx);
+
+// Its steps, cells, stored values, memory and output size from the main mesh, without solving.
+WorkEstimate estimateSeismicWork(const SeismicParameters& p);
 
 }  // namespace maris::seismic

@@ -60,7 +60,7 @@ class PanelIntegrator {
     p.coarse = kc * half;
     p.error = std::abs(kf - gf) * half;
     evaluations += 15;
-    if (context_ && evaluations % 1500 == 0) context_->throwIfCancelled();
+    if (context_ && evaluations % 150 == 0) context_->throwIfCancelled();
   }
 
   long evaluations = 0;

@@ -1,14 +1,35 @@
 // Registry entry of the ship resistance scene.
+#include <algorithm>
 #include <optional>
+#include <thread>
 
 #include "core/scene.hpp"
 #include "ship/ship_study.hpp"
 
 namespace maris {
 
+namespace {
+
+// Speeds, hull grid and what the results keep. Each sweep thread holds its own Kochin function over the grid.
+WorkEstimate estimateShipWork(const ship::ShipParameters& p) {
+  constexpr double kColumnsPerSpeed = 24;  // resistance, coefficients, error estimates per curve
+  constexpr double kDoublesPerGridPoint = 16;
+  const double grid = static_cast<double>(p.stations) * p.waterlines;
+  const unsigned threads = p.threads > 0 ? static_cast<unsigned>(p.threads) : std::max(1u, std::thread::hardware_concurrency());
+  WorkEstimate w;
+  w.steps = {static_cast<double>(p.froude_count), {"speed.count"}};
+  w.cells = {grid, {"numerics.stations", "numerics.waterlines"}};
+  w.samples = {kColumnsPerSpeed * p.froude_count + 3.0 * grid, {"speed.count", "numerics.stations", "numerics.waterlines"}};
+  w.memory_bytes = {8.0 * kDoublesPerGridPoint * grid * (1.0 + threads), {"numerics.stations", "numerics.waterlines"}};
+  w.output_bytes = csvOutputBytes(kColumnsPerSpeed * p.froude_count, 6);
+  return w;
+}
+
+}  // namespace
+
 SceneDefinition makeShipScene() {
   using ship::ShipParameters;
-  return makeScene<ShipParameters>(
+  SceneDefinition scene = makeScene<ShipParameters>(
       "ship", "Ship wave resistance",
       "Resistance curves of a ship hull: Michell's thin-ship wave resistance (accurate Filon/exp-fitted "
       "quadrature with error estimates), the boundary-layer tangency and wave-number corrections of Basic, "
@@ -28,6 +49,8 @@ SceneDefinition makeShipScene() {
         context.progress(1.0, "done");
         return results;
       });
+  setWorkEstimate<ShipParameters>(scene, ship::shipSchemaBinder(), estimateShipWork);
+  return scene;
 }
 
 }  // namespace maris

@@ -115,7 +115,7 @@ std::vector<FrequencyResponse> solveCoupledFrequency(const WecModel& model, doub
   return out;
 }
 
-void buildCrossRadiation(WecModel& model, double kernel_duration, double kernel_dt) {
+void buildCrossRadiation(WecModel& model, double kernel_duration, double kernel_dt, const RunContext* context) {
   if (!model.coupled) return;
   const CoupledHydro& hydro = *model.coupled;
   const int nd = hydro.dofs();
@@ -142,7 +142,7 @@ void buildCrossRadiation(WecModel& model, double kernel_duration, double kernel_
       auto damping = [&](double w) { return hydro.damping(r, c, w); };
       auto added = [&](double w) { return hydro.addedMass(r, c, w); };
       x.mode.a_inf = a_inf;
-      x.mode.kernel = computeKernel(damping, w_max, d_omega, kernel_duration, kernel_dt);
+      x.mode.kernel = computeKernel(damping, w_max, d_omega, kernel_duration, kernel_dt, context);
       x.mode.fit = fitModalKernel(x.mode.kernel);
       x.mode.quality = assessFit(x.mode.fit, damping, added, a_inf, 0.3, std::min(3.0, w_max));
       model.cross.push_back(std::move(x));

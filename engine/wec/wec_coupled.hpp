@@ -20,6 +20,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/run_context.hpp"
 #include "wec/wec_hydro.hpp"
 
 namespace maris::wec {
@@ -68,6 +69,7 @@ std::vector<FrequencyResponse> solveCoupledFrequency(const WecModel& model, doub
 
 // Off-diagonal radiation channels of a coupled model (kernels, modal fits, A∞): entries whose damping or A∞
 // exceeds 1e-6 of the largest diagonal one. Appends to model.cross.
-void buildCrossRadiation(WecModel& model, double kernel_duration, double kernel_dt);
+void buildCrossRadiation(WecModel& model, double kernel_duration, double kernel_dt,
+                         const RunContext* context = nullptr);
 
 }  // namespace maris::wec

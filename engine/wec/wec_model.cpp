@@ -65,7 +65,7 @@ WecModel buildWecModel(const WecParameters& p) {
   return m;
 }
 
-void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt) {
+void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt, const RunContext* context) {
   for (std::size_t i = 0; i < model.floats.size(); ++i) {
     auto& f = model.floats[i];
     const FloatModel* twin = nullptr;
@@ -83,14 +83,14 @@ void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt) {
       auto damping = [&](double w) { return heave ? hydro.at(w).heave.damping : hydro.at(w).surge.damping; };
       auto added = [&](double w) { return heave ? hydro.at(w).heave.added_mass : hydro.at(w).surge.added_mass; };
       mode.a_inf = heave ? hydro.addedMassInfinityHeave() : hydro.addedMassInfinitySurge();
-      mode.kernel = computeKernel(damping, w_max, d_omega, kernel_duration, kernel_dt);
+      mode.kernel = computeKernel(damping, w_max, d_omega, kernel_duration, kernel_dt, context);
       mode.fit = fitModalKernel(mode.kernel);
       mode.quality = assessFit(mode.fit, damping, added, mode.a_inf, 0.3, std::min(3.0, w_max));
     };
     build(f.surge, false);
     build(f.heave, true);
   }
-  buildCrossRadiation(model, kernel_duration, kernel_dt);
+  buildCrossRadiation(model, kernel_duration, kernel_dt, context);
 }
 
 FloatExcitation excitationAt(const WecModel& model, const FloatModel& f, double omega) {

@@ -74,7 +74,8 @@ struct WecModel {
 // Throws InputError if the WAMIT files cannot be read.
 WecModel buildWecModel(const WecParameters& p);
 // Kernels K(t) from B(ω) on [0, hydro max frequency], A∞ from the database, modal fits.
-void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt);
+// Cancellable through `context` (if given).
+void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt, const RunContext* context = nullptr);
 
 // Deep-water wave number k = ω²/g [1/m].
 inline double waveNumber(double omega, double gravity) { return omega * omega / gravity; }

@@ -20,7 +20,7 @@ double RadiationKernel::at(double t) const {
 }
 
 RadiationKernel computeKernel(const std::function<double(double)>& damping, double omega_max, double d_omega,
-                              double duration, double dt) {
+                              double duration, double dt, const RunContext* context) {
   const auto m = static_cast<std::size_t>(std::ceil(omega_max / d_omega));
   const double h = omega_max / static_cast<double>(m);
   std::vector<double> b(m + 1, 0.0);
@@ -30,6 +30,7 @@ RadiationKernel computeKernel(const std::function<double(double)>& damping, doub
   const auto n = static_cast<std::size_t>(std::llround(duration / dt)) + 1;
   k.values.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
+    if (context && j % 256 == 0) context->throwIfCancelled();  // 256 samples: ~10 ms at m = 2000
     const double t = dt * static_cast<double>(j);
     double sum = 0.0;
     if (t * h < 1e-6) {

@@ -13,6 +13,8 @@
 #include <functional>
 #include <vector>
 
+#include "core/run_context.hpp"
+
 namespace maris::wec {
 
 // K(t) sampled at t_j = j·dt, j = 0..n−1.
@@ -26,8 +28,9 @@ struct RadiationKernel {
 
 // K(t) from B(ω) on [0, omega_max] (B taken as 0 beyond), B piecewise linear on a grid of spacing
 // d_omega and each segment integrated exactly against cos(ωt) (Filon-type, no aliasing for large t).
+// Checks `context` (if given) for cancellation every 256 samples of K.
 RadiationKernel computeKernel(const std::function<double(double)>& damping, double omega_max, double d_omega,
-                              double duration, double dt);
+                              double duration, double dt, const RunContext* context = nullptr);
 
 // A∞ from A(ω) at one frequency and the kernel (Ogilvie); the sine transform is integrated exactly
 // for K piecewise linear.

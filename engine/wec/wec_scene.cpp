@@ -11,6 +11,7 @@
 #include "wec/wec_response.hpp"
 #include "wec/wec_results.hpp"
 #include "wec/wec_time.hpp"
+#include "wec/wec_work.hpp"
 
 namespace maris {
 
@@ -213,7 +214,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   ctx.throwIfCancelled();
   ctx.progress(0.0, "radiation kernels");
   WecModel model = buildWecModel(p);
-  buildRadiation(model, p.kernel_duration, p.time_step);
+  buildRadiation(model, p.kernel_duration, p.time_step, &ctx);
   addRadiationScalars(model, res, ctx);
   const std::size_t nf = model.floats.size();
   const bool both = p.formulation == "both";
@@ -335,7 +336,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
 }  // namespace
 
 SceneDefinition makeWecScene() {
-  return makeScene<WecParameters>(
+  SceneDefinition scene = makeScene<WecParameters>(
       "wec", "Hinged-float wave energy converter",
       "Hemispherical floats on rigid arms hinged to a fixed jacket, pitching about the hinge with a linear "
       "PTO damper (Heo & Koo, Wavestar-type). Hulme hemisphere coefficients (deep water) or WAMIT files, "
@@ -343,6 +344,8 @@ SceneDefinition makeWecScene() {
       "augmented (Lagrange-multiplier) time-domain formulations, frequency-domain RAOs, hinge reactions, "
       "PTO power and capture width.",
       wecBinder(), checkWecParameters, solveWec);
+  setWorkEstimate<WecParameters>(scene, wecBinder(), estimateWecWork);
+  return scene;
 }
 
 }  // namespace maris

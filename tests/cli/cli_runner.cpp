@@ -22,12 +22,13 @@ static std::string slurp(const std::string& file) {
   return ss.str();
 }
 
-CliResult runCli(const std::vector<std::string>& args, const std::string& working_dir, double interrupt_after_s) {
+CliResult runCli(const std::vector<std::string>& args, const std::string& working_dir, double interrupt_after_s,
+                 int signal, const std::string& shell_prefix) {
   static int counter = 0;
   const std::string base = "/tmp/maris_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
   const std::string out_file = base + ".out", err_file = base + ".err";
   // A tiny shell wrapper changes directory and redirects, keeping the spawn portable.
-  std::string command = "cd '" + working_dir + "' && exec '" MARIS_CLI_PATH "'";
+  std::string command = "cd '" + working_dir + "' && " + shell_prefix + " exec '" MARIS_CLI_PATH "'";
   for (const auto& a : args) {
     std::string quoted;
     for (char c : a) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
@@ -38,12 +39,16 @@ CliResult runCli(const std::vector<std::string>& args, const std::string& workin
   pid_t pid = 0;
   CliResult result;
   if (::posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) != 0) return result;
+  std::chrono::steady_clock::time_point signalled;
   if (interrupt_after_s > 0.0) {
     std::this_thread::sleep_for(std::chrono::duration<double>(interrupt_after_s));
-    ::kill(pid, SIGINT);
+    signalled = std::chrono::steady_clock::now();
+    ::kill(pid, signal);
   }
   int status = 0;
   ::waitpid(pid, &status, 0);
+  if (interrupt_after_s > 0.0)
+    result.exit_after_signal_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count();
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
   else if (WIFSIGNALED(status)) result.exit_code = 128 + WTERMSIG(status);
   result.out = slurp(out_file);

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/run_folder.hpp"
 #include "core/run_output.hpp"
 #include "plots/result_plot.hpp"
 
@@ -95,26 +96,30 @@ std::string summaryMarkdown(const Scenario& scenario, const Results& results,
 
 std::vector<std::filesystem::path> writeReportFolder(const std::filesystem::path& dir, const Scenario& scenario,
                                                      const Results& results, const QImage& view3d) {
-  auto files = writeRunFolder(dir, scenario, results);
+  // Staged and renamed into place as a whole (core/run_folder.hpp); a report of a run replaces the earlier
+  // report of the same name, never a folder of other files.
+  RunFolder folder(dir, {.replace = true});
+  const std::filesystem::path staging = folder.staging();
+  auto files = writeRunFolder(staging, scenario, results);
   for (const auto& spec : results.plots) {
     for (const char* suffix : {".png", ".pdf"}) {
-      const auto file = dir / (spec.name + suffix);
+      const auto file = staging / (spec.name + suffix);
       if (!savePlotImage(results, spec, QString::fromStdString(file.string()), 1200, 800))
         throw std::runtime_error("could not write plot " + file.string());
       files.push_back(file);
     }
   }
   if (!view3d.isNull()) {
-    const auto file = dir / "view_3d.png";
-    const auto partial = dir / ".view_3d.partial.png";
-    if (!view3d.save(QString::fromStdString(partial.string()), "PNG"))
-      throw std::runtime_error("could not write " + file.string());
-    std::filesystem::rename(partial, file);
+    const auto file = staging / "view_3d.png";
+    if (!view3d.save(QString::fromStdString(file.string()), "PNG"))
+      throw std::runtime_error("could not write " + (dir / "view_3d.png").string());
     files.push_back(file);
   }
-  const auto summary = dir / "summary.md";
+  const auto summary = staging / "summary.md";
   writeFileAtomic(summary, summaryMarkdown(scenario, results, files));
   files.push_back(summary);
+  folder.commit();
+  for (auto& f : files) f = folder.target() / f.filename();
   return files;
 }
 

@@ -1,0 +1,156 @@
+#include "core/run_folder.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <system_error>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/text_format.hpp"
+
+namespace maris {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+[[noreturn]] void fail(const std::string& message) { throw RunFolderError(message); }
+
+std::string megabytes(std::uintmax_t bytes) { return formatText("%.1f MB", static_cast<double>(bytes) / 1e6); }
+
+// Removes staging and set-aside folders that a killed run left next to `target` (called under the lock).
+void removeStale(const fs::path& target) {
+  const std::string partial = "." + target.filename().string() + ".partial-";
+  const std::string old = "." + target.filename().string() + ".old-";
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(target.parent_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(partial, 0) == 0 || name.rfind(old, 0) == 0) fs::remove_all(entry.path(), ec);
+  }
+}
+
+void syncDirectory(const fs::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+bool isRunFolder(const fs::path& dir) {
+  std::error_code ec;
+  return fs::exists(dir / "summary.json", ec) || fs::exists(dir / "scenario.json", ec);
+}
+
+RunFolder::RunFolder(fs::path target, RunFolderOptions options) : options_(options) {
+  if (target.empty()) fail("the output folder is empty: name a folder");
+  std::error_code ec;
+  target = fs::absolute(target, ec).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();  // "out/" -> "out"
+  const std::string name = target.filename().string();
+  if (name.empty() || name == "." || name == ".." || target == target.root_path())
+    fail("the output folder " + quoted(target) + " must name a folder of its own");
+  target_ = target;
+  const fs::path parent = target.parent_path();
+
+  fs::create_directories(parent, ec);
+  if (ec) fail("cannot create the output folder's parent " + quoted(parent) + ": " + ec.message());
+  if (!fs::is_directory(parent, ec)) fail(quoted(parent) + " is not a folder");
+
+  // The lock is also the first write: a read-only or foreign parent fails here, before any solve.
+  const fs::path lock = parent / ("." + name + ".lock");
+  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0) fail("cannot write in " + quoted(parent) + ": " + std::strerror(errno));
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    if (err == EWOULDBLOCK)
+      fail("another maris run is writing " + quoted(target) + " (it holds " + quoted(lock) +
+           "); wait for it to finish or choose another output folder");
+    fail("cannot lock " + quoted(lock) + ": " + std::strerror(err));
+  }
+  // From here the destructor must run on failure: release the lock through it.
+  try {
+    const auto status = fs::symlink_status(target, ec);
+    if (fs::exists(status)) {
+      if (!fs::is_directory(status))
+        fail(quoted(target) + " exists and is not a folder; choose another output folder");
+      const bool empty = fs::is_empty(target, ec);
+      if (!empty && !isRunFolder(target))
+        fail(quoted(target) + " holds files that are not a maris run; maris never replaces such a folder, "
+             "choose another output folder");
+      if (!empty && !options_.replace)
+        fail(quoted(target) + " holds the results of another run; choose another output folder or replace "
+             "them (maris-cli run --force)");
+    }
+    removeStale(target);
+    staging_ = parent / ("." + name + ".partial-" + std::to_string(::getpid()));
+    if (::mkdir(staging_.c_str(), 0755) != 0) {
+      const int err = errno;
+      staging_.clear();
+      fail("cannot write in " + quoted(parent) + ": " + std::strerror(err));
+    }
+    const auto space = fs::space(parent, ec);
+    if (!ec && space.available < options_.expected_bytes)
+      fail("not enough free space for " + quoted(target) + ": the run writes about " +
+           megabytes(options_.expected_bytes) + ", " + megabytes(space.available) + " are free");
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+RunFolder::~RunFolder() { release(); }
+
+void RunFolder::release() {
+  std::error_code ec;
+  if (!committed_ && !staging_.empty()) fs::remove_all(staging_, ec);
+  staging_.clear();
+  if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
+  lock_fd_ = -1;
+}
+
+void RunFolder::commit() {
+  if (committed_ || staging_.empty()) fail("run folder " + quoted(target_) + " was already committed");
+  syncDirectory(staging_);
+  std::error_code ec;
+  const bool exists = fs::exists(fs::symlink_status(target_, ec));
+  if (!exists || fs::is_empty(target_, ec)) {
+    // rename(2) replaces an empty folder atomically.
+    if (::rename(staging_.c_str(), target_.c_str()) != 0)
+      fail("cannot move the results into " + quoted(target_) + ": " + std::strerror(errno));
+    committed_ = true;
+  } else {
+    if (!options_.replace || !isRunFolder(target_))
+      fail(quoted(target_) + " was filled by someone else during the run; the results were not written");
+    // Swap new and old in one step where the file system can; otherwise set the old one aside first.
+    if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) == 0) {
+      committed_ = true;
+      fs::remove_all(staging_, ec);  // now the old run
+    } else {
+      const fs::path aside =
+          target_.parent_path() / ("." + target_.filename().string() + ".old-" + std::to_string(::getpid()));
+      if (::rename(target_.c_str(), aside.c_str()) != 0)
+        fail("cannot replace " + quoted(target_) + ": " + std::strerror(errno));
+      if (::rename(staging_.c_str(), target_.c_str()) != 0) {
+        const int err = errno;
+        ::rename(aside.c_str(), target_.c_str());
+        fail("cannot move the results into " + quoted(target_) + ": " + std::strerror(err));
+      }
+      committed_ = true;
+      fs::remove_all(aside, ec);
+    }
+  }
+  staging_.clear();
+  syncDirectory(target_.parent_path());
+}
+
+}  // namespace maris

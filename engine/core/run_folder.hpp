@@ -1,0 +1,61 @@
+// A run folder written as a transaction: the folder is either one complete run or untouched.
+//
+//   RunFolder folder(out, {.replace = force, .expected_bytes = estimate.output_bytes});  // before the solve
+//   ... solve ...
+//   writeRunFolder(folder.staging(), scenario, results);  // plus plots
+//   folder.commit();                                       // renames the staged folder into place
+//
+// The constructor checks everything that can be checked before a long solve: the name, that the parent
+// can be created and written, that the target is not a file, not a foreign folder and not another run's
+// folder (unless `replace`), that no other run is writing it (an exclusive flock on the sibling lock
+// file `.NAME.lock`, kept for the object's life) and that the file system has room for the expected
+// output. Files go into the hidden sibling `.NAME.partial-PID`; commit() renames it onto NAME (an
+// existing run is swapped out atomically and then removed). An uncommitted folder (error, cancellation)
+// is removed by the destructor, and stale staging folders of killed runs are removed by the next run.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace maris {
+
+// Why a run folder cannot be written (bad --out, another run's results, locked, no room, I/O error).
+class RunFolderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RunFolderOptions {
+  bool replace = false;             // replace a folder that holds another run's results (maris-cli --force)
+  std::uintmax_t expected_bytes = 0;  // free space the run's files need [bytes]
+};
+
+class RunFolder {
+ public:
+  // Throws RunFolderError naming the folder and what to change.
+  explicit RunFolder(std::filesystem::path target, RunFolderOptions options = {});
+  ~RunFolder();
+  RunFolder(const RunFolder&) = delete;
+  RunFolder& operator=(const RunFolder&) = delete;
+
+  const std::filesystem::path& target() const { return target_; }    // absolute, normalised
+  const std::filesystem::path& staging() const { return staging_; }  // write the run's files here
+
+  // Moves the staged folder into place as a whole. Throws RunFolderError (the target is then untouched).
+  void commit();
+
+ private:
+  void release();  // removes an uncommitted staging folder, drops the lock
+
+  std::filesystem::path target_, staging_;
+  RunFolderOptions options_;
+  int lock_fd_ = -1;
+  bool committed_ = false;
+};
+
+// True when `dir` holds the files of a run (scenario.json or summary.json).
+bool isRunFolder(const std::filesystem::path& dir);
+
+}  // namespace maris
