@@ -7,6 +7,7 @@ packages=(
   libvtk9-dev libeigen3-dev libqcustomplot-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth
+  python3
 )
 missing=()
 for p in "${packages[@]}"; do

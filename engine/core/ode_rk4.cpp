@@ -1,6 +1,7 @@
 // Classical fixed-step Runge–Kutta 4 (see core/ode.hpp for the contract).
 #include <cmath>
 
+#include "core/checked_count.hpp"
 #include "core/errors.hpp"
 #include "core/ode.hpp"
 #include "core/ode_internal.hpp"
@@ -17,7 +18,8 @@ OdeStats integrateRk4(const OdeRhs& rhs, Eigen::VectorXd& y, const OdeOptions& o
   const double span = options.t1 - options.t0;
   // Number of steps: the last one is shortened to end at t1 (a remainder below 1e-9 h is absorbed).
   const double ratio = span / h_nominal;
-  const long step_count = span > 0 ? std::max(1L, static_cast<long>(std::ceil(ratio - 1e-9))) : 0;
+  const long step_count =
+      span > 0 ? std::max(1L, checkedCount(ratio, kMaxTimeSteps, "time step h", "RK4 steps over the time span")) : 0;
   if (step_count > options.max_steps)
     throw SolverError("time", options.t0, 0,
                       "needs " + std::to_string(step_count) + " steps, more than max_steps = " +

@@ -125,13 +125,22 @@ CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferenceP
         current = std::move(trial);
         cost = trial_cost;
         lambda = std::max(lambda / 3.0, 1e-7);
-        if (gain < 1e-4) it = p.calibration_iterations;  // stalled: done
+        if (gain < 1e-4) {  // stalled: done
+          res.converged = true;
+          it = p.calibration_iterations;
+        }
       } else {
         lambda *= 4.0;
       }
     }
-    if (!improved) break;
+    if (!improved) {  // no step lowers the cost: a minimum within the limit-cycle noise
+      res.converged = true;
+      break;
+    }
   }
+  if (!std::isfinite(cost))
+    throw SolverError("calibration cost Σ((model − reference)/σ)²", std::nan(""), -1,
+                      "is not finite (a model value or a reference point is not finite)");
   res.parameters = withCoefficients(p, res.names, x, ranges);
   res.residuals = current;
   res.cost = cost;
@@ -149,12 +158,17 @@ CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferenceP
 
 void addCalibrationResults(Results& results, const CalibrationResult& cal) {
   std::ostringstream note;
-  note << "calibrated coefficients (save with --set or into the scenario's parameters):";
+  if (cal.converged)
+    note << "calibrated coefficients (save with --set or into the scenario's parameters):";
+  else
+    note << "the calibration did not converge within calibration.max_iterations = " << cal.iterations << " (cost "
+         << cal.cost_initial << " -> " << cal.cost
+         << "); its coefficients are not a fit and are not recommended (allow more iterations or start elsewhere)";
   for (std::size_t i = 0; i < cal.names.size(); ++i) {
     results.addScalar("calibrated_" + cal.names[i], cal.fitted[i], "-",
                       "Fitted " + cal.names[i] + " (was " + std::to_string(cal.initial[i]) + "; ± " +
                           std::to_string(cal.standard_error[i]) + " standard error)");
-    note << " " << cal.names[i] << "=" << cal.fitted[i];
+    if (cal.converged) note << " " << cal.names[i] << "=" << cal.fitted[i];
   }
   results.addScalar("calibration_cost_initial", cal.cost_initial, "-", "Σ((model − reference)/σ)² before the fit");
   results.addScalar("calibration_cost", cal.cost, "-", "Σ((model − reference)/σ)² after the fit");

@@ -33,6 +33,7 @@ struct CalibrationResult {
   std::vector<CalibrationResidual> residuals_initial, residuals;  // before and after
   double cost_initial = 0.0, cost = 0.0;  // Σ normalised residual²
   int iterations = 0;
+  bool converged = false;                 // the fit stalled at a minimum within calibration.iterations
   long limit_cycles = 0;                  // simulations run
 };
 

@@ -108,7 +108,9 @@ ImportedSeries parseSeriesCsv(const std::string& text, const std::string& origin
   return out;
 }
 
-ImportedSeries readSeriesCsv(const std::string& path) { return parseSeriesCsv(readTextFile(path), path); }
+ImportedSeries readSeriesCsv(const std::string& path) {
+  return parseSeriesCsv(readDataText(path, "fiv", "parameters.analysis.series_file"), path);
+}
 
 SeriesAnalysis analyseSeries(const ImportedSeries& s, double damping, double density, double speed, double length,
                              double side) {
