@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/resources.hpp"
+
 namespace maris::fiv {
 
 namespace {

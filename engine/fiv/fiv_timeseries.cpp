@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
+#include "core/resources.hpp"
 #include "core/scenario.hpp"
 #include "core/spectrum.hpp"
 #include "fiv/fiv_reference.hpp"
