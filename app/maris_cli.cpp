@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "core/errors.hpp"
+#include "core/input_limits.hpp"
 #include "core/run_output.hpp"
 #include "catalog.hpp"
 #include "plot_writer.hpp"

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/input_limits.hpp"
 #include "core/text_format.hpp"
 
 namespace maris {

@@ -11,11 +11,6 @@
 
 namespace maris {
 
-// Echoed input is cut after this many characters (the full length is stated); a list of errors shows
-// this many before "... and N more".
-inline constexpr std::size_t kEchoLimit = 80;
-inline constexpr std::size_t kReportedErrorLimit = 20;
-
 // One invalid field of a scenario: "parameters.geometry.length = -3: must be in (0, 100000]".
 struct FieldError {
   std::string path;     // JSON path inside the scenario, e.g. "parameters.sections[1].outer_diameter"
@@ -55,11 +50,7 @@ class RunCancelled : public std::runtime_error {
   RunCancelled() : std::runtime_error("run cancelled") {}
 };
 
-// `text` cut to `limit` characters (at a UTF-8 character boundary), stating the full length when cut:
-// for echoing input in messages.
-std::string echoText(const std::string& text, std::size_t limit = kEchoLimit);
-
-// Joins the messages of the errors, one per line: the first kReportedErrorLimit, then how many more.
+// Joins the messages of all errors, one per line.
 std::string describeErrors(const std::vector<FieldError>& errors);
 
 }  // namespace maris

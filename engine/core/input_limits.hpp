@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/results.hpp"
 #include "core/schema.hpp"
 
 namespace maris {
@@ -25,6 +26,20 @@ struct InputLimits {
   static constexpr std::size_t kDataColumns = 1000;                // fields in one line of a data file
   static constexpr std::size_t kSetPathComponents = 16;            // dotted components of a --set path
 };
+
+// Echoed input is cut after kEchoLimit characters (the full length is stated): FieldError::str() does it
+// for every error, so a 5 MB value prints as 80 characters; describeErrors() lists the first
+// kReportedErrorLimit errors, then how many more there are.
+inline constexpr std::size_t kEchoLimit = 80;
+inline constexpr std::size_t kReportedErrorLimit = 20;
+
+// `text` cut to `limit` characters (at a UTF-8 character boundary), stating the full length when cut.
+std::string echoText(const std::string& text, std::size_t limit = kEchoLimit);
+
+// Throws SolverError naming the first scalar, table value or error estimate of `results` that is not
+// finite: runScenario calls it after every run, so no run reports NaN or infinity. A scene that cannot
+// compute a value for some input (e.g. a regression outside its range) leaves it out with a warning.
+void requireFiniteResults(const Results& results);
 
 // A JSON syntax error (as opposed to a limit, a duplicate key or an overflow): `--set` falls back to
 // taking the value as text only for this one.

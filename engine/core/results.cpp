@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/input_limits.hpp"
+
 namespace maris {
 
 Column& Table::add(std::string column_name, std::string unit, std::vector<double> values) {

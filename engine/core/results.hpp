@@ -113,11 +113,6 @@ struct Results {
   void addScalar(std::string name, double value, std::string unit, std::string description);
 };
 
-// Throws SolverError naming the first scalar, table value or error estimate that is not finite: a run
-// never reports NaN or infinity as a result. A scene that cannot compute a value for this input (e.g. a
-// regression outside its range) leaves it out and says why in a warning.
-void requireFiniteResults(const Results& results);
-
 // summary.json content: scalars with units, solver statistics and warnings.
 Json summaryJson(const Results& results);
 

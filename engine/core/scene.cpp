@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/input_limits.hpp"
+
 
 namespace maris {
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/errors.hpp"
+#include "core/input_limits.hpp"
 #include "core/resources.hpp"
 #include "core/scenario.hpp"
 #include "core/text_format.hpp"
