@@ -74,12 +74,14 @@ class LimitedDomBuilder {
 
   std::string path() const {
     std::string p = prefix_;
-    for (const auto& level : stack_) {
+    for (std::size_t i = 0; i < stack_.size(); ++i) {
+      const Level& level = stack_[i];
       if (level.node->is_object()) {
         if (!p.empty()) p += '.';
         p += level.key;
-      } else {
-        p += "[" + std::to_string(level.count) + "]";
+      } else {  // an open container below is the array's last element; at the top, the next one is read
+        const std::size_t index = i + 1 < stack_.size() ? level.count - 1 : level.count;
+        p += "[" + std::to_string(index) + "]";
       }
     }
     return p.empty() ? "(document)" : p;
