@@ -218,7 +218,7 @@ def mutate(rng, seed_doc, resources):
         if bad == "deep-value":
             return Case("set-" + bad, "--set", text, sets=[p + "=" + "[" * 60000 + "]" * 60000])
         if bad == "huge":
-            return Case("set-" + bad, "--set", text, sets=[p + "=[" + ",".join(["2"] * 200000) + "]"])
+            return Case("set-" + bad, "--set", text, sets=[p + "=[" + ",".join(["2"] * 60000) + "]"])
         if bad == "overflow":
             return Case("set-" + bad, p, text, sets=[p + "=1e400"])
         if bad == "no-equals":
@@ -228,7 +228,7 @@ def mutate(rng, seed_doc, resources):
         if bad == "into-leaf":
             return Case("set-" + bad, p, text, sets=[p + ".deeper=1"])
         if bad == "long-value":
-            return Case("set-" + bad, p, text, sets=[p + "=" + "y" * 200000])
+            return Case("set-" + bad, p, text, sets=[p + "=" + "y" * 120000])
         if bad == "empty-path":
             return Case("set-" + bad, "--set", text, sets=["=1"])
         return Case("set-" + bad, p, text, sets=[p + "=[1e308,-1e308,null]"])
