@@ -7,12 +7,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <unistd.h>
 
 #include "core/errors.hpp"
+#include "core/input_limits.hpp"
 #include "core/run_folder.hpp"
 #include "core/run_output.hpp"
 #include "catalog.hpp"
@@ -61,6 +64,12 @@ const char* kUsageText =
     "                               the work limits\n"
     "exit codes: 0 success, 1 usage error or output folder refused, 2 invalid input or work limit,\n"
     "            3 solver failure, 130 cancelled (SIGINT), 143 cancelled (SIGTERM)\n";
+
+// Indents every line after the first of a multi-line message by two spaces.
+std::string indentLines(std::string text) {
+  for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3)) text.insert(at + 1, "  ");
+  return text;
+}
 
 int cmdList() {
   std::printf("%-34s %-8s %s\n", "NAME", "SCENE", "DESCRIPTION");
@@ -143,7 +152,7 @@ int cmdRun(const std::vector<std::string>& args, int argc, char** argv) {
 
   Scenario scenario;
   std::string id;
-  if (std::filesystem::exists(target)) {
+  if (std::filesystem::exists(std::filesystem::symlink_status(target))) {  // a link loop is reported by the loader
     scenario = loadScenarioFile(target);
     id = std::filesystem::path(target).stem().string();
   } else {
@@ -206,8 +215,7 @@ int main(int argc, char** argv) {
     std::fputs(kUsageText, stderr);
     return kUsage;
   } catch (const InputError& e) {
-    std::fprintf(stderr, "invalid input:\n");
-    for (const auto& fe : e.errors()) std::fprintf(stderr, "  %s\n", fe.str().c_str());
+    std::fprintf(stderr, "invalid input:\n  %s\n", indentLines(describeErrors(e.errors())).c_str());
     return kInvalidInput;
   } catch (const SolverError& e) {
     std::fprintf(stderr, "\nsolver failure: %s\n", e.what());
@@ -215,6 +223,21 @@ int main(int argc, char** argv) {
   } catch (const RunCancelled&) {
     std::fprintf(stderr, "\ncancelled; nothing was written for this run\n");
     return 128 + g_signal.load();
+  } catch (const Json::exception& e) {
+    // The loaders turn JSON problems into InputErrors; one that escapes is still a problem of the input.
+    std::fprintf(stderr, "invalid input:\n  %s\n", echoText(e.what(), 4 * kEchoLimit).c_str());
+    return kInvalidInput;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::fprintf(stderr, "invalid input:\n  %s: %s\n", echoText(e.path1().string()).c_str(), e.code().message().c_str());
+    return kInvalidInput;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "\nsolver failure: out of memory (the scenario asks for more memory than is available; "
+                         "use fewer steps, samples or cells)\n");
+    return kSolverFailure;
+  } catch (const std::length_error& e) {
+    std::fprintf(stderr, "\nsolver failure: a table would exceed the largest possible size (%s); use fewer steps, "
+                         "samples or cells\n", e.what());
+    return kSolverFailure;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return kUsage;

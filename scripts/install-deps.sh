@@ -8,6 +8,7 @@ packages=(
   libgtest-dev
   xvfb xauth
   file lintian appstream desktop-file-utils
+  python3
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,8 +1,8 @@
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <system_error>
 
 #include "core/errors.hpp"
+#include "core/input_limits.hpp"
 #include "core/resources.hpp"
 
 namespace maris {
@@ -34,22 +34,21 @@ std::optional<std::string> dataPathProblem(std::string_view path, std::string_vi
     if (builtinResource(sceneFolder(scene) + std::string(path.substr(kPrefix.size())))) return std::nullopt;
     return "is not a built-in data set (available: " + availableNames(scene) + ")";
   }
-  if (!std::filesystem::is_regular_file(std::filesystem::path(std::string(path)))) return "is not a readable file";
+  std::error_code error;  // a loop of symbolic links is "not a readable file", not an exception
+  if (!std::filesystem::is_regular_file(std::filesystem::path(std::string(path)), error)) return "is not a readable file";
   return std::nullopt;
 }
 
 std::string readDataText(std::string_view path, std::string_view scene, const std::string& field) {
-  const std::string quoted = "\"" + std::string(path) + "\"";
+  const std::string quoted = "\"" + echoText(std::string(path)) + "\"";
   if (isBuiltinDataPath(path)) {
     const auto text = builtinResource(sceneFolder(scene) + std::string(path.substr(kPrefix.size())));
     if (!text) throw InputError(field, quoted, "is not a built-in data set (available: " + availableNames(scene) + ")");
     return std::string(*text);
   }
-  std::ifstream in(std::filesystem::path(std::string(path)), std::ios::binary);
-  if (!in) throw InputError(field, quoted, "cannot be opened");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::string text = readInputFile(std::filesystem::path(std::string(path)), field, InputLimits::kDataFileBytes);
+  checkDataShape(text, field, std::string(path));
+  return text;
 }
 
 }  // namespace maris

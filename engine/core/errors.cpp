@@ -1,20 +1,33 @@
 #include "core/errors.hpp"
 
+#include <cmath>
+
+#include "core/input_limits.hpp"
 #include "core/text_format.hpp"
 
 namespace maris {
 
+std::string echoText(const std::string& text, std::size_t limit) {
+  if (text.size() <= limit) return text;
+  std::size_t at = limit - 3;
+  while (at > 0 && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;  // not inside a UTF-8 character
+  return text.substr(0, at) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
 std::string FieldError::str() const {
-  if (value.empty()) return path + ": " + message;
-  return path + " = " + value + ": " + message;
+  const std::string where = echoText(path, 2 * kEchoLimit);
+  if (value.empty()) return where + ": " + echoText(message, 12 * kEchoLimit);
+  return where + " = " + echoText(value, kEchoLimit) + ": " + echoText(message, 12 * kEchoLimit);
 }
 
 std::string describeErrors(const std::vector<FieldError>& errors) {
   std::string text;
-  for (const auto& e : errors) {
+  for (std::size_t i = 0; i < errors.size() && i < kReportedErrorLimit; ++i) {
     if (!text.empty()) text += '\n';
-    text += e.str();
+    text += errors[i].str();
   }
+  if (errors.size() > kReportedErrorLimit)
+    text += formatText("\n... and %zu more errors (%zu in all)", errors.size() - kReportedErrorLimit, errors.size());
   return text;
 }
 
@@ -25,8 +38,9 @@ InputError::InputError(const std::string& path, const std::string& value, const 
     : InputError(std::vector<FieldError>{FieldError{path, value, message}}) {}
 
 static std::string solverMessage(const std::string& quantity, double t, long step, const std::string& detail) {
-  std::string message = step >= 0 ? formatText("solver failed at t = %.6g s (step %ld): ", t, step)
-                                  : formatText("solver failed at t = %.6g s: ", t);
+  std::string message = !std::isfinite(t) ? std::string("solver failed: ")  // not tied to a time (a result)
+                        : step >= 0      ? formatText("solver failed at t = %.6g s (step %ld): ", t, step)
+                                         : formatText("solver failed at t = %.6g s: ", t);
   message.append(quantity);
   if (!detail.empty()) message.append(" ").append(detail);
   return message;

@@ -1,9 +1,11 @@
 // Classical fixed-step Runge–Kutta 4 (see core/ode.hpp for the contract).
 #include <cmath>
 
+#include "core/checked_count.hpp"
 #include "core/errors.hpp"
 #include "core/ode.hpp"
 #include "core/ode_internal.hpp"
+#include "core/text_format.hpp"
 
 namespace maris {
 
@@ -17,11 +19,12 @@ OdeStats integrateRk4(const OdeRhs& rhs, Eigen::VectorXd& y, const OdeOptions& o
   const double span = options.t1 - options.t0;
   // Number of steps: the last one is shortened to end at t1 (a remainder below 1e-9 h is absorbed).
   const double ratio = span / h_nominal;
-  const long step_count = span > 0 ? std::max(1L, static_cast<long>(std::ceil(ratio - 1e-9))) : 0;
-  if (step_count > options.max_steps)
+  // Compared as doubles first: a count beyond max_steps (or beyond any integer) is never converted.
+  if (span > 0 && !(std::ceil(ratio - 1e-9) <= static_cast<double>(options.max_steps)))
     throw SolverError("time", options.t0, 0,
-                      "needs " + std::to_string(step_count) + " steps, more than max_steps = " +
-                          std::to_string(options.max_steps));
+                      formatText("needs %.6g steps, more than max_steps = %ld", std::ceil(ratio - 1e-9), options.max_steps));
+  const long step_count =
+      span > 0 ? std::max(1L, checkedCount(ratio, options.max_steps, "time step h", "RK4 steps over the time span")) : 0;
 
   // Work vectors, sized once.
   Eigen::VectorXd k1(n), k2(n), k3(n), k4(n), k5(n), stage(n), y_new(n), dense(n);

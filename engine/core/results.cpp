@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/input_limits.hpp"
+
 namespace maris {
 
 Column& Table::add(std::string column_name, std::string unit, std::vector<double> values) {
@@ -69,6 +71,20 @@ const Scalar* Results::findScalar(const std::string& name) const {
 
 void Results::addScalar(std::string name, double value, std::string unit, std::string description) {
   scalars.push_back(Scalar{std::move(name), value, std::move(unit), std::move(description)});
+}
+
+void requireFiniteResults(const Results& results) {
+  const double no_time = std::nan("");
+  for (const auto& s : results.scalars)
+    if (!std::isfinite(s.value)) throw SolverError("result " + s.name, no_time, -1, "is not finite");
+  for (const auto& t : results.tables)
+    for (const auto& c : t.columns)
+      for (std::size_t r = 0; r < c.values.size(); ++r)
+        if (!std::isfinite(c.values[r]))
+          throw SolverError("result table " + t.name + ", column " + c.name + ", row " + std::to_string(r + 1),
+                            no_time, -1, "is not finite");
+  if (!std::isfinite(results.stats.error_estimate))
+    throw SolverError("result error estimate", no_time, -1, "is not finite");
 }
 
 Json summaryJson(const Results& results) {

@@ -11,6 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/input_limits.hpp"
+
 namespace maris {
 
 Json scenarioToJson(const Scenario& s) {
@@ -69,31 +71,14 @@ Scenario scenarioFromJson(const Json& doc) {
 Scenario scenarioFromText(const std::string& text, const std::string& origin) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError(origin, "", "is empty; expected a JSON scenario document");
-  Json doc;
-  try {
-    doc = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    // e.byte is the 1-based offset of the error; turn it into line and column.
-    std::size_t line = 1, col = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
-    }
-    throw InputError(origin, "", "is not valid JSON (line " + std::to_string(line) + ", column " +
-                                     std::to_string(col) + ")");
-  }
-  return scenarioFromJson(doc);
+  return scenarioFromJson(parseJsonLimited(text, origin));
 }
 
 std::string readTextFile(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), "", std::string("cannot be opened: ") + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return readInputFile(file, file.string(), InputLimits::kScenarioFileBytes);
 }
 
 Scenario loadScenarioFile(const std::filesystem::path& file) {
-  if (std::filesystem::is_directory(file)) throw InputError(file.string(), "", "is a folder, not a scenario file");
   return scenarioFromText(readTextFile(file), file.string());
 }
 
@@ -134,15 +119,27 @@ void saveScenarioFile(const Scenario& scenario, const std::filesystem::path& fil
 void applyOverride(Scenario& scenario, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw InputError("--set " + assignment, "", "must look like path=value, e.g. geometry.length=120");
+    throw InputError("--set " + echoText(assignment), "", "must look like path=value, e.g. geometry.length=120");
   std::string path = assignment.substr(0, eq);
   const std::string text = assignment.substr(eq + 1);
   if (path.rfind("parameters.", 0) == 0) path = path.substr(11);
+  const std::string origin = "--set " + echoText(path);
+  const auto components = static_cast<std::size_t>(std::count(path.begin(), path.end(), '.')) + 1;
+  if (components > InputLimits::kSetPathComponents)
+    throw InputError(origin, "", "has " + std::to_string(components) + " path components; the limit is " +
+                                     std::to_string(InputLimits::kSetPathComponents));
+  if (path.size() > InputLimits::kStringLength || text.size() > InputLimits::kStringLength)
+    throw InputError(origin, "", "is longer than " + std::to_string(InputLimits::kStringLength) + " characters");
   Json value;
   try {
-    value = Json::parse(text);
-  } catch (const Json::parse_error&) {
-    value = text;
+    value = parseJsonLimited(text, origin, "parameters." + path);
+  } catch (const JsonSyntaxError&) {
+    value = text;  // not JSON: taken as text, which must then be valid UTF-8 to be saved
+    try {
+      (void)value.dump();
+    } catch (const Json::type_error&) {
+      throw InputError(origin, "", "is not valid UTF-8 text");
+    }
   }
   setAtPath(scenario.parameters, path, std::move(value));
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/input_limits.hpp"
+
 
 namespace maris {
 
@@ -39,6 +41,7 @@ Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunC
   const double t0 = context.elapsedSeconds();
   Results r = scene.run(parameters, context);
   r.stats.wall_time_s = context.elapsedSeconds() - t0;
+  requireFiniteResults(r);
   for (auto& w : context.warnings()) r.warnings.push_back(std::move(w));
   return r;
 }

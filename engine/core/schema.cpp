@@ -114,8 +114,42 @@ std::string didYouMean(const std::string& word, const std::vector<std::string>& 
   return best;
 }
 
+// Appends the JSON text of `value` to `out`, stopping once `out` is past `budget` characters, so a huge
+// or deeply nested value costs no more than the snippet (no full dump, bounded recursion).
+static void appendSnippet(const Json& value, std::string& out, std::size_t budget, int depth) {
+  if (out.size() > budget) return;
+  if (depth > 8) {
+    out += value.is_array() ? "[...]" : value.is_object() ? "{...}" : "...";
+    return;
+  }
+  if (value.is_object()) {
+    out += '{';
+    bool first = true;
+    for (auto it = value.begin(); it != value.end() && out.size() <= budget; ++it) {
+      out += first ? "" : ",";
+      first = false;
+      appendSnippet(Json(it.key().substr(0, budget)), out, budget, depth + 1);
+      out += ':';
+      appendSnippet(it.value(), out, budget, depth + 1);
+    }
+    out += '}';
+  } else if (value.is_array()) {
+    out += '[';
+    for (std::size_t i = 0; i < value.size() && out.size() <= budget; ++i) {
+      out += i ? "," : "";
+      appendSnippet(value[i], out, budget, depth + 1);
+    }
+    out += ']';
+  } else if (value.is_string()) {
+    out += Json(value.get_ref<const std::string&>().substr(0, budget)).dump(-1, ' ', false, Json::error_handler_t::replace);
+  } else {
+    out += value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  }
+}
+
 std::string jsonSnippet(const Json& value) {
-  std::string text = value.dump();
+  std::string text;
+  appendSnippet(value, text, 60, 0);
   if (text.size() > 60) text = text.substr(0, 57) + "...";
   return text;
 }

@@ -123,6 +123,9 @@ CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferenceP
   x = fit.x;
   const std::vector<CalibrationResidual> current = residualsAt(x);
   const double cost = fit.cost;
+  if (!std::isfinite(cost))
+    throw SolverError("calibration cost Σ((model − reference)/σ)²", std::nan(""), -1,
+                      "is not finite (a model value or a reference point is not finite)");
   const Eigen::MatrixXd& jac = fit.jacobian;
   const auto m = static_cast<Eigen::Index>(current.size());
   res.parameters = withCoefficients(p, res.names, x, ranges);
@@ -142,21 +145,23 @@ CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferenceP
 
 void addCalibrationResults(Results& results, const CalibrationResult& cal) {
   std::ostringstream note;
-  note << "calibrated coefficients (save with --set or into the scenario's parameters):";
+  if (cal.converged)
+    note << "calibrated coefficients (save with --set or into the scenario's parameters):";
+  else
+    note << "the calibration did not converge (" << cal.stop_reason << " after " << cal.iterations
+         << " of calibration.max_iterations; cost " << cal.cost_initial << " -> " << cal.cost
+         << "); its coefficients are not a fit and are not recommended (allow more iterations or start elsewhere)";
   for (std::size_t i = 0; i < cal.names.size(); ++i) {
     results.addScalar("calibrated_" + cal.names[i], cal.fitted[i], "-",
                       "Fitted " + cal.names[i] + " (was " + std::to_string(cal.initial[i]) + "; ± " +
                           std::to_string(cal.standard_error[i]) + " standard error)");
-    note << " " << cal.names[i] << "=" << cal.fitted[i];
+    if (cal.converged) note << " " << cal.names[i] << "=" << cal.fitted[i];
   }
   results.addScalar("calibration_cost_initial", cal.cost_initial, "-", "Σ((model − reference)/σ)² before the fit");
   results.addScalar("calibration_cost", cal.cost, "-", "Σ((model − reference)/σ)² after the fit");
   results.addScalar("calibration_iterations", cal.iterations, "-",
                     "Levenberg–Marquardt iterations; " + std::string(cal.converged ? "converged" : "not converged") +
                         " (" + cal.stop_reason + ")");
-  if (!cal.converged)
-    results.warnings.push_back("calibration did not converge (" + cal.stop_reason + " after " +
-                               std::to_string(cal.iterations) + " iterations): the fitted values are the best found");
   results.addScalar("calibration_rms_residual", std::sqrt(cal.cost / std::max<std::size_t>(1, cal.residuals.size())),
                     "-", "RMS of the normalised residuals after the fit");
   results.warnings.push_back(note.str());

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/checked_count.hpp"
 #include "core/errors.hpp"
 
 namespace maris::fiv {
@@ -213,7 +214,7 @@ LimitCycle summarise(const MarchOutcome& m, const LimitCycleSettings& set, doubl
 }
 
 void recordHistory(const FivRhs& rhs, State& s, double h, double duration, History& out, RunContext* ctx) {
-  const long n = static_cast<long>(std::ceil(duration / h));
+  const long n = checkedCount(duration / h, kMaxStoredSamples, "parameters.numerics.steps_per_period", "recorded samples");
   out = History{};
   for (long i = 0; i <= n; ++i) {
     if (i > 0) rhs.step(s, h);

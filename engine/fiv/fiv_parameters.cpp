@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/resources.hpp"
+
 namespace maris::fiv {
 
 namespace {
@@ -196,13 +198,14 @@ std::vector<FieldError> checkFivParameters(const FivParameters& p) {
                           "is not a calibratable coefficient (allowed: " + allowed + ")"});
     }
   }
-  if (!p.reference_file.empty() && !std::filesystem::exists(p.reference_file))
-    errors.push_back({"calibration.reference_file", "\"" + p.reference_file + "\"", "file does not exist"});
+  if (!p.reference_file.empty())
+    if (auto problem = dataPathProblem(p.reference_file, "fiv"))
+      errors.push_back({"calibration.reference_file", "\"" + p.reference_file + "\"", *problem});
   if (p.analysis == "post_process") {
     if (p.series_file.empty())
       errors.push_back({"analysis.series_file", "\"\"", "post_process needs a CSV file with time and y columns"});
-    else if (!std::filesystem::exists(p.series_file))
-      errors.push_back({"analysis.series_file", "\"" + p.series_file + "\"", "file does not exist"});
+    else if (auto problem = dataPathProblem(p.series_file, "fiv"))
+      errors.push_back({"analysis.series_file", "\"" + p.series_file + "\"", *problem});
   }
   if (p.forcing != "galloping" && p.strouhal <= 0.0)
     errors.push_back({"viv.strouhal", num(p.strouhal), "must be > 0 when the wake oscillator is on"});

@@ -72,6 +72,9 @@ CsvColumns parseNumericCsv(const std::string& text, const std::string& origin) {
     for (const auto& c : cells) {
       double v = 0.0;
       if (c.empty()) row.emplace_back();
+      else if (parseNumber(c, v) && std::isnan(v))  // NaN is not a measurement: a missing value is an empty cell
+        throw InputError(origin, "line " + std::to_string(line_no),
+                         "a cell reads \"" + c + "\": give a number, or leave the cell empty for no value");
       else if (parseNumber(c, v)) row.emplace_back(v);
       else numeric = false;
     }
@@ -107,6 +110,10 @@ std::vector<ReferencePoint> parseReferencePoints(const std::string& csv_text, co
     const auto& r = csv.rows[i];
     if (!r[c_speed] || !r[c_h])
       throw InputError(origin, "row " + std::to_string(i + 1), "flow_speed and submergence_ratio are required");
+    // Only the submergence ratio may be infinite (deep water); every measured value must be finite.
+    for (std::size_t c = 0; c < r.size(); ++c)
+      if (r[c] && !std::isfinite(*r[c]) && static_cast<int>(c) != c_h)
+        throw InputError(origin, "row " + std::to_string(i + 1), "column " + csv.names[c] + " must be a finite number");
     ReferencePoint p;
     p.speed = *r[c_speed];
     p.submergence_ratio = *r[c_h];
@@ -123,7 +130,7 @@ std::vector<ReferencePoint> parseReferencePoints(const std::string& csv_text, co
 }
 
 std::vector<ReferencePoint> loadReferencePoints(const std::string& file) {
-  if (!file.empty()) return parseReferencePoints(readTextFile(file), file);
+  if (!file.empty()) return parseReferencePoints(readDataText(file, "fiv", "parameters.calibration.reference_file"), file);
   const auto text = builtinResource("data/fiv/paper_points.csv");
   if (!text) throw InputError("calibration.reference_file", "\"\"", "built-in data/fiv/paper_points.csv is missing");
   return parseReferencePoints(std::string(*text), "data/fiv/paper_points.csv");

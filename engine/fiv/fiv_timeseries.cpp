@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
+#include "core/resources.hpp"
 #include "core/scenario.hpp"
 #include "core/spectrum.hpp"
 #include "fiv/fiv_reference.hpp"
@@ -108,7 +109,9 @@ ImportedSeries parseSeriesCsv(const std::string& text, const std::string& origin
   return out;
 }
 
-ImportedSeries readSeriesCsv(const std::string& path) { return parseSeriesCsv(readTextFile(path), path); }
+ImportedSeries readSeriesCsv(const std::string& path) {
+  return parseSeriesCsv(readDataText(path, "fiv", "parameters.analysis.series_file"), path);
+}
 
 SeriesAnalysis analyseSeries(const ImportedSeries& s, double damping, double density, double speed, double length,
                              double side) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/checked_count.hpp"
 #include "core/errors.hpp"
 #include "core/ode.hpp"
 #include "riser/riser_charted_alpha.hpp"
@@ -235,7 +236,10 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   }
   if (plan.method == Integrator::Rk4) {
     plan.step = p.time_step > 0 ? p.time_step : h_rk4;
-    const long steps = p.end_time > 0 ? std::max(1L, static_cast<long>(std::ceil(p.end_time / plan.step - 1e-9))) : 0;
+    const long steps = p.end_time > 0 ? std::max(1L, checkedCount(p.end_time / plan.step, kMaxTimeSteps,
+                                                                  "parameters.solver.time_step",
+                                                                  "time steps over solver.end_time"))
+                                      : 0;
     if (steps > 0) plan.step = p.end_time / steps;
     // Baumgarte rate of the default step, whatever step is chosen: at α = 0.1/h the term α²Φ (Φ = O(h⁴)) enters
     // at O(h²), and A under RK4 converged at second order (a falling chain's energy error 4.5e-7, 8.1e-8, 1.8e-8

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/checked_count.hpp"
+
 namespace maris::seismic {
 
 BoundaryDrive::BoundaryDrive(const FeModel& model, const FreeField& field,
@@ -13,7 +15,8 @@ BoundaryDrive::BoundaryDrive(const FeModel& model, const FreeField& field,
   const double half_width = 0.5 * m.nx * m.delta;
   const double lead = std::abs(p_) * half_width + 4.0 * dt;
   trace_t0_ = -lead;
-  const int n = static_cast<int>(std::ceil((steps * dt + 2.0 * lead) / dt)) + 4;
+  const int n = static_cast<int>(checkedCount((steps * dt + 2.0 * lead) / dt, kMaxStoredSamples,
+                                              "parameters.solver.courant_fraction", "samples of the incident trace")) + 4;
   std::vector<double> u0(n);
   for (int k = 0; k < n; ++k) u0[k] = incident(trace_t0_ + k * dt);
   const FreeFieldSynthesis synthesis(field, u0, trace_t0_, dt, ctx);

@@ -4,6 +4,8 @@
 #include <vector>
 #include <numbers>
 
+#include "core/checked_count.hpp"
+
 namespace maris::seismic {
 
 double reefHalfWidth(const SeismicParameters& p, double y) {
@@ -87,7 +89,8 @@ FeMesh buildMesh(const SeismicParameters& p, bool with_water, bool coarse_compan
   m.delta = align / n_align;
   const int n_below = std::max(2, static_cast<int>(std::lround(box.seabed_depth / m.delta)));
   const int n_above = static_cast<int>(std::ceil(box.top / m.delta - 1e-9));
-  const int half_cells = std::max(2, static_cast<int>(std::ceil(box.half_width / m.delta - 1e-9)));
+  const int half_cells = std::max(2, static_cast<int>(checkedCount(box.half_width / m.delta, kMaxStoredSamples,
+                                                                   "parameters.solver.cutoff_frequency", "cells across half the box")));
   m.nx = 2 * half_cells;
   m.ny = n_below + n_above;
   m.x0 = -half_cells * m.delta;

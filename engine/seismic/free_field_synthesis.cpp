@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/checked_count.hpp"
 #include "core/spectrum.hpp"
 
 namespace maris::seismic {
@@ -18,7 +19,9 @@ FreeFieldSynthesis::FreeFieldSynthesis(const FreeField& field, const std::vector
     // that tail wrapped from before t0 by e^{εN dt}, so real frequencies are used with a longer
     // window: 8× the record, and ≥ 64 s with water, whose reverberation (≈ 0.78 per round trip in
     // the paper's set-up) then decays below 1e-6 before it wraps.
-    const std::size_t span = field.hasWater() ? static_cast<std::size_t>(std::ceil(64.0 / dt)) : 0;
+    const std::size_t span = field.hasWater() ? static_cast<std::size_t>(checkedCount(
+                                                    64.0 / dt, kMaxStoredSamples, "time step", "synthesis samples"))
+                                              : 0;
     n_fft_ = std::bit_ceil(std::max<std::size_t>({64, 8 * incident.size(), span}));
     eps_ = 0.0;
   } else {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/checked_count.hpp"
+
 #include "seismic/fe_drive.hpp"
 #include "seismic/fe_solver.hpp"
 #include "seismic/seismic_live.hpp"
@@ -36,7 +38,8 @@ FeCase runFeCase(const SeismicParameters& p, double angle_deg, bool water, bool 
   out.element_size = m.delta;
   out.stable_step = model.stable_step;
   out.time_step = p.courant_fraction * model.stable_step;
-  out.steps = static_cast<long>(std::ceil(p.duration / out.time_step));
+  out.steps = checkedCount(p.duration / out.time_step, kMaxTimeSteps, "parameters.solver.courant_fraction",
+                           "time steps over solver.duration");
   out.cell_count = static_cast<int>(model.solid_cells.size() + model.water_cells.size());
   out.nx = m.nx;
   out.ny = m.ny;

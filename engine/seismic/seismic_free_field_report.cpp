@@ -3,6 +3,8 @@
 #include <memory>
 #include <numbers>
 
+#include "core/checked_count.hpp"
+
 #include "seismic/free_field_synthesis.hpp"
 #include "seismic/seismic_inputs.hpp"
 #include "seismic/seismic_solve.hpp"
@@ -99,7 +101,8 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
 
   // Histories at B (0, 0) and A (0, h) by Fourier synthesis.
   const double dt = std::min(0.002, 1.0 / (40.0 * p.cutoff_frequency));
-  const int n = static_cast<int>(std::ceil(p.duration / dt)) + 1;
+  const int n = static_cast<int>(
+      checkedCount(p.duration / dt, kMaxStoredSamples, "parameters.solver.cutoff_frequency", "free-field samples")) + 1;
   const auto u0 = incidentHistory(p, dt, n, arrivalAtOrigin(p, field));
   const FreeFieldSynthesis synthesis(field, u0, 0.0, dt);
   const auto seabed = synthesis.solid(0.0);

@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/checked_count.hpp"
 #include "core/errors.hpp"
 #include "core/resources.hpp"
 
@@ -45,7 +46,8 @@ Accelerogram correctAccelerogram(const std::vector<double>& time, const std::vec
 
   // Linear resampling onto t_k = k·dt from the record's first time.
   const double duration = time.back() - time.front();
-  const std::size_t n = static_cast<std::size_t>(std::floor(duration / dt)) + 1;
+  const std::size_t n =
+      static_cast<std::size_t>(checkedCount(std::floor(duration / dt), kMaxStoredSamples, field, "samples of the record")) + 1;
   Accelerogram rec;
   rec.dt = dt;
   rec.acceleration.resize(n);

@@ -4,12 +4,16 @@
 #include <filesystem>
 
 #include "core/errors.hpp"
+#include "core/input_limits.hpp"
 #include "core/resources.hpp"
 #include "core/scenario.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::ship {
 
 namespace {
+
+constexpr double kMinThickness = 1e-3;  // smallest beam/length and draft/length of a formula hull
 
 // Built-in offsets tables (resources/data/ship, provenance in its README.md) and the Lpp they are written at.
 struct BuiltinHull {
@@ -103,8 +107,9 @@ std::vector<FieldError> checkShipParameters(const ShipParameters& p) {
   if (p.waterlines % 2 != 1) e.push_back({"numerics.waterlines", num(p.waterlines), "must be odd (e.g. 41, 51)"});
   if (p.hull_source == "offsets_file" && p.offsets_file.empty())
     e.push_back({"hull.offsets_file", "\"\"", "must name a CSV file when hull.source = offsets_file"});
-  if (p.hull_source == "offsets_file" && !p.offsets_file.empty() && !std::filesystem::is_regular_file(p.offsets_file))
-    e.push_back({"hull.offsets_file", Json(p.offsets_file).dump(), "is not a readable file"});
+  if (p.hull_source == "offsets_file" && !p.offsets_file.empty())
+    if (auto problem = dataPathProblem(p.offsets_file, "ship"))
+      e.push_back({"hull.offsets_file", Json(p.offsets_file).dump(), *problem});
   if (!p.measured_file.empty())
     if (auto problem = dataPathProblem(p.measured_file, "ship"))
       e.push_back({"measured.file", Json(p.measured_file).dump(), *problem});
@@ -113,6 +118,16 @@ std::vector<FieldError> checkShipParameters(const ShipParameters& p) {
                  "needs measured.file (the measured C_T points that Prohaska's fit uses)"});
   if ((p.hull_source == "wigley" || p.hull_source == "parametric") && p.draft > p.length)
     e.push_back({"hull.draft", num(p.draft), "must not exceed hull.length = " + num(p.length) + " m (a thin ship)"});
+  // A hull thinner than L/1000 is degenerate: its wetted surface, block coefficient and the Holtrop–Mennen
+  // regression lose meaning (and underflow for denormal sizes).
+  if (p.hull_source == "wigley" || p.hull_source == "parametric") {
+    if (p.beam < kMinThickness * p.length)
+      e.push_back({"hull.beam", num(p.beam), "must be at least hull.length / 1000 = " + num(kMinThickness * p.length) +
+                                                 " m (a thinner hull is degenerate)"});
+    if (p.draft < kMinThickness * p.length)
+      e.push_back({"hull.draft", num(p.draft), "must be at least hull.length / 1000 = " + num(kMinThickness * p.length) +
+                                                   " m (a shallower hull is degenerate)"});
+  }
   return e;
 }
 
@@ -121,8 +136,15 @@ HullForm buildHullForm(const ShipParameters& p) {
   if (p.hull_source == "parametric")
     return makeParametricHull(p.length, p.beam, p.draft, p.waterline_exponent, p.section_exponent);
   if (p.hull_source == "offsets_file") {
-    const std::string text = readTextFile(p.offsets_file);
+    const std::string text = readDataText(p.offsets_file, "ship", "parameters.hull.offsets_file");
     auto table = parseOffsetsCsv(text, "parameters.hull.offsets_file (" + p.offsets_file + ")");
+    // The table is scaled by hull.length / hull.offsets_length_pp: an Lpp far from the stations' span (e.g. the
+    // default 1 m left for a 7.3 m model) would scale the hull into nonsense.
+    const double span = table.stations.back().x - table.stations.front().x;
+    if (!(span >= 0.5 * p.offsets_length_pp && span <= 2.0 * p.offsets_length_pp))
+      throw InputError("parameters.hull.offsets_length_pp", Json(p.offsets_length_pp).dump(),
+                       formatText("but the stations of %s span %.6g m: give the Lpp the table is drawn at (within a "
+                                  "factor 2 of that span)", echoText(p.offsets_file).c_str(), span));
     return makeOffsetsHull(std::filesystem::path(p.offsets_file).filename().string(), std::move(table),
                            p.offsets_length_pp, p.length / p.offsets_length_pp);
   }

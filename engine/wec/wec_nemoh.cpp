@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/resources.hpp"
 #include "wec/wec_radiation.hpp"
 
 namespace maris::wec {
@@ -36,8 +36,7 @@ struct TecFile {
 bool isBlank(const std::string& s) { return s.find_first_not_of(" \t\r") == std::string::npos; }
 
 TecFile readTec(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) fail(file, 0, "cannot open " + file.string());
+  std::istringstream in(readDataText(file.string(), "wec", "parameters.hydro.nemoh_directory"));
   TecFile tec;
   std::string text;
   int line = 0;

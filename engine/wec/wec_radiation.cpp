@@ -8,6 +8,8 @@
 #include <Eigen/Dense>
 #include <Eigen/SVD>
 
+#include "core/checked_count.hpp"
+
 namespace maris::wec {
 
 double RadiationKernel::at(double t) const {
@@ -21,13 +23,15 @@ double RadiationKernel::at(double t) const {
 
 RadiationKernel computeKernel(const std::function<double(double)>& damping, double omega_max, double d_omega,
                               double duration, double dt, const RunContext* context) {
-  const auto m = static_cast<std::size_t>(std::ceil(omega_max / d_omega));
+  const auto m = static_cast<std::size_t>(
+      checkedCount(omega_max / d_omega, kMaxStoredSamples, "parameters.frequency", "radiation-kernel frequencies"));
   const double h = omega_max / static_cast<double>(m);
   std::vector<double> b(m + 1, 0.0);
   for (std::size_t i = 0; i <= m; ++i) b[i] = damping(h * static_cast<double>(i));
   RadiationKernel k;
   k.dt = dt;
-  const auto n = static_cast<std::size_t>(std::llround(duration / dt)) + 1;
+  const auto n = static_cast<std::size_t>(checkedCount(std::round(duration / dt), kMaxStoredSamples,
+                                                       "parameters.time.time_step", "radiation-kernel samples")) + 1;
   k.values.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
     if (context && j % 256 == 0) context->throwIfCancelled();  // 256 samples: ~10 ms at m = 2000

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/checked_count.hpp"
+
 #include "wec/wec_frequency.hpp"
 
 namespace maris::wec {
@@ -37,7 +39,10 @@ SteadyResponse steadyResponse(const WecModel& model, double omega, double height
   s.max_position_drift = td.max_position_drift;
   const double a = 0.5 * height;
   const double window = periods * period;
-  const auto per = static_cast<std::size_t>(std::lround(window / o.time_step));
+  const auto per = static_cast<std::size_t>(checkedCount(std::round(window / o.time_step), kMaxStoredSamples,
+                                                         "parameters.time.time_step", "samples per analysis window"));
+  if (per + 1 > td.time.size())
+    throw InputError("parameters.time.duration", "", "is shorter than the analysis window of the response");
   const std::size_t last = td.time.size() - 1, first = last - per;
   for (std::size_t i = 0; i < model.floats.size(); ++i) {
     const auto& h = td.floats[i];

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/checked_count.hpp"
 #include "core/scene.hpp"
 #include "core/text_format.hpp"
 #include "wec/wec_frequency.hpp"
@@ -247,7 +248,9 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
     waves = makeIrregularWave(p, model.direction);
   else
     waves.ramp_duration = p.ramp_duration;
-  base.output_stride = std::max(1, static_cast<int>(std::lround(p.duration / p.time_step)) / 4000);
+  const long steps = checkedCount(p.duration / p.time_step, kMaxTimeSteps, "parameters.time.time_step",
+                                  "time steps over time.duration");
+  base.output_stride = static_cast<int>(std::max(1L, steps / 4000));
   std::vector<double> theta0;
   for (const auto& f : model.floats) theta0.push_back(f.theta0);
   ctx.progress(0.6, "time integration");

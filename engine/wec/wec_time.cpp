@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/checked_count.hpp"
 #include "core/errors.hpp"
 #include "core/ode.hpp"
 #include "wec/wec_dynamics.hpp"
@@ -137,7 +138,8 @@ TimeDomainResult simulateTimeDomain(const WecModel& model, const WaveField& wave
 Complex harmonicAmplitude(const std::vector<double>& t, const std::vector<double>& s, double omega, int periods) {
   const double period = 2.0 * std::numbers::pi / omega;
   const double dt = t[1] - t[0];
-  const auto per_period = static_cast<std::size_t>(std::lround(period / dt));
+  const auto per_period = static_cast<std::size_t>(
+      checkedCount(std::round(period / dt), kMaxStoredSamples, "parameters.time.time_step", "samples per wave period"));
   const std::size_t count = per_period * static_cast<std::size_t>(periods);
   const std::size_t start = t.size() - count;
   Complex sum(0.0, 0.0);

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/resources.hpp"
 
 namespace maris::wec {
 
@@ -18,10 +18,8 @@ namespace {
                    (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + what);
 }
 
-std::ifstream openFile(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) fail(file, 0, "cannot open " + file.string());
-  return in;
+std::istringstream openFile(const std::filesystem::path& file) {
+  return std::istringstream(readDataText(file.string(), "wec", "parameters.hydro.wamit_stem"));
 }
 
 // Rows keyed by period (rounded to 1e-9 s to merge the .1 and .3 keys).

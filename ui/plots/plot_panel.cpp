@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/resources.hpp"
 #include "plots/plot_export.hpp"
 #include "plots/reference_data.hpp"
 
@@ -209,9 +210,9 @@ bool PlotPanel::addReferenceFile(const QString& file) {
     return false;
   }
   try {
-    QFile in(file);
-    if (!in.open(QIODevice::ReadOnly)) throw std::runtime_error("cannot open the file: " + in.errorString().toStdString());
-    Table table = tableFromCsv(in.readAll().toStdString(), QFileInfo(file).completeBaseName().toStdString());
+    // The engine's data-file gate: regular files only, size, rows and columns bounded.
+    const std::string text = readDataText(file.toStdString(), "", "reference data");
+    Table table = tableFromCsv(text, QFileInfo(file).completeBaseName().toStdString());
     std::vector<Table>& kept = references_[v->spec().name];
     kept.push_back(std::move(table));
     v->setReferences(kept);

@@ -1,0 +1,53 @@
+// Reference data with a NaN cell is an input error naming the line (it silently gave a null cost and
+// coefficients at their initial values); an unconverged calibration recommends nothing.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/errors.hpp"
+#include "fiv/fiv_calibration.hpp"
+#include "fiv/fiv_reference.hpp"
+
+namespace maris::fiv {
+namespace {
+
+constexpr const char* kHeader =
+    "flow_speed,submergence_ratio,amplitude,amplitude_sigma,frequency,frequency_sigma,power,power_sigma\n"
+    "m/s,-,m,m,Hz,Hz,W,W\n";
+
+TEST(FivInputLimits, ANanReferenceCellIsAnInputErrorNamingItsLine) {
+  const std::string good = std::string(kHeader) + "0.5,1.11,0.017,,0.5127,,,\n";
+  EXPECT_EQ(parseReferencePoints(good, "ref.csv").size(), 1u);
+  try {
+    parseReferencePoints(std::string(kHeader) + "0.5,1.11,nan,,0.5127,,,\n", "ref.csv");
+    FAIL() << "NaN cell accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ref.csv = line 3: a cell reads \"nan\""), std::string::npos) << e.what();
+  }
+  // Infinity means deep water only in submergence_ratio; elsewhere it is refused.
+  EXPECT_EQ(parseReferencePoints(std::string(kHeader) + "0.5,inf,0.017,,,,,\n", "ref.csv").size(), 1u);
+  EXPECT_THROW(parseReferencePoints(std::string(kHeader) + "0.5,1.1,inf,,,,,\n", "ref.csv"), InputError);
+}
+
+TEST(FivInputLimits, AnUnconvergedCalibrationSaysSoAndRecommendsNothing) {
+  CalibrationResult cal;
+  cal.names = {"structure.stiffness"};
+  cal.initial = {100.0};
+  cal.fitted = {123.0};
+  cal.standard_error = {1.0};
+  cal.cost_initial = 10.0;
+  cal.cost = 5.0;
+  cal.iterations = 25;
+  for (const bool converged : {false, true}) {
+    cal.converged = converged;
+    Results r;
+    addCalibrationResults(r, cal);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    const std::string& w = r.warnings.front();
+    EXPECT_EQ(w.find("did not converge") != std::string::npos, !converged) << w;
+    EXPECT_EQ(w.find("structure.stiffness=123") != std::string::npos, converged) << w;
+  }
+}
+
+}  // namespace
+}  // namespace maris::fiv
