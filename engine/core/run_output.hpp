@@ -1,7 +1,8 @@
 // Writes a finished run to a folder: scenario.json (exactly what ran), summary.json (scalars with
-// units, solver statistics, warnings) and one CSV per result table. Every file is written
-// atomically, so a cancelled or failed run never leaves a torn file. PNG plots are added by the
-// caller that has a renderer (app/, through ui/).
+// units, solver statistics, warnings; which Maris ran it: maris_version, commit, started_at in UTC,
+// host_threads) and one CSV per result table. The CLI's run folder and the GUI's report folder both
+// come from here. Every file is written atomically, so a cancelled or failed run never leaves a torn
+// file. PNG plots are added by the caller that has a renderer (app/, through ui/).
 #pragma once
 
 #include <filesystem>

@@ -7,7 +7,9 @@
 #include <qcustomplot.h>
 
 #include <fstream>
+#include <thread>
 
+#include "core/version.hpp"
 #include "plots/plot_export.hpp"
 #include "plots/plot_panel.hpp"
 #include "plots/plot_view.hpp"
@@ -371,6 +373,12 @@ class RunTest : public QObject {
     QFile md(dir.filePath(QStringLiteral("summary.md")));
     QVERIFY(md.open(QIODevice::ReadOnly));
     QVERIFY(md.readAll().contains("| max_deflection |"));
+    // summary.json says which Maris ran the run and when, as the CLI's does (the same writeRunFolder).
+    const Json summary = Json::parse(readTextFile(dir.filePath(QStringLiteral("summary.json")).toStdString()));
+    QCOMPARE(summary["maris_version"].get<std::string>(), projectVersion());
+    QCOMPARE(summary["commit"].get<std::string>(), commitId());
+    QVERIFY(summary["started_at"].is_string());
+    QCOMPARE(summary["host_threads"].get<unsigned>(), std::thread::hardware_concurrency());
   }
 };
 
