@@ -114,7 +114,9 @@ TEST_F(Cli, RunWritesScenarioSummaryAndCsvTables) {
   for (const auto& [name, entry] : summary["results"].items()) EXPECT_TRUE(entry.contains("unit")) << name;
   // Which Maris ran it, when (UTC, whole seconds, between the CLI's start and end), on how many threads.
   EXPECT_EQ(summary["maris_version"], MARIS_TEST_PROJECT_VERSION);
-  if (MARIS_TEST_GIT_CHECKOUT) EXPECT_FALSE(summary["commit"].get<std::string>().empty());
+  if (MARIS_TEST_GIT_CHECKOUT) {
+    EXPECT_FALSE(summary["commit"].get<std::string>().empty());
+  }
   const auto started = parseIsoUtc(summary["started_at"].get<std::string>());
   ASSERT_TRUE(started) << summary["started_at"];
   EXPECT_LE(std::chrono::abs(*started - std::chrono::system_clock::now()), std::chrono::minutes(1));
