@@ -4,6 +4,7 @@
 // Options are parsed with CLI11 under the conventions shared with `maris` (cli_conventions.hpp):
 // --help, --version, usage errors with exit code 1; the other exit codes are listed there.
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -126,10 +127,11 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
   std::signal(SIGTERM, onSigint);
   RunContext context(makeProgressPrinter(), &g_cancel);
   std::fprintf(stderr, "running %s (%s)\n", id.c_str(), scene.title.c_str());
+  const auto started_at = std::chrono::system_clock::now();
   Results results = runScenario(scene, scenario, context);
   for (const auto& w : results.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
-  auto files = writeRunFolder(out_dir, scenario, results);
+  auto files = writeRunFolder(out_dir, scenario, results, started_at);
   if (plots) {
     for (auto& f : writePlotPngs(out_dir, results, argc, argv)) files.push_back(f);
   }

@@ -3,7 +3,6 @@
 // them; View3D holds the geometry to draw per animation frame. Nothing here knows a scene.
 #pragma once
 
-#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -99,7 +98,6 @@ struct SolverStats {
   double error_estimate = 0.0;  // the solver's own global error estimate, in `error_unit` (0 if none)
   std::string error_unit;
   std::string method;           // "RK4 h=1e-4 s", "Dormand-Prince 5(4) rtol=1e-6"
-  std::chrono::system_clock::time_point started_at{};  // set by runScenario; the clock's epoch if never run
 };
 
 struct Results {

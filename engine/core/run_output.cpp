@@ -21,7 +21,8 @@ std::string isoUtc(std::chrono::system_clock::time_point t) {
 }  // namespace
 
 std::vector<std::filesystem::path> writeRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
-                                                  const Results& results) {
+                                                  const Results& results,
+                                                  std::chrono::system_clock::time_point started_at) {
   std::filesystem::create_directories(dir);
   std::vector<std::filesystem::path> written;
   auto put = [&](const std::string& name, const std::string& content) {
@@ -39,8 +40,7 @@ std::vector<std::filesystem::path> writeRunFolder(const std::filesystem::path& d
   // Which Maris ran it, when, and on how many hardware threads (for comparing wall times).
   summary["maris_version"] = projectVersion();
   summary["commit"] = commitId();
-  const bool ran = results.stats.started_at != std::chrono::system_clock::time_point{};
-  summary["started_at"] = ran ? Json(isoUtc(results.stats.started_at)) : Json(nullptr);
+  summary["started_at"] = isoUtc(started_at);
   summary["host_threads"] = std::thread::hardware_concurrency();
   // summary.json last: its presence marks a complete folder.
   put("summary.json", summary.dump(2) + "\n");

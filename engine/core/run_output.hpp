@@ -5,6 +5,7 @@
 // file. PNG plots are added by the caller that has a renderer (app/, through ui/).
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <vector>
 
@@ -13,8 +14,10 @@
 
 namespace maris {
 
-// Returns the files written, in order.
+// Returns the files written, in order. `started_at`: when the run started (the caller took the time
+// just before runScenario).
 std::vector<std::filesystem::path> writeRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
-                                                  const Results& results);
+                                                  const Results& results,
+                                                  std::chrono::system_clock::time_point started_at);
 
 }  // namespace maris

@@ -1,7 +1,6 @@
 #include "core/scene.hpp"
 
 #include <algorithm>
-#include <chrono>
 
 
 namespace maris {
@@ -30,10 +29,8 @@ Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunC
   for (auto& note : upgradeParameters(scene, parameters)) context.warn(std::move(note));
   auto errors = validateParameters(scene, parameters);
   if (!errors.empty()) throw InputError(std::move(errors));
-  const auto started_at = std::chrono::system_clock::now();
   const double t0 = context.elapsedSeconds();
   Results r = scene.run(parameters, context);
-  r.stats.started_at = started_at;
   r.stats.wall_time_s = context.elapsedSeconds() - t0;
   for (auto& w : context.warnings()) r.warnings.push_back(std::move(w));
   return r;

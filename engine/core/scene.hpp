@@ -54,7 +54,7 @@ std::vector<std::string> upgradeParameters(const SceneDefinition& scene, Json& p
 std::vector<FieldError> validateParameters(const SceneDefinition& scene, const Json& parameters);
 
 // Upgrades a copy of the parameters (notes become warnings), validates (throws InputError with every
-// problem), then runs. Fills stats.wall_time_s, stats.started_at and warnings.
+// problem), then runs. Fills stats.wall_time_s and warnings.
 Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunContext& context);
 
 // A scenario of `scene` with every parameter at its default.

@@ -365,7 +365,7 @@ class RunTest : public QObject {
   void reportFolderHasEveryFile() {
     const RunRecord record = finishedRun(rodScenario(0.0));
     QTemporaryDir dir;
-    const auto files = writeReportFolder(dir.path().toStdString(), record.scenario, *record.results);
+    const auto files = writeReportFolder(dir.path().toStdString(), record.scenario, *record.results, record.started_at);
     for (const char* name : {"scenario.json", "summary.json", "summary.md", "profile.csv", "history.csv",
                              "reference.csv", "deflection.png", "deflection.pdf", "tip_motion.png", "tip_motion.pdf"})
       QVERIFY2(QFileInfo::exists(dir.filePath(QString::fromLatin1(name))), name);
@@ -378,6 +378,7 @@ class RunTest : public QObject {
     QCOMPARE(summary["maris_version"].get<std::string>(), projectVersion());
     QCOMPARE(summary["commit"].get<std::string>(), commitId());
     QVERIFY(summary["started_at"].is_string());
+    QVERIFY(record.started_at > std::chrono::system_clock::now() - std::chrono::minutes(1));
     QCOMPARE(summary["host_threads"].get<unsigned>(), std::thread::hardware_concurrency());
   }
 };

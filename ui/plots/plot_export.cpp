@@ -94,8 +94,10 @@ std::string summaryMarkdown(const Scenario& scenario, const Results& results,
 }
 
 std::vector<std::filesystem::path> writeReportFolder(const std::filesystem::path& dir, const Scenario& scenario,
-                                                     const Results& results, const QImage& view3d) {
-  auto files = writeRunFolder(dir, scenario, results);
+                                                     const Results& results,
+                                                     std::chrono::system_clock::time_point started_at,
+                                                     const QImage& view3d) {
+  auto files = writeRunFolder(dir, scenario, results, started_at);
   for (const auto& spec : results.plots) {
     for (const char* suffix : {".png", ".pdf"}) {
       const auto file = dir / (spec.name + suffix);
