@@ -89,10 +89,16 @@ std::string versionLine(std::string_view program) { return std::string(program) 
 
 std::string exitCodesHelp(bool cancellable) {
   std::string text =
-      "Exit codes: 0 success, 1 usage error (a bad option, command or value), 2 invalid input (the bad field is\n"
-      "named with what is allowed), 3 solver failure (the step and quantity are named)";
-  if (cancellable) text += ",\n130 cancelled by SIGINT (Ctrl-C), 143 cancelled by SIGTERM; a cancelled run writes nothing";
-  return text + ".\n";
+      "Exit codes:\n"
+      "  0    success\n"
+      "  1    usage error: an unknown option or command, a missing value, an extra argument, a bad value\n"
+      "  2    invalid input: a scenario that does not load or validate (each bad field is named)\n"
+      "  3    solver failure (the step and quantity are named)\n";
+  if (cancellable)
+    text +=
+        "  130  cancelled by SIGINT (Ctrl-C); nothing is written for that run\n"
+        "  143  cancelled by SIGTERM; nothing is written for that run\n";
+  return text;
 }
 
 void applyConventions(CLI::App& app, bool cancellable) {
@@ -100,6 +106,7 @@ void applyConventions(CLI::App& app, bool cancellable) {
   app.set_version_flag("--version", versionLine(app.get_name()), "print the version and exit");
   app.footer(exitCodesHelp(cancellable));
   app.allow_extras();  // parseArguments names what is left over, with a did-you-mean
+  app.fallthrough();   // the program's own options (--version) also after a sub-command
   app.get_formatter()->column_width(34);
 }
 

@@ -145,7 +145,7 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
 
 // The command line, as CLI11 reads it; `run` fills `run_options`.
 struct Commands {
-  CLI::App app{"Runs Maris scenarios without a display, over the same engine as the desktop application `maris`.",
+  CLI::App app{"Runs Maris scenarios without a display, over the same engine as the desktop application `maris`.\n",
                "maris-cli"};
   CLI::App* list = nullptr;
   CLI::App* show = nullptr;
@@ -169,9 +169,7 @@ struct Commands {
     schema->add_flag("--json", as_json, "as JSON");
     scenes = app.add_subcommand("scenes", "the scenes compiled in");
     default_scenario = app.add_subcommand("default", "the name of the default built-in scenario");
-    run = app.add_subcommand("run",
-                             "run a scenario file or a built-in scenario; writes scenario.json, summary.json, one\n"
-                             "CSV per result table and PNG plots into DIR");
+    run = app.add_subcommand("run", "run a scenario; write scenario.json, summary.json, CSV tables and PNG plots");
     run->add_option("FILE|NAME", run_options.target, "a scenario file (*.json) or a built-in scenario's name")
         ->required()
         ->type_name("");
