@@ -69,27 +69,30 @@ struct Parser {
                "as plots and in 3D.\n"
                "  maris [SCENARIO] [--theme NAME]\n"
                "  maris --screenshot FILE [--scenario SCENARIO] [--size WxH] [--theme NAME]\n"
-               "        [--frame K | --time T] [--tab PLOT] [--colormap MAP]",
+               "        [--frame K | --time T] [--tab PLOT] [--colormap MAP]\n",
                "maris"};
-  std::vector<std::string> scenarios;  // the positional SCENARIO (more than one is an error)
+  std::string scenario;  // the positional SCENARIO
   struct Valued {
     CLI::Option* option = nullptr;
     std::string value;
   };
   std::vector<Valued> valued;  // reserved once: CLI11 keeps pointers to the values
+  CLI::Option* positional = nullptr;
 
   Parser() {
     cli::applyConventions(app, false);
     app.footer(cli::exitCodesHelp(false) +
-               "--screenshot exits 1 also for a --frame, --time or --tab that the finished run does not have.\n");
-    app.add_option("SCENARIO", scenarios, "a scenario file (*.json) or a built-in scenario's name (see `maris-cli list`)")
-        ->type_name("");
+               "With --screenshot also 1 for a --frame, --time or --tab the finished run does not have, and 2 for a\n"
+               "scenario that cannot be opened or run.\n");
+    positional = app.add_option("SCENARIO", scenario,
+                                "a scenario file (*.json) or a built-in scenario's name (see `maris-cli list`)")
+                     ->type_name("");
     const std::string maps = colorMapKeys().join(QStringLiteral(", ")).toStdString();
     const std::vector<std::array<std::string, 3>> options = {
         {"--theme", "NAME", "light, dark or system (the platform's palette); remembered"},
         {"--screenshot", "FILE",
-         "open SCENARIO (default: the default built-in), run it to completion, save a PNG of the main window with "
-         "its results, and exit"},
+         "open SCENARIO (default: the default built-in), run it to completion,\n"
+         "save a PNG of the main window with its results, and exit"},
         {"--scenario", "SCENARIO", "the same as SCENARIO"},
         {"--size", "WxH",
          "window size for --screenshot in pixels (default 1600x1000; " + std::to_string(kMinSide) + " to " +
@@ -97,8 +100,8 @@ struct Parser {
         {"--frame", "K", "3D view: show frame K (1 = the first; default: the last)"},
         {"--time", "T", "3D view: show the frame nearest to time T [s]"},
         {"--tab", "PLOT",
-         "the plot tab shown: a plot's name (as in its exported file name, e.g. top_force) or its tab title "
-         "(default: the first)"},
+         "the plot tab shown: a plot's name (as in its exported file name,\n"
+         "e.g. top_force) or its tab title (default: the first)"},
         {"--colormap", "MAP", "3D colour map: " + maps},
     };
     valued.reserve(options.size());
@@ -133,10 +136,10 @@ ParsedCommandLine parseCommandLine(const QStringList& arguments) {
     const QString problem = parseValue(QString::fromStdString(v.option->get_name()), QString::fromStdString(v.value), out);
     if (!problem.isEmpty()) return fail(problem);
   }
-  for (const auto& s : parser.scenarios) {
-    const QString scenario = QString::fromStdString(s);
+  if (parser.positional->count() > 0) {
+    const QString scenario = QString::fromStdString(parser.scenario);
     if (!out.scenario.isEmpty())
-      return fail(QStringLiteral("%1: only one scenario can be opened (%2 was given before)").arg(scenario, out.scenario));
+      return fail(QStringLiteral("%1: only one scenario can be opened (--scenario %2 was given)").arg(scenario, out.scenario));
     out.scenario = scenario;
   }
   if (out.frame && out.time) return fail(QStringLiteral("--frame and --time: give one of them, not both"));

@@ -96,7 +96,9 @@ class CommandLineTest : public QObject {
     QTest::newRow("frame and time") << shot + QStringList{"--frame", "2", "--time", "1"}
                                     << QStringList{"--frame and --time"};
     QTest::newRow("tab without screenshot") << QStringList{"--tab", "top_force"} << QStringList{"--screenshot FILE"};
-    QTest::newRow("two scenarios") << QStringList{"a.json", "b.json"} << QStringList{"b.json", "only one scenario"};
+    QTest::newRow("two scenarios") << QStringList{"a.json", "b.json"} << QStringList{"unexpected extra argument 'b.json'"};
+    QTest::newRow("scenario twice") << QStringList{"--scenario", "a.json", "b.json"}
+                                    << QStringList{"b.json", "only one scenario", "--scenario a.json"};
   }
   void badValuesNameTheOptionAndWhatIsAllowed() {
     QFETCH(QStringList, arguments);
