@@ -1,8 +1,10 @@
 // maris-cli: the headless runner over the same engine as the GUI.
-//   maris-cli list | show NAME | schema SCENE [--json] | run FILE|NAME [--set path=value ...] [--out DIR]
-// Exit codes: 0 success, 1 usage/internal error or output folder refused, 2 invalid input (also a run beyond the
-// work limits), 3 solver failure, 130 cancelled by SIGINT, 143 by SIGTERM.
+//   maris-cli list | show NAME | schema SCENE [--json] | scenes | default
+//           | run FILE|NAME [--set path=value ...] [--out DIR] [--force] [--allow-large] [--no-plots]
+// Options are parsed with CLI11 under the conventions shared with `maris` (cli_conventions.hpp):
+// --help, --version, usage errors with exit code 1; the other exit codes are listed there.
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +16,9 @@
 
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
+
+#include "cli_conventions.hpp"
 #include "core/errors.hpp"
 #include "core/input_limits.hpp"
 #include "core/run_folder.hpp"
@@ -24,8 +29,7 @@
 namespace {
 
 using namespace maris;
-
-enum ExitCode { kOk = 0, kUsage = 1, kInvalidInput = 2, kSolverFailure = 3 };
+using namespace maris::cli;
 
 std::atomic<bool> g_cancel{false};
 std::atomic<int> g_signal{SIGINT};
@@ -49,21 +53,17 @@ void throwIfCancelled() {
   if (g_cancel.load()) throw RunCancelled();
 }
 
-const char* kUsageText =
-    "usage: maris-cli <command> [options]\n"
-    "  list                         built-in scenarios (name, scene, description)\n"
-    "  show NAME                    print a built-in scenario as JSON, ready to edit\n"
-    "  schema SCENE [--json]        the parameter schema of a scene (names, units, defaults, ranges)\n"
-    "  scenes                       the scenes compiled in\n"
-    "  default                      the name of the default built-in scenario\n"
-    "  run FILE|NAME [--set path=value ...] [--out DIR] [--force] [--allow-large] [--no-plots]\n"
-    "                               run a scenario file or a built-in scenario; writes scenario.json,\n"
-    "                               summary.json, one CSV per result table and PNG plots into DIR\n"
-    "                               (default: maris-results/<name>) as a whole, or nothing;\n"
-    "                               --force replaces an earlier run in DIR, --allow-large runs beyond\n"
-    "                               the work limits\n"
-    "exit codes: 0 success, 1 usage error or output folder refused, 2 invalid input or work limit,\n"
-    "            3 solver failure, 130 cancelled (SIGINT), 143 cancelled (SIGTERM)\n";
+
+// What `run` was asked to do.
+struct RunOptions {
+  std::string target;                  // a scenario file or a built-in scenario's name
+  std::vector<std::string> overrides;  // --set path=value, in the order given
+  std::string out_dir;                 // --out ("" = maris-results/<name>)
+  bool out_given = false;              // --out was on the command line (an empty DIR is then a usage error)
+  bool no_plots = false;               // --no-plots
+  bool force = false;                  // --force: replace an earlier run in DIR
+  bool allow_large = false;            // --allow-large: run beyond the work limits
+};
 
 // Indents every line after the first of a multi-line message by two spaces.
 std::string indentLines(std::string text) {
@@ -77,12 +77,12 @@ int cmdList() {
     std::string line = b.scenario.name;
     std::printf("%-34s %-8s %s\n", b.id.c_str(), b.scenario.scene.c_str(), line.c_str());
   }
-  return kOk;
+  return kExitOk;
 }
 
 int cmdScenes() {
   for (const auto& s : sceneCatalog()) std::printf("%-8s %s\n", s.name.c_str(), s.title.c_str());
-  return kOk;
+  return kExitOk;
 }
 
 const BuiltinScenario& requireBuiltin(const std::string& id) {
@@ -97,7 +97,7 @@ const BuiltinScenario& requireBuiltin(const std::string& id) {
 
 int cmdShow(const std::string& id) {
   std::cout << scenarioToText(requireBuiltin(id).scenario);
-  return kOk;
+  return kExitOk;
 }
 
 int cmdSchema(const std::string& scene_name, bool as_json) {
@@ -110,7 +110,7 @@ int cmdSchema(const std::string& scene_name, bool as_json) {
     std::cout << scene.name << ": " << scene.title << "\n" << scene.description << "\n"
               << describeSchema(scene.schema);
   }
-  return kOk;
+  return kExitOk;
 }
 
 // Progress on stderr: a redrawn bar on a terminal, plain lines otherwise (logs, CI).
@@ -132,23 +132,13 @@ RunContext::ProgressFn makeProgressPrinter() {
   };
 }
 
-int cmdRun(const std::vector<std::string>& args, int argc, char** argv) {
-  std::string target, out_dir;
-  std::vector<std::string> overrides;
-  bool plots = true, force = false, allow_large = false, out_given = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const auto& a = args[i];
-    if (a == "--set" && i + 1 < args.size()) overrides.push_back(args[++i]);
-    else if (a == "--out" && i + 1 < args.size()) out_dir = args[++i], out_given = true;
-    else if (a == "--no-plots") plots = false;
-    else if (a == "--force") force = true;
-    else if (a == "--allow-large") allow_large = true;
-    else if (!a.empty() && a[0] == '-') throw InputError(a, "", "is not an option of `run`\n" + std::string(kUsageText));
-    else if (target.empty()) target = a;
-    else throw InputError(a, "", "unexpected extra argument");
+int cmdRun(const RunOptions& options, int argc, char** argv) {
+  const std::string& target = options.target;
+  std::string out_dir = options.out_dir;
+  if (options.out_given && out_dir.empty()) {
+    std::fprintf(stderr, "%s\n", usageErrorText("maris-cli run", "--out needs a folder name (it was empty)").c_str());
+    return kExitUsage;
   }
-  if (target.empty()) throw InputError("run", "", "needs a scenario file or a built-in scenario name");
-  if (out_given && out_dir.empty()) throw std::runtime_error("--out needs a folder name (it was empty)");
 
   Scenario scenario;
   std::string id;
@@ -164,23 +154,24 @@ int cmdRun(const std::vector<std::string>& args, int argc, char** argv) {
   // Old field names first, so --set and the saved scenario.json use the current schema.
   for (const auto& note : upgradeParameters(scene, scenario.parameters))
     std::fprintf(stderr, "note: %s\n", note.c_str());
-  for (const auto& o : overrides) applyOverride(scenario, o);
+  for (const auto& o : options.overrides) applyOverride(scenario, o);
   if (out_dir.empty()) out_dir = "maris-results/" + id;
 
   // Everything that can refuse the run does so before the solve: work limits, then the output folder.
   const WorkEstimate estimate = estimateWork(scene, scenario.parameters);
-  if (auto errors = workLimitErrors(estimate); !allow_large && !errors.empty()) throw InputError(errors);
+  if (auto errors = workLimitErrors(estimate); !options.allow_large && !errors.empty()) throw InputError(errors);
   installSignalHandlers();
-  RunFolder folder(out_dir, {force, static_cast<std::uintmax_t>(estimate.output_bytes)});
+  RunFolder folder(out_dir, {options.force, static_cast<std::uintmax_t>(estimate.output_bytes)});
   RunContext context(makeProgressPrinter(), &g_cancel);
   std::fprintf(stderr, "running %s (%s)\n", id.c_str(), scene.title.c_str());
+  const auto started_at = std::chrono::system_clock::now();
   Results results = runScenario(scene, scenario, context);
   throwIfCancelled();
   for (const auto& w : results.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
   // A signal while writing cancels too: the staged folder is removed, the target left as it was.
-  writeRunFolder(folder.staging(), scenario, results);
-  if (plots) writePlotPngs(folder.staging(), results, argc, argv);
+  writeRunFolder(folder.staging(), scenario, results, started_at);
+  if (!options.no_plots) writePlotPngs(folder.staging(), results, argc, argv);
   throwIfCancelled();
   folder.commit();
   for (const auto& s : results.scalars)
@@ -188,58 +179,102 @@ int cmdRun(const std::vector<std::string>& args, int argc, char** argv) {
   std::printf("wall time %.3f s, %ld steps (%ld rejected)\n", results.stats.wall_time_s, results.stats.steps,
               results.stats.rejected_steps);
   std::printf("results written to %s\n", folder.target().c_str());
-  return kOk;
+  return kExitOk;
 }
+
+// The command line, as CLI11 reads it; `run` fills `run_options`.
+struct Commands {
+  CLI::App app{"Runs Maris scenarios without a display, over the same engine as the desktop application `maris`.\n",
+               "maris-cli"};
+  CLI::App* list = nullptr;
+  CLI::App* show = nullptr;
+  CLI::App* schema = nullptr;
+  CLI::App* scenes = nullptr;
+  CLI::App* default_scenario = nullptr;
+  CLI::App* run = nullptr;
+  std::string name;       // show NAME
+  std::string scene;      // schema SCENE
+  bool as_json = false;   // schema --json
+  RunOptions run_options;
+
+  Commands() {
+    applyConventions(app, true);
+    app.require_subcommand(1);
+    list = app.add_subcommand("list", "built-in scenarios (name, scene, description)");
+    show = app.add_subcommand("show", "print a built-in scenario as JSON, ready to edit");
+    show->add_option("NAME", name, "a built-in scenario's name (see `maris-cli list`)")->required()->type_name("");
+    schema = app.add_subcommand("schema", "the parameter schema of a scene (names, units, defaults, ranges)");
+    schema->add_option("SCENE", scene, "a scene's name (see `maris-cli scenes`)")->required()->type_name("");
+    schema->add_flag("--json", as_json, "as JSON");
+    scenes = app.add_subcommand("scenes", "the scenes compiled in");
+    default_scenario = app.add_subcommand("default", "the name of the default built-in scenario");
+    run = app.add_subcommand("run", "run a scenario; write scenario.json, summary.json, CSV tables and PNG plots");
+    run->add_option("FILE|NAME", run_options.target, "a scenario file (*.json) or a built-in scenario's name")
+        ->required()
+        ->type_name("");
+    run->add_option("--set", run_options.overrides, "set one parameter before the run (repeatable), e.g. --set x=2")
+        ->type_name("PATH=VALUE")
+        ->allow_extra_args(false);
+    run->add_option("--out", run_options.out_dir, "the folder for the results (default: maris-results/NAME)")
+        ->type_name("DIR");
+    run->add_flag("--no-plots", run_options.no_plots, "write no PNG plots");
+    run->add_flag("--force", run_options.force, "replace an earlier run's results in DIR (as a whole)");
+    run->add_flag("--allow-large", run_options.allow_large, "run beyond the work and memory limits");
+  }
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::fputs(kUsageText, args.empty() ? stderr : stdout);
-    return args.empty() ? kUsage : kOk;
+  // `maris-cli help [COMMAND]` is `maris-cli [COMMAND] --help`.
+  if (!args.empty() && args[0] == "help") {
+    args.erase(args.begin());
+    args.push_back("--help");
   }
-  const std::string cmd = args[0];
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  Commands commands;
+  const ParseOutcome outcome = parseArguments(commands.app, args);
+  if (outcome.exit_code) return reportOutcome(outcome);
   try {
-    if (cmd == "list") return cmdList();
-    if (cmd == "scenes") return cmdScenes();
-    if (cmd == "default") {
+    if (commands.list->parsed()) return cmdList();
+    if (commands.scenes->parsed()) return cmdScenes();
+    if (commands.default_scenario->parsed()) {
       std::printf("%s\n", defaultBuiltin().id.c_str());
-      return kOk;
+      return kExitOk;
     }
-    if (cmd == "show" && rest.size() == 1) return cmdShow(rest[0]);
-    if (cmd == "schema" && !rest.empty())
-      return cmdSchema(rest[0], rest.size() > 1 && rest[1] == "--json");
-    if (cmd == "run") return cmdRun(rest, argc, argv);
-    std::fputs(kUsageText, stderr);
-    return kUsage;
+    if (commands.show->parsed()) return cmdShow(commands.name);
+    if (commands.schema->parsed()) return cmdSchema(commands.scene, commands.as_json);
+    if (commands.run->parsed()) {
+      commands.run_options.out_given = commands.run->get_option("--out")->count() > 0;
+      return cmdRun(commands.run_options, argc, argv);
+    }
+    return kExitUsage;  // not reached: parseArguments requires one command
   } catch (const InputError& e) {
     std::fprintf(stderr, "invalid input:\n  %s\n", indentLines(describeErrors(e.errors())).c_str());
-    return kInvalidInput;
+    return kExitInvalidInput;
   } catch (const SolverError& e) {
     std::fprintf(stderr, "\nsolver failure: %s\n", e.what());
-    return kSolverFailure;
+    return kExitSolverFailure;
   } catch (const RunCancelled&) {
     std::fprintf(stderr, "\ncancelled; nothing was written for this run\n");
-    return 128 + g_signal.load();
+    return g_signal.load() == SIGTERM ? kExitTerminated : kExitInterrupted;
   } catch (const Json::exception& e) {
     // The loaders turn JSON problems into InputErrors; one that escapes is still a problem of the input.
     std::fprintf(stderr, "invalid input:\n  %s\n", echoText(e.what(), 4 * kEchoLimit).c_str());
-    return kInvalidInput;
+    return kExitInvalidInput;
   } catch (const std::filesystem::filesystem_error& e) {
     std::fprintf(stderr, "invalid input:\n  %s: %s\n", echoText(e.path1().string()).c_str(), e.code().message().c_str());
-    return kInvalidInput;
+    return kExitInvalidInput;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "\nsolver failure: out of memory (the scenario asks for more memory than is available; "
                          "use fewer steps, samples or cells)\n");
-    return kSolverFailure;
+    return kExitSolverFailure;
   } catch (const std::length_error& e) {
     std::fprintf(stderr, "\nsolver failure: a table would exceed the largest possible size (%s); use fewer steps, "
                          "samples or cells\n", e.what());
-    return kSolverFailure;
+    return kExitSolverFailure;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return kUsage;
+    return kExitUsage;
   }
 }

@@ -7,7 +7,9 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include "cli_conventions.hpp"
 #include "command_line.hpp"
+#include "core/version.hpp"
 #include "document/scenario_document.hpp"
 #include "main_window.hpp"
 #include "scene_library.hpp"
@@ -23,23 +25,21 @@ bool openScenario(maris::ui::MainWindow& window, const QString& scenario) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // --help and mistakes in the options are answered before Qt starts: they need no display.
+  // --help, --version and mistakes in the options are answered before Qt starts: they need no display.
   QStringList arguments;
   for (int i = 1; i < argc; ++i) arguments << QString::fromLocal8Bit(argv[i]);
   const maris::ui::ParsedCommandLine parsed = maris::ui::parseCommandLine(arguments);
-  if (parsed.options.help) {
-    std::fputs(maris::ui::commandLineHelp().toLocal8Bit().constData(), stdout);
-    return 0;
-  }
-  if (!parsed.error.isEmpty()) {
-    std::fprintf(stderr, "maris: %s\n", parsed.error.toLocal8Bit().constData());
-    return 2;
+  if (parsed.exit_code) {
+    if (!parsed.error.isEmpty())
+      std::fputs(maris::cli::usageErrorText("maris", parsed.error.toStdString()).c_str(), stderr);
+    std::fputs(parsed.output.toLocal8Bit().constData(), *parsed.exit_code == maris::cli::kExitOk ? stdout : stderr);
+    return *parsed.exit_code;
   }
   const maris::ui::CommandLine& options = parsed.options;
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("Maris"));
   QApplication::setApplicationName(QStringLiteral("maris"));
-  QApplication::setApplicationVersion(QStringLiteral(MARIS_VERSION));
+  QApplication::setApplicationVersion(QString::fromStdString(maris::versionText()));
   // A screenshot shows the default layout, not the user's saved one, and leaves the user's
   // settings (layout, recent files) untouched: settings live in a temporary folder.
   QTemporaryDir screenshot_settings;
@@ -53,17 +53,17 @@ int main(int argc, char** argv) {
   if (!openScenario(window, options.scenario)) {
     std::fprintf(stderr, "maris: could not open '%s': %s\n", options.scenario.toLocal8Bit().constData(),
                  window.lastError().toLocal8Bit().constData());
-    if (!options.screenshot.isEmpty()) return 1;
+    if (!options.screenshot.isEmpty()) return maris::cli::kExitInvalidInput;
   }
   if (options.screenshot.isEmpty()) return app.exec();
 
   // Screenshot mode: run, let the views paint, grab the window, exit.
-  int exit_code = 1;
+  int exit_code = maris::cli::kExitInvalidInput;  // unless the run finishes and the PNG is written
   QObject::connect(&window, &maris::ui::MainWindow::runFinished, &app, [&] {
     const QString problem = maris::ui::applyViewOptions(window, options);
     if (!problem.isEmpty()) {
-      std::fprintf(stderr, "maris: %s\n", problem.toLocal8Bit().constData());
-      exit_code = 2;
+      std::fputs(maris::cli::usageErrorText("maris", problem.toStdString()).c_str(), stderr);
+      exit_code = maris::cli::kExitUsage;
       app.quit();
       return;
     }
@@ -72,16 +72,17 @@ int main(int argc, char** argv) {
       if (shot.save(options.screenshot, "PNG")) {
         std::printf("maris: saved %s (%d x %d)\n", options.screenshot.toLocal8Bit().constData(), shot.width(),
                     shot.height());
-        exit_code = 0;
+        exit_code = maris::cli::kExitOk;
       } else {
         std::fprintf(stderr, "maris: could not write %s\n", options.screenshot.toLocal8Bit().constData());
+        exit_code = maris::cli::kExitUsage;
       }
       app.quit();
     });
   });
   QObject::connect(&window, &maris::ui::MainWindow::runFailed, &app, [&](const QString& message) {
     std::fprintf(stderr, "maris: the run failed: %s\n", message.toLocal8Bit().constData());
-    exit_code = 3;
+    exit_code = maris::cli::kExitSolverFailure;
     app.quit();
   });
   QTimer::singleShot(300, &window, [&] {

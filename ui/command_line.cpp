@@ -1,8 +1,14 @@
 #include "command_line.hpp"
 
+#include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include <CLI/CLI.hpp>
 #include <QTabWidget>
+
+#include "cli_conventions.hpp"
 
 #include "main_window.hpp"
 #include "plots/plot_panel.hpp"
@@ -52,68 +58,100 @@ QString parseValue(const QString& option, const QString& value, CommandLine& out
     out.color_map = colorMapFromKey(value);
     if (!out.color_map)
       return invalid(option, value, QStringLiteral("must be one of %1").arg(colorMapKeys().join(QStringLiteral(", "))));
-  } else {
-    return QStringLiteral("unknown option %1 (see maris --help)").arg(option);
   }
   return {};
 }
+
+// maris's options as CLI11 reads them: strings, checked by parseValue afterwards so that a bad value's
+// message names the option, the value and what is allowed.
+struct Parser {
+  CLI::App app{"The Maris desktop application: pick a scenario, edit its parameters, run it, and see the results\n"
+               "as plots and in 3D.\n"
+               "  maris [SCENARIO] [--theme NAME]\n"
+               "  maris --screenshot FILE [--scenario SCENARIO] [--size WxH] [--theme NAME]\n"
+               "        [--frame K | --time T] [--tab PLOT] [--colormap MAP]\n",
+               "maris"};
+  std::string scenario;  // the positional SCENARIO
+  struct Valued {
+    CLI::Option* option = nullptr;
+    std::string value;
+  };
+  std::vector<Valued> valued;  // reserved once: CLI11 keeps pointers to the values
+  CLI::Option* positional = nullptr;
+
+  Parser() {
+    cli::applyConventions(app, false);
+    app.footer(cli::exitCodesHelp(false) +
+               "With --screenshot also 1 for a --frame, --time or --tab the finished run does not have, and 2 for a\n"
+               "scenario that cannot be opened or run.\n");
+    positional = app.add_option("SCENARIO", scenario,
+                                "a scenario file (*.json) or a built-in scenario's name (see `maris-cli list`)")
+                     ->type_name("");
+    const std::string maps = colorMapKeys().join(QStringLiteral(", ")).toStdString();
+    const std::vector<std::array<std::string, 3>> options = {
+        {"--theme", "NAME", "light, dark or system (the platform's palette); remembered"},
+        {"--screenshot", "FILE",
+         "open SCENARIO (default: the default built-in), run it to completion,\n"
+         "save a PNG of the main window with its results, and exit"},
+        {"--scenario", "SCENARIO", "the same as SCENARIO"},
+        {"--size", "WxH",
+         "window size for --screenshot in pixels (default 1600x1000; " + std::to_string(kMinSide) + " to " +
+             std::to_string(kMaxSide) + ")"},
+        {"--frame", "K", "3D view: show frame K (1 = the first; default: the last)"},
+        {"--time", "T", "3D view: show the frame nearest to time T [s]"},
+        {"--tab", "PLOT",
+         "the plot tab shown: a plot's name (as in its exported file name,\n"
+         "e.g. top_force) or its tab title (default: the first)"},
+        {"--colormap", "MAP", "3D colour map: " + maps},
+    };
+    valued.reserve(options.size());
+    for (const auto& [name, type, description] : options) {
+      valued.push_back({});
+      valued.back().option = app.add_option(name, valued.back().value, description)->type_name(type);
+    }
+  }
+};
 
 }  // namespace
 
 ParsedCommandLine parseCommandLine(const QStringList& arguments) {
   ParsedCommandLine parsed;
+  Parser parser;
+  std::vector<std::string> args;
+  for (const QString& a : arguments) args.push_back(a.toStdString());
+  const cli::ParseOutcome outcome = cli::parseArguments(parser.app, args);
+  parsed.exit_code = outcome.exit_code;
+  parsed.output = QString::fromStdString(outcome.output);
+  parsed.error = QString::fromStdString(outcome.error);
+  if (outcome.exit_code) return parsed;
+
   CommandLine& out = parsed.options;
-  for (int i = 0; i < arguments.size(); ++i) {
-    const QString& arg = arguments[i];
-    if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
-      out.help = true;
-    } else if (arg.startsWith(QLatin1Char('-'))) {
-      if (i + 1 >= arguments.size()) {
-        parsed.error = QStringLiteral("%1 needs a value (see maris --help)").arg(arg);
-        return parsed;
-      }
-      parsed.error = parseValue(arg, arguments[++i], out);
-      if (!parsed.error.isEmpty()) return parsed;
-    } else if (out.scenario.isEmpty()) {
-      out.scenario = arg;
-    } else {
-      parsed.error = QStringLiteral("%1: only one scenario can be opened (%2 was given before)").arg(arg, out.scenario);
-      return parsed;
-    }
+  auto fail = [&parsed](const QString& error) {
+    parsed.error = error;
+    parsed.exit_code = cli::kExitUsage;
+    return parsed;
+  };
+  for (const auto& v : parser.valued) {
+    if (v.option->count() == 0) continue;
+    const QString problem = parseValue(QString::fromStdString(v.option->get_name()), QString::fromStdString(v.value), out);
+    if (!problem.isEmpty()) return fail(problem);
   }
-  if (out.frame && out.time) parsed.error = QStringLiteral("--frame and --time: give one of them, not both");
+  if (parser.positional->count() > 0) {
+    const QString scenario = QString::fromStdString(parser.scenario);
+    if (!out.scenario.isEmpty())
+      return fail(QStringLiteral("%1: only one scenario can be opened (--scenario %2 was given)").arg(scenario, out.scenario));
+    out.scenario = scenario;
+  }
+  if (out.frame && out.time) return fail(QStringLiteral("--frame and --time: give one of them, not both"));
   const bool view_options = out.frame || out.time || !out.tab.isEmpty() || out.color_map;
-  if (parsed.error.isEmpty() && view_options && out.screenshot.isEmpty())
-    parsed.error = QStringLiteral("--frame, --time, --tab and --colormap choose what a --screenshot shows: give --screenshot FILE too");
+  if (view_options && out.screenshot.isEmpty())
+    return fail(QStringLiteral("--frame, --time, --tab and --colormap choose what a --screenshot shows: give --screenshot FILE too"));
   return parsed;
 }
 
 QString commandLineHelp() {
-  return QStringLiteral(
-             "usage: maris [SCENARIO] [--theme light|dark|system]\n"
-             "       maris --screenshot FILE [--scenario SCENARIO] [--size WxH] [--theme NAME]\n"
-             "             [--frame K | --time T] [--tab PLOT] [--colormap MAP]\n"
-             "\n"
-             "The Maris desktop application: pick a scenario, edit its parameters, run it, and see the\n"
-             "results as plots and in 3D.\n"
-             "\n"
-             "  SCENARIO               a scenario file (*.json) or a built-in scenario name (see `maris-cli list`)\n"
-             "  --theme NAME           light, dark or system (the platform's palette); remembered\n"
-             "  --screenshot FILE      open SCENARIO (default: the default built-in), run it to completion,\n"
-             "                         save a PNG of the main window with its results, and exit\n"
-             "                         (exit code 0 on success, 2 for a bad option or value, 3 if the run\n"
-             "                         failed, 1 on other errors)\n"
-             "  --scenario SCENARIO    the same as SCENARIO\n"
-             "  --size WxH             window size for --screenshot in pixels (default 1600x1000; %1 to %2)\n"
-             "  --frame K              3D view: show frame K (1 = the first; default: the last)\n"
-             "  --time T               3D view: show the frame nearest to time T [s]\n"
-             "  --tab PLOT             the plot tab shown: a plot's name (as in its exported file name,\n"
-             "                         e.g. top_force) or its tab title (default: the first)\n"
-             "  --colormap MAP         3D colour map: %3\n"
-             "  --help                 this text\n")
-      .arg(kMinSide)
-      .arg(kMaxSide)
-      .arg(colorMapKeys().join(QStringLiteral(", ")));
+  Parser parser;
+  return QString::fromStdString(parser.app.help());
 }
 
 QString applyViewOptions(MainWindow& window, const CommandLine& options) {

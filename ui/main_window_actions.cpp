@@ -125,7 +125,7 @@ bool MainWindow::writeReport(const QString& dir) {
   }
   try {
     const QImage image = view_->renderImage(1600, 1000);
-    const auto files = writeReportFolder(dir.toStdString(), record->scenario, *record->results, image);
+    const auto files = writeReportFolder(dir.toStdString(), record->scenario, *record->results, record->started_at, image);
     run_panel_->log(RunPanel::Level::Info, tr("Report of %1 written to %2 (%n file(s))", nullptr,
                                               static_cast<int>(files.size())).arg(record->label, dir));
     status(tr("Report written to %1").arg(dir));

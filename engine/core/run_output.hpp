@@ -1,9 +1,11 @@
 // Writes a finished run to a folder: scenario.json (exactly what ran), summary.json (scalars with
-// units, solver statistics, warnings) and one CSV per result table. Every file is written
-// atomically, so a cancelled or failed run never leaves a torn file. PNG plots are added by the
-// caller that has a renderer (app/, through ui/).
+// units, solver statistics, warnings; which Maris ran it: maris_version, commit, started_at in UTC,
+// host_threads) and one CSV per result table. The CLI's run folder and the GUI's report folder both
+// come from here. Every file is written atomically, so a cancelled or failed run never leaves a torn
+// file. PNG plots are added by the caller that has a renderer (app/, through ui/).
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <vector>
 
@@ -12,8 +14,10 @@
 
 namespace maris {
 
-// Returns the files written, in order.
+// Returns the files written, in order. `started_at`: when the run started (the caller took the time
+// just before runScenario).
 std::vector<std::filesystem::path> writeRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
-                                                  const Results& results);
+                                                  const Results& results,
+                                                  std::chrono::system_clock::time_point started_at);
 
 }  // namespace maris

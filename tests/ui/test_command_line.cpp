@@ -1,11 +1,13 @@
 // `maris`'s command line (ui/command_line.*): what a --screenshot shows (3D frame or time, colour
-// map, plot tab, size, theme) and the messages for bad values, on Qt's offscreen platform with the
-// test scene (10 frames at t = 0, 0.1, …, 0.9 s; plots "deflection" and "tip_motion").
+// map, plot tab, size, theme), --help and --version, and the messages and exit code (1) for bad
+// options and values, on Qt's offscreen platform with the test scene (10 frames at t = 0, 0.1, …,
+// 0.9 s; plots "deflection" and "tip_motion").
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QtTest>
 
 #include "command_line.hpp"
+#include "core/version.hpp"
 #include "main_window.hpp"
 #include "plots/plot_panel.hpp"
 #include "test_scene.hpp"
@@ -52,11 +54,26 @@ class CommandLineTest : public QObject {
     QCOMPARE(o.tab, QStringLiteral("top_force"));
     QVERIFY(o.color_map == ColorMap::Viridis);
     QCOMPARE(parsed({"scenario.json", "--frame", "3", "--screenshot", "x.png"}).frame, std::optional<int>(3));
-    QVERIFY(parsed({"--help"}).help);
     // The help lists every option and every colour map.
-    for (const char* word : {"--screenshot", "--scenario", "--size", "--theme", "--frame", "--time", "--tab",
-                             "--colormap", "cool-warm", "viridis", "rainbow", "greyscale"})
+    for (const char* word : {"--screenshot FILE", "--scenario", "--size WxH", "--theme", "--frame K", "--time T",
+                             "--tab PLOT", "--colormap MAP", "cool-warm", "viridis", "rainbow", "greyscale",
+                             "--version", "Exit codes"})
       QVERIFY2(commandLineHelp().contains(QLatin1String(word)), word);
+  }
+
+  // --help and --version stop before the application starts, with exit code 0 and their text.
+  void helpAndVersionExitZero() {
+    for (const char* flag : {"--help", "-h"}) {
+      const ParsedCommandLine help = parseCommandLine({flag});
+      QCOMPARE(help.exit_code, std::optional<int>(0));
+      QCOMPARE(help.output, commandLineHelp());
+      QVERIFY(help.error.isEmpty());
+    }
+    const ParsedCommandLine version = parseCommandLine({"--version"});
+    QCOMPARE(version.exit_code, std::optional<int>(0));
+    QCOMPARE(version.output, QString::fromStdString("maris " + versionText() + "\n"));
+    QVERIFY(version.output.startsWith(QStringLiteral("maris " MARIS_TEST_PROJECT_VERSION)));
+    QVERIFY(!parseCommandLine({"--screenshot", "x.png"}).exit_code);  // a command line that starts maris
   }
 
   void badValuesNameTheOptionAndWhatIsAllowed_data() {
@@ -71,18 +88,25 @@ class CommandLineTest : public QObject {
     QTest::newRow("time not a number") << shot + QStringList{"--time", "soon"} << QStringList{"--time soon", "seconds"};
     QTest::newRow("unknown theme") << QStringList{"--theme", "blue"} << QStringList{"--theme blue", "light, dark, system"};
     QTest::newRow("unknown option") << QStringList{"--zoom", "2"} << QStringList{"unknown option --zoom"};
-    QTest::newRow("missing value") << QStringList{"--screenshot"} << QStringList{"--screenshot needs a value"};
+    QTest::newRow("misspelt option") << QStringList{"--colourmap", "viridis"}
+                                     << QStringList{"unknown option --colourmap; did you mean --colormap?"};
+    QTest::newRow("missing value") << QStringList{"--screenshot"} << QStringList{"--screenshot needs a value (FILE)"};
+    QTest::newRow("missing value before an option") << QStringList{"x.json", "--theme"}
+                                                    << QStringList{"--theme needs a value (NAME)"};
     QTest::newRow("frame and time") << shot + QStringList{"--frame", "2", "--time", "1"}
                                     << QStringList{"--frame and --time"};
     QTest::newRow("tab without screenshot") << QStringList{"--tab", "top_force"} << QStringList{"--screenshot FILE"};
-    QTest::newRow("two scenarios") << QStringList{"a.json", "b.json"} << QStringList{"b.json", "only one scenario"};
+    QTest::newRow("two scenarios") << QStringList{"a.json", "b.json"} << QStringList{"unexpected extra argument 'b.json'"};
+    QTest::newRow("scenario twice") << QStringList{"--scenario", "a.json", "b.json"}
+                                    << QStringList{"b.json", "only one scenario", "--scenario a.json"};
   }
   void badValuesNameTheOptionAndWhatIsAllowed() {
     QFETCH(QStringList, arguments);
     QFETCH(QStringList, expected);
-    const QString error = parseCommandLine(arguments).error;
+    const ParsedCommandLine parsed = parseCommandLine(arguments);
     for (const QString& piece : expected)
-      QVERIFY2(error.contains(piece), qPrintable(QStringLiteral("'%1' lacks '%2'").arg(error, piece)));
+      QVERIFY2(parsed.error.contains(piece), qPrintable(QStringLiteral("'%1' lacks '%2'").arg(parsed.error, piece)));
+    QCOMPARE(parsed.exit_code, std::optional<int>(1));  // a usage error
   }
 
   void viewOptionsChooseFrameTabAndColourMap() {

@@ -7,7 +7,9 @@
 #include <qcustomplot.h>
 
 #include <fstream>
+#include <thread>
 
+#include "core/version.hpp"
 #include "plots/plot_export.hpp"
 #include "plots/plot_panel.hpp"
 #include "plots/plot_view.hpp"
@@ -363,7 +365,7 @@ class RunTest : public QObject {
   void reportFolderHasEveryFile() {
     const RunRecord record = finishedRun(rodScenario(0.0));
     QTemporaryDir dir;
-    const auto files = writeReportFolder(dir.path().toStdString(), record.scenario, *record.results);
+    const auto files = writeReportFolder(dir.path().toStdString(), record.scenario, *record.results, record.started_at);
     for (const char* name : {"scenario.json", "summary.json", "summary.md", "profile.csv", "history.csv",
                              "reference.csv", "deflection.png", "deflection.pdf", "tip_motion.png", "tip_motion.pdf"})
       QVERIFY2(QFileInfo::exists(dir.filePath(QString::fromLatin1(name))), name);
@@ -371,6 +373,13 @@ class RunTest : public QObject {
     QFile md(dir.filePath(QStringLiteral("summary.md")));
     QVERIFY(md.open(QIODevice::ReadOnly));
     QVERIFY(md.readAll().contains("| max_deflection |"));
+    // summary.json says which Maris ran the run and when, as the CLI's does (the same writeRunFolder).
+    const Json summary = Json::parse(readTextFile(dir.filePath(QStringLiteral("summary.json")).toStdString()));
+    QCOMPARE(summary["maris_version"].get<std::string>(), projectVersion());
+    QCOMPARE(summary["commit"].get<std::string>(), commitId());
+    QVERIFY(summary["started_at"].is_string());
+    QVERIFY(record.started_at > std::chrono::system_clock::now() - std::chrono::minutes(1));
+    QCOMPARE(summary["host_threads"].get<unsigned>(), std::thread::hardware_concurrency());
   }
 };
 

@@ -95,12 +95,14 @@ std::string summaryMarkdown(const Scenario& scenario, const Results& results,
 }
 
 std::vector<std::filesystem::path> writeReportFolder(const std::filesystem::path& dir, const Scenario& scenario,
-                                                     const Results& results, const QImage& view3d) {
+                                                     const Results& results,
+                                                     std::chrono::system_clock::time_point started_at,
+                                                     const QImage& view3d) {
   // Staged and renamed into place as a whole (core/run_folder.hpp); a report of a run replaces the earlier
   // report of the same name, never a folder of other files.
   RunFolder folder(dir, {.replace = true});
   const std::filesystem::path staging = folder.staging();
-  auto files = writeRunFolder(staging, scenario, results);
+  auto files = writeRunFolder(staging, scenario, results, started_at);
   for (const auto& spec : results.plots) {
     for (const char* suffix : {".png", ".pdf"}) {
       const auto file = staging / (spec.name + suffix);

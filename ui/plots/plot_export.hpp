@@ -3,6 +3,7 @@
 // core/run_output.hpp, plus every plot as PNG and PDF, the 3D view, and a readable summary.md).
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <vector>
 
@@ -34,9 +35,12 @@ void writeRunsCsv(const std::filesystem::path& file, const std::vector<RunData>&
 std::string summaryMarkdown(const Scenario& scenario, const Results& results,
                             const std::vector<std::filesystem::path>& files);
 
-// Writes the report folder; `view3d` (if not null) is saved as view_3d.png. Returns every file
-// written. Throws std::runtime_error when a file cannot be written.
+// Writes the report folder (summary.json through writeRunFolder, with the run's start time);
+// `view3d` (if not null) is saved as view_3d.png. Returns every file written. Throws
+// std::runtime_error when a file cannot be written.
 std::vector<std::filesystem::path> writeReportFolder(const std::filesystem::path& dir, const Scenario& scenario,
-                                                     const Results& results, const QImage& view3d = {});
+                                                     const Results& results,
+                                                     std::chrono::system_clock::time_point started_at,
+                                                     const QImage& view3d = {});
 
 }  // namespace maris::ui

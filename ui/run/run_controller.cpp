@@ -70,6 +70,7 @@ quint64 RunController::start(const SceneDefinition& scene, const Scenario& scena
   current_scenario_ = scenario;
   cancel_flag_ = job.cancel;
   clock_.start();
+  started_at_ = std::chrono::system_clock::now();
   setRunning(true);
   emit started(job.id);
   QMetaObject::invokeMethod(worker_, [worker = worker_, job] { worker->run(job); }, Qt::QueuedConnection);
@@ -101,6 +102,7 @@ void RunController::onFinished(quint64 run, ResultsPtr results) {
   record.scenario = std::move(current_scenario_);
   record.results = std::move(results);
   record.wall_time_s = clock_.elapsed() / 1000.0;
+  record.started_at = started_at_;
   record.label = tr("run %1").arg(run);
   setRunning(false);
   emit finished(record);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <memory>
 
 #include <QElapsedTimer>
@@ -25,6 +26,7 @@ struct RunRecord {
   Scenario scenario;     // exactly what ran
   ResultsPtr results;
   double wall_time_s = 0.0;
+  std::chrono::system_clock::time_point started_at;  // when the run was started (summary.json's started_at)
   QString label;         // "run 3" plus what differs from the run before ("segment count = 100")
 };
 
@@ -95,6 +97,7 @@ class RunController : public QObject {
   Scenario current_scenario_;
   std::shared_ptr<std::atomic<bool>> cancel_flag_;
   QElapsedTimer clock_;
+  std::chrono::system_clock::time_point started_at_;
   qint64 cancel_requested_ns_ = 0;
   double last_cancel_latency_s_ = -1.0;
   double last_cancel_ack_s_ = -1.0;
