@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "riser/riser_dynamics.hpp"
+#include "core/angles.hpp"
 #include "riser_test_cases.hpp"
 
 namespace maris::riser {
@@ -157,7 +158,7 @@ TEST(RiserLoads, DragEqualsTheIntegralOfTheMorisonForceDensity) {
   p.normal_drag_coefficient = 1.1;
   p.tangential_drag_coefficient = 0.2;
   p.current_speed_surface = p.current_speed_seabed = 1.5;
-  p.current_direction = 0.4;
+  p.current_direction_deg = degreesFromRadians(0.4);
   p.segment_count = 20;  // 5 m segments: the Gauss error (∝ l⁶) is ~1e-5 at 25 m, far below at 5 m
   const RiserModel m = buildRiserModel(p);
   RiserPose pose;
