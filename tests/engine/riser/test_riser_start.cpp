@@ -139,7 +139,7 @@ TEST(RiserModesSwitch, OffDropsTheModesAndLeavesTheHistoryUnchanged) {
   ASSERT_NE(h_off, nullptr);
   ASSERT_EQ(h_on->columns.size(), h_off->columns.size());
   for (std::size_t c = 0; c < h_on->columns.size(); ++c)
-    test::expectSameValues(h_on->columns[c].values, h_off->columns[c].values, "history." + h_on->columns[c].name);
+    maris::test::expectSameValues(h_on->columns[c].values, h_off->columns[c].values, "history." + h_on->columns[c].name);
   EXPECT_EQ(on.stats.steps, off.stats.steps);
 }
 
