@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
-#include "results_identity.hpp"
+#include "engine/results_identity.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
 
