@@ -89,9 +89,11 @@ TEST_F(Cli, SchemaListsEveryFieldWithUnitInTextAndJson) {
       std::vector<std::pair<std::string, Json>> named = {{f.key(), jf["unit"]}};
       if (jf.contains("columns"))
         for (const Json& c : jf["columns"]) named.emplace_back(c["path"].get<std::string>(), c["unit"]);
-      for (const auto& [name, unit] : named)
-        if (name.size() > 4 && name.compare(name.size() - 4, 4, "_deg") == 0)
+      for (const auto& [name, unit] : named) {
+        if (name.size() > 4 && name.compare(name.size() - 4, 4, "_deg") == 0) {
           EXPECT_TRUE(unit == "deg" || unit == "deg/s") << scene.name << ": " << name << " has unit " << unit;
+        }
+      }
     }
   }
 }
