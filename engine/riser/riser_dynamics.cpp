@@ -166,6 +166,16 @@ void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Ei
     const Vec3 c = 0.5 * s.length * r.col(0);
     const Mat3 inertia = r * s.mass_local.bottomRightCorner<3, 3>() * r.transpose();
     ws.bias[i] << ws.loads.force[i] - s.mass * om.cross(om.cross(c)), ws.loads.moment[i] - om.cross(inertia * om);
+    // Tangential added mass unlike the normal one (K = m 1 + δ t tᵀ, v the velocity of A_i): the velocity terms of
+    // Kirchhoff's equations for the kinetic energy ½ vᵀ K v + ..., ω×(Kv) − K(ω×v) in the force and the Munk
+    // moment v×(Kv), so that the energy balance still closes; they vanish for an isotropic added mass.
+    const double delta = s.axial_mass - s.mass;
+    if (delta != 0.0) {
+      const Vec3 t = r.col(0), &v = pose.velocity[i];
+      const double axial_speed = t.dot(v);
+      ws.bias[i].head<3>() -= delta * (axial_speed * om.cross(t) - t.dot(om.cross(v)) * t);
+      ws.bias[i].tail<3>() -= delta * axial_speed * v.cross(t);
+    }
   }
 }
 

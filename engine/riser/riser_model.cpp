@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/angles.hpp"
+
 namespace maris::riser {
 namespace {
 
@@ -11,20 +13,23 @@ constexpr double kPi = 3.14159265358979323846;
 // Section properties at arc length s: the last `sections` row covering s, else the uniform section.
 SectionRow sectionAt(const RiserParameters& p, double s) {
   SectionRow r{0.0, p.length, p.outer_diameter, p.inner_diameter, p.youngs_modulus, p.shear_modulus, p.density,
-               p.normal_drag_coefficient, p.tangential_drag_coefficient, p.added_mass_coefficient};
+               p.normal_drag_coefficient, p.tangential_drag_coefficient, p.added_mass_coefficient,
+               p.tangential_added_mass_coefficient};
   for (const auto& row : p.sections)
     if (s >= row.start && s < row.end) r = row;
   return r;
 }
 
 // Newton-Euler mass matrix of a uniform straight segment about its origin, in its own frame:
-// [[m I, -m[c]x], [m[c]x, I_A]] with c = (l/2) e1, I_A = diag(ι l, m l²/3 + ι l/2, m l²/3 + ι l/2)
+// [[K, -m[c]x], [m[c]x, I_A]] with c = (l/2) e1, K = diag(m_t, m, m), I_A = diag(ι l, m l²/3 + ι l/2, m l²/3 + ι l/2)
 // (slender rod about its end, polar inertia ι per length: J = diag(μ l³/3, ι l/2, ι l/2), I' = tr(J) 1 - J).
-Mat6 segmentMass(double mass, double length, double polar_inertia_per_length) {
+// m is the mass with the normal added mass, m_t with the tangential one: the axial added mass enters only
+// K(0,0), since ω × c and the moments are across the axis.
+Mat6 segmentMass(double mass, double axial_mass, double length, double polar_inertia_per_length) {
   const Vec3 c(length / 2, 0, 0);
   const double transverse = mass * length * length / 3.0 + polar_inertia_per_length * length / 2.0;
   Mat6 m = Mat6::Zero();
-  m.topLeftCorner<3, 3>() = mass * Mat3::Identity();
+  m.topLeftCorner<3, 3>() = Vec3(axial_mass, mass, mass).asDiagonal();
   m.topRightCorner<3, 3>() = -mass * skew(c);
   m.bottomLeftCorner<3, 3>() = mass * skew(c);
   m.bottomRightCorner<3, 3>() = Vec3(polar_inertia_per_length * length, transverse, transverse).asDiagonal();
@@ -185,9 +190,11 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     const double a_inn = kPi / 4 * sec.inner_diameter * sec.inner_diameter;
     const double wall_mass = sec.density * (a_out - a_inn), contents = p.internal_fluid_density * a_inn;
     const double mu = wall_mass + contents + p.water_density * sec.added_mass_coefficient * a_out;  // eq (11)
+    const double mu_axial = wall_mass + contents + p.water_density * sec.tangential_added_mass_coefficient * a_out;
     const double polar = sec.density * kPi / 32 * (std::pow(sec.outer_diameter, 4) - std::pow(sec.inner_diameter, 4));
     g.mass = mu * g.length;
-    g.mass_local = segmentMass(g.mass, g.length, polar);
+    g.axial_mass = mu_axial * g.length;
+    g.mass_local = segmentMass(g.mass, g.axial_mass, g.length, polar);
     g.inverse_mass_local = inverseMass(g.mass_local, m.torsion);
     g.outer_diameter = sec.outer_diameter;
     g.weight_per_length = (wall_mass + contents) * p.gravity;
@@ -229,7 +236,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   m.motion_amplitude = Vec3(p.motion_amplitude_x, p.motion_amplitude_y, p.motion_amplitude_z);
   if (m.top == TopCondition::Tensioner) m.motion_amplitude.z() = 0.0;
   if (m.top == TopCondition::Free) m.motion_amplitude.setZero();
-  m.motion_phase = Vec3(p.motion_phase_x, p.motion_phase_y, p.motion_phase_z);
+  m.motion_phase = Vec3(p.motion_phase_x_deg, p.motion_phase_y_deg, p.motion_phase_z_deg) * kRadiansPerDegree;
   m.motion_omega = 2 * kPi / p.motion_period;
   m.ramp_time = p.motion_ramp_time;
   if (p.top_motion == "table" && m.top != TopCondition::Free)
@@ -237,7 +244,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   m.flow_speed = p.internal_flow_speed;
   m.current_surface = p.current_speed_surface;
   m.current_seabed = p.current_speed_seabed;
-  m.current_direction = p.current_direction;
+  m.current_direction = radiansFromDegrees(p.current_direction_deg);
   m.point_loads = p.point_loads;
   m.sea = buildRiserSea(p);
 
@@ -258,8 +265,10 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   } else if (fixed_bottom && m.top != TopCondition::Free && (m.anchor - top).norm() < p.length) {
     points = arcPoints(top, m.anchor, p.length, s);
   } else {
-    const Vec3 dir(std::sin(p.initial_inclination) * std::cos(p.initial_azimuth),
-                   std::sin(p.initial_inclination) * std::sin(p.initial_azimuth), -std::cos(p.initial_inclination));
+    const double inclination = radiansFromDegrees(p.initial_inclination_deg);
+    const double azimuth = radiansFromDegrees(p.initial_azimuth_deg);
+    const Vec3 dir(std::sin(inclination) * std::cos(azimuth), std::sin(inclination) * std::sin(azimuth),
+                   -std::cos(inclination));
     for (double sk : s) points.push_back(top + sk * dir);
   }
   m.initial_top = top;

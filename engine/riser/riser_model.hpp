@@ -47,7 +47,8 @@ enum class Formulation { Joint, Absolute };
 struct Segment {
   double length = 0.0;        // [m] l_i
   double arc_start = 0.0;     // [m] s at the segment's origin A_i
-  double mass = 0.0;          // [kg] m_i = ρ̄ l_i (wall + contents + added mass, eq 11)
+  double mass = 0.0;          // [kg] m_i = ρ̄ l_i (wall + contents + normal added mass, eq 11)
+  double axial_mass = 0.0;    // [kg] wall + contents + tangential added mass: accelerations along the axis
   Mat6 mass_local;            // [kg, kg·m, kg·m²] 6x6 Newton-Euler mass about A_i in S_i, order (a, α)
   Mat6 inverse_mass_local;    // its inverse; torsion off: inverse on the subspace without spin about x'
   double outer_diameter = 0.0;      // [m] D_out (section at the segment centre)

@@ -1,7 +1,10 @@
 #include "riser/riser_parameters.hpp"
 
+#include "core/angles.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "riser/riser_fatigue.hpp"
@@ -26,7 +29,9 @@ SchemaBinder<SectionRow> sectionBinder() {
   b.real("tangential_drag_coefficient", &SectionRow::tangential_drag_coefficient, "-", Range::closed(0, 10),
          "Tangential drag coefficient D_x (on D_out)");
   b.real("added_mass_coefficient", &SectionRow::added_mass_coefficient, "-", Range::closed(0, 10),
-         "Added-mass coefficient C_a = c_M - 1");
+         "Normal added-mass coefficient C_a = c_M - 1");
+  b.real("tangential_added_mass_coefficient", &SectionRow::tangential_added_mass_coefficient, "-",
+         Range::closed(0, 10), "Tangential (axial) added-mass coefficient C_at");
   return b;
 }
 
@@ -74,7 +79,10 @@ SchemaBinder<P> makeBinder() {
   b.real("section.tangential_drag_coefficient", &P::tangential_drag_coefficient, "-", Range::closed(0, 10),
          "Tangential drag coefficient D_x (on D_out, eq 34)");
   b.real("section.added_mass_coefficient", &P::added_mass_coefficient, "-", Range::closed(0, 10),
-         "Added-mass coefficient C_a = c_M - 1 (isotropic, eq 11)");
+         "Normal added-mass coefficient C_a = c_M - 1 (eq 11), on accelerations across the axis");
+  b.real("section.tangential_added_mass_coefficient", &P::tangential_added_mass_coefficient, "-", Range::closed(0, 10),
+         "Tangential added-mass coefficient C_at on accelerations along the axis (0: none, as riser and mooring "
+         "codes take it; equal to the normal C_a: the paper's isotropic eq 11)");
   b.table("sections", &P::sections, sectionBinder(), 0, 1000, "Stretches with their own section properties");
   b.choice("model.formulation", &P::formulation, {"joint", "absolute"},
            "Coordinates: joint (J, continuity exact) or absolute (A, constraints with Baumgarte stabilisation)");
@@ -91,7 +99,8 @@ SchemaBinder<P> makeBinder() {
          "Constant flow speed u of the contents along the riser (> 0 from top to bottom; eqs 43-52)");
   b.real("current.speed_surface", &P::current_speed_surface, "m/s", Range::closed(-20, 20), "Current at the surface");
   b.real("current.speed_seabed", &P::current_speed_seabed, "m/s", Range::closed(-20, 20), "Current at the sea bed");
-  b.real("current.direction", &P::current_direction, "rad", Range::closed(-7, 7), "Current heading from +x to +y");
+  b.real("current.direction_deg", &P::current_direction_deg, "deg", Range::closed(-360, 360),
+         "Current heading from +x towards +y");
   b.choice("top.condition", &P::top_condition, {"pinned", "clamped", "tensioner", "free"},
            "Top end: ball joint, clamp, tensioner (vertical force, horizontal motion prescribed) or free");
   b.real("top.x", &P::top_x, "m", Range::any(), "Mean top position x");
@@ -102,9 +111,9 @@ SchemaBinder<P> makeBinder() {
   b.real("top.motion_amplitude_y", &P::motion_amplitude_y, "m", Range::nonNegative(1e3), "Top motion amplitude y");
   b.real("top.motion_amplitude_z", &P::motion_amplitude_z, "m", Range::nonNegative(1e3), "Top motion amplitude z");
   b.real("top.motion_period", &P::motion_period, "s", Range::positive(1e5), "Top motion period");
-  b.real("top.motion_phase_x", &P::motion_phase_x, "rad", Range::closed(-7, 7), "Phase of the x motion");
-  b.real("top.motion_phase_y", &P::motion_phase_y, "rad", Range::closed(-7, 7), "Phase of the y motion");
-  b.real("top.motion_phase_z", &P::motion_phase_z, "rad", Range::closed(-7, 7), "Phase of the z motion");
+  b.real("top.motion_phase_x_deg", &P::motion_phase_x_deg, "deg", Range::closed(-360, 360), "Phase of the x motion");
+  b.real("top.motion_phase_y_deg", &P::motion_phase_y_deg, "deg", Range::closed(-360, 360), "Phase of the y motion");
+  b.real("top.motion_phase_z_deg", &P::motion_phase_z_deg, "deg", Range::closed(-360, 360), "Phase of the z motion");
   b.real("top.motion_ramp_time", &P::motion_ramp_time, "s", Range::nonNegative(1e5), "Smooth start of the motion");
   b.choice("top.motion", &P::top_motion, {"harmonic", "table"},
            "Top motion: harmonic per axis (amplitudes, period, phases) or the time table top_motion_table");
@@ -117,9 +126,10 @@ SchemaBinder<P> makeBinder() {
   b.real("bottom.z", &P::bottom_z, "m", Range::any(), "Anchor z");
   b.real("bottom.spring_stiffness", &P::bottom_spring_stiffness, "N/m", Range::nonNegative(1e12), "Anchor spring");
   b.real("bottom.spring_damping", &P::bottom_spring_damping, "N*s/m", Range::nonNegative(1e12), "Anchor damper");
-  b.real("initial.inclination", &P::initial_inclination, "rad", Range::closed(0, 3.1416),
+  b.real("initial.inclination_deg", &P::initial_inclination_deg, "deg", Range::closed(0, 180),
          "Initial direction from the top, measured from straight down (free or spring bottom)");
-  b.real("initial.azimuth", &P::initial_azimuth, "rad", Range::closed(-7, 7), "Heading of the initial direction");
+  b.real("initial.azimuth_deg", &P::initial_azimuth_deg, "deg", Range::closed(-360, 360),
+         "Heading of the initial direction from +x towards +y");
   b.boolean("initial.solve_statics", &P::solve_statics, "Start from static equilibrium");
   bindWaveParameters(b);
   bindFatigueParameters(b);
@@ -134,6 +144,8 @@ SchemaBinder<P> makeBinder() {
   b.real("solver.tolerance", &P::tolerance, "-", Range::closed(1e-12, 1e-1),
          "Relative local error tolerance of dopri5; the implicit Newton iteration converges to 1e-3 of it, or of "
          "the step's expected error if that is larger (within 1e-10 and 1e-6)");
+  b.boolean("output.modes", &P::modes,
+            "Natural frequencies, mode shapes and the divergence flow speed about the static state (n <= 199)");
   b.integer("output.frame_count", &P::frame_count, "-", Range::closed(1, 10000), "Stored frames");
   b.table("output.probes", &P::probes, probeBinder(), 1, 20,
           "Probe points (arc length from the top) whose displacement and stress histories are recorded");
@@ -162,6 +174,21 @@ std::string num(double v) {
 }
 
 }  // namespace
+
+double initialTopSpeed(const RiserParameters& p) {
+  if (p.top_motion != "harmonic" || p.motion_ramp_time > 0 || p.top_condition == "free") return 0.0;
+  const double omega = 2 * std::numbers::pi / p.motion_period;
+  const double amplitude[3] = {p.motion_amplitude_x, p.motion_amplitude_y,
+                               p.top_condition == "tensioner" ? 0.0 : p.motion_amplitude_z};
+  const double phase[3] = {p.motion_phase_x_deg, p.motion_phase_y_deg, p.motion_phase_z_deg};
+  double squares = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    // cos(±90°) is 6e-17 in floating point: a start at rest up to round-off counts as at rest.
+    const double c = std::cos(radiansFromDegrees(phase[a]));
+    if (std::abs(c) > 1e-12) squares += std::pow(amplitude[a] * omega * c, 2);
+  }
+  return std::sqrt(squares);
+}
 
 const SchemaBinder<RiserParameters>& riserBinder() {
   static const SchemaBinder<RiserParameters> binder = makeBinder();
@@ -202,6 +229,16 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
         e.push_back({"top_motion_table[" + std::to_string(k) + "].time", num(p.top_motion_table[k].time),
                      "must be greater than the previous row's time " + num(p.top_motion_table[k - 1].time)});
   }
+  // A harmonic top motion without a ramp starts the top at full speed while the riser rests: a velocity jump that
+  // no state at t = 0 holds (joint coordinates would translate the whole chain with the top, absolute ones jerk
+  // the top force). A table needs no such check: its clamped spline starts at zero velocity.
+  const double top_speed = initialTopSpeed(p);
+  if (top_speed > 0.0 && p.end_time > 0)
+    e.push_back({"top.motion_ramp_time", num(p.motion_ramp_time),
+                 "the harmonic top motion starts at " + num(top_speed) +
+                     " m/s while the riser is at rest (a velocity jump at t = 0): give a smooth start, "
+                     "top.motion_ramp_time > 0 (e.g. one period, " + num(p.motion_period) +
+                     " s), or phases at which the motion starts at rest (±90°)"});
   for (std::size_t k = 0; k < p.probes.size(); ++k)
     if (p.probes[k].arc_length > p.length)
       e.push_back({"output.probes[" + std::to_string(k) + "].arc_length", num(p.probes[k].arc_length),
@@ -268,25 +305,80 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
   return e;
 }
 
-std::vector<std::string> upgradeRiserParameters(Json& parameters) {
-  std::vector<std::string> notes;
-  // Scenarios written before the stress convergence study existed have no such section: no study.
-  if (parameters.is_object() && !parameters.contains("stress_convergence")) {
-    parameters["stress_convergence"] = riserBinder().write(RiserParameters{})["stress_convergence"];
-    notes.push_back("stress_convergence added without a study (new in the riser schema; save the scenario to keep it)");
+namespace {
+
+// Fields renamed when every angle became degrees: {section, old name [rad], new name [deg]}.
+struct RenamedAngle {
+  const char* section;
+  const char* old_name;
+  const char* new_name;
+};
+constexpr RenamedAngle kRenamedAngles[] = {
+    {"current", "direction", "direction_deg"},           {"top", "motion_phase_x", "motion_phase_x_deg"},
+    {"top", "motion_phase_y", "motion_phase_y_deg"},     {"top", "motion_phase_z", "motion_phase_z_deg"},
+    {"initial", "inclination", "inclination_deg"},       {"initial", "azimuth", "azimuth_deg"},
+};
+
+// rad → deg, rounded to 12 significant digits (a relative change below 5e-13) so that π/2 reads 90.
+double degreesOf(double radians) {
+  const double degrees = degreesFromRadians(radians);
+  if (degrees == 0.0 || !std::isfinite(degrees)) return degrees;
+  const double scale = std::pow(10.0, 11 - static_cast<int>(std::floor(std::log10(std::abs(degrees)))));
+  return std::round(degrees * scale) / scale;
+}
+
+void upgradeAngles(Json& parameters, std::vector<std::string>& notes) {
+  for (const RenamedAngle& r : kRenamedAngles) {
+    auto section = parameters.find(r.section);
+    if (section == parameters.end() || !section->is_object()) continue;
+    auto old = section->find(r.old_name);
+    if (old == section->end()) continue;
+    const std::string from = std::string(r.section) + "." + r.old_name, to = std::string(r.section) + "." + r.new_name;
+    if (section->contains(r.new_name)) {
+      notes.push_back(from + " = " + old->dump() + " ignored: " + to + " is given");
+    } else if (old->is_number()) {
+      const double degrees = degreesOf(old->get<double>());
+      (*section)[r.new_name] = degrees;
+      notes.push_back(from + " = " + old->dump() + " rad read as " + to + " = " + Json(degrees).dump() +
+                      " (angles are degrees in the riser schema; save the scenario to update it)");
+    } else {
+      (*section)[r.new_name] = *old;  // not a number: left for validation to name under its new path
+      notes.push_back(from + " renamed " + to + " (angles are degrees in the riser schema)");
+    }
+    section->erase(old);
   }
-  if (parameters.is_object() && !parameters.contains("fatigue")) {
-    parameters["fatigue"] = riserBinder().write(RiserParameters{})["fatigue"];
-    notes.push_back("fatigue added, off (new in the riser schema; save the scenario to keep it)");
+}
+
+// Files from before the tangential added mass had one isotropic C_a (the paper's eq 11): they keep it along the
+// axis too, so their results do not change.
+void upgradeTangentialAddedMass(Json& parameters, std::vector<std::string>& notes) {
+  constexpr const char* kField = "tangential_added_mass_coefficient";
+  auto section = parameters.find("section");
+  if (section != parameters.end() && section->is_object() && !section->contains(kField) &&
+      section->contains("added_mass_coefficient")) {
+    (*section)[kField] = (*section)["added_mass_coefficient"];
+    notes.push_back(std::string("section.") + kField + " = " + (*section)[kField].dump() +
+                    " added, equal to section.added_mass_coefficient: the file predates the tangential added mass "
+                    "and keeps its isotropic added mass (the new default is 0; save the scenario to keep it)");
   }
-  if (parameters.is_object() && !parameters.contains("waves")) {
-    parameters["waves"] = riserBinder().write(RiserParameters{})["waves"];
-    notes.push_back("waves added as none (new in the riser schema; save the scenario to keep it)");
-  }
+  auto rows = parameters.find("sections");
+  if (rows == parameters.end() || !rows->is_array()) return;
+  int upgraded = 0;
+  for (Json& row : *rows)
+    if (row.is_object() && !row.contains(kField) && row.contains("added_mass_coefficient")) {
+      row[kField] = row["added_mass_coefficient"];
+      ++upgraded;
+    }
+  if (upgraded > 0)
+    notes.push_back(std::to_string(upgraded) + " sections rows given " + kField +
+                    " equal to their added_mass_coefficient (isotropic added mass, as the file was written)");
+}
+
+void upgradeProbePosition(Json& parameters, std::vector<std::string>& notes) {
   auto output = parameters.find("output");
-  if (output == parameters.end() || !output->is_object()) return notes;
+  if (output == parameters.end() || !output->is_object()) return;
   auto old = output->find("probe_position");
-  if (old == output->end()) return notes;
+  if (old == output->end()) return;
   if (output->contains("probes")) {
     notes.push_back("output.probe_position = " + old->dump() + " ignored: output.probes is given");
   } else {
@@ -295,6 +387,35 @@ std::vector<std::string> upgradeRiserParameters(Json& parameters) {
                     old->dump() + "}] (renamed in the riser schema; save the scenario to update it)");
   }
   output->erase(old);
+}
+
+}  // namespace
+
+std::vector<std::string> upgradeRiserParameters(Json& parameters) {
+  std::vector<std::string> notes;
+  if (!parameters.is_object()) return notes;
+  // Scenarios written before the stress convergence study existed have no such section: no study.
+  if (!parameters.contains("stress_convergence")) {
+    parameters["stress_convergence"] = riserBinder().write(RiserParameters{})["stress_convergence"];
+    notes.push_back("stress_convergence added without a study (new in the riser schema; save the scenario to keep it)");
+  }
+  if (!parameters.contains("fatigue")) {
+    parameters["fatigue"] = riserBinder().write(RiserParameters{})["fatigue"];
+    notes.push_back("fatigue added, off (new in the riser schema; save the scenario to keep it)");
+  }
+  if (!parameters.contains("waves")) {
+    parameters["waves"] = riserBinder().write(RiserParameters{})["waves"];
+    notes.push_back("waves added as none (new in the riser schema; save the scenario to keep it)");
+  }
+  upgradeProbePosition(parameters, notes);
+  upgradeAngles(parameters, notes);
+  upgradeTangentialAddedMass(parameters, notes);
+  // Files from before the modes switch always computed the modes.
+  auto output = parameters.find("output");
+  if (output != parameters.end() && output->is_object() && !output->contains("modes")) {
+    (*output)["modes"] = true;
+    notes.push_back("output.modes = true added (new in the riser schema: natural frequencies and modes, as before)");
+  }
   return notes;
 }
 

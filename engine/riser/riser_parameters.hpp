@@ -1,6 +1,7 @@
 // Parameters of the riser / cable scene (segment method, Adamiec-Wójcik, Brzozowska & Wojciech,
 // Acta Mechanica 231, 2020). One flat struct in SI units; its default member initialisers are the
-// only defaults. Angles are radians. Global frame: z up (see riser_model.hpp for all conventions).
+// only defaults. Angles are degrees (fields ending in _deg),
+// converted to radians once, in buildRiserModel. Global frame: z up (see riser_model.hpp for all conventions).
 #pragma once
 
 #include <string>
@@ -23,7 +24,8 @@ struct SectionRow {
   double density = 7850.0;            // [kg/m^3] pipe wall
   double normal_drag_coefficient = 1.0;      // [-] D_yz of eq (34)
   double tangential_drag_coefficient = 0.0;  // [-] D_x of eq (34)
-  double added_mass_coefficient = 1.0;       // [-] C_a = c_M - 1 of eq (11)
+  double added_mass_coefficient = 1.0;       // [-] C_a = c_M - 1 of eq (11), normal to the axis
+  double tangential_added_mass_coefficient = 0.0;  // [-] C_at along the axis
 };
 
 // A force and moment applied at a node for t_start <= t < t_end (a box pulse; t_end large = step).
@@ -70,7 +72,8 @@ struct RiserParameters {
   double density = 7850.0;                   // [kg/m^3] ρ_r of the wall
   double normal_drag_coefficient = 1.0;      // [-] D_yz
   double tangential_drag_coefficient = 0.0;  // [-] D_x
-  double added_mass_coefficient = 1.0;       // [-] C_a (isotropic added mass, as eq 11)
+  double added_mass_coefficient = 1.0;       // [-] C_a: added mass normal to the axis (eq 11)
+  double tangential_added_mass_coefficient = 0.0;  // [-] C_at: along the axis (eq 11 has C_at = C_a)
   std::vector<SectionRow> sections;          // non-uniform stretches
   // model
   std::string formulation = "joint";  // "joint" (J) or "absolute" (A)
@@ -85,7 +88,7 @@ struct RiserParameters {
   double internal_flow_speed = 0.0;        // [m/s] u: constant flow speed of the contents along s (> 0: top to bottom)
   double current_speed_surface = 1.0;      // [m/s] current at the water level
   double current_speed_seabed = 1.0;       // [m/s] current at the sea bed (linear in between)
-  double current_direction = 0.0;          // [rad] heading of the current in the xy-plane, from +x towards +y
+  double current_direction_deg = 0.0;      // [deg] heading of the current in the xy-plane, from +x towards +y
   // top end
   std::string top_condition = "tensioner";  // "pinned", "clamped", "tensioner", "free"
   double top_x = 0.0;                       // [m] mean position of the top end
@@ -96,9 +99,9 @@ struct RiserParameters {
   double motion_amplitude_y = 1.0;          // [m]
   double motion_amplitude_z = 0.0;          // [m] (ignored for the tensioner)
   double motion_period = 12.0;              // [s]
-  double motion_phase_x = 0.0;              // [rad]
-  double motion_phase_y = 1.5707963267948966;  // [rad] x and y a quarter period apart: an ellipse
-  double motion_phase_z = 0.0;              // [rad]
+  double motion_phase_x_deg = 0.0;          // [deg]
+  double motion_phase_y_deg = 90.0;         // [deg] x and y a quarter period apart: an ellipse
+  double motion_phase_z_deg = 0.0;          // [deg]
   double motion_ramp_time = 6.0;            // [s] smooth start of the top motion (0 = none)
   std::string top_motion = "harmonic";      // "harmonic" (amplitudes above) or "table" (top_motion_table)
   std::vector<TopMotionRow> top_motion_table;  // time table of the top displacement (clamped cubic spline)
@@ -110,8 +113,8 @@ struct RiserParameters {
   double bottom_spring_stiffness = 1.0e5;   // [N/m] "spring": linear spring to the anchor
   double bottom_spring_damping = 0.0;       // [N·s/m]
   // initial shape
-  double initial_inclination = 0.0;  // [rad] first direction from the top, from straight down (π/2 = horizontal)
-  double initial_azimuth = 0.0;      // [rad] heading of that direction in the xy-plane
+  double initial_inclination_deg = 0.0;  // [deg] first direction from the top, from straight down (90 = horizontal)
+  double initial_azimuth_deg = 0.0;      // [deg] heading of that direction in the xy-plane, from +x towards +y
   bool solve_statics = true;         // start from static equilibrium (top at its mean position, current on)
   // waves (riser_waves.hpp; bound there): linear waves from the still-water level over depth water_level − seabed_level
   std::string wave_type = "none";          // none | airy | jonswap | pierson_moskowitz | spectrum_table
@@ -144,6 +147,7 @@ struct RiserParameters {
   std::string integrator = "auto";  // "auto", "rk4", "dopri5", "implicit" (see docs/riser.md)
   double tolerance = 1e-6;  // [-] relative local error tolerance (dopri5, implicit Newton, auto's choice)
   // output
+  bool modes = true;               // natural frequencies and modes about the static state (n <= 199)
   int frame_count = 60;            // [-] View3D frames and position snapshots
   std::vector<ProbeRow> probes = {{50.0}, {25.0}, {75.0}};  // recorded points: L/2 (the probe_* columns), L/4, 3L/4
   std::vector<double> stress_times = {12.0, 24.0};  // [s] times for the stress-along-the-riser table
@@ -159,13 +163,20 @@ struct RiserParameters {
 // The binder declaring path, unit, range and description of every field.
 const SchemaBinder<RiserParameters>& riserBinder();
 
+// Speed [m/s] of the prescribed top at t = 0: nonzero only for a harmonic motion without a ramp whose phases do
+// not start it at rest (checkRiserParameters refuses that).
+double initialTopSpeed(const RiserParameters& p);
+
 // Cross-field checks (D_inn < D_out, section rows inside [0, L], nodes in range, reachable anchor, ...).
 // Paths are relative to "parameters". Returns every problem found.
 std::vector<FieldError> checkRiserParameters(const RiserParameters& p);
 
 // Rewrites parameters of earlier riser schemas in place (SceneDefinition::upgrade); one note per change:
 // output.probe_position [m] (one probe) became the table output.probes of rows {arc_length}; a missing
-// stress_convergence section is added without a study.
+// stress_convergence section is added without a study; the angles current.direction, top.motion_phase_x/y/z,
+// initial.inclination and initial.azimuth [rad] became *_deg [deg]; a missing tangential added-mass
+// coefficient (section and sections rows) is set equal to the normal one (the isotropic added mass the file
+// was written for); a missing output.modes is true.
 std::vector<std::string> upgradeRiserParameters(Json& parameters);
 
 }  // namespace maris::riser

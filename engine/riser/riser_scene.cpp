@@ -36,7 +36,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   const StaticSolution statics = initialShape(model, p, context);
   // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).
   RiserModes modes;
-  if (p.solve_statics && 3 * (model.n + 1) <= 600) {
+  if (p.modes && p.solve_statics && 3 * (model.n + 1) <= 600) {
     context.progress(0.0, "natural frequencies");
     modes = computeModes(model, statics, 6);
     if (modes.slowly_growing_count > 0)
@@ -47,6 +47,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
                    std::to_string(modes.divergence_flow_speed) + " m/s (or in flutter)");
   }
   Results results = simulateRiser(model, p, statics, modes, context);
+  if (!p.modes) results.stats.method += "; natural frequencies and modes not computed (output.modes = false)";
   for (std::string& w : accuracyWarnings(results)) context.warn(std::move(w));
   addEnvelope(model, results);
   addFrequencySweeps(p, results, context);  // paper Sect. 8.2 tables (no-op without sweep lists)

@@ -14,7 +14,10 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include <unistd.h>
 
@@ -86,6 +89,20 @@ TEST_F(Cli, SchemaListsEveryFieldWithUnitInTextAndJson) {
     const Json j = Json::parse(json.out);
     ASSERT_EQ(j["fields"].size(), scene.schema.fields.size());
     for (const auto& f : scene.schema.fields) EXPECT_NE(text.out.find(f.path), std::string::npos) << f.path;
+    // Every field and table column carries its unit in the JSON; angles (names ending in _deg) read deg or deg/s.
+    std::size_t k = 0;
+    for (const auto& f : scene.schema.fields) {
+      const Json& jf = j["fields"][k++];
+      EXPECT_EQ(jf["unit"], f.unit) << scene.name << ": " << f.path;
+      std::vector<std::pair<std::string, Json>> named = {{f.key(), jf["unit"]}};
+      if (jf.contains("columns"))
+        for (const Json& c : jf["columns"]) named.emplace_back(c["path"].get<std::string>(), c["unit"]);
+      for (const auto& [name, unit] : named) {
+        if (name.size() > 4 && name.compare(name.size() - 4, 4, "_deg") == 0) {
+          EXPECT_TRUE(unit == "deg" || unit == "deg/s") << scene.name << ": " << name << " has unit " << unit;
+        }
+      }
+    }
   }
 }
 

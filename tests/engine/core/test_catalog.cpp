@@ -38,6 +38,31 @@ TEST(Catalog, SceneNamesAreUniqueAndEverySchemaIsComplete) {
   }
 }
 
+// One angle convention for every scene (README): user-facing angles are degrees, in fields whose name ends in _deg
+// (rates too: "yaw_rate_deg" [deg/s]); no field is in radians. Angular frequencies (rad/s) and per-radian
+// stiffnesses are SI rates and coefficients, not angles, and keep their units.
+void expectAngleConvention(const ParamSpec& f, const std::string& scene) {
+  SCOPED_TRACE(scene + ": " + f.path);
+  EXPECT_NE(f.unit, "rad") << "angles are degrees (field " << f.key() << "_deg, unit deg)";
+  if (f.unit == "deg" || f.unit == "deg/s") {
+    const std::string key = f.key();
+    EXPECT_TRUE(key.size() > 4 && key.compare(key.size() - 4, 4, "_deg") == 0)
+        << "a field in " << f.unit << " must say so in its name (ends in _deg)";
+  }
+  for (const auto& c : f.columns) expectAngleConvention(c, scene);
+}
+
+TEST(Catalog, EveryAngleIsInDegreesAndSaysSoInItsName) {
+  int angles = 0;
+  for (const auto& s : sceneCatalog())
+    for (const auto& f : s.schema.fields) {
+      expectAngleConvention(f, s.name);
+      angles += f.unit == "deg" || f.unit == "deg/s";
+      for (const auto& c : f.columns) angles += c.unit == "deg" || c.unit == "deg/s";
+    }
+  EXPECT_GE(angles, 6) << "the riser alone has six angles";
+}
+
 TEST(Catalog, EverySceneDefaultScenarioValidates) {
   for (const auto& s : sceneCatalog()) {
     const auto errors = validateParameters(s, defaultScenario(s).parameters);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/resources.hpp"
+#include "core/angles.hpp"
 #include "core/scenario.hpp"
 #include "riser/riser_parameters.hpp"
 
@@ -89,7 +90,7 @@ inline RiserParameters tipLoadedCantilever(int n, double tip_force, double lengt
   p.inner_diameter = 0.08;
   p.gravity = 0.0;
   p.top_condition = "clamped";
-  p.initial_inclination = kPi / 2;
+  p.initial_inclination_deg = 90.0;
   PointLoadRow load;
   load.node = n + 1;
   load.force_z = -tip_force;
@@ -106,7 +107,7 @@ inline RiserParameters shortMovingTopRun() {
   p.end_time = 3.0;
   p.motion_ramp_time = 1.0;
   p.motion_period = 4.0;
-  p.current_direction = 0.6;
+  p.current_direction_deg = degreesFromRadians(0.6);
   p.stress_times.clear();
   return p;
 }
@@ -125,7 +126,7 @@ inline RiserParameters inclinedTensionedRiser(int n, const std::string& formulat
   p.formulation = formulation;
   p.internal_flow_speed = flow ? 10.0 : 0.0;
   p.solve_statics = false;
-  p.initial_inclination = 0.3;
+  p.initial_inclination_deg = degreesFromRadians(0.3);
   return p;
 }
 

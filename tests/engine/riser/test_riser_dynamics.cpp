@@ -85,8 +85,8 @@ TEST_P(UndampedSwing, ConservesEnergyAtFourthOrder) {
   p.inner_diameter = 0.0;
   p.youngs_modulus = 2e8;  // soft: the chain bends while it swings
   p.shear_modulus = 1e8;
-  p.initial_inclination = kPi / 2;
-  p.initial_azimuth = kPi / 2;  // horizontal along +y
+  p.initial_inclination_deg = 90.0;
+  p.initial_azimuth_deg = 90.0;  // horizontal along +y
   p.solve_statics = false;
   p.end_time = 1.2;
   p.integrator = "rk4";
@@ -116,7 +116,7 @@ TEST(RiserDynamics, DragNeverIncreasesEnergy) {
   p.segment_count = 10;
   p.outer_diameter = 0.1;
   p.inner_diameter = 0.05;
-  p.initial_inclination = kPi / 3;
+  p.initial_inclination_deg = 60.0;
   p.torsion = false;
   p.solve_statics = false;
   p.end_time = 3.0;
@@ -171,7 +171,7 @@ TEST(RiserDynamics, HorizontalCableSinksAtTerminalVelocity) {
   p.top_condition = "free";
   p.bottom_condition = "free";
   p.torsion = false;  // the torsional step limit is irrelevant here
-  p.initial_inclination = kPi / 2;
+  p.initial_inclination_deg = 90.0;
   p.solve_statics = false;
   p.end_time = 3.0;
   const Results r = run(p);

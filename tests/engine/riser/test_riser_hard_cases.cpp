@@ -9,6 +9,7 @@
 #include <Eigen/LU>
 
 #include "core/errors.hpp"
+#include "core/angles.hpp"
 #include "riser/riser_loads.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser/riser_statics.hpp"
@@ -30,7 +31,7 @@ double scalar(const Results& r, const std::string& name) { return r.findScalar(n
 // falls, snaps taut below the support (≈ 1.6 s) and whips its free end.
 RiserParameters fallingChain() {
   RiserParameters p = test::chainInAir(10);
-  p.initial_inclination = kPi - 0.3;
+  p.initial_inclination_deg = degreesFromRadians(kPi - 0.3);
   p.solve_statics = false;
   p.end_time = 2.5;
   return p;
@@ -165,8 +166,8 @@ class CantileverDirection : public ::testing::TestWithParam<std::tuple<double, d
 TEST_P(CantileverDirection, TipDeflectionIsExactAlongEveryAxis) {
   const auto [inclination, azimuth] = GetParam();
   RiserParameters p = test::tipLoadedCantilever(10, 0.0);
-  p.initial_inclination = inclination;
-  p.initial_azimuth = azimuth;
+  p.initial_inclination_deg = degreesFromRadians(inclination);
+  p.initial_azimuth_deg = degreesFromRadians(azimuth);
   const Vec3 d(std::sin(inclination) * std::cos(azimuth), std::sin(inclination) * std::sin(azimuth), -std::cos(inclination));
   const Vec3 force_dir = std::abs(d.z()) > 0.5 ? Vec3(Vec3::UnitX()) : Vec3(Vec3::UnitZ());
   const double ei = test::bendingStiffness(p);

@@ -196,7 +196,7 @@ TEST(RiserIntegrators, ImplicitStepsFarBeyondTheExplicitLimit) {
   p.segment_count = 20;
   p.outer_diameter = 0.1;
   p.inner_diameter = 0.08;
-  p.initial_inclination = kPi / 2;
+  p.initial_inclination_deg = 90.0;
   p.solve_statics = false;
   p.top_condition = "clamped";
   p.end_time = 0.5;
@@ -266,7 +266,7 @@ TEST(RiserTopMotion, TableReproducesTheHarmonicRunAtSecondOrder) {
   RiserParameters p = movingRiser();
   p.integrator = "rk4";
   p.motion_ramp_time = 0.0;
-  p.motion_phase_x = p.motion_phase_y = -kPi / 2;
+  p.motion_phase_x_deg = p.motion_phase_y_deg = -90.0;
   p.motion_amplitude_y = 0.0;
   const Results harmonic = run(p);
   p.top_motion = "table";

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "core/ode.hpp"
+#include "core/angles.hpp"
 #include "riser/riser_implicit.hpp"
 #include "riser/riser_joint_newton.hpp"
 #include "riser/riser_statics.hpp"
@@ -29,7 +30,7 @@ JointCase movingJointModel(int n, bool torsion, bool flow) {
   JointCase c;
   c.p = test::inclinedTensionedRiser(n, "joint", flow);
   c.p.torsion = torsion;
-  c.p.current_direction = 0.6;
+  c.p.current_direction_deg = degreesFromRadians(0.6);
   c.m = buildRiserModel(c.p);
   c.y = restState(c.m, c.m.initial_orientation, c.m.initial_top);
   std::mt19937 rng(5);
@@ -208,7 +209,7 @@ TEST(RiserJointNewton, StaticsUsesTheBandedNewtonWithoutDenseFallback) {
     p.seabed_level = -500.0;
     p.bottom_z = -500.0;
     p.top_tension = 2.5e6;
-    p.current_direction = 1.5707963267948966;
+    p.current_direction_deg = 90.0;
     const RiserModel m = buildRiserModel(p);
     RunContext context;
     const StaticSolution s = solveStatics(m, context);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "riser/riser_scene.hpp"
+#include "core/angles.hpp"
 #include "riser_test_cases.hpp"
 
 namespace maris::riser {
@@ -19,7 +20,7 @@ RiserParameters swingingChain() {
   p.segment_count = 4;
   p.outer_diameter = 0.1;
   p.inner_diameter = 0.08;
-  p.initial_inclination = 0.5;
+  p.initial_inclination_deg = degreesFromRadians(0.5);
   p.solve_statics = false;
   p.end_time = 2.0;
   p.frame_count = 5;

@@ -29,7 +29,7 @@ RiserParameters riserInAiryWave(double current) {
   p.water_level = 0.0;
   p.seabed_level = -100.0;
   p.current_speed_surface = p.current_speed_seabed = current;
-  p.current_direction = 0.0;
+  p.current_direction_deg = 0.0;
   return p;
 }
 
