@@ -1,15 +1,40 @@
 #include "run/results_summary.hpp"
 
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
 #include <QColor>
+#include <QDir>
+#include <QFileDialog>
 #include <QHeaderView>
 #include <QLabel>
+#include <QSet>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <stdexcept>
+
+#include "core/scenario.hpp"
+#include "start_folder.hpp"
+
 namespace maris::ui {
 
+namespace {
+
+// One column per scalar and one row of values: the engine's CSV layout (Table::toCsv).
+Table scalarTable(const Results& results) {
+  Table table;
+  table.name = "scalars";
+  for (const Scalar& s : results.scalars) table.add(s.name, s.unit, {s.value});
+  return table;
+}
+
+}  // namespace
+
 ResultsSummary::ResultsSummary(QWidget* parent)
-    : QWidget(parent), heading_(new QLabel(this)), table_(new QTableWidget(0, 4, this)), stats_(new QLabel(this)) {
+    : QWidget(parent), copy_action_(new QAction(tr("&Copy"), this)),
+      export_action_(new QAction(tr("&Export as CSV…"), this)), heading_(new QLabel(this)),
+      table_(new QTableWidget(0, 4, this)), stats_(new QLabel(this)) {
   table_->setHorizontalHeaderLabels({tr("Quantity"), tr("Value"), tr("Unit"), tr("Meaning")});
   // Sized to the scalars once per run (warning rows span the table and must not widen column 0).
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
@@ -17,6 +42,16 @@ ResultsSummary::ResultsSummary(QWidget* parent)
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setAlternatingRowColors(true);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  copy_action_->setShortcut(QKeySequence::Copy);
+  copy_action_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+  copy_action_->setToolTip(tr("Copy the selected quantities (or all) as tab-separated text"));
+  connect(copy_action_, &QAction::triggered, this, &ResultsSummary::copyToClipboard);
+  export_action_->setToolTip(tr("Write the quantities of this run to a CSV file (names row, units row, values)"));
+  connect(export_action_, &QAction::triggered, this, &ResultsSummary::exportDialog);
+  table_->addAction(copy_action_);
+  table_->addAction(export_action_);
+  table_->setContextMenuPolicy(Qt::ActionsContextMenu);
   stats_->setWordWrap(true);
   stats_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   auto* layout = new QVBoxLayout(this);
@@ -27,6 +62,9 @@ ResultsSummary::ResultsSummary(QWidget* parent)
 }
 
 void ResultsSummary::clear() {
+  results_.reset();
+  copy_action_->setEnabled(false);
+  export_action_->setEnabled(false);
   heading_->setText(tr("No results yet."));
   table_->setRowCount(0);
   stats_->clear();
@@ -34,6 +72,9 @@ void ResultsSummary::clear() {
 
 void ResultsSummary::showRun(const RunRecord& record) {
   if (!record.results) return clear();
+  results_ = record.results;
+  copy_action_->setEnabled(true);
+  export_action_->setEnabled(true);
   const Results& r = *record.results;
   heading_->setText(tr("<b>%1</b> — %2").arg(record.label.toHtmlEscaped(),
                                              QString::fromStdString(record.scenario.name).toHtmlEscaped()));
@@ -70,6 +111,47 @@ void ResultsSummary::showRun(const RunRecord& record) {
     item->setToolTip(QString::fromStdString(r.warnings[i]));
     table_->setItem(scalars + i, 0, item);
     table_->setSpan(scalars + i, 0, 1, 4);
+  }
+}
+
+QString ResultsSummary::copyText() const {
+  if (!results_) return {};
+  const auto& scalars = results_->scalars;
+  QSet<int> selected;
+  for (const QModelIndex& index : table_->selectionModel()->selectedIndexes())
+    if (index.row() < static_cast<int>(scalars.size())) selected.insert(index.row());
+  QStringList lines{QStringList{tr("Quantity"), tr("Value"), tr("Unit"), tr("Meaning")}.join('\t')};
+  auto cell = [](const std::string& text) { return QString::fromStdString(text).simplified(); };
+  for (int i = 0; i < static_cast<int>(scalars.size()); ++i) {
+    if (!selected.isEmpty() && !selected.contains(i)) continue;
+    const Scalar& s = scalars[i];
+    lines << QStringList{cell(s.name), QString::number(s.value, 'g', QLocale::FloatingPointShortest), cell(s.unit),
+                         cell(s.description)}
+                 .join('\t');
+  }
+  return lines.join('\n') + '\n';
+}
+
+void ResultsSummary::copyToClipboard() const {
+  if (results_) QApplication::clipboard()->setText(copyText());
+}
+
+void ResultsSummary::exportCsv(const std::filesystem::path& file) const {
+  if (!results_) throw std::runtime_error("no results to export");
+  writeFileAtomic(file, scalarTable(*results_).toCsv());
+}
+
+void ResultsSummary::exportDialog() {
+  if (!results_) return;
+  const QString file = QFileDialog::getSaveFileName(this, tr("Export results as CSV"),
+                                                    QDir(startFolder({})).filePath(QStringLiteral("scalars.csv")),
+                                                    tr("CSV files (*.csv)"));
+  if (file.isEmpty()) return;
+  try {
+    exportCsv(file.toStdString());
+    emit message(tr("Results written to %1").arg(file));
+  } catch (const std::exception& e) {
+    emit message(tr("Could not write %1: %2").arg(file, QString::fromUtf8(e.what())));
   }
 }
 
