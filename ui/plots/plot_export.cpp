@@ -66,13 +66,32 @@ std::string formatNumber(double v) {
 
 }  // namespace
 
+std::string markdownTableCell(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '|' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (c == '\r' || c == '\n') {
+      if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      out += "<br>";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 std::string summaryMarkdown(const Scenario& scenario, const Results& results,
                             const std::vector<std::filesystem::path>& files) {
   std::string md = "# " + scenario.name + "\n\nScene: `" + scenario.scene + "`\n\n";
   if (!scenario.description.empty()) md += scenario.description + "\n\n";
   md += "## Results\n\n| quantity | value | unit | meaning |\n|---|---:|---|---|\n";
   for (const auto& s : results.scalars)
-    md += "| " + s.name + " | " + formatNumber(s.value) + " | " + s.unit + " | " + s.description + " |\n";
+    md += "| " + markdownTableCell(s.name) + " | " + formatNumber(s.value) + " | " + markdownTableCell(s.unit) +
+          " | " + markdownTableCell(s.description) + " |\n";
   const auto& st = results.stats;
   md += "\n## Solver\n\n- method: " + (st.method.empty() ? std::string("-") : st.method) +
         "\n- steps: " + std::to_string(st.steps) + " (rejected " + std::to_string(st.rejected_steps) +

@@ -31,6 +31,10 @@ Table plotDataOfRuns(const std::vector<RunData>& runs, const PlotSpec& spec);
 // Writes plotDataOfRuns as CSV, atomically. Throws std::runtime_error if no run has the data.
 void writeRunsCsv(const std::filesystem::path& file, const std::vector<RunData>& runs, const PlotSpec& spec);
 
+// `text` made safe for one cell of a Markdown table: `|` and `\` escaped with a backslash, line
+// breaks as <br>.
+std::string markdownTableCell(const std::string& text);
+
 // A summary for people: scalars with units and descriptions, solver statistics, warnings, files.
 std::string summaryMarkdown(const Scenario& scenario, const Results& results,
                             const std::vector<std::filesystem::path>& files);
