@@ -5,6 +5,7 @@
 #include <QInputDialog>
 #include <QMessageBox>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QStandardPaths>
 
 #include "browser/scenario_browser.hpp"
@@ -16,6 +17,7 @@
 #include "run/results_summary.hpp"
 #include "run/run_panel.hpp"
 #include "scene_library.hpp"
+#include "start_folder.hpp"
 #include "view3d/scene_view.hpp"
 
 namespace maris::ui {
@@ -254,9 +256,11 @@ void MainWindow::newScenarioDialog() {
 }
 
 void MainWindow::reportDialog() {
+  const QString last_key = QStringLiteral("report/lastFolder");
   const QString dir = QFileDialog::getExistingDirectory(this, tr("Report folder"),
-                                                        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+                                                        startFolder(QSettings().value(last_key).toString()));
   if (dir.isEmpty()) return;
+  QSettings().setValue(last_key, dir);
   // Each report goes into its own folder named after the scenario and the run.
   const RunRecord* record = history_.find(shown_run_);
   QString name = record ? QString::fromStdString(record->scenario.name) + QStringLiteral(" run %1").arg(record->id)
