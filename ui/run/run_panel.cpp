@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QProgressBar>
+#include <QScrollBar>
 #include <QToolButton>
 
 #include "run/run_controller.hpp"
@@ -36,6 +37,11 @@ RunPanel::RunPanel(RunController* controller, QAction* run_action, QAction* canc
   log_->setReadOnly(true);
   log_->setMaximumBlockCount(2000);
   log_->setObjectName(QStringLiteral("runLog"));
+  // The log follows its newest line until the user scrolls up, and again once they scroll back to
+  // the bottom. Only the user moves the bar outside log(), so its position there says which.
+  connect(log_->verticalScrollBar(), &QScrollBar::valueChanged, this, [this](int value) {
+    if (!appending_) follow_log_ = value >= log_->verticalScrollBar()->maximum();
+  });
 
   auto* layout = new QGridLayout(this);
   layout->addWidget(run, 0, 0);
@@ -58,8 +64,15 @@ RunPanel::RunPanel(RunController* controller, QAction* run_action, QAction* canc
     stage_->setText(tr("Finished %1").arg(record.label));
     time_->setText(formatDuration(record.wall_time_s));
   });
-  connect(controller, &RunController::failed, this, [this] { stage_->setText(tr("Failed")); });
-  connect(controller, &RunController::cancelled, this, [this] { stage_->setText(tr("Cancelled")); });
+  connect(controller, &RunController::failed, this, [this] { stopped(tr("Failed")); });
+  connect(controller, &RunController::cancelled, this, [this] { stopped(tr("Cancelled")); });
+}
+
+void RunPanel::stopped(const QString& stage) {
+  // A stopped run has no progress and no time left: the bar and the estimate must not stay behind.
+  progress_->setValue(0);
+  stage_->setText(stage);
+  time_->clear();
 }
 
 void RunPanel::onProgress(double fraction, const QString& stage, double elapsed_s, double remaining_s) {
@@ -84,7 +97,11 @@ void RunPanel::log(Level level, const QString& text) {
   QString html = (prefix + text).toHtmlEscaped();
   html.replace('\n', QStringLiteral("<br>&nbsp;&nbsp;"));
   if (!color.isEmpty()) html = QStringLiteral("<span style='color:%1'>%2</span>").arg(color, html);
+  appending_ = true;
   log_->appendHtml(QStringLiteral("<span style='color:gray'>%1</span> %2").arg(stamp, html));
+  QScrollBar* bar = log_->verticalScrollBar();
+  if (follow_log_) bar->setValue(bar->maximum());
+  appending_ = false;
 }
 
 }  // namespace maris::ui

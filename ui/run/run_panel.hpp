@@ -1,5 +1,7 @@
 // The run panel dock: Run / Cancel buttons (the main window's actions), a progress bar with the
-// solver's stage, elapsed and estimated remaining time, and a log of runs, warnings and errors.
+// solver's stage, elapsed and estimated remaining time, and a log of runs, warnings and errors
+// that follows its newest line unless the user scrolled up. A cancelled or failed run resets the
+// bar and the time left.
 #pragma once
 
 #include <QWidget>
@@ -27,11 +29,14 @@ class RunPanel : public QWidget {
 
  private:
   void onProgress(double fraction, const QString& stage, double elapsed_s, double remaining_s);
+  void stopped(const QString& stage);
 
   QProgressBar* progress_;
   QLabel* stage_;
   QLabel* time_;
   QPlainTextEdit* log_;
+  bool follow_log_ = true;
+  bool appending_ = false;
 };
 
 // "3.2 s", "2 min 05 s".
