@@ -1,0 +1,169 @@
+// The views of a finished run, on Qt's offscreen platform: the results table copied and exported,
+// the report's summary.md with awkward names, the folder a dialog starts in, and the run panel's
+// log and progress after a cancel.
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QDir>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QScrollBar>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "core/scenario.hpp"
+#include "plots/plot_export.hpp"
+#include "run/results_summary.hpp"
+#include "run/run_controller.hpp"
+#include "run/run_panel.hpp"
+#include "start_folder.hpp"
+#include "ui_test_support.hpp"
+
+using namespace maris;
+using namespace maris::ui;
+
+namespace {
+
+// Two scalars whose values are exact in binary, so their printed forms are known: 0.125 and 2.5.
+RunRecord twoScalarRun() {
+  auto results = std::make_shared<Results>();
+  results->addScalar("tip_deflection", 0.125, "m", "Tip deflection");
+  results->addScalar("period", 2.5, "s", "First period");
+  RunRecord record;
+  record.id = 1;
+  record.scenario.name = "Rod";
+  record.results = results;
+  record.label = QStringLiteral("run 1");
+  return record;
+}
+
+// Table separators of one Markdown row: '|' not escaped by a backslash.
+int unescapedPipes(const std::string& line) {
+  int n = 0;
+  for (std::size_t i = 0; i < line.size(); ++i)
+    if (line[i] == '|' && (i == 0 || line[i - 1] != '\\')) ++n;
+  return n;
+}
+
+}  // namespace
+
+class ResultsViewsTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { test::isolateSettings(); }
+
+  void copyPutsTabSeparatedScalarsWithHeaderOnTheClipboard() {
+    ResultsSummary summary;
+    summary.showRun(twoScalarRun());
+    summary.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&summary));
+    summary.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&summary));
+    summary.table()->setFocus();
+    QApplication::clipboard()->clear();
+    // Nothing selected: Ctrl+C copies every scalar, one row each after the header.
+    QTest::keyClick(summary.table(), Qt::Key_C, Qt::ControlModifier);
+    QCOMPARE(QApplication::clipboard()->text(),
+             QStringLiteral("Quantity\tValue\tUnit\tMeaning\n"
+                            "tip_deflection\t0.125\tm\tTip deflection\n"
+                            "period\t2.5\ts\tFirst period\n"));
+    // One row selected: the context menu's Copy copies that row only.
+    summary.table()->selectRow(1);
+    QVERIFY(summary.table()->actions().contains(summary.copyAction()));
+    summary.copyAction()->trigger();
+    QCOMPARE(QApplication::clipboard()->text(),
+             QStringLiteral("Quantity\tValue\tUnit\tMeaning\nperiod\t2.5\ts\tFirst period\n"));
+  }
+
+  void exportWritesNamesUnitsAndValuesAsCsv() {
+    ResultsSummary summary;
+    QTemporaryDir dir;
+    const std::filesystem::path file = dir.filePath(QStringLiteral("scalars.csv")).toStdString();
+    QVERIFY_THROWS_EXCEPTION(std::runtime_error, summary.exportCsv(file));  // no run shown yet
+    QVERIFY(!summary.exportAction()->isEnabled());
+    summary.showRun(twoScalarRun());
+    QVERIFY(summary.exportAction()->isEnabled());
+    summary.exportCsv(file);
+    // The engine's CSV layout (Table::toCsv): names row, units row, then the values.
+    QCOMPARE(QString::fromStdString(readTextFile(file)), QStringLiteral("tip_deflection,period\nm,s\n0.125,2.5\n"));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("scalars.csv")});
+  }
+
+  void summaryMarkdownEscapesPipesBackslashesAndNewlines() {
+    Results results;
+    results.addScalar("force|moment", 1.5, "N\\m", "first line\nsecond | line");
+    Scenario scenario;
+    scenario.name = "Pipes";
+    scenario.scene = "rod";
+    const std::string md = summaryMarkdown(scenario, results, {});
+    const std::string row = "| force\\|moment | 1.5 | N\\\\m | first line<br>second \\| line |";
+    QVERIFY2(md.find(row + "\n") != std::string::npos, md.c_str());
+    // The row has the header's five separators, so the table keeps its four columns.
+    QCOMPARE(unescapedPipes(row), unescapedPipes("| quantity | value | unit | meaning |"));
+    QCOMPARE(unescapedPipes(row), 5);
+    QCOMPARE(markdownTableCell("a\r\nb"), std::string("a<br>b"));
+  }
+
+  void dialogsStartInAnExistingFolder() {
+    QTemporaryDir dir;
+    QCOMPARE(startFolder(dir.path()), QFileInfo(dir.path()).absoluteFilePath());
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString fallback = QFileInfo(documents).isDir() ? documents : QDir::homePath();
+    const QString gone = dir.filePath(QStringLiteral("removed/folder"));
+    QCOMPARE(startFolder(gone), fallback);
+    QCOMPARE(startFolder({}), fallback);
+    QFile file(dir.filePath(QStringLiteral("a.txt")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.close();
+    QCOMPARE(startFolder(file.fileName()), fallback);  // a file is not a folder to start in
+    QVERIFY(QFileInfo(fallback).isDir());
+  }
+
+  void runLogFollowsItsNewestLineUnlessScrolledUp() {
+    RunController controller;
+    QAction run(QStringLiteral("Run")), cancel(QStringLiteral("Cancel"));
+    RunPanel panel(&controller, &run, &cancel);
+    panel.resize(420, 220);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QScrollBar* bar = panel.logView()->verticalScrollBar();
+    for (int i = 0; i < 60; ++i)
+      panel.log(i % 7 ? RunPanel::Level::Info : RunPanel::Level::Warning,
+                QStringLiteral("line %1: a message long enough to wrap in a narrow dock,\nwith a second line").arg(i));
+    QVERIFY(bar->maximum() > 0);
+    QCOMPARE(bar->value(), bar->maximum());
+    // Scrolled up by the user: new lines do not pull the view down.
+    bar->setValue(bar->maximum() / 3);
+    const int kept = bar->value();
+    panel.log(RunPanel::Level::Info, QStringLiteral("one more"));
+    QCOMPARE(bar->value(), kept);
+    // Back at the bottom: it follows again.
+    bar->setValue(bar->maximum());
+    panel.log(RunPanel::Level::Error, QStringLiteral("and another"));
+    QCOMPARE(bar->value(), bar->maximum());
+    QVERIFY(panel.logView()->toPlainText().endsWith(QStringLiteral("error: and another")));
+  }
+
+  void cancelResetsProgressAndTimeLeft() {
+    RunController controller;
+    QAction run(QStringLiteral("Run")), cancel(QStringLiteral("Cancel"));
+    RunPanel panel(&controller, &run, &cancel);
+    emit controller.progressed(0.44, QStringLiteral("stepping"), 6.8, 8.6);
+    QCOMPARE(panel.progressBar()->value(), 440);
+    QVERIFY2(panel.timeLabel()->text().contains(QStringLiteral("about 8.6 s left")), qPrintable(panel.timeLabel()->text()));
+    emit controller.cancelled();
+    QCOMPARE(panel.progressBar()->value(), 0);
+    QCOMPARE(panel.timeLabel()->text(), QString());
+    emit controller.progressed(0.5, QStringLiteral("stepping"), 1.0, 1.0);
+    emit controller.failed(QStringLiteral("diverged"));
+    QCOMPARE(panel.progressBar()->value(), 0);
+    QCOMPARE(panel.timeLabel()->text(), QString());
+  }
+};
+
+QTEST_MAIN(ResultsViewsTest)
+#include "test_results.moc"
