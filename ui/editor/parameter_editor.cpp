@@ -7,12 +7,14 @@
 #include <QComboBox>
 #include <QGridLayout>
 #include <QGroupBox>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QStyle>
 #include <QToolButton>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include "document/scenario_document.hpp"
@@ -130,6 +132,7 @@ void ParameterEditor::rebuild() {
     row.reset->setIcon(themedIcon(QStyle::SP_BrowserReload));
     row.reset->setToolTip(tr("Reset to default (%1)").arg(fieldText(spec.default_value, spec.kind)));
     row.reset->setAutoRaise(true);
+    row.reset->setFocusPolicy(Qt::NoFocus);  // Tab goes from field to field, not through these
     row.error = new QLabel(fields_host_);
     row.error->setWordWrap(true);
     row.error->setStyleSheet(QStringLiteral("color: #d62728;"));
@@ -189,10 +192,39 @@ QWidget* ParameterEditor::makeEditor(const ParamSpec& spec) {
       break;
   }
   auto* line = new QLineEdit(fields_host_);
+  line->installEventFilter(this);
   if (spec.kind == ParamKind::RealList) line->setPlaceholderText(tr("comma-separated numbers"));
   line->setMinimumWidth(line->fontMetrics().horizontalAdvance(QStringLiteral("-1.2345e+100")));
   connect(line, &QLineEdit::editingFinished, this, [this, &spec, line] { commitText(spec, line->text()); });
   return line;
+}
+
+bool ParameterEditor::eventFilter(QObject* watched, QEvent* event) {
+  // A line edit keeps Ctrl+Z / Ctrl+Shift+Z for its own text undo, so the document's undo shortcuts
+  // never fire while a field has focus. Here they act on the document: the field claims the keys
+  // (ShortcutOverride) and its key press undoes or redoes the document's last change. Undo first
+  // drops typing not yet committed (the field shows the document's value again).
+  if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
+    return QWidget::eventFilter(watched, event);
+  auto* key = static_cast<QKeyEvent*>(event);
+  const bool undo = key->matches(QKeySequence::Undo);
+  const bool redo = key->matches(QKeySequence::Redo);
+  if (!undo && !redo) return QWidget::eventFilter(watched, event);
+  if (event->type() == QEvent::ShortcutOverride) {
+    event->accept();
+    return true;
+  }
+  auto* line = qobject_cast<QLineEdit*>(watched);
+  for (const auto& [path, row] : rows_)
+    if (undo && row.editor == line && line->text() != fieldText(document_->value(path), row.spec->kind)) {
+      refreshValue(path);
+      return true;
+    }
+  if (undo)
+    document_->undoStack()->undo();
+  else
+    document_->undoStack()->redo();
+  return true;
 }
 
 void ParameterEditor::commitText(const ParamSpec& spec, const QString& text) {

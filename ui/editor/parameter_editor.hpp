@@ -2,7 +2,8 @@
 // schema group, one row per field with its editor, unit, reset-to-default button and, when the
 // value is invalid, the validation message in words under it. Edits go to the document as
 // undoable commands; the editor only mirrors the document (scenarioReset / valueChanged /
-// errorsChanged), so undo and redo update it like any other change.
+// errorsChanged), so undo and redo update it like any other change; Ctrl+Z / Ctrl+Shift+Z in a
+// field act on the document's undo stack too, and Tab moves from field to field.
 #pragma once
 
 #include <map>
@@ -31,6 +32,9 @@ class ParameterEditor : public QWidget {
   QLabel* errorLabel(const std::string& path) const;
   QToolButton* resetButton(const std::string& path) const;
   QLabel* problemsLabel() const { return problems_; }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   struct Row {
