@@ -9,12 +9,15 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
 #include <QUndoStack>
+
+#include <algorithm>
 
 #include "browser/scenario_browser.hpp"
 #include "document/scenario_document.hpp"
@@ -31,6 +34,11 @@ namespace maris::ui {
 
 namespace {
 constexpr int kMaxRecentFiles = 8;
+}
+
+QSize defaultWindowSize(const QSize& available) {
+  const QSize cap(1600, 1000);
+  return QSize(std::min(cap.width(), available.width() * 9 / 10), std::min(cap.height(), available.height() * 9 / 10));
 }
 
 MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* parent)
@@ -72,11 +80,17 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
   live_->follow(runs_);
   connect(plots_, &PlotPanel::message, this, [this](const QString& text) { status(text); });
   connect(view_, &SceneView::message, this, [this](const QString& text) { status(text); });
+  connect(summary_, &ResultsSummary::message, this, [this](const QString& text) { status(text); });
   connect(browser_, &ScenarioBrowser::exampleActivated, this, &MainWindow::openExample);
   connect(browser_, &ScenarioBrowser::fileActivated, this, &MainWindow::openFile);
   connect(browser_, &ScenarioBrowser::openFileRequested, this, &MainWindow::openFileDialog);
 
-  resize(1600, 1000);
+  // Sized to the screen it opens on; a geometry saved by an earlier session wins.
+  if (const QScreen* screen = this->screen()) {
+    const QRect available = screen->availableGeometry();
+    resize(defaultWindowSize(available.size()));
+    move(available.center() - QPoint(width() / 2, height() / 2));
+  }
   restoreSettings();
   if (const BuiltinScenario* first = library_->defaultExample())
     openExample(QString::fromStdString(first->id));

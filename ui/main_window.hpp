@@ -32,6 +32,9 @@ class PlotPanel;
 class LiveResults;
 class SceneView;
 
+// The size of a first window: 90 % of the screen's available area, at most 1600 × 1000.
+QSize defaultWindowSize(const QSize& available);
+
 class MainWindow : public QMainWindow {
   Q_OBJECT
  public:

@@ -58,6 +58,7 @@ PlotPanel::PlotPanel(QWidget* parent)
   export_menu_->addAction(tr("Data as CSV…"), this, [this] { exportCurrent(QStringLiteral("csv")); });
   export_menu_->addAction(tr("Data of all kept runs as CSV…"), this, [this] { exportCurrent(QStringLiteral("all.csv")); });
   auto* export_button = new QToolButton(toolbar_);
+  export_button->setObjectName(QStringLiteral("plotExportButton"));
   export_button->setText(tr("Export"));
   export_button->setMenu(export_menu_);
   export_button->setPopupMode(QToolButton::InstantPopup);
@@ -78,6 +79,11 @@ PlotPanel::PlotPanel(QWidget* parent)
   });
   connect(tabs_, &QTabWidget::currentChanged, this, &PlotPanel::syncToolbar);
   syncToolbar();
+}
+
+QSize PlotPanel::minimumSizeHint() const {
+  const QSize own = QWidget::minimumSizeHint();
+  return {std::max(own.width(), toolbar_->sizeHint().width()), own.height()};
 }
 
 PlotView* PlotPanel::currentView() const {

@@ -53,6 +53,10 @@ class PlotPanel : public QWidget {
   QAction* addReferenceAction() const { return add_reference_; }
   QAction* clearReferenceAction() const { return clear_reference_; }
   QMenu* exportMenu() const { return export_menu_; }
+  QToolBar* toolBar() const { return toolbar_; }
+
+  // Never narrower than the whole toolbar: no button may hide behind the toolbar's overflow "»".
+  QSize minimumSizeHint() const override;
 
  signals:
   void message(const QString& text);  // export results and errors, for the status bar / log
