@@ -9,6 +9,7 @@
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QSignalSpy>
+#include <QToolBar>
 #include <QToolButton>
 #include <qcustomplot.h>
 #include <QTemporaryDir>
@@ -90,6 +91,66 @@ class MainWindowTest : public QObject {
     QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
     QCOMPARE(window_->document()->value("geometry.length").get<double>(), 120.0);
     QCOMPARE(window_->document()->undoStack()->undoText(), QStringLiteral("Set length to 120.0 m"));
+  }
+
+  void undoShortcutsInsideAFieldActOnTheDocument() {
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+    typeInto("geometry.length", QStringLiteral("120"));
+    QLineEdit* field = lineEdit("geometry.length");
+    QTRY_COMPARE(QApplication::focusWidget(), field);
+    // Sent to the focused field, as a user's keys are: the field's own text undo must not take them.
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 100.0);
+    QCOMPARE(field->text(), QStringLiteral("100.0"));
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 120.0);
+    QCOMPARE(field->text(), QStringLiteral("120.0"));
+    // Typing not yet committed is dropped by the first Ctrl+Z; the document is untouched.
+    QTest::keyClick(field, Qt::Key_End);
+    QTest::keyClicks(field, QStringLiteral("7"));
+    QCOMPARE(field->text(), QStringLiteral("120.07"));
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(field->text(), QStringLiteral("120.0"));
+    QCOMPARE(window_->document()->value("geometry.length").get<double>(), 120.0);
+    QCOMPARE(window_->document()->undoStack()->index(), 1);
+  }
+
+  void tabMovesFromFieldToFieldSkippingResetButtons() {
+    ParameterEditor* editor = window_->editor();
+    editor->fieldWidget("geometry.length")->setFocus();
+    QTRY_COMPARE(QApplication::focusWidget(), editor->fieldWidget("geometry.length"));
+    // Within a group, then into the next group box.
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+    QCOMPARE(QApplication::focusWidget(), editor->fieldWidget("geometry.radius"));
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+    QCOMPARE(QApplication::focusWidget(), editor->fieldWidget("discretisation.point_count"));
+    for (const auto& spec : window_->document()->scene()->schema.fields)
+      QCOMPARE(editor->resetButton(spec.path)->focusPolicy(), Qt::NoFocus);
+  }
+
+  void defaultSizeFollowsTheScreen() {
+    // 90 % of the available area, capped at 1600 × 1000.
+    QCOMPARE(defaultWindowSize(QSize(1366, 740)), QSize(1229, 666));
+    QCOMPARE(defaultWindowSize(QSize(2560, 1400)), QSize(1600, 1000));
+  }
+
+  void everyPlotToolbarButtonIsShownAt1366x768() {
+    for (const QSize size : {QSize(1366, 768), defaultWindowSize(QSize(1366, 768 - 28))}) {
+      window_->resize(size);
+      QTRY_COMPARE(window_->size(), size);
+      QCoreApplication::processEvents();
+      QToolBar* bar = window_->plots()->toolBar();
+      auto* export_button = window_->plots()->findChild<QToolButton*>(QStringLiteral("plotExportButton"));
+      QVERIFY(export_button);
+      QVERIFY(export_button->isVisible());
+      QVERIFY2(bar->rect().contains(export_button->geometry()),
+               qPrintable(QStringLiteral("window %1x%2: toolbar %3 px wide, Export button ends at %4")
+                              .arg(size.width()).arg(size.height()).arg(bar->width())
+                              .arg(export_button->geometry().right())));
+      // The toolbar's overflow "»" button is not needed.
+      auto* overflow = bar->findChild<QToolButton*>(QStringLiteral("qt_toolbar_ext_button"));
+      QVERIFY(!overflow || !overflow->isVisible());
+    }
   }
 
   void invalidValueIsExplainedAndDisablesRun() {
