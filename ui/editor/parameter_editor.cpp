@@ -160,6 +160,9 @@ void ParameterEditor::rebuild() {
   // Every group box has its own grid: equal label and unit columns line the editors up across them.
   int label_width = 0, unit_width = 0;
   for (QLabel* l : labels) label_width = std::max(label_width, l->sizeHint().width());
+  // A long label wraps onto two lines rather than widening every group past the dock.
+  label_width = std::min(label_width, fontMetrics().horizontalAdvance(QStringLiteral("outer diameter of the")));
+  for (QLabel* l : labels) l->setWordWrap(true);
   for (QLabel* u : units) unit_width = std::max(unit_width, u->sizeHint().width());
   for (QLabel* l : labels) l->setMinimumWidth(label_width);
   for (QLabel* u : units) u->setMinimumWidth(unit_width);
@@ -175,6 +178,10 @@ QWidget* ParameterEditor::makeEditor(const ParamSpec& spec) {
     }
     case ParamKind::Choice: {
       auto* combo = new QComboBox(fields_host_);
+      // Sized like the number fields, not to its longest choice: a long choice name must not
+      // widen every group's editor column past the dock (the popup list still shows it whole).
+      combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+      combo->setMinimumContentsLength(12);
       for (const auto& choice : spec.choices) combo->addItem(QString::fromStdString(choice));
       connect(combo, &QComboBox::activated, this,
               [this, &spec, combo](int) { document_->edit(spec.path, Json(combo->currentText().toStdString())); });
