@@ -225,6 +225,6 @@ TEST(WecNemoh, SceneRunsOnNemohFiles) {
     maris::runScenario(maris::requireScene("wec"), s, ctx);
     FAIL() << "expected InputError";
   } catch (const maris::InputError& e) {
-    EXPECT_EQ(e.errors().front().path, "hydro.nemoh_directory") << e.what();
+    EXPECT_EQ(e.errors().front().path, "parameters.hydro.nemoh_directory") << e.what();
   }
 }
