@@ -173,6 +173,8 @@ def main():
     ap.add_argument("--count", type=int, default=500, help="mutants to run")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=10.0, help="seconds per case before SIGINT")
+    ap.add_argument("--grace", type=float, default=5.0,
+                    help="seconds a run may take to honour SIGINT before it counts as a hang (sanitizers are slower)")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--work", default="", help="folder for cases (default: a temporary folder, removed)")
     ap.add_argument("--resources", default=os.path.join(here, "..", "..", "resources"))
@@ -198,7 +200,7 @@ def main():
         os.makedirs(case_dir)
         target = materialise(case, case_dir)
         cli_args = ["run", target] + [a for s in case.sets for a in ("--set", s)] + ["--out", "out", "--no-plots"]
-        result = run_case(cli, case_dir, cli_args, args.timeout, env, mem_mb=args.mem_mb)
+        result = run_case(cli, case_dir, cli_args, args.timeout, env, grace=args.grace, mem_mb=args.mem_mb)
         outcome = classify(result, os.path.join(case_dir, "out"))
         record = {"index": index, "seed_scenario": name, "scene": seeds[name].get("scene", "?"), "kind": case.kind,
                   "target": case.target[:200], "outcome": outcome, "code": result["code"],
