@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/abandonable.hpp"
 #include "core/scene.hpp"
 #include "riser/riser_envelope.hpp"
 #include "riser/riser_frequency_sweep.hpp"
@@ -38,7 +39,8 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   RiserModes modes;
   if (p.modes && p.solve_statics && 3 * (model.n + 1) <= 600) {
     context.progress(0.0, "natural frequencies");
-    modes = computeModes(model, statics, 6);
+    // Eigen's dense solve cannot be interrupted: a cancelled run leaves it to finish on its own.
+    modes = runAbandonable(context, [model, statics] { return computeModes(model, statics, 6); });
     if (modes.slowly_growing_count > 0)
       context.warn(slowGrowthNote(modes.slowly_growing_count, modes.largest_growth_rate, modes.largest_growth_per_radian));
     if (modes.unstable_count > 0)
