@@ -1,11 +1,13 @@
 #include "view3d/scene_view.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QInputDialog>
+#include <QResizeEvent>
 #include <QLabel>
 #include <QSlider>
 #include <QStyle>
@@ -41,6 +43,16 @@ bool nearModel(double z, const Bounds3D& model) {
   if (model.empty()) return true;
   const double reach = model.diagonal();
   return z >= model.b[4] - reach && z <= model.b[5] + reach;
+}
+
+// Another model (a new scenario, a longer riser, another hull) rather than the same one again: its size
+// differs by more than 20 % or its centre moved by more than a fifth of its size. The motion within one
+// run, and a rerun of the same model, stay below that and keep the user's view.
+bool framesAnew(const Bounds3D& framed, const Bounds3D& now) {
+  if (framed.empty() || now.empty()) return !now.empty();
+  const double size_ratio = now.diagonal() / std::max(framed.diagonal(), 1e-300);
+  const double shift = (now.centre() - framed.centre()).norm() / std::max(framed.diagonal(), 1e-300);
+  return size_ratio > 1.2 || size_ratio < 1 / 1.2 || shift > 0.2;
 }
 
 }  // namespace
@@ -132,6 +144,8 @@ SceneView::SceneView(QWidget* parent)
   color_control_->setEnabled(false);
   connect(color_control_, &ColorMapControl::settingsChanged, this, &SceneView::setColorSettings);
   connect(reset, &QToolButton::clicked, this, &SceneView::resetCamera);
+  connect(gl_, &VtkGlWidget::resetCameraRequested, this, &SceneView::resetCamera);
+  connect(gl_, &VtkGlWidget::cameraMovedByUser, this, [this] { user_moved_camera_ = true; });
   connect(save, &QToolButton::clicked, this, &SceneView::exportPngInteractive);
   applyPaletteColors();
 }
@@ -197,7 +211,13 @@ void SceneView::showResults(std::shared_ptr<const Results> results) {
   frame_ = std::min(frame_, frameCount() - 1);
   slider_->setValue(frame_);
   drawFrame();
-  if (!camera_placed_) resetCamera();
+  if (!camera_placed_ || framesAnew(framed_bounds_, framingBounds())) resetCamera();
+}
+
+void SceneView::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  // The fit depends on the view's aspect ratio: a view first framed while hidden or small is framed again.
+  if (results_ && camera_placed_ && !user_moved_camera_) resetCamera();
 }
 
 void SceneView::rebuildStatic() {
@@ -315,13 +335,39 @@ void SceneView::setPlaying(bool playing) {
 
 bool SceneView::isPlaying() const { return timer_->isActive(); }
 
-void SceneView::resetCamera() {
-  if (!results_) return;
+Bounds3D SceneView::framingBounds() const {
+  if (!results_) return {};
   Bounds3D bounds = viewBounds(results_->view);
   // The still-water and sea-bed planes belong in the picture when they are drawn.
   const Bounds3D model = bounds;
   for (const auto& z : {results_->view.water_level_z, results_->view.seabed_z})
     if (z && nearModel(*z, model)) bounds.add(Eigen::Vector3d(model.centre().x(), model.centre().y(), *z));
+  return bounds;
+}
+
+std::array<double, 4> SceneView::projectedModelExtent() const {
+  std::array<double, 4> extent{1e300, -1e300, 1e300, -1e300};
+  const Bounds3D bounds = framingBounds();
+  if (bounds.empty()) return {0, 0, 0, 0};
+  gl_->matchWindowSize();
+  vtkRenderer* renderer = gl_->renderer();
+  for (int corner = 0; corner < 8; ++corner) {
+    renderer->SetWorldPoint(bounds.b[corner & 1], bounds.b[2 + ((corner >> 1) & 1)], bounds.b[4 + ((corner >> 2) & 1)], 1.0);
+    renderer->WorldToView();
+    double view[3];
+    renderer->GetViewPoint(view);
+    extent[0] = std::min(extent[0], view[0]);
+    extent[1] = std::max(extent[1], view[0]);
+    extent[2] = std::min(extent[2], view[1]);
+    extent[3] = std::max(extent[3], view[1]);
+  }
+  return extent;
+}
+
+void SceneView::resetCamera() {
+  if (!results_) return;
+  gl_->matchWindowSize();
+  const Bounds3D bounds = framingBounds();
   const Eigen::Vector3d c = bounds.centre();
   // An oblique view from the front-right and slightly above, z up.
   const Eigen::Vector3d from = Eigen::Vector3d(0.55, -1.0, 0.35).normalized();
@@ -330,6 +376,8 @@ void SceneView::resetCamera() {
   const Eigen::Vector3d eye = c + from * bounds.diagonal() * 2.0;
   camera->SetPosition(eye.x(), eye.y(), eye.z());
   camera->SetViewUp(0, 0, 1);
+  // Zoom below narrows the view angle; starting from VTK's default each time keeps repeated framings alike.
+  camera->SetViewAngle(30.0);
   gl_->renderer()->ResetCamera(bounds.b.data());
   // A margin around the model for the caption; with a colour bar (the right ~18 % of the view)
   // the model moves left and shrinks a little so that the bar does not cover it.
@@ -337,6 +385,8 @@ void SceneView::resetCamera() {
   camera->Zoom(have_scalars_ ? 0.85 : 0.92);
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
+  user_moved_camera_ = false;
+  framed_bounds_ = bounds;
   gl_->requestRender();
 }
 
