@@ -19,6 +19,7 @@
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkColorTransferFunction.h>
+#include <vtkDoubleArray.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkRenderer.h>
@@ -29,6 +30,7 @@
 #include "plots/result_plot.hpp"
 #include "theme.hpp"
 #include "themed_icon.hpp"
+#include "view3d/color_bar_scale.hpp"
 #include "view3d/color_map_control.hpp"
 #include "view3d/shape_actors.hpp"
 #include "view3d/vtk_gl_widget.hpp"
@@ -63,6 +65,7 @@ SceneView::SceneView(QWidget* parent)
       empty_(new QLabel(tr("No 3D view yet: run the scenario."), this)), timer_(new QTimer(this)),
       color_control_(new ColorMapControl(this)),
       colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
+      bar_colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
       scalar_bar_(vtkSmartPointer<vtkScalarBarActor>::New()), caption_(vtkSmartPointer<vtkTextActor>::New()),
       triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
   vtkRenderer* renderer = gl_->renderer();
@@ -74,8 +77,9 @@ SceneView::SceneView(QWidget* parent)
   renderer->SetMaximumNumberOfPeels(4);
   renderer->SetOcclusionRatio(0.0);
 
-  scalar_bar_->SetLookupTable(colors_);
-  scalar_bar_->SetNumberOfLabels(5);
+  // The bar has a lookup table of its own: the same colours over the range in the display unit (MPa, kN).
+  scalar_bar_->SetLookupTable(bar_colors_);
+  scalar_bar_->UseCustomLabelsOn();
   // Vertical at the right edge, labels to its right: it stays clear of sea beds and long
   // models, which fill the lower part of the picture.
   scalar_bar_->SetOrientationToVertical();
@@ -95,7 +99,6 @@ SceneView::SceneView(QWidget* parent)
   }
   scalar_bar_->GetTitleTextProperty()->SetFontSize(14);
   scalar_bar_->GetLabelTextProperty()->BoldOff();
-  scalar_bar_->SetLabelFormat("%#.3g");
   caption_->GetTextProperty()->SetFontSize(16);
   caption_->GetTextProperty()->SetVerticalJustificationToTop();
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
@@ -244,12 +247,7 @@ void SceneView::rebuildStatic() {
   applyColorSettings();
   color_control_->setEnabled(have_scalars_);
   renderer->RemoveViewProp(scalar_bar_);
-  if (have_scalars_) {
-    // The colour bar sits in a strip ~15 % of the view wide; a long quantity name ("modal amplitude
-    // (displacement, or twist for torsion modes)") would run off the right edge.
-    scalar_bar_->SetTitle(wrapAtSpaces(axisLabel(view.scalar_name, view.scalar_unit), 22).toStdString().c_str());
-    renderer->AddViewProp(scalar_bar_);
-  }
+  if (have_scalars_) renderer->AddViewProp(scalar_bar_);
   Bounds3D ground = bounds;
   if (view.water_level_z && nearModel(*view.water_level_z, bounds)) {
     auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.22);
@@ -267,6 +265,17 @@ void SceneView::applyColorSettings() {
   const auto [lo, hi] = colorRange();
   fillColorMap(colors_, color_settings_.map, lo, hi);
   color_control_->showSettings(color_settings_, data_lo_, data_hi_);
+  if (!results_) return;
+  // The bar reads in an engineering unit with ticks on a 1–2–5 grid; the title wraps to the bar's strip
+  // (~15 % of the view): a long quantity name ("modal amplitude (displacement, or twist for torsion modes)")
+  // would run off the right edge.
+  const ColorBarScale scale = colorBarScale(lo, hi, results_->view.scalar_unit);
+  fillColorMap(bar_colors_, color_settings_.map, lo * scale.factor, hi * scale.factor);
+  auto ticks = vtkSmartPointer<vtkDoubleArray>::New();
+  for (double t : scale.ticks) ticks->InsertNextValue(t);
+  scalar_bar_->SetCustomLabels(ticks);
+  scalar_bar_->SetLabelFormat(scale.label_format.c_str());
+  scalar_bar_->SetTitle(wrapAtSpaces(axisLabel(results_->view.scalar_name, scale.unit), 22).toStdString().c_str());
 }
 
 std::pair<double, double> SceneView::colorRange() const {

@@ -104,7 +104,8 @@ class SceneView : public QWidget {
   bool camera_placed_ = false;
   bool user_moved_camera_ = false;  // since the last automatic framing
   Bounds3D framed_bounds_;          // what the camera was last framed for
-  vtkSmartPointer<vtkColorTransferFunction> colors_;
+  vtkSmartPointer<vtkColorTransferFunction> colors_;      // SI values to colours (the model)
+  vtkSmartPointer<vtkColorTransferFunction> bar_colors_;  // the same in the colour bar's display unit
   vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
   vtkSmartPointer<vtkTextActor> caption_;
   vtkSmartPointer<vtkOrientationMarkerWidget> triad_;
