@@ -251,11 +251,16 @@ void MainWindow::updateRunEnabled() {
   const int problems = static_cast<int>(document_->errors().size());
   if (document_->isEmpty())
     validity_->setText(tr("No scenario"));
+  else if (valid && !document_->warnings().empty() && !running)
+    validity_->setText(tr("Ready, %n plausibility warning(s)", nullptr, static_cast<int>(document_->warnings().size())));
   else if (valid)
     validity_->setText(running ? tr("Running…") : tr("Ready"));
   else
     validity_->setText(tr("%n invalid value(s)", nullptr, problems));
-  validity_->setStyleSheet(valid || document_->isEmpty() ? QString() : QStringLiteral("color: #d62728;"));
+  const bool doubtful = valid && !document_->warnings().empty();
+  validity_->setStyleSheet(!valid && !document_->isEmpty() ? QStringLiteral("color: #d62728;")
+                           : doubtful                     ? QStringLiteral("color: #a86400;")
+                                                          : QString());
 }
 
 void MainWindow::status(const QString& text, int timeout_ms) { statusBar()->showMessage(text, timeout_ms); }

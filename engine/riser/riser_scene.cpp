@@ -9,6 +9,7 @@
 #include "riser/riser_envelope.hpp"
 #include "riser/riser_frequency_sweep.hpp"
 #include "riser/riser_integration.hpp"
+#include "riser/riser_plausibility.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser/riser_stress_convergence.hpp"
@@ -78,6 +79,7 @@ SceneDefinition makeRiserScene() {
       riser::riserBinder(), riser::checkRiserParameters, riser::solveRiser);
   scene.upgrade = riser::upgradeRiserParameters;
   setWorkEstimate<riser::RiserParameters>(scene, riser::riserBinder(), riser::estimateRiserWork);
+  setPlausibility<riser::RiserParameters>(scene, riser::riserBinder(), riser::riserPlausibility);
   return scene;
 }
 
