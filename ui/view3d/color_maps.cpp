@@ -46,6 +46,7 @@ std::optional<ColorSettings> loadColorSettings(const std::string& quantity) {
   ColorSettings out;
   out.map = *map;
   out.automatic = settings.value(QStringLiteral("automatic"), true).toBool();
+  out.per_frame = settings.value(QStringLiteral("per_frame"), false).toBool();
   bool min_ok = false, max_ok = false;
   out.min = settings.value(QStringLiteral("min")).toDouble(&min_ok);
   out.max = settings.value(QStringLiteral("max")).toDouble(&max_ok);
@@ -62,6 +63,7 @@ void saveColorSettings(const std::string& quantity, const ColorSettings& setting
   store.beginGroup(settingsGroup(quantity));
   store.setValue(QStringLiteral("map"), colorMapKey(settings.map));
   store.setValue(QStringLiteral("automatic"), settings.automatic);
+  store.setValue(QStringLiteral("per_frame"), settings.per_frame);
   store.setValue(QStringLiteral("min"), settings.min);
   store.setValue(QStringLiteral("max"), settings.max);
 }

@@ -61,7 +61,7 @@ bool framesAnew(const Bounds3D& framed, const Bounds3D& now) {
 
 SceneView::SceneView(QWidget* parent)
     : QWidget(parent), gl_(new VtkGlWidget(this)), slider_(new QSlider(Qt::Horizontal, this)),
-      play_(new QToolButton(this)), time_(new QLabel(this)),
+      play_(new QToolButton(this)), magnify_(new QComboBox(this)), time_(new QLabel(this)),
       empty_(new QLabel(tr("No 3D view yet: run the scenario."), this)), timer_(new QTimer(this)),
       color_control_(new ColorMapControl(this)),
       colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
@@ -99,7 +99,7 @@ SceneView::SceneView(QWidget* parent)
   }
   scalar_bar_->GetTitleTextProperty()->SetFontSize(14);
   scalar_bar_->GetLabelTextProperty()->BoldOff();
-  caption_->GetTextProperty()->SetFontSize(16);
+  caption_->GetTextProperty()->SetFontSize(14);
   caption_->GetTextProperty()->SetVerticalJustificationToTop();
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   caption_->GetPositionCoordinate()->SetValue(0.015, 0.98);
@@ -124,10 +124,18 @@ SceneView::SceneView(QWidget* parent)
   time_->setMinimumWidth(time_->fontMetrics().horizontalAdvance(QStringLiteral("t = -0000.000 s (000/000)")));
   empty_->setAlignment(Qt::AlignCenter);
 
+  magnify_->addItem(tr("Displacement × 1"), 1.0);
+  magnify_->addItem(tr("Displacement × 10"), 10.0);
+  magnify_->addItem(tr("Displacement × 100"), 100.0);
+  magnify_->setObjectName(QStringLiteral("magnification"));
+  magnify_->setToolTip(tr("Draw the motion from the static shape (the faint ghost) magnified"));
+  magnify_->setEnabled(false);
+
   auto* controls = new QHBoxLayout;
   controls->addWidget(play_);
   controls->addWidget(slider_, 1);
   controls->addWidget(time_);
+  controls->addWidget(magnify_);
   controls->addWidget(color_control_);
   controls->addWidget(reset);
   controls->addWidget(save);
@@ -146,6 +154,8 @@ SceneView::SceneView(QWidget* parent)
   connect(slider_, &QSlider::valueChanged, this, &SceneView::setFrame);
   color_control_->setEnabled(false);
   connect(color_control_, &ColorMapControl::settingsChanged, this, &SceneView::setColorSettings);
+  connect(magnify_, &QComboBox::currentIndexChanged, this,
+          [this](int index) { setMagnification(magnify_->itemData(index).toDouble()); });
   connect(reset, &QToolButton::clicked, this, &SceneView::resetCamera);
   connect(gl_, &VtkGlWidget::resetCameraRequested, this, &SceneView::resetCamera);
   connect(gl_, &VtkGlWidget::cameraMovedByUser, this, [this] { user_moved_camera_ = true; });
@@ -229,8 +239,28 @@ void SceneView::rebuildStatic() {
   static_actors_.clear();
   const View3D& view = results_->view;
   const Bounds3D bounds = viewBounds(view);
-  // Thin members (a 0.5 m riser in a 1 km scene) are drawn at least 0.4 % of the scene size thick.
+  // Thin members (a 0.5 m riser in a 1 km scene) are drawn at least 0.4 % of the scene size thick; the
+  // caption says by how much the thinnest tube is drawn thicker than it is.
   min_tube_radius_ = 0.004 * bounds.diagonal();
+  double thinnest = 0;
+  for (const auto& frame : view.frames)
+    for (const auto& shape : frame.shapes)
+      if (shape.kind == Shape3D::Kind::Tube && shape.radius > 0)
+        thinnest = thinnest == 0 ? shape.radius : std::min(thinnest, shape.radius);
+  drawn_thickness_ratio_ = thinnest > 0 ? std::max(1.0, min_tube_radius_ / thinnest) : 1.0;
+  magnify_->setEnabled(!view.reference.empty());
+  // The static shape as a faint ghost: what the motion (and its magnification) is measured from.
+  for (Shape3D ghost : view.reference) {
+    ghost.scalars.clear();
+    ghost.color = {0.55, 0.55, 0.55};
+    ghost.opacity = 0.3;
+    ShapeStyle style;
+    style.min_tube_radius = min_tube_radius_;
+    if (auto actor = makeShapeActor(ghost, style)) {
+      renderer->AddActor(actor);
+      static_actors_.push_back(actor);
+    }
+  }
   data_lo_ = 0.0;
   data_hi_ = 1.0;
   have_scalars_ = scalarRange(view, data_lo_, data_hi_);
@@ -275,10 +305,15 @@ void SceneView::applyColorSettings() {
   for (double t : scale.ticks) ticks->InsertNextValue(t);
   scalar_bar_->SetCustomLabels(ticks);
   scalar_bar_->SetLabelFormat(scale.label_format.c_str());
-  scalar_bar_->SetTitle(wrapAtSpaces(axisLabel(results_->view.scalar_name, scale.unit), 22).toStdString().c_str());
+  const QString range = !color_settings_.automatic ? tr("fixed range")
+                        : color_settings_.per_frame ? tr("range of this frame")
+                                                    : tr("range of all frames");
+  const QString title = wrapAtSpaces(axisLabel(results_->view.scalar_name, scale.unit), 22) + QStringLiteral("\n") + range;
+  scalar_bar_->SetTitle(title.toStdString().c_str());
 }
 
 std::pair<double, double> SceneView::colorRange() const {
+  if (color_settings_.automatic && color_settings_.per_frame) return {frame_lo_, frame_hi_};
   if (color_settings_.automatic || !(color_settings_.max > color_settings_.min)) return {data_lo_, data_hi_};
   return {color_settings_.min, color_settings_.max};
 }
@@ -300,7 +335,17 @@ void SceneView::drawFrame() {
   ShapeStyle style;
   style.colors = have_scalars_ ? colors_.Get() : nullptr;
   style.min_tube_radius = min_tube_radius_;
-  for (const Shape3D& shape : results_->view.frames[frame_].shapes) {
+  const Frame3D& frame = results_->view.frames[frame_];
+  if (have_scalars_ && color_settings_.automatic && color_settings_.per_frame) {
+    // Each frame its own range: the colours and the bar follow the frame shown.
+    frame_lo_ = data_lo_;
+    frame_hi_ = data_hi_;
+    if (frameScalarRange(frame, frame_lo_, frame_hi_) && !(frame_hi_ > frame_lo_))
+      frame_hi_ = frame_lo_ + (frame_lo_ == 0.0 ? 1.0 : std::abs(frame_lo_) * 1e-6);
+    applyColorSettings();
+  }
+  for (const Shape3D& drawn : frame.shapes) {
+    const Shape3D shape = magnifiedShape(drawn, results_->view, magnification_);
     if (auto actor = makeShapeActor(shape, style)) {
       renderer->AddActor(actor);
       frame_actors_.push_back(actor);
@@ -319,7 +364,35 @@ void SceneView::updateTimeLabel() {
   // A static result (one frame) has no time worth showing.
   const bool animated = frameCount() > 1;
   time_->setText(animated ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : QString());
-  caption_->SetInput(animated ? text.toStdString().c_str() : "");
+  QStringList lines;
+  if (animated) lines << text;
+  const QString notes = drawingNotes();
+  if (!notes.isEmpty()) lines << notes;
+  caption_->SetInput(lines.join('\n').toStdString().c_str());
+}
+
+QString SceneView::drawingNotes() const {
+  QStringList notes;
+  if (results_ && !results_->view.reference.empty())
+    notes << (magnification_ == 1.0 ? tr("grey ghost: static shape")
+                                    : tr("displacement × %1 from the static shape (grey ghost)").arg(magnification_));
+  // Thin members are drawn thicker than they are; say so once it is more than a rounding.
+  if (drawn_thickness_ratio_ > 1.5) notes << tr("tubes drawn up to %1 × their diameter").arg(std::round(drawn_thickness_ratio_));
+  return notes.join('\n');
+}
+
+void SceneView::setMagnification(double factor) {
+  if (!(factor >= 1.0) || factor == magnification_) return;
+  magnification_ = factor;
+  const int index = magnify_->findData(factor);
+  if (index >= 0 && magnify_->currentIndex() != index) {
+    const QSignalBlocker blocker(magnify_);
+    magnify_->setCurrentIndex(index);
+  }
+  if (!results_) return;
+  drawFrame();
+  // A magnified motion may reach outside the old framing.
+  if (!user_moved_camera_ || framesAnew(framed_bounds_, framingBounds())) resetCamera();
 }
 
 void SceneView::setFrame(int index) {
@@ -346,7 +419,7 @@ bool SceneView::isPlaying() const { return timer_->isActive(); }
 
 Bounds3D SceneView::framingBounds() const {
   if (!results_) return {};
-  Bounds3D bounds = viewBounds(results_->view);
+  Bounds3D bounds = viewBounds(results_->view, magnification_);
   // The still-water and sea-bed planes belong in the picture when they are drawn.
   const Bounds3D model = bounds;
   for (const auto& z : {results_->view.water_level_z, results_->view.seabed_z})

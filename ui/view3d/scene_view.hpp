@@ -22,6 +22,7 @@
 #include "view3d/color_maps.hpp"
 #include "view3d/shape_actors.hpp"
 
+class QComboBox;
 class QLabel;
 class QResizeEvent;
 class QSlider;
@@ -68,6 +69,12 @@ class SceneView : public QWidget {
   // The range the colours and the colour bar span now (the data's or the user's).
   std::pair<double, double> colorRange() const;
   ColorMapControl* colorControl() const { return color_control_; }
+  // Displacements from the reference shape (View3D::reference, drawn as a ghost) drawn × 1, 10 or 100.
+  void setMagnification(double factor);
+  double magnification() const { return magnification_; }
+  QComboBox* magnificationBox() const { return magnify_; }
+  // What the view states about its drawing (magnification, drawn thickness), shown in its caption.
+  QString drawingNotes() const;
 
   VtkGlWidget* glWidget() const { return gl_; }
   // Where the model's bounding box (and the water and sea-bed levels drawn with it) falls in the view:
@@ -95,6 +102,7 @@ class SceneView : public QWidget {
   VtkGlWidget* gl_;
   QSlider* slider_;
   QToolButton* play_;
+  QComboBox* magnify_;
   QLabel* time_;
   QLabel* empty_;
   QTimer* timer_;
@@ -114,6 +122,9 @@ class SceneView : public QWidget {
   double min_tube_radius_ = 0.0;
   bool have_scalars_ = false;
   double data_lo_ = 0.0, data_hi_ = 1.0;  // scalar range of all frames
+  double frame_lo_ = 0.0, frame_hi_ = 1.0;  // scalar range of the frame shown
+  double magnification_ = 1.0;
+  double drawn_thickness_ratio_ = 1.0;  // drawn tube radius / real radius of the thinnest tube (≥ 1)
   std::string colored_quantity_;          // View3D::scalar_name of the shown results
   ColorSettings color_settings_;
   std::map<std::string, ColorSettings> color_memory_;  // by quantity; also saved with QSettings
