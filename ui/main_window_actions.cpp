@@ -33,13 +33,13 @@ bool MainWindow::loadScenario(const Scenario& scenario, const QString& path, con
     status(last_error_);
     return false;
   }
-  // Results of another scene make no sense next to this scenario.
-  if (document_->scene() != scene) {
-    plots_->clear();
-    view_->clear();
-    summary_->clear();
-    shown_run_ = 0;
-  }
+  // Results of another scenario do not belong beside this one (probe 3 may sit at another arc length, the
+  // riser have another length): the views are cleared. The finished runs stay in the history, and runs of
+  // the same scenario are offered for overlays again once it runs.
+  plots_->clear();
+  view_->clear();
+  summary_->clear();
+  shown_run_ = 0;
   example_id_ = example_id;
   // Renamed fields of older files are rewritten before editing, so the editor shows them and Save writes them.
   Scenario upgraded = scenario;
@@ -177,10 +177,11 @@ void MainWindow::cancelRun() {
 void MainWindow::showRecord(const RunRecord& record) {
   shown_run_ = record.id;
   plots_->showResults(record.results, record.label);
-  std::vector<RunRecord> same_scene;
+  // Overlays and the all-runs CSV combine runs whose columns mean the same: runs of the same scenario.
+  std::vector<RunRecord> same_scenario;
   for (const auto& r : history_.runs())
-    if (r.scenario.scene == record.scenario.scene) same_scene.push_back(r);
-  plots_->setAvailableRuns(same_scene, record.id);
+    if (sameScenario(r.scenario, record.scenario)) same_scenario.push_back(r);
+  plots_->setAvailableRuns(same_scenario, record.id);
   view_->showResults(record.results);
   summary_->showRun(record);
 }

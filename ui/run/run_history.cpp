@@ -28,7 +28,7 @@ void collectDifferences(const Json& before, const Json& after, const std::string
 const RunRecord& RunHistory::add(RunRecord record) {
   const RunRecord* previous = nullptr;
   for (auto it = runs_.rbegin(); it != runs_.rend(); ++it)
-    if (it->scenario.scene == record.scenario.scene) {
+    if (sameScenario(it->scenario, record.scenario)) {
       previous = &*it;
       break;
     }
@@ -42,6 +42,8 @@ const RunRecord& RunHistory::add(RunRecord record) {
   while (runs_.size() > capacity_) runs_.pop_front();
   return runs_.back();
 }
+
+bool sameScenario(const Scenario& a, const Scenario& b) { return a.scene == b.scene && a.name == b.name; }
 
 const RunRecord* RunHistory::find(quint64 id) const {
   for (const auto& r : runs_)

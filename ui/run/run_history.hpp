@@ -1,5 +1,5 @@
 // The finished runs of this session, newest last, kept so plots can overlay them (e.g. 20 vs 100
-// segments). Each run's label says what differs from the run before it of the same scene.
+// segments). Each run's label says what differs from the run before it of the same scenario.
 #pragma once
 
 #include <deque>
@@ -23,6 +23,10 @@ class RunHistory {
   std::size_t capacity_;
   std::deque<RunRecord> runs_;
 };
+
+// Runs of one scenario (same scene and name): their tables' columns mean the same, so they may share a plot or
+// a CSV. Runs of two scenarios of one scene may not (probe 3 at s = 75 m in one, 375 m in the other).
+bool sameScenario(const Scenario& a, const Scenario& b);
 
 // "segment count = 100, method = absolute" for the leaf values that differ between two
 // parameter objects (at most `max_items`, then "…").
