@@ -108,7 +108,7 @@ class FramingTest : public QObject {
     QCoreApplication::processEvents();
     std::array<double, 3> after{};
     camera->GetPosition(after.data());
-    QCOMPARE(camera->GetViewAngle(), scale * 0.5);  // VTK's Zoom(2) halves the view angle
+    QCOMPARE(camera->GetViewAngle(), scale);
     for (int i = 0; i < 3; ++i) QCOMPARE(after[i], before[i]);
     // Reset camera frames it again.
     view.resetCamera();

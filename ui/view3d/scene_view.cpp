@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QComboBox>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -224,7 +225,14 @@ void SceneView::showResults(std::shared_ptr<const Results> results) {
   frame_ = std::min(frame_, frameCount() - 1);
   slider_->setValue(frame_);
   drawFrame();
-  if (!camera_placed_ || framesAnew(framed_bounds_, framingBounds())) resetCamera();
+  // Framed anew for another model, and (unless the user placed the camera) whenever the model no longer fits:
+  // part of it outside the picture, or filling less than half of it.
+  bool fits = true;
+  if (camera_placed_ && !user_moved_camera_) {
+    const auto e = projectedModelExtent();
+    fits = e[0] >= -1 && e[1] <= 1 && e[2] >= -1 && e[3] <= 1 && std::max(e[1] - e[0], e[3] - e[2]) >= 1.0;
+  }
+  if (!camera_placed_ || !fits || framesAnew(framed_bounds_, framingBounds())) resetCamera();
 }
 
 void SceneView::resizeEvent(QResizeEvent* event) {
@@ -460,11 +468,24 @@ void SceneView::resetCamera() {
   camera->SetViewUp(0, 0, 1);
   // Zoom below narrows the view angle; starting from VTK's default each time keeps repeated framings alike.
   camera->SetViewAngle(30.0);
+  camera->SetWindowCenter(0.0, 0.0);
   gl_->renderer()->ResetCamera(bounds.b.data());
-  // A margin around the model for the caption; with a colour bar (the right ~18 % of the view)
-  // the model moves left and shrinks a little so that the bar does not cover it.
-  camera->SetWindowCenter(have_scalars_ ? 0.14 : 0.0, 0.0);
-  camera->Zoom(have_scalars_ ? 0.85 : 0.92);
+  // ResetCamera fits the bounding sphere, which leaves a long model (a hull, a 2-D section, a riser seen
+  // across) small in a wide view. Fit the projected box instead: zoom until it fills the free part of the
+  // view (the right ~20 % holds the colour bar, the top the caption), then shift it to that part's centre.
+  const double right = have_scalars_ ? 0.55 : 0.95, left = -0.95, top = 0.80, bottom = -0.95;
+  constexpr double kFill = 0.92;
+  for (int pass = 0; pass < 3; ++pass) {  // perspective makes one zoom step inexact: refine twice
+    camera->SetWindowCenter(0.0, 0.0);
+    const auto e = projectedModelExtent();
+    const double half_x = 0.5 * (e[1] - e[0]), half_y = 0.5 * (e[3] - e[2]);
+    const double zoom = std::min(half_x > 0 ? 0.5 * (right - left) * kFill / half_x : 1e3,
+                                 half_y > 0 ? 0.5 * (top - bottom) * kFill / half_y : 1e3);
+    if (std::isfinite(zoom) && zoom > 0 && std::abs(zoom - 1.0) > 1e-3) camera->Zoom(std::clamp(zoom, 0.05, 20.0));
+  }
+  camera->SetWindowCenter(0.0, 0.0);
+  const auto e = projectedModelExtent();
+  camera->SetWindowCenter(0.5 * (e[0] + e[1]) - 0.5 * (left + right), 0.5 * (e[2] + e[3]) - 0.5 * (top + bottom));
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
   user_moved_camera_ = false;

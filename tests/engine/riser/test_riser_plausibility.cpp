@@ -43,7 +43,7 @@ TEST(RiserPlausibility, AnchorsUnderOrFarAboveTheSeaBed) {
   const auto under = warningsOf("riser_default", {"bottom.z=-105", "geometry.length=104"});
   ASSERT_NE(at(under, "parameters.bottom.z"), nullptr) << describeErrors(under);
   EXPECT_NE(at(under, "parameters.bottom.z")->message.find("5 m below the sea bed"), std::string::npos);
-  const auto mid = warningsOf("riser_default", {"bottom.z=-50", "geometry.length=49"});
+  const auto mid = warningsOf("riser_default", {"bottom.z=-50", "geometry.length=100"});
   ASSERT_NE(at(mid, "parameters.bottom.z"), nullptr) << describeErrors(mid);
   EXPECT_NE(at(mid, "parameters.bottom.z")->message.find("50 m above the sea bed"), std::string::npos);
 }
