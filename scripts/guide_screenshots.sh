@@ -14,6 +14,8 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-build/release}"
 case "$build" in /*) ;; *) [ -d "$build" ] || build="$root/$build" ;; esac
+[ -d "$build" ] || { echo "guide_screenshots.sh: no build folder $build" >&2; exit 1; }
+build="$(cd "$build" && pwd)"  # absolute: maris runs from the repository's root below
 maris="$build/app/maris"
 [ -x "$maris" ] || { echo "guide_screenshots.sh: no $maris (build the target maris first)" >&2; exit 1; }
 command -v xvfb-run >/dev/null || { echo "guide_screenshots.sh: xvfb-run is missing (package xvfb)" >&2; exit 1; }
