@@ -211,10 +211,10 @@ bool fillStudyPlot(QCustomPlot& plot, const StudyPlotData& data, int x, StudyPlo
   return ok;
 }
 
-int studyCaseAt(const QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pixel, double radius_px) {
+int studyCaseAt(QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pixel, double radius_px) {
   if (drawn.kind == StudyPlotKind::HeatMap) {
     if (drawn.cell_case.empty() || plot.plottableCount() == 0) return -1;
-    const QCPAbstractPlottable* map = plot.plottable(0);
+    QCPAbstractPlottable* map = plot.plottable(0);
     const int i = static_cast<int>(std::lround(map->keyAxis()->pixelToCoord(pixel.x())));
     const int j = static_cast<int>(std::lround(map->valueAxis()->pixelToCoord(pixel.y())));
     const int nx = static_cast<int>(drawn.cell_x.size()), ny = static_cast<int>(drawn.cell_y.size());
@@ -224,7 +224,7 @@ int studyCaseAt(const QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pi
   int best = -1;
   double best_distance = radius_px;
   for (int g = 0; g < plot.graphCount() && g < static_cast<int>(drawn.graph_cases.size()); ++g) {
-    const QCPGraph* graph = plot.graph(g);
+    QCPGraph* graph = plot.graph(g);
     int k = 0;
     for (auto it = graph->data()->constBegin(); it != graph->data()->constEnd(); ++it, ++k) {
       const QPointF at(graph->keyAxis()->coordToPixel(it->key), graph->valueAxis()->coordToPixel(it->value));
@@ -238,13 +238,13 @@ int studyCaseAt(const QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pi
   return best;
 }
 
-QPointF studyCasePixel(const QCustomPlot& plot, const DrawnStudyPlot& drawn, int index) {
+QPointF studyCasePixel(QCustomPlot& plot, const DrawnStudyPlot& drawn, int index) {
   if (drawn.kind == StudyPlotKind::HeatMap) {
     const auto it = std::find(drawn.cell_case.begin(), drawn.cell_case.end(), index);
     if (it == drawn.cell_case.end() || plot.plottableCount() == 0) return {-1, -1};
     const auto cell = static_cast<int>(it - drawn.cell_case.begin());
     const int nx = static_cast<int>(drawn.cell_x.size());
-    const QCPAbstractPlottable* map = plot.plottable(0);
+    QCPAbstractPlottable* map = plot.plottable(0);
     return {map->keyAxis()->coordToPixel(cell % nx), map->valueAxis()->coordToPixel(cell / nx)};
   }
   for (int g = 0; g < plot.graphCount() && g < static_cast<int>(drawn.graph_cases.size()); ++g) {

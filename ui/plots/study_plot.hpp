@@ -60,9 +60,9 @@ bool fillStudyPlot(QCustomPlot& plot, const StudyPlotData& data, int x, StudyPlo
 
 // The case whose point (or heat-map cell) is under the widget pixel `pixel` (within `radius_px` for
 // points), or -1.
-int studyCaseAt(const QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pixel, double radius_px = 8.0);
+int studyCaseAt(QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pixel, double radius_px = 8.0);
 
 // The widget pixel of case `index`'s point (or cell centre); (-1, -1) if it is not drawn.
-QPointF studyCasePixel(const QCustomPlot& plot, const DrawnStudyPlot& drawn, int index);
+QPointF studyCasePixel(QCustomPlot& plot, const DrawnStudyPlot& drawn, int index);
 
 }  // namespace maris::ui

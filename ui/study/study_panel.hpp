@@ -18,6 +18,7 @@ class QLabel;
 class QPushButton;
 class QSpinBox;
 class QTableWidget;
+class QTimer;
 
 namespace maris::ui {
 
@@ -100,6 +101,7 @@ class StudyPanel : public QWidget {
   QSpinBox* threads_box_;
   QLabel* summary_;
   StudyPlotView* plot_view_;
+  QTimer* refresh_timer_;
   QString last_error_;
   SweepPrompt sweep_prompt_;
 };

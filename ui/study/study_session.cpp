@@ -2,6 +2,7 @@
 // the engine's (study_session_engine.cpp calls them); here are the outcomes and the plot data.
 #include "study/study_session.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
