@@ -21,6 +21,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
 #include "main_window.hpp"
 #include "plots/study_plot.hpp"
@@ -218,9 +219,9 @@ class StudyTest : public QObject {
 
   void twoParametersGiveALinePerValueAndAHeatMap() {
     panel()->setSweepPrompt(answer({"", 2.0, 3.0, 2, false}, true));
-    QVERIFY(panel()->sweep(QStringLiteral("geometry.radius")));
+    QVERIFY(chooseSweep(window_->editor(), "geometry.radius"));
     panel()->setSweepPrompt(answer({"", 10.0, 1000.0, 3, true}, true));
-    QVERIFY(panel()->sweep(QStringLiteral("geometry.length")));
+    QVERIFY(chooseSweep(window_->editor(), "geometry.length"));
     QCOMPARE(panel()->parameters().size(), std::size_t(2));
     QVERIFY(!panel()->isRunning());  // "Add to study" does not run
     QVERIFY(panel()->startStudy());

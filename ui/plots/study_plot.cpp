@@ -44,6 +44,7 @@ QString groupLabel(const StudyPlotData& data, int x, std::size_t c) {
   return parts.join(QStringLiteral(", "));
 }
 
+// An empty plot with one axis rectangle in row 0 (the title, if any, goes above it afterwards).
 QCPAxisRect* freshAxisRect(QCustomPlot& plot) {
   plot.clearGraphs();
   plot.clearPlottables();
@@ -52,6 +53,12 @@ QCPAxisRect* freshAxisRect(QCustomPlot& plot) {
   auto* rect = new QCPAxisRect(&plot);
   plot.plotLayout()->addElement(0, 0, rect);
   return rect;
+}
+
+void addTitle(QCustomPlot& plot, const std::string& title) {
+  if (title.empty()) return;
+  plot.plotLayout()->insertRow(0);
+  plot.plotLayout()->addElement(0, 0, new QCPTextElement(&plot, QString::fromStdString(title)));
 }
 
 // Tick labels at the cells' indices reading the cells' values (a grid need not be evenly spaced).
@@ -113,6 +120,7 @@ bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPl
   x_axis->scaleRange(1.06, x_axis->range().center());
   y_axis->scaleRange(1.1, y_axis->range().center());
   if (plot.graphCount() > 1) addPlotLegend(plot, *rect);
+  addTitle(plot, data.title);
   applyPlotColors(plot);
   return true;
 }
@@ -159,6 +167,7 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
   scale->setMarginGroup(QCP::msBottom | QCP::msTop, margins);
   cellTicks(x_axis, drawn.cell_x);
   cellTicks(y_axis, drawn.cell_y);
+  addTitle(plot, data.title);
   applyPlotColors(plot);
   const DrawingColors colors = drawingColors(plot.palette());
   for (QCPAxis* axis : {scale->axis()}) {

@@ -26,6 +26,7 @@ struct StudyParameterData {
 // A study's numbers for one result scalar: every varied parameter and the result, per case. A
 // case without the result (failed, cancelled, not run) holds NaN and is left out of the plot.
 struct StudyPlotData {
+  std::string title;  // above the plot (empty: none)
   std::vector<StudyParameterData> parameters;
   std::string result_name;
   std::string result_unit;

@@ -103,6 +103,8 @@ void StudyPlotView::redraw() {
     plot_->clearPlottables();
     plot_->clearItems();
   }
+  readout_->setText(has_data_ ? tr("Click a point (or a cell) to open its case.")
+                              : tr("Run the study; then click a point to open its case."));
   applyPlotColors(*plot_);
   plot_->replot();
 }
@@ -111,7 +113,7 @@ void StudyPlotView::onMouseMove(const QPointF& pixel) {
   if (!has_data_ || !session_) return;
   const int c = studyCaseAt(*plot_, drawn_, pixel);
   if (c < 0) {
-    readout_->setText(tr("Click a point to open its case."));
+    readout_->setText(tr("Click a point (or a cell) to open its case."));
     return;
   }
   readout_->setText(tr("case %1 (%2): %3 = %4 — click to open")

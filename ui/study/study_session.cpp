@@ -63,6 +63,7 @@ StudyPlotData StudySession::plotData(const std::string& result) const {
   StudyPlotData data;
   if (!impl_) return data;
   data.result_name = result;
+  data.title = base_.name + " — study of " + std::to_string(impl_->cases.size()) + " cases";
   for (std::size_t p = 0; p < impl_->parameters.size(); ++p) {
     StudyParameterData param;
     param.name = impl_->parameters[p].name;
