@@ -39,7 +39,7 @@ struct StudyDefinition {
   std::string name;
   std::string description;
   Scenario base;
-  std::vector<GridParameter> grid;   // the first parameter varies slowest
+  std::vector<GridParameter> grid;   // the first parameter varies slowest (a file reads back sorted by path)
   std::vector<std::string> results;  // scalars in study.csv; empty: every scalar of the cases
 };
 

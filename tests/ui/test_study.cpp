@@ -18,8 +18,6 @@
 #include <qcustomplot.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
@@ -39,20 +37,6 @@ using namespace maris;
 using namespace maris::ui;
 
 namespace {
-
-std::vector<std::vector<std::string>> readCsv(const QString& file) {
-  std::ifstream in(file.toStdString());
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
 
 int columnOf(const std::vector<std::string>& header, const std::string& name) {
   for (std::size_t i = 0; i < header.size(); ++i)
@@ -164,7 +148,7 @@ class StudyTest : public QObject {
     QTemporaryDir dir;
     const QString csv = dir.filePath(QStringLiteral("study.csv"));
     QVERIFY(panel()->exportCsv(csv));
-    const auto rows = readCsv(csv);
+    const auto rows = test::readCsv(csv);
     QVERIFY(!rows.empty());
     const int length_col = columnOf(rows[0], "geometry.length");
     const int volume_col = columnOf(rows[0], "rod_volume");
@@ -228,7 +212,7 @@ class StudyTest : public QObject {
     QVERIFY(runAndWait());
     StudyPlotView* view = panel()->plotView();
     view->resultBox()->setCurrentIndex(view->resultBox()->findData(QStringLiteral("rod_volume")));
-    view->againstBox()->setCurrentIndex(1);  // length on x, a line per radius
+    view->againstBox()->setCurrentIndex(view->againstBox()->findData(QStringLiteral("geometry.length")));  // a line per radius
     QCOMPARE(view->plot()->graphCount(), 2);
     QCOMPARE(view->drawn().points, 6);
     QCOMPARE(view->plot()->xAxis->scaleType(), QCPAxis::stLogarithmic);  // log spacing: log axis

@@ -7,12 +7,10 @@
 
 namespace maris::ui {
 
-namespace {
 qint64 steadyNanoseconds() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
-}  // namespace
 
 void RunWorker::run(const RunJob& job) {
   const quint64 id = job.id;

@@ -30,6 +30,9 @@ struct RunRecord {
   QString label;         // "run 3" plus what differs from the run before ("segment count = 100")
 };
 
+// Nanoseconds of std::chrono::steady_clock: when a cancel was asked for and when a solver stopped.
+qint64 steadyNanoseconds();
+
 // What one run through runScenario gave: results, or the failure in words, or a cancellation.
 struct RunOutcome {
   ResultsPtr results;  // set when the run finished

@@ -1,7 +1,6 @@
 #include "study/study_runner.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <numeric>
 #include <thread>
 
@@ -9,13 +8,6 @@
 #include <QRunnable>
 
 namespace maris::ui {
-
-namespace {
-qint64 steadyNanoseconds() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-}  // namespace
 
 StudyRunner::StudyRunner(QObject* parent) : QObject(parent) {
   qRegisterMetaType<ResultsPtr>();

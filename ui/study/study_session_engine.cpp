@@ -1,5 +1,5 @@
 // StudySession: the calls into the engine's study model (file, expansion and validation, study.csv).
-#include <QFileInfo>
+#include <algorithm>
 
 #include "core/errors.hpp"
 #include "scene_library.hpp"
@@ -43,6 +43,8 @@ void StudySession::define(const SceneDefinition& scene, const Scenario& base, st
   scene_ = std::make_shared<const SceneDefinition>(scene);
   base_ = base;
   grid_ = std::move(grid);
+  // In the order of their paths, as a study file reads back (JSON objects keep no order).
+  std::sort(grid_.begin(), grid_.end(), [](const SweepRange& a, const SweepRange& b) { return a.path < b.path; });
   impl_ = std::make_shared<Impl>();
   impl_->definition.name = base.name + " study";
   impl_->definition.base = base;
