@@ -90,7 +90,8 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
     // A third of the window for the study (its plot needs room); the 3D view and plots give way.
     if (!study_dock_->isVisible()) {
       study_dock_->show();
-      resizeDocks({study_dock_}, {std::max(420, width() / 3)}, Qt::Horizontal);
+      // Together with the left docks' width, or the left docks alone would give the room.
+      resizeDocks({left_dock_, study_dock_}, {std::min(440, width() / 4), std::max(420, width() / 3)}, Qt::Horizontal);
     }
     study_dock_->raise();
     study_->sweep(path);
@@ -177,6 +178,7 @@ void MainWindow::createDocks() {
   QDockWidget* parameters = dock(tr("Parameters"), QStringLiteral("parameterDock"), editor_, Qt::LeftDockWidgetArea);
   QDockWidget* run = dock(tr("Run"), QStringLiteral("runDock"), run_panel_, Qt::BottomDockWidgetArea);
   QDockWidget* results = dock(tr("Results"), QStringLiteral("resultsDock"), summary_, Qt::BottomDockWidgetArea);
+  left_dock_ = scenarios;
   study_dock_ = dock(tr("Study"), QStringLiteral("studyDock"), study_, Qt::RightDockWidgetArea);
   study_dock_->hide();  // shown by "Sweep this parameter…" or View ▸ Study
   splitDockWidget(scenarios, parameters, Qt::Vertical);

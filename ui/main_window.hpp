@@ -137,6 +137,7 @@ class MainWindow : public QMainWindow {
   QSplitter* central_ = nullptr;
   StudyPanel* study_ = nullptr;
   QDockWidget* study_dock_ = nullptr;
+  QDockWidget* left_dock_ = nullptr;  // the scenario browser's dock (the parameter editor's column)
   quint64 next_study_case_id_ = 1'000'000'000;  // above the run controller's ids
   QLabel* validity_ = nullptr;
   QAction* run_action_ = nullptr;

@@ -8,6 +8,7 @@
 #include <qcustomplot.h>
 
 #include "plots/result_plot.hpp"
+#include "plots/viridis.hpp"
 #include "theme.hpp"
 
 namespace maris::ui {
@@ -159,7 +160,14 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
   scale->setType(QCPAxis::atRight);
   scale->axis()->setLabel(studyAxisLabel(data.result_name, data.result_unit));
   map->setColorScale(scale);
-  map->setGradient(QCPColorGradient::gpThermal);
+  // Viridis: uniform in lightness, readable in grey print, and no end colour vanishes into a light or
+  // dark background.
+  QCPColorGradient viridis;
+  viridis.clearColorStops();
+  for (std::size_t i = 0; i < kViridis.size(); ++i)
+    viridis.setColorStopAt(static_cast<double>(i) / (kViridis.size() - 1),
+                           QColor(kViridis[i][0], kViridis[i][1], kViridis[i][2]));
+  map->setGradient(viridis);
   map->setInterpolate(false);
   map->rescaleDataRange(true);
   auto* margins = new QCPMarginGroup(&plot);
