@@ -87,11 +87,11 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
   connect(browser_, &ScenarioBrowser::fileActivated, this, &MainWindow::openFile);
   connect(browser_, &ScenarioBrowser::openFileRequested, this, &MainWindow::openFileDialog);
   connect(editor_, &ParameterEditor::sweepRequested, this, [this](const QString& path) {
-    // A third of the window for the study (its plot needs room); the 3D view and plots give way.
+    // A quarter of the window for the study (its plot needs room); the 3D view and plots give way.
     if (!study_dock_->isVisible()) {
       study_dock_->show();
       // Together with the left docks' width, or the left docks alone would give the room.
-      resizeDocks({left_dock_, study_dock_}, {std::min(440, width() / 4), std::max(420, width() / 3)}, Qt::Horizontal);
+      resizeDocks({left_dock_, study_dock_}, {std::min(440, width() / 4), std::max(380, width() / 4)}, Qt::Horizontal);
     }
     study_dock_->raise();
     study_->sweep(path);

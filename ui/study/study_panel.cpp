@@ -70,6 +70,7 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   table_->verticalHeader()->hide();
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() + 3 * table_->verticalHeader()->defaultSectionSize());
+  table_->setMaximumHeight(table_->horizontalHeader()->sizeHint().height() + 6 * table_->verticalHeader()->defaultSectionSize());
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads_box_->setRange(1, std::max(64, hardware));
   threads_box_->setValue(hardware);
@@ -108,16 +109,17 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   grid->setContentsMargins(0, 0, 0, 0);
   grid->addWidget(base_, 0, 0, 1, 6);
   grid->addWidget(table_, 1, 0, 1, 6);
+  // Two short rows of buttons: the dock fits beside the left column and the central views.
   grid->addWidget(add_, 2, 0);
   grid->addWidget(remove_, 2, 1);
   grid->addWidget(file_button, 2, 2);
-  grid->addWidget(new QLabel(tr("Workers"), this), 2, 3, Qt::AlignRight);
-  grid->addWidget(threads_box_, 2, 4);
-  auto* actions = new QHBoxLayout;
-  actions->addWidget(run_);
-  actions->addWidget(cancel_);
-  actions->addWidget(summary_, 1);
-  grid->addLayout(actions, 3, 0, 1, 6);
+  grid->addWidget(run_, 3, 0);
+  grid->addWidget(cancel_, 3, 1);
+  auto* workers = new QHBoxLayout;
+  workers->addWidget(new QLabel(tr("Workers"), this));
+  workers->addWidget(threads_box_);
+  grid->addLayout(workers, 3, 2);
+  grid->addWidget(summary_, 4, 0, 1, 6);
   grid->setColumnStretch(5, 1);
   auto* split = new QSplitter(Qt::Vertical, this);
   split->addWidget(definition);
