@@ -18,6 +18,7 @@
 #include "run/run_panel.hpp"
 #include "scene_library.hpp"
 #include "start_folder.hpp"
+#include "study/study_panel.hpp"
 #include "view3d/scene_view.hpp"
 
 namespace maris::ui {
@@ -141,7 +142,7 @@ bool MainWindow::writeReport(const QString& dir) {
 }
 
 bool MainWindow::startRun() {
-  if (runs_->isRunning() || !document_->isValid()) {
+  if (runs_->isRunning() || study_->isRunning() || !document_->isValid()) {
     if (!document_->isValid()) status(tr("Fix the invalid values first (marked red in the parameter editor)."));
     return false;
   }
@@ -169,6 +170,11 @@ bool MainWindow::confirmLargeRun() {
 }
 
 void MainWindow::cancelRun() {
+  if (study_->isRunning()) {
+    study_->cancelStudy();
+    status(tr("Cancelling the study…"), 0);
+    return;
+  }
   if (!runs_->isRunning()) return;
   runs_->cancel();
   status(tr("Cancelling…"), 0);
@@ -194,6 +200,15 @@ void MainWindow::restoreShownRun() {
     plots_->clear();
     view_->clear();
   }
+}
+
+bool MainWindow::openStudyCase(int index) {
+  const std::optional<RunRecord> record = study_->caseRecord(index, next_study_case_id_++);
+  if (!record) return false;
+  showRecord(history_.add(*record, true));
+  if (!view_->isPlaying()) view_->setFrame(view_->frameCount() - 1);
+  status(tr("Showing %1").arg(record->label));
+  return true;
 }
 
 void MainWindow::onRunFinished(const RunRecord& finished) {

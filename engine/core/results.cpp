@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/csv_field.hpp"
 #include "core/input_limits.hpp"
 
 namespace maris {
@@ -18,7 +19,7 @@ const Column* Table::find(const std::string& column_name) const {
   return nullptr;
 }
 
-static void appendCsvField(std::string& out, const std::string& field) {
+void appendCsvField(std::string& out, const std::string& field) {
   if (field.find_first_of(",\"\n") == std::string::npos) {
     out += field;
     return;

@@ -10,6 +10,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QStyle>
@@ -89,6 +90,23 @@ QToolButton* ParameterEditor::resetButton(const std::string& path) const {
   return it == rows_.end() ? nullptr : it->second.reset;
 }
 
+QMenu* ParameterEditor::fieldMenu(const std::string& path, QWidget* parent) {
+  const auto it = rows_.find(path);
+  if (it == rows_.end()) return nullptr;
+  const Row& row = it->second;
+  auto* line = qobject_cast<QLineEdit*>(row.editor);
+  QMenu* menu = line ? line->createStandardContextMenu() : new QMenu;
+  menu->setParent(parent, Qt::Popup);
+  if (row.spec->kind == ParamKind::Real || row.spec->kind == ParamKind::Integer) {
+    if (!menu->isEmpty()) menu->addSeparator();
+    QAction* sweep = menu->addAction(tr("Sweep this parameter…"));
+    sweep->setObjectName(QStringLiteral("sweepAction"));
+    const QString p = QString::fromStdString(path);
+    connect(sweep, &QAction::triggered, this, [this, p] { emit sweepRequested(p); });
+  }
+  return menu;
+}
+
 void ParameterEditor::rebuild() {
   // Old editors must not commit their text (focus-out) into the new scenario while they go.
   for (auto& [path, row] : rows_) row.editor->blockSignals(true);
@@ -140,6 +158,15 @@ void ParameterEditor::rebuild() {
     row.error->setWordWrap(true);
     row.error->setStyleSheet(QString::fromLatin1(kErrorTextStyle));
     row.error->hide();
+    if (spec.kind == ParamKind::Real || spec.kind == ParamKind::Integer)
+      for (QWidget* w : {static_cast<QWidget*>(label), row.editor}) {
+        w->setContextMenuPolicy(Qt::CustomContextMenu);
+        connect(w, &QWidget::customContextMenuRequested, this, [this, w, path = spec.path](const QPoint& at) {
+          QMenu* menu = fieldMenu(path, this);
+          menu->setAttribute(Qt::WA_DeleteOnClose);
+          menu->popup(w->mapToGlobal(at));
+        });
+      }
     connect(row.reset, &QToolButton::clicked, this,
             [this, &spec] { document_->edit(spec.path, spec.default_value); });
 

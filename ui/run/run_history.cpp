@@ -25,7 +25,7 @@ void collectDifferences(const Json& before, const Json& after, const std::string
 
 }  // namespace
 
-const RunRecord& RunHistory::add(RunRecord record) {
+const RunRecord& RunHistory::add(RunRecord record, bool keep_label) {
   const RunRecord* previous = nullptr;
   for (auto it = runs_.rbegin(); it != runs_.rend(); ++it)
     if (sameScenario(it->scenario, record.scenario)) {
@@ -37,7 +37,7 @@ const RunRecord& RunHistory::add(RunRecord record) {
     const QString diff = parameterDifference(previous->scenario.parameters, record.scenario.parameters);
     if (!diff.isEmpty()) label += QStringLiteral(" (%1)").arg(diff);
   }
-  record.label = label;
+  if (!keep_label) record.label = label;
   runs_.push_back(std::move(record));
   while (runs_.size() > capacity_) runs_.pop_front();
   return runs_.back();

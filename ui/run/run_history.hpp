@@ -12,8 +12,9 @@ class RunHistory {
  public:
   explicit RunHistory(std::size_t capacity = 8) : capacity_(capacity) {}
 
-  // Adds a run, labels it and drops the oldest beyond capacity. Returns the stored record.
-  const RunRecord& add(RunRecord record);
+  // Adds a run, labels it (unless `keep_label`: a study's case comes named) and drops the oldest
+  // beyond capacity. Returns the stored record.
+  const RunRecord& add(RunRecord record, bool keep_label = false);
   const std::deque<RunRecord>& runs() const { return runs_; }
   const RunRecord* latest() const { return runs_.empty() ? nullptr : &runs_.back(); }
   const RunRecord* find(quint64 id) const;
