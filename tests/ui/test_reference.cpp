@@ -85,11 +85,11 @@ class ReferenceTest : public QObject {
       return "(accepted)";
     };
     const std::string not_number = message("x,y\nm,m\n1,2\n3,abc\n");
-    QVERIFY2(not_number.find("line 4, column 2 ('y'): 'abc' is not a number") != std::string::npos, not_number.c_str());
+    QVERIFY2(not_number.find("line 4, column 2 (y): expected a number, found \"abc\"") != std::string::npos, not_number.c_str());
     const std::string short_row = message("x,y\n1,2\n3\n");
-    QVERIFY2(short_row.find("line 3 has 1 cells") != std::string::npos, short_row.c_str());
+    QVERIFY2(short_row.find("line 3: expected 2 cells (as the first row), found 1") != std::string::npos, short_row.c_str());
     QVERIFY(message("x,y\nm,m\n").find("no rows of numbers") != std::string::npos);
-    QVERIFY(message("just one column\n1\n").find("at least two columns") != std::string::npos);
+    QVERIFY(message("just one column\n1\n").find("at least 2 are needed") != std::string::npos);
     QVERIFY(message("").find("no table") != std::string::npos);
   }
 
