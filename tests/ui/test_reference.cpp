@@ -89,7 +89,7 @@ class ReferenceTest : public QObject {
     const std::string short_row = message("x,y\n1,2\n3\n");
     QVERIFY2(short_row.find("line 3: expected 2 cells (as the first row), found 1") != std::string::npos, short_row.c_str());
     QVERIFY(message("x,y\nm,m\n").find("no rows of numbers") != std::string::npos);
-    QVERIFY(message("just one column\n1\n").find("at least 2 are needed") != std::string::npos);
+    QVERIFY(message("one_column\n1\n").find("at least 2 are needed") != std::string::npos);
     QVERIFY(message("").find("no table") != std::string::npos);
   }
 
