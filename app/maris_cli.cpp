@@ -21,6 +21,7 @@
 #include "cli_conventions.hpp"
 #include "core/errors.hpp"
 #include "core/input_limits.hpp"
+#include "core/resources.hpp"
 #include "core/run_folder.hpp"
 #include "core/run_output.hpp"
 #include "catalog.hpp"
@@ -142,7 +143,8 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
 
   Scenario scenario;
   std::string id;
-  if (std::filesystem::exists(std::filesystem::symlink_status(target))) {  // a link loop is reported by the loader
+  const bool from_file = std::filesystem::exists(std::filesystem::symlink_status(target));
+  if (from_file) {  // a link loop is reported by the loader
     scenario = loadScenarioFile(target);
     id = std::filesystem::path(target).stem().string();
   } else {
@@ -154,6 +156,10 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
   // Old field names first, so --set and the saved scenario.json use the current schema.
   for (const auto& note : upgradeParameters(scene, scenario.parameters))
     std::fprintf(stderr, "note: %s\n", note.c_str());
+  // The file's data paths are relative to its folder (scenario.json in DIR then names them absolutely);
+  // --set values are relative to the current folder, as anything typed in a shell.
+  if (from_file)
+    resolveDataPaths(scene.schema, scenario.parameters, std::filesystem::absolute(target).parent_path());
   for (const auto& o : options.overrides) applyOverride(scenario, o);
   if (out_dir.empty()) out_dir = "maris-results/" + id;
 
