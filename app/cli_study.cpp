@@ -184,6 +184,9 @@ std::optional<int> StudyCommands::dispatch(int argc, char** argv) {
     if (run_cases->parsed()) return cmdRunCases(options);
     if (collect->parsed()) return cmdCollect(options, argc, argv);
     if (submit->parsed()) return cmdSubmit(options);
+  } catch (const study::StudyFolderError& e) {
+    std::fputs(usageErrorText(command ? command : "maris-cli study", e.what()).c_str(), stderr);
+    return kExitUsage;
   } catch (const StudyFolderRefused& e) {
     std::fputs(usageErrorText(command ? command : "maris-cli study", e.what()).c_str(), stderr);
     return kExitUsage;

@@ -140,8 +140,8 @@ void prepareStudyFolder(const StudyFolder& folder, const Study& study, const std
   if (resume && std::filesystem::exists(folder.manifest())) {
     const StudyManifest earlier = readManifest(folder);
     const auto refuse = [&](const std::string& why) {
-      throw InputError("--resume", "\"" + echoText(folder.root.string()) + "\"",
-                       "holds a different study (" + why + "); use another --out, or --force to start over");
+      throw StudyFolderError("--resume: " + folder.root.string() + " holds a different study (" + why +
+                             "); use another --out, or --force to start over");
     };
     if (earlier.ids.size() != cases.size())
       refuse(std::to_string(earlier.ids.size()) + " cases there, " + std::to_string(cases.size()) + " now");

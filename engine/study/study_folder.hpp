@@ -14,6 +14,7 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,12 @@
 namespace maris::study {
 
 inline constexpr const char* kStudyRunFormat = "maris-study-run/1";
+
+// An output folder that cannot take the study (another study in it; --resume of a study that changed).
+class StudyFolderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct StudyFolder {
   std::filesystem::path root;
@@ -66,8 +73,8 @@ Json manifestJson(const Study& study, const std::vector<StudyCase>& cases, const
 StudyManifest readManifest(const StudyFolder& folder);
 
 // Writes every case's scenario and study.json into a new or emptied folder. With `resume`, DIR must hold
-// the same study: each case file is compared with the one expanded now (a changed study is refused,
-// naming the first differing case), and only missing files are written.
+// the same study: each case file is compared with the one expanded now (a changed study is refused with
+// StudyFolderError, naming the first differing case), and only missing files are written.
 void prepareStudyFolder(const StudyFolder& folder, const Study& study, const std::vector<StudyCase>& cases,
                         const std::filesystem::path& study_file, bool resume);
 

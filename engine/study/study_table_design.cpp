@@ -109,10 +109,15 @@ void readTable(const Json& table, const SceneDefinition& scene, Study& study, st
   if (kinds.size() != names.size()) return;  // unknown columns: the rows cannot be read
 
   std::size_t first = 1;
-  // A units row (as study.csv and every Maris CSV write it): no number in it, every column numeric.
-  if (lines.size() > 1 && all_numeric) {
+  // A units row (as study.csv and every Maris CSV write it): each cell the column's unit; or, when every
+  // column is a number, a row without numbers (whose units must then be the schema's).
+  if (lines.size() > 1) {
     const auto cells = splitCells(lines[1].second, separator);
-    if (std::none_of(cells.begin(), cells.end(), [](const std::string& c) { return parseNumber(c).has_value(); })) {
+    bool units_row = cells.size() == units.size();
+    for (std::size_t c = 0; c < cells.size() && units_row; ++c) units_row = unitMatches(cells[c], units[c]);
+    if (units_row || (all_numeric && std::none_of(cells.begin(), cells.end(), [](const std::string& c) {
+                        return parseNumber(c).has_value();
+                      }))) {
       first = 2;
       for (std::size_t c = 0; c < cells.size() && c < units.size(); ++c)
         if (!unitMatches(cells[c], units[c]))
