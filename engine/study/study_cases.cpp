@@ -92,7 +92,12 @@ std::vector<FieldError> caseErrors(const Study& study, const std::vector<StudyCa
   std::vector<std::size_t> bad;
   for (std::size_t c = 0; c < cases.size(); ++c) {
     auto problems = validateParameters(scene, cases[c].scenario.parameters);
-    if (problems.empty() && !allow_large) problems = workLimitErrors(estimateWork(scene, cases[c].scenario.parameters));
+    if (problems.empty() && !allow_large && scene.estimate) {
+      // estimateWork() would validate again; the parameters just passed, so ask the scene directly.
+      Json upgraded = cases[c].scenario.parameters;
+      upgradeParameters(scene, upgraded);
+      problems = workLimitErrors(scene.estimate(upgraded));
+    }
     if (problems.empty()) continue;
     bad.push_back(c);
     for (auto& e : problems) {
