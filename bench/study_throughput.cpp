@@ -2,7 +2,9 @@
 // what the per-case process costs (start, reading, writing) beside the solve; and, for a study of 10 000
 // trivial cases, the time to expand and check every case, to write the case files, to run them and to
 // collect study.csv. Wall times of a shared machine: run it on a quiet one.
-//   bench_study_throughput [--cases 200] [--trivial 10000] [--no-trivial-run] [--maris PATH] [--dir DIR]
+//   bench_study_throughput [--cases 200] [--medium 40] [--trivial 10000] [--no-trivial-run] [--maris PATH]
+//                          [--dir DIR]
+// small: riser cantilever statics (ms of solve); medium: the same with 1 s of dynamics (about 0.3 s of solve).
 // Prints one line per measurement (name, value, unit).
 #include <chrono>
 #include <cstdio>
@@ -59,9 +61,11 @@ Json readJson(const fs::path& file) {
   return Json::parse(s.str());
 }
 
-// A riser cantilever under a tip load, statics only (a few ms of solve): `count` lengths.
-std::string smallStudy(std::size_t count) {
+// A riser cantilever under a tip load at `count` lengths: statics only (a few ms of solve), or with
+// `end_time` seconds of dynamics after it (about 0.3 s of solve per simulated second).
+std::string cantileverStudy(std::size_t count, double end_time = 0.0) {
   return R"({"format": "maris-study/1", "name": "throughput", "base": "riser_cantilever_tip_load",
+    "set": {"solver.end_time": )" + std::to_string(end_time) + R"(},
     "grid": {"geometry.length": {"from": 10, "to": 30, "count": )" + std::to_string(count) + "}}}";
 }
 
@@ -82,49 +86,57 @@ void caseCosts(const fs::path& out, const char* label) {
   report(name.c_str(), 100.0 * (1.0 - solve / process), "%");
 }
 
+// Runs `study` with --jobs 1 and 2; reports wall, throughput, per-case costs and the speed-up.
+bool measureJobs(const std::string& maris, const fs::path& dir, const std::string& name, const std::string& study,
+                 std::size_t cases) {
+  { std::ofstream(dir / (name + ".json")) << study; }
+  double wall[3] = {0, 0, 0};
+  for (int jobs : {1, 2}) {
+    const fs::path out = dir / (name + std::to_string(jobs));
+    const auto t0 = Clock::now();
+    const int code = runMaris(maris, {"study", "run", (dir / (name + ".json")).string(), "--out", out.string(),
+                                      "--jobs", std::to_string(jobs), "--no-plots"});
+    wall[jobs] = since(t0);
+    if (code != 0) {
+      std::fprintf(stderr, "%s: study run --jobs %d failed (exit code %d)\n", name.c_str(), jobs, code);
+      return false;
+    }
+    const std::string label = std::to_string(cases) + " " + name + " cases, --jobs " + std::to_string(jobs);
+    report((label + ": wall").c_str(), wall[jobs], "s");
+    report((label + ": throughput").c_str(), static_cast<double>(cases) / wall[jobs], "cases/s");
+    caseCosts(out, label.c_str());
+  }
+  report((name + ": speed-up of --jobs 2 over --jobs 1").c_str(), wall[1] / wall[2], "");
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::size_t cases = 200, trivial = 10000;
+  std::size_t cases = 200, medium = 40, trivial = 10000;
   bool trivial_run = true;
   std::string maris = MARIS_CLI_PATH;
   fs::path dir = fs::temp_directory_path() / ("maris_bench_study_" + std::to_string(::getpid()));
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--cases" && i + 1 < argc) cases = std::strtoul(argv[++i], nullptr, 10);
+    else if (a == "--medium" && i + 1 < argc) medium = std::strtoul(argv[++i], nullptr, 10);
     else if (a == "--trivial" && i + 1 < argc) trivial = std::strtoul(argv[++i], nullptr, 10);
     else if (a == "--no-trivial-run") trivial_run = false;
     else if (a == "--maris" && i + 1 < argc) maris = argv[++i];
     else if (a == "--dir" && i + 1 < argc) dir = argv[++i];
     else {
-      std::fprintf(stderr, "usage: %s [--cases N] [--trivial N] [--no-trivial-run] [--maris PATH] [--dir DIR]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--cases N] [--medium N] [--trivial N] [--no-trivial-run] [--maris PATH] [--dir DIR]\n", argv[0]);
       return 1;
     }
   }
   fs::remove_all(dir);
   fs::create_directories(dir);
-  { std::ofstream(dir / "small.json") << smallStudy(cases); }
-
-  double wall[3] = {0, 0, 0};
-  for (int jobs : {1, 2}) {
-    const fs::path out = dir / ("jobs" + std::to_string(jobs));
-    const auto t0 = Clock::now();
-    const int code = runMaris(maris, {"study", "run", (dir / "small.json").string(), "--out", out.string(), "--jobs",
-                                      std::to_string(jobs), "--no-plots"});
-    wall[jobs] = since(t0);
-    if (code != 0) {
-      std::fprintf(stderr, "study run --jobs %d failed (exit code %d)\n", jobs, code);
-      return 1;
-    }
-    const std::string label = std::to_string(cases) + " cases, --jobs " + std::to_string(jobs);
-    report((label + ": wall").c_str(), wall[jobs], "s");
-    report((label + ": throughput").c_str(), static_cast<double>(cases) / wall[jobs], "cases/s");
-    caseCosts(out, label.c_str());
-  }
-  report("speed-up of --jobs 2 over --jobs 1", wall[1] / wall[2], "");
+  if (!measureJobs(maris, dir, "small", cantileverStudy(cases), cases)) return 1;
+  if (medium > 0 && !measureJobs(maris, dir, "medium", cantileverStudy(medium, 1.0), medium)) return 1;
 
   // 10 000 trivial cases: the same cantilever, so each case is one short process.
-  { std::ofstream(dir / "trivial.json") << smallStudy(trivial); }
+  { std::ofstream(dir / "trivial.json") << cantileverStudy(trivial); }
   auto t0 = Clock::now();
   const maris::study::Study study = maris::study::loadStudyFile(dir / "trivial.json");
   const auto expanded = maris::study::expandStudy(study);

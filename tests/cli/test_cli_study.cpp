@@ -293,5 +293,23 @@ TEST_F(CliStudy, FailedAndTimedOutCasesAreRecordedAndTheStudyGoesOn) {
   EXPECT_TRUE(contains(resume.err, "case 0002 differs")) << resume.err;
 }
 
+// The examples in resources/studies are valid wherever they are checked from (their table and base resolve
+// against their folder); the riser grid runs and draws a heat map per result.
+TEST_F(CliStudy, TheExampleStudiesAreValidAndTheGridRuns) {
+  const fs::path examples = fs::path(MARIS_SOURCE_DIR) / "resources" / "studies";
+  std::vector<std::string> args = {"validate"};
+  for (const auto& e : fs::directory_iterator(examples))
+    if (e.path().extension() == ".json") args.push_back(e.path().string());
+  ASSERT_GE(args.size(), 4u);
+  const auto r = runCli(args, "/");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto run = runCli({"study", "run", (examples / "riser_cantilever_grid.json").string(), "--out", "grid", "--jobs", "2"},
+                          dir_.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(contains(run.out, "20 cases: 20 ok")) << run.out;
+  for (const char* plot : {"tip_deflection_map.png", "max_bending_stress_map.png", "first_natural_frequency_map.png"})
+    EXPECT_TRUE(fs::exists(dir_ / "grid" / "plots" / plot)) << plot;
+}
+
 }  // namespace
 }  // namespace maris
