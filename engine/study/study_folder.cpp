@@ -155,12 +155,13 @@ void prepareStudyFolder(const StudyFolder& folder, const Study& study, const std
     manifest["prepared_at"] = earlier.json.value("prepared_at", manifest["prepared_at"]);
     manifest["runs"] = earlier.json.value("runs", Json::array());
   }
+  // study.json first: a folder whose preparation was interrupted is a study that --resume completes.
+  writeFileAtomic(folder.manifest(), manifest.dump(1) + "\n");
   for (const auto& c : cases) {
     std::error_code error;
     if (resume && std::filesystem::exists(folder.caseScenario(c.id), error)) continue;
     saveScenarioFile(c.scenario, folder.caseScenario(c.id));
   }
-  writeFileAtomic(folder.manifest(), manifest.dump(1) + "\n");
 }
 
 std::string failureMessage(const std::string& log, std::size_t max_chars) {
