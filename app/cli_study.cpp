@@ -169,6 +169,15 @@ void StudyCommands::add(CLI::App& app) {
 
   submit = study->add_subcommand("submit", "write the case files and an sbatch job array into DIR and submit it");
   addSubmitOptions(*submit, o);
+  const std::string codes =
+      "Exit codes:\n"
+      "  0    every case succeeded (submit: the jobs were submitted)\n"
+      "  1    usage error, or an output folder refused (another study in it, a changed study with --resume)\n"
+      "  2    invalid study: every bad case is named, nothing was run\n"
+      "  3    some case failed, timed out or was not run (the others are complete)\n"
+      "  130  cancelled by SIGINT (Ctrl-C); complete cases are kept, --resume finishes the study\n"
+      "  143  cancelled by SIGTERM; the same\n";
+  for (CLI::App* command : {study, run, run_cases, collect, submit}) command->footer(codes);
 }
 
 std::optional<int> StudyCommands::dispatch(int argc, char** argv) {
