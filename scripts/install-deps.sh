@@ -9,6 +9,7 @@ packages=(
   xvfb xauth
   file lintian appstream desktop-file-utils
   python3
+  slurm-wlm munge
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -7,12 +7,16 @@
 
 #include <chrono>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/results.hpp"
 #include "core/scenario.hpp"
 
 namespace maris {
+
+// "2026-11-28T11:12:08Z": ISO 8601, UTC, whole seconds (started_at in summary.json, a study's timings).
+std::string isoUtc(std::chrono::system_clock::time_point t);
 
 // Returns the files written, in order. `started_at`: when the run started (the caller took the time
 // just before runScenario).

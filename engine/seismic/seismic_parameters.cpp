@@ -45,7 +45,7 @@ SchemaBinder<SeismicParameters> seismicBinder() {
          "Ricker peak frequency");
   b.real("input.amplitude", &P::input_amplitude, "m", Range::positive(10.0),
          "Peak incident displacement (pulse, Ricker)");
-  b.text("input.accelerogram_file", &P::accelerogram_file, "CSV or whitespace-separated file: time [s], acceleration [m/s^2]; or a PEER .AT2 record (in g, converted with g = 9.80665 m/s^2); builtin:synthetic_kanai_tajimi.csv for the shipped synthetic record");
+  b.dataPath("input.accelerogram_file", &P::accelerogram_file, "CSV or whitespace-separated file: time [s], acceleration [m/s^2]; or a PEER .AT2 record (in g, converted with g = 9.80665 m/s^2); builtin:synthetic_kanai_tajimi.csv for the shipped synthetic record");
   b.real("input.accelerogram_peak_acceleration", &P::accelerogram_peak_acceleration, "m/s^2", Range::positive(50.0),
          "Peak acceleration the record is scaled to");
   b.real("seabed.density", &P::seabed_density, "kg/m^3", Range::closed(500.0, 5000.0), "Seabed density");

@@ -42,7 +42,7 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
          "Parametric hull: waterline exponent p, Y ∝ 1 − |2ξ/L|^p");
   b.real("hull.section_exponent", &P::section_exponent, "-", Range::closed(1, 20),
          "Parametric hull: section exponent q, Y ∝ 1 − |z/T|^q");
-  b.text("hull.offsets_file", &P::offsets_file, "Offsets CSV (x_m,z_m,half_breadth_m) when hull.source = offsets_file");
+  b.dataPath("hull.offsets_file", &P::offsets_file, "Offsets CSV (x_m,z_m,half_breadth_m) when hull.source = offsets_file");
   b.real("hull.offsets_length_pp", &P::offsets_length_pp, "m", Range::positive(1000),
          "Lpp of the offsets file as written (the table is scaled to hull.length)");
   b.real("hull.wetted_surface", &P::wetted_surface, "m^2", Range::nonNegative(1e6),
@@ -91,9 +91,9 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
   b.real("numerics.relative_tolerance", &P::relative_tolerance, "-", Range::closed(1e-10, 0.1),
          "Relative tolerance of the wave-angle quadrature and tail, per speed");
   b.integer("numerics.threads", &P::threads, "-", Range::closed(0, 256), "Threads for the speed sweep (0 = all cores)");
-  b.text("measured.file", &P::measured_file,
-         "Optional CSV of measured points: columns froude, c_total; builtin:NAME for a data set shipped in "
-         "resources/data/ship (e.g. builtin:kcs_tokyo2015_case21_efd.csv)");
+  b.dataPath("measured.file", &P::measured_file,
+             "Optional CSV of measured points: columns froude, c_total; builtin:NAME for a data set shipped in "
+             "resources/data/ship (e.g. builtin:kcs_tokyo2015_case21_efd.csv)");
   return b;
 }
 

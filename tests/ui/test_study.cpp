@@ -278,6 +278,39 @@ class StudyTest : public QObject {
     }
   }
 
+  // A load-case table (one column per parameter path, one row per case) over the open scenario runs
+  // its rows; each case's volume is pi r^2 L of its own row (closed form), and study.csv lists them.
+  void aLoadCaseTableRunsItsRows() {
+    QTemporaryDir dir;
+    const QString table = dir.filePath(QStringLiteral("cases.csv"));
+    QFile file(table);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.length,geometry.radius\n120,0.3\n80,0.2\n150,0.5\n");
+    file.close();
+    QVERIFY2(panel()->openCaseTable(table), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().kindName(), QStringLiteral("table"));
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    const StudyPlotData data = panel()->session().plotData("rod_volume");
+    QCOMPARE(data.caseCount(), std::size_t(3));
+    const double rows[3][2] = {{120, 0.3}, {80, 0.2}, {150, 0.5}};
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double expected = kPi * rows[c][1] * rows[c][1] * rows[c][0];
+      QVERIFY(std::abs(data.result[c] - expected) <= 1e-12 * expected);
+    }
+    const QString csv = dir.filePath(QStringLiteral("study.csv"));
+    QVERIFY(panel()->exportCsv(csv));
+    const auto lines = test::readCsv(csv);
+    QCOMPARE(lines.size(), std::size_t(5));  // names, units, three cases
+    QCOMPARE(lines[4][1], std::string("ok"));
+    // A bad table is refused with the field named.
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.lenght\n120\n");
+    file.close();
+    QVERIFY(!panel()->openCaseTable(table));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("geometry.lenght")), qPrintable(panel()->lastError()));
+  }
+
   void aStudyWithABadCaseRunsNothing() {
     // The radius must stay below half the length: with r = 5 m the case L = 5 m is refused by the
     // scene's cross-field check (at geometry.radius), the others are valid.

@@ -228,6 +228,14 @@ bool fillStudyPlot(QCustomPlot& plot, const StudyPlotData& data, int x, StudyPlo
   return ok;
 }
 
+bool saveStudyPlotImage(const StudyPlotData& data, int x, StudyPlotKind kind, const QString& file, int width_px,
+                        int height_px) {
+  QCustomPlot plot;
+  plot.resize(width_px, height_px);
+  if (!fillStudyPlot(plot, data, x, kind)) return false;
+  return savePlotWidget(plot, file, width_px, height_px);
+}
+
 int studyCaseAt(QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pixel, double radius_px) {
   if (drawn.kind == StudyPlotKind::HeatMap) {
     if (drawn.cell_case.empty() || plot.plottableCount() == 0) return -1;

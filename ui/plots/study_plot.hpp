@@ -59,6 +59,11 @@ bool isFullGrid(const StudyPlotData& data, int a, int b);
 bool fillStudyPlot(QCustomPlot& plot, const StudyPlotData& data, int x, StudyPlotKind kind,
                    DrawnStudyPlot* drawn = nullptr);
 
+// Draws as fillStudyPlot does and writes the picture to a PNG/PDF/SVG file (by suffix), atomically: the
+// plots of `maris-cli study run` and `study collect`. False when nothing could be drawn or written.
+bool saveStudyPlotImage(const StudyPlotData& data, int x, StudyPlotKind kind, const QString& file, int width_px,
+                        int height_px);
+
 // The case whose point (or heat-map cell) is under the widget pixel `pixel` (within `radius_px` for
 // points), or -1.
 int studyCaseAt(QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pixel, double radius_px = 8.0);

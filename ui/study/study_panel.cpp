@@ -101,6 +101,11 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   });
   file_menu->addSeparator();
   file_menu->addAction(tr("New study from the open scenario"), this, [this] { clearParameters(); });
+  file_menu->addAction(tr("New load-case table study (CSV)…"), this, [this] {
+    const QString f = askFile(this, false, tr("Load-case table"), QStringLiteral("studyFolder"), {},
+                              tr("CSV: one column per parameter path, one row per case (*.csv)"));
+    if (!f.isEmpty()) openCaseTable(f);
+  });
   auto* file_button = new QPushButton(tr("Study"), this);
   file_button->setMenu(file_menu);
 
@@ -361,6 +366,31 @@ bool StudyPanel::openStudy(const QString& file) {
   return true;
 }
 
+bool StudyPanel::openCaseTable(const QString& file) {
+  if (runner_->isRunning()) return false;
+  if (!document_->isValid()) {
+    fail(tr("Open a valid scenario first: the load cases vary it."));
+    return false;
+  }
+  StudySession table;
+  try {
+    table.defineTable(*document_->scene(), document_->scenario(), file);
+  } catch (const InputError& e) {
+    fail(tr("Could not read the case table %1:\n%2").arg(file, QString::fromStdString(describeErrors(e.errors()))));
+    return false;
+  } catch (const std::exception& e) {
+    fail(tr("Could not read the case table %1: %2").arg(file, QString::fromUtf8(e.what())));
+    return false;
+  }
+  session_ = std::move(table);
+  grid_.clear();
+  from_file_ = true;
+  plot_view_->refresh();
+  rebuildTable();
+  emit message(tr("Load-case table %1: run the study to run its cases").arg(file));
+  return true;
+}
+
 void StudyPanel::addParameterDialog() {
   const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
   if (!scene) return;
@@ -382,8 +412,14 @@ void StudyPanel::rebuildTable() {
   const QSignalBlocker block(table_);
   const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
   if (from_file_ && session_.isDefined())
-    base_->setText(tr("Base: <b>%1</b> (from the study file; a %2 study)")
-                       .arg(QString::fromStdString(session_.base().name).toHtmlEscaped(), session_.kindName()));
+  {
+    QStringList varied;
+    if (grid_.empty())
+      for (const std::string& path : session_.parameterPaths()) varied << QString::fromStdString(path).toHtmlEscaped();
+    base_->setText(tr("Base: <b>%1</b> (a %2 study%3)")
+                       .arg(QString::fromStdString(session_.base().name).toHtmlEscaped(), session_.kindName(),
+                            varied.isEmpty() ? QString() : tr(" of %1").arg(varied.join(QStringLiteral(", ")))));
+  }
   else if (scene)
     base_->setText(tr("Base: the open scenario, <b>%1</b>").arg(QString::fromStdString(document_->scenario().name).toHtmlEscaped()));
   else

@@ -53,6 +53,9 @@ class StudyPanel : public QWidget {
   bool exportCsv(const QString& file);
   bool exportPlot(const QString& file);
   bool saveStudy(const QString& file);
+  // A load-case table study over the open scenario (one case per row of the CSV file); false, with the
+  // reason logged, when the table or a case is bad.
+  bool openCaseTable(const QString& file);
   bool openStudy(const QString& file);
 
   // A finished case as a run record for the results view ("study case 0003 (length = 120 m)").

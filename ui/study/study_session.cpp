@@ -21,12 +21,16 @@ QString StudySession::caseId(int index) const { return QString::fromStdString(im
 QString StudySession::caseLabel(int index) const {
   QStringList parts;
   const auto& c = impl_->cases.at(index);
-  for (std::size_t p = 0; p < impl_->parameters.size() && p < c.values.size(); ++p) {
-    const auto& param = impl_->parameters[p];
-    std::string name = param.name.substr(param.name.rfind('.') == std::string::npos ? 0 : param.name.rfind('.') + 1);
+  const auto& parameters = impl_->study.parameters;
+  for (std::size_t p = 0; p < parameters.size() && p < c.values.size(); ++p) {
+    const auto& param = parameters[p];
+    std::string name = param.path.substr(param.path.rfind('.') == std::string::npos ? 0 : param.path.rfind('.') + 1);
     std::replace(name.begin(), name.end(), '_', ' ');
-    QString value = QString::number(c.values[p], 'g', 6);
-    if (!param.unit.empty() && param.unit != "-") value += QStringLiteral(" ") + QString::fromStdString(param.unit);
+    QString value = c.values[p].is_number() ? QString::number(c.values[p].get<double>(), 'g', 6)
+                    : c.values[p].is_string() ? QString::fromStdString(c.values[p].get<std::string>())
+                                              : QString::fromStdString(c.values[p].dump());
+    if (c.values[p].is_number() && !param.unit.empty() && param.unit != "-")
+      value += QStringLiteral(" ") + QString::fromStdString(param.unit);
     parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(name), value);
   }
   return parts.join(QStringLiteral(", "));
@@ -64,12 +68,15 @@ StudyPlotData StudySession::plotData(const std::string& result) const {
   if (!impl_) return data;
   data.result_name = result;
   data.title = base_.name + " — study of " + std::to_string(impl_->cases.size()) + " cases";
-  for (std::size_t p = 0; p < impl_->parameters.size(); ++p) {
+  const auto& parameters = impl_->study.parameters;
+  for (std::size_t p = 0; p < parameters.size(); ++p) {
+    if (parameters[p].kind != ParamKind::Real && parameters[p].kind != ParamKind::Integer) continue;  // not on an axis
     StudyParameterData param;
-    param.name = impl_->parameters[p].name;
-    param.unit = impl_->parameters[p].unit;
-    param.log = impl_->parameters[p].log;
-    for (const auto& c : impl_->cases) param.values.push_back(p < c.values.size() ? c.values[p] : std::nan(""));
+    param.name = parameters[p].path;
+    param.unit = parameters[p].unit;
+    param.log = p < impl_->log.size() && impl_->log[p];
+    for (const auto& c : impl_->cases)
+      param.values.push_back(p < c.values.size() && c.values[p].is_number() ? c.values[p].get<double>() : std::nan(""));
     data.parameters.push_back(std::move(param));
   }
   for (const CaseOutcome& o : outcomes_) {

@@ -31,6 +31,9 @@ class StudySession {
 
   // A grid study over `base` (kept inline in the study file). Clears cases and outcomes.
   void define(const SceneDefinition& scene, const Scenario& base, std::vector<SweepRange> grid);
+  // A load-case table study over `base`: one case per data row of `csv_file` (a column per parameter
+  // path; a units row may follow the names). Throws InputError naming every problem of the table.
+  void defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file);
   // Reads a study file (grid, table or Latin hypercube); its base scenario's scene must be in
   // `library`. Throws InputError (every problem) or std::runtime_error.
   void load(const QString& file, const SceneLibrary& library);
@@ -42,6 +45,8 @@ class StudySession {
   const Scenario& base() const { return base_; }
   // The varied parameters of a grid study (empty for a table or sample loaded from a file).
   const std::vector<SweepRange>& grid() const { return grid_; }
+  // The varied parameters' paths, whatever the design.
+  std::vector<std::string> parameterPaths() const;
   // "grid", "table" or "latin hypercube".
   QString kindName() const;
 

@@ -1,21 +1,16 @@
-// StudySession's engine side: the study definition and its expanded cases (engine/study/), plus
-// the varied parameters' names, units and spacing for plots.
+// StudySession's engine side: the engine's study (engine/study/study.hpp) and its expanded cases, plus
+// the varied parameters' spacing for plots.
 #pragma once
 
-#include "study/minimal_study.hpp"
+#include "study/study.hpp"
 #include "study/study_session.hpp"
 
 namespace maris::ui {
 
 struct StudySession::Impl {
-  struct Parameter {
-    std::string name;
-    std::string unit;
-    bool log = false;
-  };
-  study::StudyDefinition definition;
+  study::Study study;
   std::vector<study::StudyCase> cases;
-  std::vector<Parameter> parameters;
+  std::vector<bool> log;  // per study.parameters: varied on a log scale
 };
 
 }  // namespace maris::ui
