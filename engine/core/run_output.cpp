@@ -22,7 +22,7 @@ std::vector<std::filesystem::path> writeRunFolder(const std::filesystem::path& d
   std::vector<std::filesystem::path> written;
   auto put = [&](const std::string& name, const std::string& content) {
     const auto file = dir / name;
-    writeFileAtomic(file, content);
+    writeStagedFile(file, content);
     written.push_back(file);
   };
   put("scenario.json", scenarioToText(scenario));

@@ -159,6 +159,7 @@ std::map<std::string, std::pair<ino_t, std::string>> completeCases(const fs::pat
   if (!fs::exists(cases)) return complete;
   for (const auto& e : fs::directory_iterator(cases)) {
     struct stat st {};
+    if (e.path().filename().string().front() == '.') continue;  // a run's staging folder, not a case folder
     if (e.is_directory() && ::stat((e.path() / "summary.json").c_str(), &st) == 0)
       complete[e.path().filename().string()] = {st.st_ino, Json::parse(slurp(e.path() / "summary.json"))["started_at"]};
   }
