@@ -16,7 +16,7 @@ namespace {
 
 std::string valueCell(const Json& value) {
   if (value.is_string()) return value.get<std::string>();
-  if (value.is_number_float()) return numberCell(value.get<double>());
+  if (value.is_number_float()) return csvNumber(value.get<double>());
   return value.dump();  // integers, booleans, lists
 }
 
@@ -36,12 +36,6 @@ CaseScalars readScalars(const std::filesystem::path& summary) {
 }
 
 }  // namespace
-
-std::string numberCell(double value) {
-  char text[64];
-  const auto result = std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
-  return std::string(text, result.ptr);
-}
 
 std::size_t CollectedStudy::count(CaseStatus status) const {
   return static_cast<std::size_t>(
@@ -122,7 +116,7 @@ std::string studyCsv(const CollectedStudy& collected) {
     for (const auto& v : c.values) appendCsvField(out += ',', valueCell(v));
     for (const auto& r : c.results) {
       out += ',';
-      if (r) out += numberCell(*r);
+      if (r) out += csvNumber(*r);
     }
     out += '\n';
   }

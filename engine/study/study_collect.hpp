@@ -64,7 +64,5 @@ std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyMa
 // True when the study varies parameter `path` on a log scale (a grid's or a sample's "spacing": "log").
 bool logSpaced(const StudyManifest& manifest, const std::string& path);
 
-// A number cell as every Maris CSV writes it: 17 significant digits, independent of the locale.
-std::string numberCell(double value);
 
 }  // namespace maris::study
