@@ -12,11 +12,31 @@ jobs="$(nproc)"
 start=$(date +%s)
 phase_start=$start
 timings=()
+# CPU seconds (user + system) of every command this script has waited for: on a shared machine the wall time
+# of a phase depends on the other load, its CPU time hardly; CPU / cores estimates a quiet machine's wall time.
+times_file=$(mktemp)
+trap 'rm -f "$times_file"' EXIT
+cpu_now() {  # sets cpu_seconds; `times` must run in this shell, not in a $(...) subshell
+  local user sys
+  times > "$times_file"
+  read -r user sys < <(tail -n 1 "$times_file")
+  cpu_seconds=$(( $(minutes_seconds "$user") + $(minutes_seconds "$sys") ))
+}
+minutes_seconds() {  # "1m2.345s" -> 62
+  local t=$1 seconds
+  seconds=${t#*m}
+  seconds=${seconds%s}
+  echo $(( ${t%%m*} * 60 + 10#${seconds%.*} ))
+}
+cpu_now
+phase_cpu=$cpu_seconds
 phase_done() {
   local now
   now=$(date +%s)
-  timings+=("$1: $(( now - phase_start )) s")
+  cpu_now
+  timings+=("$1: $(( now - phase_start )) s (CPU $(( cpu_seconds - phase_cpu )) s)")
   phase_start=$now
+  phase_cpu=$cpu_seconds
 }
 
 echo "== Release build"
@@ -48,4 +68,5 @@ phase_done "ASan + UBSan tests"
 
 echo "== phase times"
 printf '   %s\n' "${timings[@]}"
-echo "== all tests passed in $(( $(date +%s) - start )) s"
+cpu_now
+echo "== all tests passed in $(( $(date +%s) - start )) s (CPU $cpu_seconds s on $jobs cores)"
