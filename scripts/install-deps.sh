@@ -5,6 +5,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   qt6-base-dev libqt6opengl6-dev libqt6svg6-dev qt6-qpa-plugins
   libvtk9-dev libeigen3-dev libfftw3-dev libqcustomplot-dev nlohmann-json3-dev libcli11-dev
+  libspectra-dev
   libgtest-dev
   xvfb xauth
   file lintian appstream desktop-file-utils

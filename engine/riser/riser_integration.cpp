@@ -278,7 +278,7 @@ SolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const 
   if (p.end_time <= 0) {
     stats.method = "no time integration (solver.end_time = 0): the initial shape" +
                    std::string(p.solve_statics ? " (static equilibrium)" : "") +
-                   std::string(p.solve_statics && p.modes ? " and, for n ≤ 199, its natural frequencies" : "");
+                   std::string(p.solve_statics && p.modes ? " and its natural frequencies" : "");
     return stats;
   }
   stats.method = methodName(m, plan, p);

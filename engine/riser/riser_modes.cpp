@@ -364,6 +364,26 @@ RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, 
   return out;
 }
 
+RiserModel modesModel(const RiserModel& model, Formulation linearisation) { return undampedModel(model, linearisation); }
+
+void appendAbsoluteMode(const RiserModel& m, const StaticSolution& statics, double omega, const Eigen::VectorXd& v,
+                        RiserModes& out) {
+  assert(m.formulation == Formulation::Absolute);
+  const Coordinates q = makeCoordinates(m, statics);
+  assert(v.size() == q.size());
+  RiserPose pose;
+  pose.resize(m.segmentCount());
+  poseFromState(m, 0.0, restState(m, statics.orientation, statics.top), pose);
+  std::vector<Vec3> shape;
+  std::vector<double> twist;
+  double share = 0;
+  modeShape(m, pose, q, v, shape, twist, share);
+  out.frequencies.push_back(omega);
+  out.shapes.push_back(std::move(shape));
+  out.twists.push_back(std::move(twist));
+  out.torsion_share.push_back(share);
+}
+
 void appendModeFrames(const RiserModel& model, const StaticSolution& statics, const RiserModes& modes,
                       int frames_per_mode, View3D& view) {
   RiserPose pose;

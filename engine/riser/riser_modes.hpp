@@ -56,6 +56,16 @@ struct RiserModes {
 RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, int count,
                         Formulation linearisation = Formulation::Joint);
 
+// The model the modes are computed for: no dampers, no top motion, no timed loads; `linearisation` its coordinates.
+RiserModel modesModel(const RiserModel& model, Formulation linearisation);
+
+// Appends the mode of frequency ω [rad/s] with eigenvector v to out (shape, twist, torsion share as computeModes).
+// m is modesModel(…, Absolute); v in its coordinates: the three position components of every dynamic segment's
+// origin divided by Δ (segment by segment), then every segment's rotation increments [rad] (about the three global
+// axes with torsion, else about its two transverse axes at equilibrium). Used by the Krylov solver (riser_modes_krylov).
+void appendAbsoluteMode(const RiserModel& m, const StaticSolution& statics, double omega, const Eigen::VectorXd& v,
+                        RiserModes& out);
+
 // Order of computeModes' dense eigenproblem (joint linearisation): 3 coordinates per dynamic segment (2 without
 // torsion), doubled with internal flow (the state-space problem). Cannot be cancelled once started.
 int modesEigenOrder(const RiserModel& model);

@@ -145,7 +145,8 @@ SchemaBinder<P> makeBinder() {
          "Relative local error tolerance of dopri5; the implicit Newton iteration converges to 1e-3 of it, or of "
          "the step's expected error if that is larger (within 1e-10 and 1e-6)");
   b.boolean("output.modes", &P::modes,
-            "Natural frequencies, mode shapes and the divergence flow speed about the static state (n <= 199)");
+            "Natural frequencies, mode shapes and the divergence flow speed about the static state (dense solve up to "
+            "n = 199, shift-invert Krylov above; with internal flow only up to n = 199)");
   b.integer("output.frame_count", &P::frame_count, "-", Range::closed(1, 10000), "Stored frames");
   b.table("output.probes", &P::probes, probeBinder(), 1, 20,
           "Probe points (arc length from the top) whose displacement and stress histories are recorded");

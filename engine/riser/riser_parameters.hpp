@@ -147,7 +147,7 @@ struct RiserParameters {
   std::string integrator = "auto";  // "auto", "rk4", "dopri5", "implicit" (see docs/riser.md)
   double tolerance = 1e-6;  // [-] relative local error tolerance (dopri5, implicit Newton, auto's choice)
   // output
-  bool modes = true;               // natural frequencies and modes about the static state (n <= 199)
+  bool modes = true;               // natural frequencies and modes about the static state (riser_modes_krylov.hpp)
   int frame_count = 60;            // [-] View3D frames and position snapshots
   std::vector<ProbeRow> probes = {{50.0}, {25.0}, {75.0}};  // recorded points: L/2 (the probe_* columns), L/4, 3L/4
   std::vector<double> stress_times = {12.0, 24.0};  // [s] times for the stress-along-the-riser table

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <string>
 
-#include "core/abandonable.hpp"
 #include "core/scene.hpp"
 #include "riser/riser_envelope.hpp"
 #include "riser/riser_frequency_sweep.hpp"
 #include "riser/riser_integration.hpp"
+#include "riser/riser_modes_krylov.hpp"
 #include "riser/riser_plausibility.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
@@ -36,12 +36,13 @@ Results simulateRiser(const RiserModel& m, const RiserParameters& p, const Stati
 Results solveRiser(const RiserParameters& p, RunContext& context) {
   const RiserModel model = buildRiserModel(p);
   const StaticSolution statics = initialShape(model, p, context);
-  // Natural frequencies about the static state (dense eigenproblem: only for moderate sizes).
+  // Natural frequencies about the static state: dense up to n = 199, shift-invert Krylov above (riser_modes_krylov).
   RiserModes modes;
-  if (p.modes && p.solve_statics && 3 * (model.n + 1) <= 600) {
+  std::string modes_method;
+  if (p.modes && p.solve_statics) {
     context.progress(0.0, "natural frequencies");
-    // Eigen's dense solve cannot be interrupted: a cancelled run leaves it to finish on its own.
-    modes = runAbandonable(context, [model, statics] { return computeModes(model, statics, 6); });
+    modes = naturalModes(model, statics, 6, context, &modes_method);
+    if (modesMethod(model) == ModesMethod::None) context.warn("natural frequencies " + modes_method);
     if (modes.slowly_growing_count > 0)
       context.warn(slowGrowthNote(modes.slowly_growing_count, modes.largest_growth_rate, modes.largest_growth_per_radian));
     if (modes.unstable_count > 0)
@@ -51,6 +52,7 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   }
   Results results = simulateRiser(model, p, statics, modes, context);
   if (!p.modes) results.stats.method += "; natural frequencies and modes not computed (output.modes = false)";
+  if (!modes_method.empty()) results.stats.method += "; natural frequencies: " + modes_method;
   for (std::string& w : accuracyWarnings(results)) context.warn(std::move(w));
   addEnvelope(model, results);
   addFrequencySweeps(p, results, context);  // paper Sect. 8.2 tables (no-op without sweep lists)

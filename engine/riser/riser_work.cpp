@@ -3,6 +3,7 @@
 
 #include "riser/riser_integration.hpp"
 #include "riser/riser_model.hpp"
+#include "riser/riser_modes_krylov.hpp"
 #include "riser/riser_scene.hpp"
 
 namespace maris::riser {
@@ -46,7 +47,8 @@ WorkEstimate estimateRiserWork(const RiserParameters& p) {
 
   // The largest uninterruptible stretch: one dense eigen solve (natural frequencies, frequency sweep rows).
   double seconds = 0;
-  if (p.solve_statics && 3 * (model.n + 1) <= 600) seconds = modesSolveSeconds(model);
+  const bool dense_modes = p.solve_statics && p.modes && modesMethod(model) == ModesMethod::Dense;
+  if (dense_modes) seconds = modesSolveSeconds(model);  // the Krylov solver above n = 199 stops between iterations
   if (!p.sweep_pretension_ratios.empty()) seconds = std::max(seconds, modesSolveSeconds(model));
   for (double n : p.sweep_segment_counts)
     seconds = std::max(seconds, modesSolveSeconds(buildRiserModel(withSegments(p, n))));
@@ -56,7 +58,7 @@ WorkEstimate estimateRiserWork(const RiserParameters& p) {
   const double frame_values = (p.frame_count + p.stress_times.size()) * segments * kValuesPerFramePoint;
   w.samples = {frame_values + kHistoryRows * kHistoryColumns * std::max<std::size_t>(1, p.probes.size()),
                {"output.frame_count", "geometry.segment_count"}};
-  const double order = modesEigenOrder(model);
+  const double order = dense_modes || !p.sweep_pretension_ratios.empty() ? modesEigenOrder(model) : 0.0;
   w.memory_bytes = {8.0 * w.samples.value + 48.0 * order * order, {"output.frame_count", "geometry.segment_count"}};
   w.output_bytes = csvOutputBytes(w.samples.value, 8);
   return w;
