@@ -7,6 +7,7 @@
 #include "core/scene.hpp"
 #include "fiv/fiv_calibration.hpp"
 #include "fiv/fiv_parameters.hpp"
+#include "fiv/fiv_plausibility.hpp"
 #include "fiv/fiv_results.hpp"
 #include "fiv/fiv_sweep.hpp"
 #include "fiv/fiv_theory.hpp"
@@ -148,6 +149,7 @@ SceneDefinition makeFivScene() {
       "reference points and post-processing of imported records.",
       fiv::fivBinder(), fiv::checkFivParameters, fiv::solveFiv);
   setWorkEstimate<fiv::FivParameters>(scene, fiv::fivBinder(), fiv::estimateFivWork);
+  setPlausibility<fiv::FivParameters>(scene, fiv::fivBinder(), fiv::fivPlausibility);
   return scene;
 }
 
