@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,18 @@ inline const FieldError* warningAt(const std::vector<FieldError>& warnings, cons
   for (const auto& w : warnings)
     if (w.path == path) return &w;
   return nullptr;
+}
+
+// Every built-in scenario of `scene` raises none, except those listed (which warn on purpose).
+inline void expectBuiltinsRaiseNone(const std::string& scene, const std::vector<std::string>& except = {}) {
+  int checked = 0;
+  for (const auto& b : builtinScenarios()) {
+    if (b.scenario.scene != scene || std::find(except.begin(), except.end(), b.id) != except.end()) continue;
+    const auto w = plausibilityOf(b.id, {});
+    EXPECT_TRUE(w.empty()) << b.id << ":\n" << describeErrors(w);
+    ++checked;
+  }
+  EXPECT_GT(checked, 0) << scene;
 }
 
 // Exactly one warning, at `path` (relative to "parameters."), whose message contains `words`.

@@ -11,11 +11,7 @@ using testing::plausibilityOf;
 using testing::warningAt;
 
 TEST(TetherPlausibility, TheBuiltInScenariosRaiseNone) {
-  for (const auto& b : builtinScenarios()) {
-    if (b.scenario.scene != "tether") continue;
-    const auto w = plausibilityOf(b.id, {});
-    EXPECT_TRUE(w.empty()) << b.id << ":\n" << describeErrors(w);
-  }
+  testing::expectBuiltinsRaiseNone("tether");
 }
 
 TEST(TetherPlausibility, ALeaderAboveTheSurface) {

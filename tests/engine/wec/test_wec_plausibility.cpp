@@ -12,8 +12,7 @@ using testing::expectOnlyWarning;
 using testing::plausibilityOf;
 
 TEST(WecPlausibility, TheBuiltInFloatsRaiseNone) {
-  for (const char* id : {"wec_default", "wec_two_floats", "wec_irregular"})
-    EXPECT_TRUE(plausibilityOf(id, {}).empty()) << id << ":\n" << describeErrors(plausibilityOf(id, {}));
+  testing::expectBuiltinsRaiseNone("wec");
 }
 
 TEST(WecPlausibility, AFloatDeeperThanTheWaterReachesTheSeaBed) {
