@@ -8,8 +8,9 @@
 
 namespace maris::fiv {
 
-// Speeds whose Reynolds number lies outside the range of the paper's data (1.61e4–2.01e5), and submergences
-// below the shallowest one the free-surface factor was fitted to (h* = 1.11). Post-processing runs get none.
+// A mass ratio m* below 1, speeds whose Reynolds number lies outside the range of the paper's data
+// (1.61e4–2.01e5), and submergences below the shallowest one the free-surface factor was fitted to (h* = 1.11).
+// Post-processing runs get none.
 std::vector<FieldError> fivPlausibility(const FivParameters& p);
 
 }  // namespace maris::fiv

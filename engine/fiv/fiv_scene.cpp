@@ -29,8 +29,6 @@ void addModelScalars(Results& r, const FivModel& m) {
 void warnAboutModel(const FivModel& m, RunContext& ctx) {
   if (m.damping == 0.0)
     ctx.warn("zero structural damping: no power is converted and galloping grows until the force curve saturates");
-  if (m.mass / (m.density * m.side * m.side * m.length) < 1.0)
-    ctx.warn("mass ratio m* < 1: wake-oscillator coupling and quasi-steady theory are outside their calibrated range");
 }
 
 Results postProcess(const FivParameters& p, RunContext& ctx) {

@@ -25,6 +25,12 @@ TEST(FivPlausibility, ASubmergenceShallowerThanTheFit) {
                     "h* = 1.11");
 }
 
+TEST(FivPlausibility, ALightCylinder) {
+  // ρD²L = 998.2 × 0.09² × 1 = 8.085 kg: m = 8 kg is m* = 0.9894, 8.2 kg is 1.014.
+  EXPECT_TRUE(plausibilityOf("fiv_default", {"structure.mass=8.2"}).empty());
+  expectOnlyWarning(plausibilityOf("fiv_default", {"structure.mass=8"}), "structure.mass", "m* = m/(ρD²L) = 0.9894");
+}
+
 TEST(FivPlausibility, TheGallopingHysteresisExampleSaysWhyItWarns) {
   // U = 4–9 m/s is Re = 3.2e5–7.2e5: the example checks harmonic balance on the model, not the paper's flow.
   const auto w = plausibilityOf("fiv_galloping_hysteresis", {});
