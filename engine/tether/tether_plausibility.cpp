@@ -19,13 +19,9 @@ constexpr double kSurfaceZ = 0.0;  // [m] world z of the water surface (z up)
 
 std::string num(double v) { return formatText("%.4g", v); }
 
-// L − chord of a shape given as features: how far the attachment points can still separate before the tether
-// is straight (the scene stops a run whose chord reaches L).
-double chordSlack(const TetherParameters& p, double a, double d) {
-  const double sag = a * p.sag_max;
-  const double rise = (2.0 * d - 1.0) * p.rise_max;
-  const Catenary c = catenaryFromShape(sag, rise, p.length);
-  return p.length - std::hypot(c.span, c.rise);
+// The catenary of a shape given as features a (sag) and d (rise).
+Catenary shapeOf(const TetherParameters& p, double a, double d) {
+  return catenaryFromShape(a * p.sag_max, (2.0 * d - 1.0) * p.rise_max, p.length);
 }
 
 }  // namespace
@@ -82,17 +78,25 @@ std::vector<FieldError> tetherPlausibility(const TetherParameters& p) {
                    "faster than the follower's saturated yaw rate control.max_yaw_rate_deg = " +
                        num(p.max_yaw_rate_deg) + " deg/s"});
   }
-  // One control tick moves the follower at most max_linear_speed / rate along an axis: a shape with less chord
-  // slack than that can be pulled straight by a single command, which stops the run ("tether chord").
+  // One control tick moves the follower at most max_linear_speed / rate along an axis. A shape with less chord
+  // slack (L − chord) than that can be pulled straight by a single command, which stops the run ("tether
+  // chord"); a shape whose span is shorter than that hangs nearly vertically, and a single command can swing
+  // the bearing of the tether, and with it the feature b, by up to a right angle.
   const double tick_move = p.max_linear_speed / p.control_rate;
-  for (const auto& [group, a, d] : {std::tuple{"initial", p.initial_a, p.initial_d},
-                                    std::tuple{"target", p.target_a, p.target_d}}) {
-    const double slack = chordSlack(p, a, d);
+  const std::string tick = " m = control.max_linear_speed / control.rate)";
+  for (const auto& [group, a, d] : {std::tuple{std::string("initial"), p.initial_a, p.initial_d},
+                                    std::tuple{std::string("target"), p.target_a, p.target_d}}) {
+    const Catenary c = shapeOf(p, a, d);
+    const double slack = p.length - std::hypot(c.span, c.rise);
     if (slack < tick_move)
-      w.push_back({std::string(group) + ".a", num(a),
-                   "the " + std::string(group) + " shape is nearly taut: its chord is " + num(slack) +
-                       " m short of the length L, less than one control tick of the follower (" + num(tick_move) +
-                       " m = control.max_linear_speed / control.rate)"});
+      w.push_back({group + ".a", num(a),
+                   "the " + group + " shape is nearly taut: its chord is " + num(slack) +
+                       " m short of the length L, less than one control tick of the follower (" + num(tick_move) + tick});
+    else if (c.span < tick_move)
+      w.push_back({group + ".a", num(a),
+                   "the " + group + " shape hangs nearly vertically: its span is " + num(c.span) +
+                       " m, less than one control tick of the follower (" + num(tick_move) + tick +
+                       ", so one command can swing the tether's bearing and the feature b"});
   }
   return w;
 }

@@ -40,5 +40,13 @@ TEST(TetherPlausibility, ANearlyTautTargetShape) {
   expectOnlyWarning(plausibilityOf("tether_default", {"target.a=0.02"}), "target.a", "nearly taut");
 }
 
+TEST(TetherPlausibility, ANearlyVerticalTargetShape) {
+  // Level tether, L = 1.5 m: span S = 2 asinh(√(CH(CH+2)))/C with C = 8H/(L² − 4H²) (eqs 2 and 7). a = 1.0713
+  // (H = 0.74991 m) gives S = 1.75 mm, below one tick of 0.3 m/s / 30 Hz = 0.01 m; a = 1.07 (H = 0.749 m) gives
+  // S = 14.6 mm; a = 1 (H = 0.7 m) gives S = 0.35 m.
+  EXPECT_TRUE(plausibilityOf("tether_default", {"target.a=1.07"}).empty());
+  expectOnlyWarning(plausibilityOf("tether_default", {"target.a=1.0713"}), "target.a", "hangs nearly vertically");
+}
+
 }  // namespace
 }  // namespace maris
