@@ -43,14 +43,16 @@ std::vector<FieldError> wecPlausibility(const WecParameters& p) {
   const bool hulme = p.hydro_source == "hemisphere_hulme";
   if (hulme && largest_radius > 0) {
     const double omega_limit = std::sqrt(kHulmeLastKa * p.gravity / largest_radius);
-    if (p.omega_max > omega_limit)
-      w.push_back({"frequency.omega_max", num(p.omega_max),
-                   "beyond " + num(omega_limit) + " rad/s (ka = 10 for a = " + num(largest_radius) +
-                       " m), the end of Hulme's tables: the coefficients there are extrapolated"});
-    if (p.wave_type == "regular" && p.wave_frequency > omega_limit)
-      w.push_back({"waves.frequency", num(p.wave_frequency),
-                   "beyond " + num(omega_limit) + " rad/s (ka = 10 for a = " + num(largest_radius) +
-                       " m), the end of Hulme's tables: the coefficients there are extrapolated"});
+    const auto beyond = [&](const std::string& path, double omega) {
+      if (omega > omega_limit)
+        w.push_back({path, num(omega),
+                     "beyond " + num(omega_limit) + " rad/s (ka = 10 for a = " + num(largest_radius) +
+                         " m), the end of Hulme's tables: the coefficients there are extrapolated"});
+    };
+    beyond("frequency.omega_max", p.omega_max);
+    if (p.wave_type == "regular") beyond("waves.frequency", p.wave_frequency);
+    for (std::size_t i = 0; i < p.check_frequencies.size(); ++i)
+      beyond("frequency.check_frequencies[" + std::to_string(i) + "]", p.check_frequencies[i]);
   }
   if (p.wave_type == "none") return w;
   const bool regular = p.wave_type == "regular";

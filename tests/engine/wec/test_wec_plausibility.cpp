@@ -26,6 +26,8 @@ TEST(WecPlausibility, AFrequencyBeyondHulmesTables) {
   EXPECT_TRUE(plausibilityOf("wec_default", {"frequency.omega_max=5.7"}).empty());
   expectOnlyWarning(plausibilityOf("wec_default", {"frequency.omega_max=5.75"}), "frequency.omega_max",
                     "end of Hulme's tables");
+  expectOnlyWarning(plausibilityOf("wec_default", {"frequency.omega_max=5.7", "frequency.check_frequencies=[1, 5.75]"}),
+                    "frequency.check_frequencies[1]", "end of Hulme's tables");
 }
 
 TEST(WecPlausibility, ARegularWaveSteeperThanOneSeventh) {
