@@ -44,7 +44,7 @@ std::vector<FieldError> tetherPlausibility(const TetherParameters& p) {
     if (top > kSurfaceZ && leader_top <= kSurfaceZ)
       w.push_back({"initial.d", num(p.initial_d),
                    "the initial shape puts the follower " + num(top - kSurfaceZ) +
-                       " m above the water surface (z = 0): start the leader deeper or lower d"});
+                       " m above the water surface (z = 0): start the leader deeper, or raise d to put the follower lower"});
   } catch (const InputError&) {
     // an infeasible initial shape is an input error reported by the checks
   }

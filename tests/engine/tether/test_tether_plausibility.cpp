@@ -18,6 +18,13 @@ TEST(TetherPlausibility, ALeaderAboveTheSurface) {
   expectOnlyWarning(plausibilityOf("tether_default", {"leader.z=0.3"}), "leader.z", "0.3 m above the water surface");
 }
 
+TEST(TetherPlausibility, AFollowerPlacedAboveTheSurface) {
+  // d = 0.45 is ΔH = (2d − 1) ΔH_max = −0.05 m: the follower's attachment sits 0.05 m above the leader's, at
+  // z = +0.03 m for a leader at −0.02 m (both attachments at body z = 0).
+  EXPECT_TRUE(plausibilityOf("tether_default", {"leader.z=-0.06"}).empty());
+  expectOnlyWarning(plausibilityOf("tether_default", {"leader.z=-0.02"}), "initial.d", "0.03 m above the water surface");
+}
+
 TEST(TetherPlausibility, ALeaderPathThatClimbsOutOfTheWater) {
   // From z = −0.4 m at 0.05 m/s for the 12 s run: z = +0.2 m at the end.
   const std::string leg =
