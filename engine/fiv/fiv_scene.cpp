@@ -7,6 +7,7 @@
 #include "core/scene.hpp"
 #include "fiv/fiv_calibration.hpp"
 #include "fiv/fiv_parameters.hpp"
+#include "fiv/fiv_plausibility.hpp"
 #include "fiv/fiv_results.hpp"
 #include "fiv/fiv_sweep.hpp"
 #include "fiv/fiv_theory.hpp"
@@ -28,8 +29,6 @@ void addModelScalars(Results& r, const FivModel& m) {
 void warnAboutModel(const FivModel& m, RunContext& ctx) {
   if (m.damping == 0.0)
     ctx.warn("zero structural damping: no power is converted and galloping grows until the force curve saturates");
-  if (m.mass / (m.density * m.side * m.side * m.length) < 1.0)
-    ctx.warn("mass ratio m* < 1: wake-oscillator coupling and quasi-steady theory are outside their calibrated range");
 }
 
 Results postProcess(const FivParameters& p, RunContext& ctx) {
@@ -148,6 +147,7 @@ SceneDefinition makeFivScene() {
       "reference points and post-processing of imported records.",
       fiv::fivBinder(), fiv::checkFivParameters, fiv::solveFiv);
   setWorkEstimate<fiv::FivParameters>(scene, fiv::fivBinder(), fiv::estimateFivWork);
+  setPlausibility<fiv::FivParameters>(scene, fiv::fivBinder(), fiv::fivPlausibility);
   return scene;
 }
 

@@ -1,6 +1,7 @@
 // Registry entry of the seismic scene.
 #include "core/scene.hpp"
 #include "seismic/seismic_parameters.hpp"
+#include "seismic/seismic_plausibility.hpp"
 #include "seismic/seismic_solve.hpp"
 
 namespace maris {
@@ -16,6 +17,7 @@ SceneDefinition makeSeismicScene() {
       "placeholder (the paper's Table 1 is not available).",
       seismic::seismicBinder(), seismic::checkSeismicParameters, seismic::solveSeismic);
   setWorkEstimate<SeismicParameters>(scene, seismic::seismicBinder(), seismic::estimateSeismicWork);
+  setPlausibility<SeismicParameters>(scene, seismic::seismicBinder(), seismic::seismicPlausibility);
   return scene;
 }
 

@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "core/scene.hpp"
+#include "ship/ship_plausibility.hpp"
 #include "ship/ship_study.hpp"
 
 namespace maris {
@@ -50,6 +51,7 @@ SceneDefinition makeShipScene() {
         return results;
       });
   setWorkEstimate<ShipParameters>(scene, ship::shipSchemaBinder(), estimateShipWork);
+  setPlausibility<ShipParameters>(scene, ship::shipSchemaBinder(), ship::shipPlausibility);
   return scene;
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/scene.hpp"
 #include "tether/tether_parameters.hpp"
+#include "tether/tether_plausibility.hpp"
 #include "tether/tether_results.hpp"
 
 namespace maris {
@@ -40,6 +41,7 @@ SceneDefinition makeTetherScene() {
         return tether::buildTetherResults(p, sim, context);
       });
   setWorkEstimate<TetherParameters>(scene, tether::tetherBinder(), estimateTetherWork);
+  setPlausibility<TetherParameters>(scene, tether::tetherBinder(), tether::tetherPlausibility);
   return scene;
 }
 

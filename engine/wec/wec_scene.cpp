@@ -9,6 +9,7 @@
 #include "core/text_format.hpp"
 #include "wec/wec_frequency.hpp"
 #include "wec/wec_parameters.hpp"
+#include "wec/wec_plausibility.hpp"
 #include "wec/wec_response.hpp"
 #include "wec/wec_results.hpp"
 #include "wec/wec_time.hpp"
@@ -348,6 +349,7 @@ SceneDefinition makeWecScene() {
       "PTO power and capture width.",
       wecBinder(), checkWecParameters, solveWec);
   setWorkEstimate<WecParameters>(scene, wecBinder(), estimateWecWork);
+  setPlausibility<WecParameters>(scene, wecBinder(), wecPlausibility);
   return scene;
 }
 

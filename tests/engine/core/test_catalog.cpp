@@ -92,6 +92,12 @@ TEST(Catalog, BuiltInScenariosRaiseNoPlausibilityWarningUnlessTheyExplainIt) {
   }
 }
 
+TEST(Catalog, EverySceneDeclaresPlausibilityChecks) {
+  // Each scene names the valid settings its model doubts (its own <scene>_plausibility.cpp); a scene without
+  // them would let every built-in pass the test above without being looked at.
+  for (const auto& s : sceneCatalog()) EXPECT_TRUE(static_cast<bool>(s.plausibility)) << s.name;
+}
+
 TEST(Catalog, EverySceneHasAnExampleAndTheDefaultExists) {
   for (const auto& s : sceneCatalog()) {
     bool found = false;
