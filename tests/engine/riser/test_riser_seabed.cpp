@@ -80,6 +80,8 @@ Static solveStatic(const RiserParameters& p) {
 // closed form above with the height measured to the resting axis. n = 100 (Δ = 1.5 m): the chain of straight links
 // is O(1/n²) off in tension (1.1e-5 for the free catenary at n = 100); the touchdown point is ill-conditioned (the
 // chain meets the bed tangentially, so a vertical error ε moves it by √(2aε)): asserted within one link, Δ.
+// Measured: T 6686.14 N against 6685.25 (1.3e-4), touchdown 65.25 m against 64.68; at n = 200 and 400: T 1.2e-5 and
+// 1.3e-5, touchdown 64.87 and 64.69 m.
 TEST(RiserSeabed, CatenaryOnARigidBedMatchesTheGroundedClosedForm) {
   const RiserParameters p = chainOnTheBed(100, 1e7);
   const Static s = solveStatic(p);
@@ -93,7 +95,8 @@ TEST(RiserSeabed, CatenaryOnARigidBedMatchesTheGroundedClosedForm) {
   EXPECT_NEAR(s.contact.normal_force, 100.0 * (p.length - c.suspended), 100.0 * p.length / p.segment_count);
 }
 
-// Stiffer bed → closed form: the top-tension error falls with k until the discretisation floor (n = 100).
+// Stiffer bed → closed form: the top-tension error falls with k until the discretisation floor (n = 100). Measured
+// against the rigid bed's closed form: 1.9e-3, 3.8e-4, 1.9e-4 at k = 1e3, 1e4, 1e5 N/m² (floor 1.3e-4 at 1e7).
 TEST(RiserSeabed, StifferBedApproachesTheRigidClosedForm) {
   double previous = 1e300;
   for (double k : {1e3, 1e4, 1e5}) {
@@ -109,7 +112,8 @@ TEST(RiserSeabed, StifferBedApproachesTheRigidClosedForm) {
 
 // A 10 m rod lying on a flat bed, pulled along its axis by F at its end (dynamics, smoothed Coulomb, tanh,
 // v_s = 1 cm/s). Below μ w L it creeps at the speed where the friction balances F, v = v_s atanh(F/(μ w L));
-// above, it slides with a = (F − μ w L)/m. 2 s of motion; tolerances cover the start-up (v_s/a ≈ 4 ms).
+// above, it slides with a = (F − μ w L)/m. 2 s of motion; tolerances cover the start-up (v_s/a ≈ 4 ms). Measured:
+// creep 10.973 mm against 10.986 mm, slide 4.919 m against 4.905 m.
 TEST(RiserSeabed, RodOnTheBedSlidesWhenThePullExceedsTheFriction) {
   auto pulled = [](double ratio) {
     RiserParameters p = test::chainInAir(10);
@@ -147,9 +151,12 @@ TEST(RiserSeabed, RodOnTheBedSlidesWhenThePullExceedsTheFriction) {
   EXPECT_NEAR(slide, 0.5 * (0.5 * 0.5 * 9.81) * 4.0, 0.02 * 0.5 * (0.5 * 0.5 * 9.81) * 4.0);
 }
 
-// Hard case: a chain whose touchdown lifts off and lands again under a large heave of the top (the grounded chain
-// above, top heaving ±5 m at 8 s). The run completes, the touchdown moves, and the energy balance (contact spring in
-// the energy, its damper and friction in the damping work) closes.
+// Hard case: slack touchdown and lift-off. The grounded chain above in water (submerged 21 N/m, drag 1.2), top
+// heaving ±5 m at 8 s: the top falls faster than the chain sinks, so the chain goes slack, lands on the bed and is
+// lifted off again. Automatic RK4 step (1693 steps): the run completes, the touchdown travels (57.7 … 106.3 m;
+// 57.7 … 106.25 at h = 10 ms, 106.27 at 5 ms), part of the chain stays on the bed, and the energy balance (contact
+// spring in the energy, its damper and the friction in the damping work) closes: 5.4e-5 (6.6e-5 at h = 10 ms,
+// 3.4e-6 at 5 ms).
 TEST(RiserSeabed, HeavingTopLiftsOffAndLandsTheTouchdownStably) {
   RiserParameters p = chainOnTheBed(40, 1e5);
   p.seabed_normal_damping = 1e3;
@@ -161,6 +168,8 @@ TEST(RiserSeabed, HeavingTopLiftsOffAndLandsTheTouchdownStably) {
   p.motion_ramp_time = 4.0;
   p.end_time = 16.0;
   p.integrator = "rk4";
+  p.water_level = 0.0;  // in water, with drag: it falls at ≈ 0.6 m/s, the top at up to 3.9 m/s (slack)
+  p.normal_drag_coefficient = 1.2;
   p.modes = false;
   p.frame_count = 4;
   p.probes = {{100.0}};
@@ -168,8 +177,9 @@ TEST(RiserSeabed, HeavingTopLiftsOffAndLandsTheTouchdownStably) {
   const Results r = solveRiser(p, context);
   const double lowest = r.findScalar("touchdown_arc_length_min")->value;
   const double highest = r.findScalar("touchdown_arc_length_max")->value;
-  EXPECT_GT(highest - lowest, 5.0) << "the touchdown point should travel with the heave";
-  EXPECT_LT(r.findScalar("energy_balance_error")->value, 1e-3);
+  EXPECT_GT(highest - lowest, 30.0) << "the touchdown point should travel with the heave";
+  EXPECT_LT(highest, p.length) << "the chain never leaves the bed entirely";
+  EXPECT_LT(r.findScalar("energy_balance_error")->value, 5e-4);
   ASSERT_NE(r.findTable("history"), nullptr);
   EXPECT_NE(r.findTable("history")->find("touchdown_arc_length"), nullptr);
 }
@@ -211,7 +221,7 @@ TEST(RiserSeabed, BuoyancyModulesAddTheirBuoyancyAndMassWhereverTheyEnd) {
   p.seabed_level = -200.0;
   p.length = 100.0;
   p.segment_count = 17;  // joints at (k − ½)·5.88 m: no module end on a joint
-  p.buoyancy_modules = {{12.3, 41.7, 1.2, 150.0, 1.2, 1.0}, {60.0, 71.1, 0.9, 80.0, 1.0, 1.0}};
+  p.buoyancy_modules = {{12.3, 41.7, 0.8, 150.0, 1.2, 1.0}, {60.0, 71.1, 0.7, 80.0, 1.0, 1.0}};
   const RiserModel m = buildRiserModel(p);
   const double g = p.gravity, a_out = kPi / 4 * 0.25, a_inn = kPi / 4 * 0.45 * 0.45;
   const double bare_weight = (p.density * (a_out - a_inn) + p.internal_fluid_density * a_inn) * g * p.length;
@@ -221,7 +231,7 @@ TEST(RiserSeabed, BuoyancyModulesAddTheirBuoyancyAndMassWhereverTheyEnd) {
     buoyancy += s.buoyancy_per_length * s.length;
   }
   const double module_mass = 150.0 * 29.4 + 80.0 * 11.1;
-  const double module_area_length = kPi / 4 * (1.44 * 29.4 + 0.81 * 11.1), bare_area_length = a_out * (100 - 40.5);
+  const double module_area_length = kPi / 4 * (0.64 * 29.4 + 0.49 * 11.1), bare_area_length = a_out * (100 - 40.5);
   EXPECT_NEAR(weight, bare_weight + module_mass * g, 1e-9 * weight);
   EXPECT_NEAR(buoyancy, p.water_density * g * (bare_area_length + module_area_length), 1e-9 * buoyancy);
   p.top_z = 0.0;
