@@ -3,16 +3,12 @@
 
 #include <algorithm>
 #include <numbers>
-#include <sstream>
+#include <string>
+
+#include "core/text_format.hpp"
 
 namespace maris::riser {
 namespace {
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 SchemaBinder<BuoyancyModuleRow> moduleBinder() {
   using R = BuoyancyModuleRow;
@@ -59,16 +55,16 @@ void checkBuoyancyModules(const RiserParameters& p, std::vector<FieldError>& e) 
     order[k] = k;
     const auto& r = p.buoyancy_modules[k];
     const std::string at = "buoyancy_modules[" + std::to_string(k) + "]";
-    if (r.end <= r.start) e.push_back({at + ".end", num(r.end), "must be greater than start = " + num(r.start)});
+    if (r.end <= r.start) e.push_back({at + ".end", formatText("%g", r.end), "must be greater than start = " + formatText("%g", r.start)});
     if (r.end > p.length)
-      e.push_back({at + ".end", num(r.end), "must be at most geometry.length = " + num(p.length)});
+      e.push_back({at + ".end", formatText("%g", r.end), "must be at most geometry.length = " + formatText("%g", p.length)});
     // The pipe's own outer diameter where the modules sit (sections rows win over the uniform section).
     double pipe = p.outer_diameter;
     for (const auto& s : p.sections)
       if (0.5 * (r.start + r.end) >= s.start && 0.5 * (r.start + r.end) < s.end) pipe = s.outer_diameter;
     if (r.outer_diameter < pipe)
-      e.push_back({at + ".outer_diameter", num(r.outer_diameter),
-                   "must not be below the pipe's outer diameter " + num(pipe) + " m there"});
+      e.push_back({at + ".outer_diameter", formatText("%g", r.outer_diameter),
+                   "must not be below the pipe's outer diameter " + formatText("%g", pipe) + " m there"});
   }
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return p.buoyancy_modules[a].start < p.buoyancy_modules[b].start; });
@@ -76,8 +72,8 @@ void checkBuoyancyModules(const RiserParameters& p, std::vector<FieldError>& e) 
     const auto& before = p.buoyancy_modules[order[k - 1]];
     const auto& row = p.buoyancy_modules[order[k]];
     if (row.start < before.end)
-      e.push_back({"buoyancy_modules[" + std::to_string(order[k]) + "].start", num(row.start),
-                   "overlaps buoyancy_modules[" + std::to_string(order[k - 1]) + "], which ends at " + num(before.end)});
+      e.push_back({"buoyancy_modules[" + std::to_string(order[k]) + "].start", formatText("%g", row.start),
+                   "overlaps buoyancy_modules[" + std::to_string(order[k - 1]) + "], which ends at " + formatText("%g", before.end)});
   }
 }
 

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "core/angles.hpp"
+#include "core/text_format.hpp"
 #include "riser/riser_loads.hpp"
 #include "riser/riser_model.hpp"
 
@@ -14,12 +14,6 @@ namespace maris::riser {
 namespace {
 
 using P = RiserParameters;
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 double smoothSign(const RiserSeabed& bed, double v) {
   const double x = v / bed.friction_velocity;
@@ -103,14 +97,14 @@ void checkSeabedParameters(const RiserParameters& p, std::vector<FieldError>& e)
   const bool held = p.bottom_condition == "pinned" || p.bottom_condition == "clamped" || p.bottom_condition == "spring";
   const double anchor_depth = bed->penetration(Eigen::Vector3d(p.bottom_x, p.bottom_y, p.bottom_z), 0.0);
   if (held && anchor_depth > d)
-    e.push_back({"bottom.z", num(p.bottom_z),
-                 "the anchor is " + num(anchor_depth) + " m below the sea bed (seabed.contact = true): must be at most "
-                 "one outer diameter (" + num(d) + " m) below it (bed at z = " +
-                     num(bed->heightAt(p.bottom_x, p.bottom_y)) + " m there)"});
+    e.push_back({"bottom.z", formatText("%g", p.bottom_z),
+                 "the anchor is " + formatText("%g", anchor_depth) + " m below the sea bed (seabed.contact = true): must be at most "
+                 "one outer diameter (" + formatText("%g", d) + " m) below it (bed at z = " +
+                     formatText("%g", bed->heightAt(p.bottom_x, p.bottom_y)) + " m there)"});
   if (p.top_condition != "tensioner" && p.top_condition != "free" &&
       bed->penetration(Eigen::Vector3d(p.top_x, p.top_y, p.top_z), 0.0) >= 0)
-    e.push_back({"top.z", num(p.top_z),
-                 "the top is not above the sea bed (z = " + num(bed->heightAt(p.top_x, p.top_y)) +
+    e.push_back({"top.z", formatText("%g", p.top_z),
+                 "the top is not above the sea bed (z = " + formatText("%g", bed->heightAt(p.top_x, p.top_y)) +
                      " m there; seabed.contact = true)"});
 }
 
