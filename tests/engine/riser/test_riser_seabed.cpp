@@ -151,6 +151,43 @@ TEST(RiserSeabed, RodOnTheBedSlidesWhenThePullExceedsTheFriction) {
   EXPECT_NEAR(slide, 0.5 * (0.5 * 0.5 * 9.81) * 4.0, 0.02 * 0.5 * (0.5 * 0.5 * 9.81) * 4.0);
 }
 
+// A rod lying down a bed sloped at 10° (rising towards +x), μ_a = 0.5 > tan 10°: the smoothed Coulomb law holds it
+// only by creeping at the speed where μ w cos α tanh(v/v_s) = w sin α, v = v_s atanh(tan α/μ) = 3.685 mm/s
+// (v_s = 1 cm/s); 2 s after starting at rest it has moved 7.37 mm down the slope (5 %: the start-up).
+TEST(RiserSeabed, RodOnASlopedBedCreepsAtTheSpeedWhereFrictionHoldsItsWeight) {
+  RiserParameters p = test::chainInAir(10);
+  p.youngs_modulus = 2.07e11;
+  p.top_condition = "free";
+  p.bottom_condition = "free";
+  p.seabed_contact = true;
+  p.seabed_level = -10.0;
+  p.seabed_slope_deg = 10.0;
+  p.seabed_slope_direction_deg = 0.0;
+  p.seabed_normal_stiffness = 1e6;
+  p.seabed_normal_damping = 2e3;
+  p.seabed_axial_friction = 0.5;
+  p.seabed_lateral_friction = 0.8;
+  const double alpha = 10.0 * kPi / 180, w = p.density * kPi / 4 * 0.05 * 0.05 * p.gravity;
+  p.initial_inclination_deg = 80.0;  // down the slope, towards −x
+  p.initial_azimuth_deg = 180.0;
+  const RiserModel bare = buildRiserModel(p);
+  const double height = bare.seabed->heightAt(10.0, 0.0);
+  EXPECT_NEAR(height, -10.0 + 10.0 * std::tan(alpha), 1e-12);
+  const Vec3 top = Vec3(10.0, 0.0, height) + (0.025 - w * std::cos(alpha) / p.seabed_normal_stiffness) * bare.seabed->normal;
+  p.top_x = top.x();
+  p.top_z = top.z();
+  p.solve_statics = false;
+  p.modes = false;
+  p.end_time = 2.0;
+  p.integrator = "rk4";
+  p.frame_count = 4;
+  p.probes = {{5.0}};
+  RunContext context;
+  const Results r = solveRiser(p, context);
+  const double expected = 0.01 * std::atanh(std::tan(alpha) / 0.5) * 2.0;
+  EXPECT_NEAR(r.findScalar("probe_max_displacement")->value, expected, 0.05 * expected);
+}
+
 // Hard case: slack touchdown and lift-off. The grounded chain above in water (submerged 21 N/m, drag 1.2), top
 // heaving ±5 m at 8 s: the top falls faster than the chain sinks, so the chain goes slack, lands on the bed and is
 // lifted off again. Automatic RK4 step (1693 steps): the run completes, the touchdown travels (57.7 … 106.3 m;
