@@ -110,35 +110,42 @@ TEST(RiserSeabed, StifferBedApproachesTheRigidClosedForm) {
   EXPECT_LT(previous, 2e-4);
 }
 
+// A free 10 m steel rod (D 0.05 m) on a bed at z = −10 m (k = 1e6 N/m², c = 2e3 N·s/m², μ_a = 0.5, μ_l = 0.8,
+// tanh over 1 cm/s), run for 2 s by RK4 from rest without statics; the caller places it on the bed.
+RiserParameters rodOnTheBed() {
+  RiserParameters p = test::chainInAir(10);
+  p.youngs_modulus = 2.07e11;
+  p.top_condition = "free";
+  p.bottom_condition = "free";
+  p.seabed_contact = true;
+  p.seabed_level = -10.0;
+  p.seabed_normal_stiffness = 1e6;
+  p.seabed_normal_damping = 2e3;
+  p.seabed_axial_friction = 0.5;
+  p.seabed_lateral_friction = 0.8;
+  p.solve_statics = false;
+  p.modes = false;
+  p.end_time = 2.0;
+  p.integrator = "rk4";
+  p.frame_count = 4;
+  p.probes = {{5.0}};
+  return p;
+}
+
 // A 10 m rod lying on a flat bed, pulled along its axis by F at its end (dynamics, smoothed Coulomb, tanh,
 // v_s = 1 cm/s). Below μ w L it creeps at the speed where the friction balances F, v = v_s atanh(F/(μ w L));
 // above, it slides with a = (F − μ w L)/m. 2 s of motion; tolerances cover the start-up (v_s/a ≈ 4 ms). Measured:
 // creep 10.973 mm against 10.986 mm, slide 4.919 m against 4.905 m.
 TEST(RiserSeabed, RodOnTheBedSlidesWhenThePullExceedsTheFriction) {
   auto pulled = [](double ratio) {
-    RiserParameters p = test::chainInAir(10);
-    p.youngs_modulus = 2.07e11;  // a stiff rod
-    p.top_condition = "free";
-    p.bottom_condition = "free";
+    RiserParameters p = rodOnTheBed();
     p.initial_inclination_deg = 90.0;  // lying along +x
-    p.seabed_contact = true;
-    p.seabed_level = -10.0;
-    p.seabed_normal_stiffness = 1e6;
-    p.seabed_normal_damping = 2e3;
-    p.seabed_axial_friction = 0.5;
-    p.seabed_lateral_friction = 0.8;
     const double w = p.density * kPi / 4 * 0.05 * 0.05 * p.gravity;
     p.top_z = -10.0 + 0.025 - w / p.seabed_normal_stiffness;  // resting
-    p.solve_statics = false;
-    p.modes = false;
     PointLoadRow pull;
     pull.node = 0;
     pull.force_x = -ratio * 0.5 * w * p.length;
     p.point_loads = {pull};
-    p.end_time = 2.0;
-    p.integrator = "rk4";
-    p.frame_count = 4;
-    p.probes = {{5.0}};
     RunContext context;
     const Results r = solveRiser(p, context);
     return r.findScalar("probe_max_displacement")->value;
@@ -155,18 +162,9 @@ TEST(RiserSeabed, RodOnTheBedSlidesWhenThePullExceedsTheFriction) {
 // only by creeping at the speed where μ w cos α tanh(v/v_s) = w sin α, v = v_s atanh(tan α/μ) = 3.685 mm/s
 // (v_s = 1 cm/s); 2 s after starting at rest it has moved 7.37 mm down the slope (5 %: the start-up).
 TEST(RiserSeabed, RodOnASlopedBedCreepsAtTheSpeedWhereFrictionHoldsItsWeight) {
-  RiserParameters p = test::chainInAir(10);
-  p.youngs_modulus = 2.07e11;
-  p.top_condition = "free";
-  p.bottom_condition = "free";
-  p.seabed_contact = true;
-  p.seabed_level = -10.0;
+  RiserParameters p = rodOnTheBed();
   p.seabed_slope_deg = 10.0;
   p.seabed_slope_direction_deg = 0.0;
-  p.seabed_normal_stiffness = 1e6;
-  p.seabed_normal_damping = 2e3;
-  p.seabed_axial_friction = 0.5;
-  p.seabed_lateral_friction = 0.8;
   const double alpha = 10.0 * kPi / 180, w = p.density * kPi / 4 * 0.05 * 0.05 * p.gravity;
   p.initial_inclination_deg = 80.0;  // down the slope, towards −x
   p.initial_azimuth_deg = 180.0;
@@ -176,12 +174,6 @@ TEST(RiserSeabed, RodOnASlopedBedCreepsAtTheSpeedWhereFrictionHoldsItsWeight) {
   const Vec3 top = Vec3(10.0, 0.0, height) + (0.025 - w * std::cos(alpha) / p.seabed_normal_stiffness) * bare.seabed->normal;
   p.top_x = top.x();
   p.top_z = top.z();
-  p.solve_statics = false;
-  p.modes = false;
-  p.end_time = 2.0;
-  p.integrator = "rk4";
-  p.frame_count = 4;
-  p.probes = {{5.0}};
   RunContext context;
   const Results r = solveRiser(p, context);
   const double expected = 0.01 * std::atanh(std::tan(alpha) / 0.5) * 2.0;
