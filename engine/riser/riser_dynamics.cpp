@@ -457,7 +457,8 @@ void normaliseState(const RiserModel& m, Eigen::VectorXd& y) {
 }
 
 double totalEnergy(const RiserModel& m, const RiserPose& pose) {
-  return kineticEnergy(m, pose) + springEnergy(m, pose) + gravityPotential(m, pose) + anchorSpringEnergy(m, pose);
+  return kineticEnergy(m, pose) + springEnergy(m, pose) + gravityPotential(m, pose) + anchorSpringEnergy(m, pose) +
+         seabedContactEnergy(m, pose);
 }
 
 double highestFrequencyEstimate(const RiserModel& m) {
@@ -477,6 +478,7 @@ double highestFrequencyEstimate(const RiserModel& m) {
     if (m.torsion && polar > 0) w = std::max(w, 2 * std::sqrt(m.joints[i].stiffness[0] * delta / polar) / delta);
   }
   if (m.bottom == BottomCondition::Spring) w = std::max(w, 2 * std::sqrt(m.spring_stiffness / m.segments[m.n].mass));
+  w = std::max(w, seabedFrequencyEstimate(m));
   // Overdamped spring dampers add a real eigenvalue of about -β ω².
   return w * std::max(1.0, m.stiffness_damping * w);
 }

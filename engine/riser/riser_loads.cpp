@@ -176,6 +176,7 @@ void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, Seg
   if (m.flow_speed != 0.0) addInternalFlow(m, pose, loads);
   if (m.bottom == BottomCondition::Spring) addBottomSpring(m, pose, loads);
   if (m.relaxation_damping > 0) addRelaxationDamping(m, pose, loads);
+  if (m.seabed) addSeabedContact(m, pose, loads);
 }
 
 double springEnergy(const RiserModel& m, const RiserPose& pose) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/angles.hpp"
+#include "riser/riser_buoyancy.hpp"
 
 namespace maris::riser {
 namespace {
@@ -189,13 +190,9 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     const double a_out = kPi / 4 * sec.outer_diameter * sec.outer_diameter;
     const double a_inn = kPi / 4 * sec.inner_diameter * sec.inner_diameter;
     const double wall_mass = sec.density * (a_out - a_inn), contents = p.internal_fluid_density * a_inn;
-    const double mu = wall_mass + contents + p.water_density * sec.added_mass_coefficient * a_out;  // eq (11)
-    const double mu_axial = wall_mass + contents + p.water_density * sec.tangential_added_mass_coefficient * a_out;
+    double mu = wall_mass + contents + p.water_density * sec.added_mass_coefficient * a_out;  // eq (11)
+    double mu_axial = wall_mass + contents + p.water_density * sec.tangential_added_mass_coefficient * a_out;
     const double polar = sec.density * kPi / 32 * (std::pow(sec.outer_diameter, 4) - std::pow(sec.inner_diameter, 4));
-    g.mass = mu * g.length;
-    g.axial_mass = mu_axial * g.length;
-    g.mass_local = segmentMass(g.mass, g.axial_mass, g.length, polar);
-    g.inverse_mass_local = inverseMass(g.mass_local, m.torsion);
     g.outer_diameter = sec.outer_diameter;
     g.weight_per_length = (wall_mass + contents) * p.gravity;
     g.buoyancy_per_length = p.water_density * p.gravity * a_out;
@@ -203,6 +200,26 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     g.tangential_drag = 0.5 * p.water_density * sec.outer_diameter * sec.tangential_drag_coefficient;
     g.fluid_mass_per_length = contents;
     g.fluid_inertia_per_length = p.water_density * (1.0 + sec.added_mass_coefficient) * a_out;
+    // Buoyancy modules: covered fraction f of the segment takes the modules' diameter and mass (riser_buoyancy.hpp).
+    const ModuleShare modules = buoyancyModuleShare(p, g.arc_start, g.arc_start + g.length);
+    if (modules.fraction > 0) {
+      const double bare = 1.0 - modules.fraction, area = bare * a_out + modules.area;
+      const double added = bare * sec.added_mass_coefficient * a_out + modules.added_mass_area;
+      mu = wall_mass + contents + modules.mass_per_length + p.water_density * added;
+      mu_axial = wall_mass + contents + modules.mass_per_length +
+                 p.water_density * sec.tangential_added_mass_coefficient * area;
+      g.outer_diameter = std::sqrt(4 * area / kPi);
+      g.weight_per_length = (wall_mass + contents + modules.mass_per_length) * p.gravity;
+      g.buoyancy_per_length = p.water_density * p.gravity * area;
+      g.normal_drag =
+          0.5 * p.water_density * (bare * sec.outer_diameter * sec.normal_drag_coefficient + modules.drag_width);
+      g.tangential_drag = 0.5 * p.water_density * g.outer_diameter * sec.tangential_drag_coefficient;
+      g.fluid_inertia_per_length = p.water_density * (area + added);
+    }
+    g.mass = mu * g.length;
+    g.axial_mass = mu_axial * g.length;
+    g.mass_local = segmentMass(g.mass, g.axial_mass, g.length, polar);
+    g.inverse_mass_local = inverseMass(g.mass_local, m.torsion);
     m.segments.push_back(g);
   }
   // Joints: stiffness of the primary element they represent, C = (GJ, EI, EI)/Δ (rigid-FE rule; the paper prints none).
@@ -247,6 +264,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   m.current_direction = radiansFromDegrees(p.current_direction_deg);
   m.point_loads = p.point_loads;
   m.sea = buildRiserSea(p);
+  m.seabed = buildRiserSeabed(p);
 
   // Initial shape: joint positions, then frames by parallel transport of the tangents.
   std::vector<double> s(m.n + 2);
@@ -263,7 +281,9 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     const Vec3 dir = (m.anchor - top).normalized();
     for (double sk : s) points.push_back(top + sk * dir);
   } else if (fixed_bottom && m.top != TopCondition::Free && (m.anchor - top).norm() < p.length) {
-    points = arcPoints(top, m.anchor, p.length, s);
+    // On a bed the sagging arc would bury its lower part: start from the cable catenary resting on the bed.
+    if (m.seabed) points = seabedInitialPoints(*m.seabed, top, m.anchor, p.length, s);
+    if (points.empty()) points = arcPoints(top, m.anchor, p.length, s);
   } else {
     const double inclination = radiansFromDegrees(p.initial_inclination_deg);
     const double azimuth = radiansFromDegrees(p.initial_azimuth_deg);

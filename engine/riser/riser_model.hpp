@@ -23,6 +23,7 @@
 #include <Eigen/Geometry>
 
 #include "riser/riser_parameters.hpp"
+#include "riser/riser_seabed.hpp"
 #include "riser/riser_waves.hpp"
 
 namespace maris::riser {
@@ -116,6 +117,7 @@ struct RiserModel {
   double current_surface = 0.0, current_seabed = 0.0, current_direction = 0.0;  // [m/s], [m/s], [rad]
   std::vector<PointLoadRow> point_loads;
   std::shared_ptr<const RiserSea> sea;                  // waves (riser_waves.hpp); null: none
+  std::shared_ptr<const RiserSeabed> seabed;            // sea-bed contact (riser_seabed.hpp); null: none
   std::vector<Eigen::Quaterniond> initial_orientation;  // n+1 segment orientations R_GS of the initial shape
   Vec3 initial_top = Vec3::Zero();                      // [m] top position of the initial shape
 

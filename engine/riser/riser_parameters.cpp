@@ -7,7 +7,9 @@
 #include <numbers>
 #include <sstream>
 
+#include "riser/riser_buoyancy.hpp"
 #include "riser/riser_fatigue.hpp"
+#include "riser/riser_seabed.hpp"
 #include "riser/riser_waves.hpp"
 
 namespace maris::riser {
@@ -84,6 +86,7 @@ SchemaBinder<P> makeBinder() {
          "Tangential added-mass coefficient C_at on accelerations along the axis (0: none, as riser and mooring "
          "codes take it; equal to the normal C_a: the paper's isotropic eq 11)");
   b.table("sections", &P::sections, sectionBinder(), 0, 1000, "Stretches with their own section properties");
+  bindBuoyancyModules(b);
   b.choice("model.formulation", &P::formulation, {"joint", "absolute"},
            "Coordinates: joint (J, continuity exact) or absolute (A, constraints with Baumgarte stabilisation)");
   b.boolean("model.torsion", &P::torsion, "Torsion on (J3/A3) or off (J2/A2: segments do not spin about their axes)");
@@ -92,7 +95,7 @@ SchemaBinder<P> makeBinder() {
   b.real("environment.gravity", &P::gravity, "m/s^2", Range::nonNegative(100.0), "Gravitational acceleration");
   b.real("environment.water_density", &P::water_density, "kg/m^3", Range::nonNegative(1e4), "Sea water density");
   b.real("environment.water_level", &P::water_level, "m", Range::any(), "z of the still-water surface");
-  b.real("environment.seabed_level", &P::seabed_level, "m", Range::any(), "z of the sea bed (drawn)");
+  b.real("environment.seabed_level", &P::seabed_level, "m", Range::any(), "z of the sea bed (drawn; with seabed.contact the bed's height at x = y = 0)");
   b.real("environment.internal_fluid_density", &P::internal_fluid_density, "kg/m^3", Range::nonNegative(1e5),
          "Density of the contents");
   b.real("environment.internal_flow_speed", &P::internal_flow_speed, "m/s", Range::closed(-100, 100),
@@ -133,6 +136,7 @@ SchemaBinder<P> makeBinder() {
   b.boolean("initial.solve_statics", &P::solve_statics, "Start from static equilibrium");
   bindWaveParameters(b);
   bindFatigueParameters(b);
+  bindSeabedParameters(b);
   b.table("point_loads", &P::point_loads, pointLoadBinder(), 0, 1000, "Forces and moments at nodes (box pulses)");
   b.real("solver.end_time", &P::end_time, "s", Range::nonNegative(1e6), "Simulated time");
   b.real("solver.time_step", &P::time_step, "s", Range::nonNegative(10.0),
@@ -280,6 +284,8 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
   if (!p.convergence_segment_counts.empty() && p.end_time <= 0)
     e.push_back({"solver.end_time", num(p.end_time), "a stress convergence study repeats the time history: must be > 0"});
   checkWaveParameters(p, e);
+  checkSeabedParameters(p, e);
+  checkBuoyancyModules(p, e);
   if (p.fatigue_enabled && p.fatigue_start_time >= p.end_time)
     e.push_back({"fatigue.start_time", num(p.fatigue_start_time),
                  "must be before solver.end_time = " + num(p.end_time) + " (no cycles would be counted)"});
@@ -407,6 +413,14 @@ std::vector<std::string> upgradeRiserParameters(Json& parameters) {
   if (!parameters.contains("waves")) {
     parameters["waves"] = riserBinder().write(RiserParameters{})["waves"];
     notes.push_back("waves added as none (new in the riser schema; save the scenario to keep it)");
+  }
+  if (!parameters.contains("seabed")) {
+    parameters["seabed"] = riserBinder().write(RiserParameters{})["seabed"];
+    notes.push_back("seabed added without contact (new in the riser schema; save the scenario to keep it)");
+  }
+  if (!parameters.contains("buoyancy_modules")) {
+    parameters["buoyancy_modules"] = Json::array();
+    notes.push_back("buoyancy_modules added, empty (new in the riser schema; save the scenario to keep it)");
   }
   upgradeProbePosition(parameters, notes);
   upgradeAngles(parameters, notes);

@@ -60,6 +60,17 @@ struct WaveSpectrumRow {
   double density = 0.0;  // [m^2*s/rad] one-sided S(ω)
 };
 
+// Buoyancy modules over [start, end) in arc length from the top (riser_buoyancy.hpp): they replace the pipe's outer
+// diameter for buoyancy, drag, added mass and sea-bed contact (not for stiffness or stresses) and add their mass.
+struct BuoyancyModuleRow {
+  double start = 0.0;                   // [m]
+  double end = 1.0;                     // [m]
+  double outer_diameter = 1.0;          // [m] equivalent diameter of the modules (buoyancy, drag, added mass)
+  double mass_per_length = 100.0;       // [kg/m] mass of the modules in air, per length of riser
+  double normal_drag_coefficient = 1.0; // [-] on the modules' diameter
+  double added_mass_coefficient = 1.0;  // [-] on the modules' diameter
+};
+
 struct RiserParameters {
   // geometry
   double length = 100.0;   // [m] unstretched length L
@@ -75,6 +86,7 @@ struct RiserParameters {
   double added_mass_coefficient = 1.0;       // [-] C_a: added mass normal to the axis (eq 11)
   double tangential_added_mass_coefficient = 0.0;  // [-] C_at: along the axis (eq 11 has C_at = C_a)
   std::vector<SectionRow> sections;          // non-uniform stretches
+  std::vector<BuoyancyModuleRow> buoyancy_modules;  // buoyancy modules (lazy-wave shapes); none by default
   // model
   std::string formulation = "joint";  // "joint" (J) or "absolute" (A)
   bool torsion = true;                // true: J3/A3; false: J2/A2 (no spin about segment axes)
@@ -83,7 +95,7 @@ struct RiserParameters {
   double gravity = 9.81;             // [m/s^2]
   double water_density = 1025.0;     // [kg/m^3] ρ_w
   double water_level = 0.0;          // [m] z of the still-water surface (buoyancy and drag only below it)
-  double seabed_level = -100.0;      // [m] z of the sea bed (drawn only)
+  double seabed_level = -100.0;      // [m] z of the sea bed (drawn; the contact plane with seabed.contact)
   double internal_fluid_density = 1025.0;  // [kg/m^3] ρ_f of the contents
   double internal_flow_speed = 0.0;        // [m/s] u: constant flow speed of the contents along s (> 0: top to bottom)
   double current_speed_surface = 1.0;      // [m/s] current at the water level
@@ -139,6 +151,16 @@ struct RiserParameters {
   std::string fatigue_environment = "seawater_cathodic_protection";  // air | seawater_cathodic_protection
   double fatigue_stress_concentration_factor = 1.0;  // [-] SCF on the nominal stress
   double fatigue_start_time = 0.0;               // [s] count cycles from here on (skip start-up transients)
+  // sea-bed contact (riser_seabed.hpp; bound there): off leaves every run as before
+  bool seabed_contact = false;
+  double seabed_slope_deg = 0.0;                // [deg]
+  double seabed_slope_direction_deg = 0.0;      // [deg] heading towards which the bed rises
+  double seabed_normal_stiffness = 1.0e5;       // [N/m^2] per unit length of riser
+  double seabed_normal_damping = 0.0;           // [N*s/m^2] per unit length of riser
+  double seabed_axial_friction = 0.5;           // [-]
+  double seabed_lateral_friction = 0.5;         // [-]
+  std::string seabed_friction_smoothing = "tanh";  // tanh | linear
+  double seabed_friction_velocity = 0.01;       // [m/s]
   // loads
   std::vector<PointLoadRow> point_loads;  // forces and moments at nodes
   // solver

@@ -113,6 +113,7 @@ void RiserRecorder::addHistoryPlots(Results& out) const {
   for (std::size_t k = 0; k < probes_.size(); ++k) stresses.push_back(probeColumn(k, "torsional_stress"));
   out.plots.push_back(makePlot("probe_stress", "Stress at the probes", "history", "time", stresses));
   if (m_.sea) out.plots.push_back(makePlot("wave_elevation", "Wave elevation", "history", "time", {"wave_elevation"}));
+  if (m_.seabed) seabed_.addPlot(out);
 }
 
 // probe_max_displacement (first probe, kept for scripts), probe2_max_displacement, ...
@@ -149,6 +150,7 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
     for (const char* c : {"bending_stress", "torsional_stress"}) history_.add(probeColumn(k, c), "Pa");
   }
   if (m_.sea) history_.add("wave_elevation", "m");  // η at (waves.elevation_x, waves.elevation_y)
+  if (m_.seabed) seabed_.addColumns(history_);
   if (parameters.fatigue_enabled)
     for (int k = 1; k <= m_.n; ++k) {
       JointStressSeries s;
@@ -166,7 +168,8 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
   r_.view.scalar_name = "bending stress";
   r_.view.scalar_unit = "Pa";
   r_.view.water_level_z = m_.water_level;
-  r_.view.seabed_z = m_.seabed_level;
+  // A sloped bed is drawn in every frame instead of the level plane.
+  if (!m_.seabed || m_.seabed->normal.z() == 1.0) r_.view.seabed_z = m_.seabed_level;
 }
 
 void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name) {
@@ -176,7 +179,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   if (first_) initial_nodes_ = prof.position;
   // Energies and the work balance E(t) - E(0) = W_drag + W_damping + W_boundary.
   const double kin = kineticEnergy(m_, pose), spr = springEnergy(m_, pose);
-  const double grav = gravityPotential(m_, pose) + anchorSpringEnergy(m_, pose);
+  const double grav = gravityPotential(m_, pose) + anchorSpringEnergy(m_, pose) + seabedContactEnergy(m_, pose);
   const double total = kin + spr + grav;
   const Eigen::Index ow = workIntegralOffset(m_);
   const double wd = y[ow], wdamp = y[ow + 1], wb = y[ow + 2], wf = y[ow + 3];
@@ -223,6 +226,11 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
                              ws_.constraint_drift, first_bending, first_torsion};
   row.insert(row.end(), extra.begin(), extra.end());
   if (m_.sea) row.push_back(m_.sea->elevation(m_.sea->elevation_x, m_.sea->elevation_y, t));
+  SeabedContactState contact;
+  if (m_.seabed) {
+    contact = seabedContact(m_, pose);
+    seabed_.sample(contact, row);
+  }
   if (!fatigue_.empty()) {
     fatigue_time_.push_back(t);
     for (int k = 1; k <= m_.n; ++k) {
@@ -260,6 +268,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     top.color = Vec3(0.9, 0.5, 0.1);
     fr.shapes.push_back(std::move(top));
     if (m_.sea) fr.shapes.push_back(seaSurface(*m_.sea, m_.top_mean, 0.5 * m_.length, t));
+    if (m_.seabed && !r_.view.seabed_z) fr.shapes.push_back(seabedSurface(*m_.seabed, m_.top_mean, m_.length));
     r_.view.frames.push_back(std::move(fr));
     for (int k = 0; k < nodes; ++k) {
       const double vals[6] = {t, double(k), prof.arc_length[k], prof.position[k].x(), prof.position[k].y(),
@@ -291,6 +300,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     tab.add("stress_xz", "Pa", prof.stress_xz);
     tab.add("torsional_stress", "Pa", prof.torsional_stress);
     tab.add("curvature", "1/m", prof.curvature);
+    if (m_.seabed) seabed_.addProfileColumn(contact, tab);
     r_.tables.push_back(std::move(tab));
   }
   first_ = false;
@@ -384,6 +394,7 @@ Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& st
   out.addScalar("end_y", h.find("end_y")->values[last], "m", "Bottom end position y at the end of the run");
   out.addScalar("end_z", h.find("end_z")->values[last], "m", "Bottom end position z at the end of the run");
   addProbeScalars(out);
+  if (m_.seabed) seabed_.addScalars(out);
   out.addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress σ_b over joints and samples");
   out.addScalar("max_torsional_stress", max_torsion_, "Pa", "Largest |σ_t| over joints and samples");
   out.addScalar("max_tension", max_tension_, "N", "Largest tension over nodes and samples");

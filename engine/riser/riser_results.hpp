@@ -79,6 +79,7 @@ class RiserRecorder {
   RunContext* live_ = nullptr;
   std::vector<double> fatigue_time_;             // [s] samples kept for fatigue (fatigue.enabled)
   std::vector<JointStressSeries> fatigue_;       // joints 1..n
+  SeabedRecorder seabed_;                        // touchdown and contact force (model with a sea bed)
 
   std::shared_ptr<const Results> partialResults() const;
   void addHistoryPlots(Results& out) const;
