@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include <unistd.h>
@@ -29,9 +30,12 @@ constexpr const char* kHeader =
 
 // One RAO row: heading, omega and (amplitude, phase) for the six degrees of freedom.
 std::string row(double heading, double omega, const double (&dof)[12]) {
-  std::string s = std::to_string(heading) + "," + std::to_string(omega);
-  for (double v : dof) s += "," + std::to_string(v);
-  return s + "\n";
+  std::ostringstream s;
+  s.precision(17);
+  s << heading << "," << omega;
+  for (double v : dof) s << "," << v;
+  s << "\n";
+  return s.str();
 }
 
 // Writes `text` to a file of this process's temporary folder and returns its path.
