@@ -5,7 +5,7 @@ import math
 
 G = 9.81
 HEADINGS = [0, 45, 90, 135, 180, 225, 270, 315]    # [deg] direction the waves travel towards, from the bow to port
-OMEGAS = [round(0.2 + 0.1 * i, 1) for i in range(19)]  # [rad/s] 0.2 ... 2.0
+OMEGAS = [round(0.1 + 0.1 * i, 1) for i in range(35)]  # [rad/s] 0.1 ... 3.5
 
 
 def cutoff(omega, corner):
