@@ -12,6 +12,7 @@
 #include "riser/riser_current.hpp"
 #include "riser/riser_model.hpp"
 #include "riser/riser_parameters.hpp"
+#include "riser/riser_plausibility.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
 
@@ -106,6 +107,21 @@ TEST(RiserCurrent, BadTablesNameTheirRow) {
                 "current.profile[2].depth = 50: must be greater than the previous row's depth 50"),
             std::string::npos)
       << messages(checkRiserParameters(p));
+}
+
+// A row faster than ocean currents (3 m/s) is named by the plausibility warnings; the unused linear fields are not.
+TEST(RiserCurrent, ImplausibleRowSpeedIsWarned) {
+  RiserParameters p = linearCurrent();
+  p.current_type = "table";
+  p.current_speed_surface = 5.0;
+  p.current_profile = {{0.0, 1.0, 0.0}, {100.0, 3.5, 0.0}};
+  int rows = 0, linear = 0;
+  for (const FieldError& w : riserPlausibility(p)) {
+    rows += w.path == "current.profile[1].speed";
+    linear += w.path.rfind("current.speed", 0) == 0;
+  }
+  EXPECT_EQ(rows, 1);
+  EXPECT_EQ(linear, 0);
 }
 
 // A file from before the table: type linear added with a note, and the same model.
