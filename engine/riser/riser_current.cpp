@@ -4,20 +4,16 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "core/angles.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::riser {
 namespace {
 
 using P = RiserParameters;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+std::string num(double v) { return formatText("%g", v); }
 
 SchemaBinder<CurrentProfileRow> profileRowBinder() {
   SchemaBinder<CurrentProfileRow> b;

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "core/angles.hpp"
+#include "core/text_format.hpp"
 #include "core/ocean_waves.hpp"
 #include "core/resources.hpp"
 
@@ -20,11 +20,7 @@ constexpr const char* kExpectedColumns =
     "columns heading [deg], omega [rad/s] (or period [s]), and <dof>_amplitude, <dof>_phase [deg] for surge, sway, "
     "heave (m/m), roll, pitch, yaw (deg/m)";
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+std::string num(double v) { return formatText("%g", v); }
 
 // a + w (b − a) for amplitudes; for phases along the shorter arc.
 double lerp(double a, double b, double w) { return a + w * (b - a); }
