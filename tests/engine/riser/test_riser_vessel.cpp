@@ -15,10 +15,13 @@
 #include <gtest/gtest.h>
 
 #include "core/ocean_waves.hpp"
+#include "core/run_context.hpp"
 #include "riser/riser_model.hpp"
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_vessel.hpp"
+#include "riser/riser_scene.hpp"
 #include "riser/riser_waves.hpp"
+#include "riser_test_cases.hpp"
 
 namespace maris::riser {
 namespace {
@@ -306,6 +309,34 @@ TEST(RiserVessel, DirectionsAndFrequenciesOutsideTheTableAreWarned) {
   ASSERT_EQ(m.vessel->warnings.size(), 2u);
   EXPECT_NE(m.vessel->warnings[0].find("outside the RAO frequencies [0.4, 1]"), std::string::npos) << m.vessel->warnings[0];
   EXPECT_NE(m.vessel->warnings[1].find("relative wave direction 120"), std::string::npos) << m.vessel->warnings[1];
+}
+
+// The built-in floater case, 12 s: the integrated riser's top (a tensioner: horizontal motion prescribed) is where
+// the vessel puts it at every history sample, and the run warns of nothing (the RAO table covers the sea's band).
+TEST(RiserVessel, BuiltInRunMovesTheTopWithTheVessel) {
+  RiserParameters p = test::builtinParameters("scenarios/riser/riser_vessel_rao_sea.json");
+  p.end_time = 12.0;
+  p.stress_times = {12.0};
+  p.frame_count = 12;
+  EXPECT_TRUE(checkRiserParameters(p).empty());
+  const RiserModel m = buildRiserModel(p);
+  ASSERT_TRUE(m.vessel);
+  EXPECT_TRUE(m.vessel->warnings.empty());
+  RunContext context;
+  const Results r = solveRiser(p, context);
+  const Table& history = *r.findTable("history");
+  const auto& time = history.find("time")->values;
+  const auto& top_x = history.find("top_x")->values;
+  const auto& top_y = history.find("top_y")->values;
+  double moved = 0.0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    const TopKinematics top = m.topAt(time[k]);
+    EXPECT_NEAR(top_x[k], top.position.x(), 1e-9) << "t = " << time[k];
+    EXPECT_NEAR(top_y[k], top.position.y(), 1e-9) << "t = " << time[k];
+    moved = std::max(moved, std::hypot(top_x[k] - m.top_mean.x(), top_y[k] - m.top_mean.y()));
+  }
+  EXPECT_GT(moved, 0.01);  // the ramp has started the motion by 12 s
+  EXPECT_NEAR(m.top_mean.x(), 10.0, 1e-12);  // the static offset
 }
 
 }  // namespace
