@@ -64,6 +64,7 @@ class VesselMotion {
  public:
   Vec3 reference = Vec3::Zero();  // [m] mean position of the RAO origin (the wave phase reference), global
   std::vector<std::string> warnings;  // frequencies or heading outside the table (scene warnings)
+  double mean_period = 0.0;  // [s] T_m01 = 2π Σa²/Σa²ω of the wave train (sets the automatic time step)
 
   // Displacement of the hang-off point from its mean position, its velocity and acceleration (global).
   TopKinematics at(double t) const;

@@ -16,6 +16,7 @@
 
 #include "core/ocean_waves.hpp"
 #include "core/run_context.hpp"
+#include "riser/riser_integration.hpp"
 #include "riser/riser_model.hpp"
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_vessel.hpp"
@@ -309,6 +310,28 @@ TEST(RiserVessel, DirectionsAndFrequenciesOutsideTheTableAreWarned) {
   ASSERT_EQ(m.vessel->warnings.size(), 2u);
   EXPECT_NE(m.vessel->warnings[0].find("outside the RAO frequencies [0.4, 1]"), std::string::npos) << m.vessel->warnings[0];
   EXPECT_NE(m.vessel->warnings[1].find("relative wave direction 120"), std::string::npos) << m.vessel->warnings[1];
+}
+
+// The automatic step under a vessel-driven top: 50 implicit steps per mean wave period T_m01 = 2π m0/m1 of the
+// synthesised sea (as under a harmonic top), not end_time/200.
+TEST(RiserVessel, AutomaticImplicitStepResolvesTheMeanWavePeriod) {
+  RiserParameters p = test::builtinParameters("scenarios/riser/riser_vessel_rao_sea.json");
+  p.time_step = 0.0;
+  p.end_time = 600.0;
+  p.frame_count = 600;
+  const RiserModel m = buildRiserModel(p);
+  double m0 = 0.0, m1 = 0.0;
+  for (const auto& c : m.sea->field.components()) {
+    m0 += 0.5 * c.amplitude * c.amplitude;
+    m1 += 0.5 * c.amplitude * c.amplitude * c.omega;
+  }
+  const double mean_period = 2 * kPiValue * m0 / m1;
+  EXPECT_NEAR(m.vessel->mean_period, mean_period, 1e-12 * mean_period);
+  EXPECT_GT(mean_period, 7.0);  // JONSWAP Tp = 11 s, γ = 3.3: T_m01 ≈ 0.77 Tp
+  EXPECT_LT(mean_period, 10.0);
+  const IntegrationPlan plan = planIntegration(m, p);
+  EXPECT_LE(plan.step, mean_period / 50 * (1 + 1e-12));
+  EXPECT_GT(plan.step, mean_period / 100);  // rounded down to whole steps per 1 s frame only
 }
 
 // The built-in floater case, 12 s: the integrated riser's top (a tensioner: horizontal motion prescribed) is where
