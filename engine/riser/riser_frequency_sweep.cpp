@@ -76,8 +76,8 @@ double submergedWeight(const RiserModel& m) {
 }
 
 std::optional<ConveyingPipe> conveyingPipeOf(const RiserParameters& p, const RiserModel& m) {
-  const bool straight = std::hypot(p.bottom_x - p.top_x, p.bottom_y - p.top_y) == 0.0;
-  const bool calm = p.current_speed_surface == 0.0 && p.current_speed_seabed == 0.0;
+  const bool straight = std::hypot(p.bottom_x - m.top_mean.x(), p.bottom_y - m.top_mean.y()) == 0.0;
+  const bool calm = m.current_profile.max_speed == 0.0;
   if (m.top != TopCondition::Tensioner || m.bottom != BottomCondition::Pinned || !p.sections.empty() || !calm ||
       !p.point_loads.empty() || !straight)
     return std::nullopt;

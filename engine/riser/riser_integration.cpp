@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "core/ode.hpp"
 #include "riser/riser_charted_alpha.hpp"
+#include "riser/riser_vessel.hpp"
 
 namespace maris::riser {
 namespace {
@@ -204,6 +205,11 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   if (harmonic_top) h_rk4 = std::min(h_rk4, p.motion_period / 40);
   // Implicit: 50 steps per top period (or per run), unresolved fast modes are damped (ρ∞ = 0.8).
   double h_implicit = harmonic_top ? p.motion_period / 50 : std::max(p.end_time, 1e-9) / 200;
+  // A top moved by the vessel follows the waves: the same step counts per mean wave period T_m01.
+  if (m.vessel) {
+    h_rk4 = std::min(h_rk4, m.vessel->mean_period / 40);
+    h_implicit = std::min(h_implicit, m.vessel->mean_period / 50);
+  }
   const std::string& choice = p.integrator;
   if (choice == "rk4") {
     plan.method = Integrator::Rk4;

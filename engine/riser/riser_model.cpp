@@ -1,4 +1,5 @@
 #include "riser/riser_model.hpp"
+#include "riser/riser_vessel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -75,13 +76,7 @@ std::vector<Vec3> arcPoints(const Vec3& a, const Vec3& b, double length, const s
 
 }  // namespace
 
-Vec3 RiserModel::currentAt(double z) const {
-  if (z > water_level) return Vec3::Zero();
-  const double depth = water_level - seabed_level;
-  const double f = depth > 0 ? std::clamp((water_level - z) / depth, 0.0, 1.0) : 0.0;
-  const double speed = current_surface + f * (current_seabed - current_surface);
-  return speed * Vec3(std::cos(current_direction), std::sin(current_direction), 0.0);
-}
+Vec3 RiserModel::currentAt(double z) const { return current_profile.at(z); }
 
 TopKinematics TopMotionSpline::at(double t) const {
   const std::size_t last = time.size() - 1;
@@ -130,6 +125,11 @@ TopMotionSpline buildTopMotionSpline(const std::vector<TopMotionRow>& rows, bool
 }
 
 TopKinematics RiserModel::topAt(double t) const {
+  if (vessel) {
+    TopKinematics k = vessel->at(t);
+    k.position += top_mean;
+    return k;
+  }
   if (!top_table.empty()) {
     TopKinematics k = top_table.at(t);
     k.position += top_mean;
@@ -262,6 +262,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   m.current_surface = p.current_speed_surface;
   m.current_seabed = p.current_speed_seabed;
   m.current_direction = radiansFromDegrees(p.current_direction_deg);
+  m.current_profile = buildCurrentProfile(p);
   m.point_loads = p.point_loads;
   m.sea = buildRiserSea(p);
   m.seabed = buildRiserSeabed(p);
@@ -270,7 +271,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   std::vector<double> s(m.n + 2);
   for (int i = 0; i <= m.n; ++i) s[i] = m.segments[i].arc_start;
   s[m.n + 1] = m.length;
-  Vec3 top(p.top_x, p.top_y, p.top_z);
+  Vec3 top(p.top_x + p.vessel_offset_x, p.top_y + p.vessel_offset_y, p.top_z + p.vessel_offset_z);
   const bool fixed_bottom = bottomHeld(m);
   std::vector<Vec3> points;
   if (m.top == TopCondition::Tensioner) {
@@ -293,6 +294,8 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   }
   m.initial_top = top;
   m.top_mean = top;
+  if (p.top_motion == "vessel" && m.top != TopCondition::Free && m.sea)
+    m.vessel = buildVesselMotion(p, m.sea, top, m.top == TopCondition::Tensioner);
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
   Vec3 previous = Vec3::UnitX();
   for (int i = 0; i <= m.n; ++i) {

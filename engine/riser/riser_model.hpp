@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "riser/riser_current.hpp"
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_seabed.hpp"
 #include "riser/riser_waves.hpp"
@@ -39,6 +40,8 @@ inline Mat3 skew(const Vec3& v) {
   s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
   return s;
 }
+
+class VesselMotion;
 
 enum class TopCondition { Pinned, Clamped, Tensioner, Free };
 enum class BottomCondition { Pinned, Clamped, Free, Spring };
@@ -115,17 +118,19 @@ struct RiserModel {
   TopMotionSpline top_table;                   // non-empty: top motion from the time table (replaces harmonic)
   double flow_speed = 0.0;                     // [m/s] u of the internal flow (eqs 43-52)
   double current_surface = 0.0, current_seabed = 0.0, current_direction = 0.0;  // [m/s], [m/s], [rad]
+  CurrentProfile current_profile;              // what currentAt evaluates (riser_current.hpp)
   std::vector<PointLoadRow> point_loads;
   std::shared_ptr<const RiserSea> sea;                  // waves (riser_waves.hpp); null: none
   std::shared_ptr<const RiserSeabed> seabed;            // sea-bed contact (riser_seabed.hpp); null: none
+  std::shared_ptr<const VesselMotion> vessel;           // top.motion = vessel (riser_vessel.hpp); null: none
   std::vector<Eigen::Quaterniond> initial_orientation;  // n+1 segment orientations R_GS of the initial shape
   Vec3 initial_top = Vec3::Zero();                      // [m] top position of the initial shape
 
   int segmentCount() const { return n + 1; }
   bool isDynamic(int i) const { return i >= first_dynamic && i <= last_dynamic; }
-  // Current velocity at height z (linear between surface and sea bed, zero above the water).
+  // Current velocity at height z (current_profile: a table or linear between surface and sea bed; zero above the water).
   Vec3 currentAt(double z) const;
-  // Prescribed top motion at time t (mean position + ramped harmonic motion per axis, or the table).
+  // Prescribed top motion at time t (mean position + ramped harmonic motion per axis, the table, or the vessel).
   TopKinematics topAt(double t) const;
   // Segment index and local coordinate ξ of arc length s.
   std::pair<int, double> locate(double s) const;

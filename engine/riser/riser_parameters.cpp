@@ -8,8 +8,10 @@
 #include <sstream>
 
 #include "riser/riser_buoyancy.hpp"
+#include "riser/riser_current.hpp"
 #include "riser/riser_fatigue.hpp"
 #include "riser/riser_seabed.hpp"
+#include "riser/riser_vessel.hpp"
 #include "riser/riser_waves.hpp"
 
 namespace maris::riser {
@@ -104,6 +106,7 @@ SchemaBinder<P> makeBinder() {
   b.real("current.speed_seabed", &P::current_speed_seabed, "m/s", Range::closed(-20, 20), "Current at the sea bed");
   b.real("current.direction_deg", &P::current_direction_deg, "deg", Range::closed(-360, 360),
          "Current heading from +x towards +y");
+  bindCurrentProfile(b);
   b.choice("top.condition", &P::top_condition, {"pinned", "clamped", "tensioner", "free"},
            "Top end: ball joint, clamp, tensioner (vertical force, horizontal motion prescribed) or free");
   b.real("top.x", &P::top_x, "m", Range::any(), "Mean top position x");
@@ -118,10 +121,12 @@ SchemaBinder<P> makeBinder() {
   b.real("top.motion_phase_y_deg", &P::motion_phase_y_deg, "deg", Range::closed(-360, 360), "Phase of the y motion");
   b.real("top.motion_phase_z_deg", &P::motion_phase_z_deg, "deg", Range::closed(-360, 360), "Phase of the z motion");
   b.real("top.motion_ramp_time", &P::motion_ramp_time, "s", Range::nonNegative(1e5), "Smooth start of the motion");
-  b.choice("top.motion", &P::top_motion, {"harmonic", "table"},
-           "Top motion: harmonic per axis (amplitudes, period, phases) or the time table top_motion_table");
+  b.choice("top.motion", &P::top_motion, {"harmonic", "table", "vessel"},
+           "Top motion: harmonic per axis (amplitudes, period, phases), the time table top_motion_table, or the "
+           "vessel section's RAOs in the waves");
   b.table("top_motion_table", &P::top_motion_table, topMotionBinder(), 0, 100000,
           "Top displacement over time (clamped cubic spline; first/last row held outside the table)");
+  bindVesselParameters(b);
   b.choice("bottom.condition", &P::bottom_condition, {"pinned", "clamped", "free", "spring"},
            "Bottom end: ball joint at the anchor, clamp, free, or linear spring to the anchor");
   b.real("bottom.x", &P::bottom_x, "m", Range::any(), "Anchor x");
@@ -250,15 +255,17 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
                    "must be in [0, " + num(p.length) + "] (geometry.length)"});
   // An inextensible chain cannot reach an anchor farther than its length; exactly L is a singular (taut) system.
   const bool fixed_bottom = p.bottom_condition == "pinned" || p.bottom_condition == "clamped";
+  // The mean top: top.x/y/z moved by the static vessel offset.
+  const double top_x = p.top_x + p.vessel_offset_x, top_y = p.top_y + p.vessel_offset_y, top_z = p.top_z + p.vessel_offset_z;
   if (fixed_bottom && (p.top_condition == "pinned" || p.top_condition == "clamped")) {
-    const double chord = std::hypot(std::hypot(p.bottom_x - p.top_x, p.bottom_y - p.top_y), p.bottom_z - p.top_z);
+    const double chord = std::hypot(std::hypot(p.bottom_x - top_x, p.bottom_y - top_y), p.bottom_z - top_z);
     if (chord > 0.999 * p.length)
       e.push_back({"bottom.z", num(p.bottom_z),
                    "anchor is " + num(chord) + " m from the top: must be closer than 0.999·L = " +
                        num(0.999 * p.length) + " m (inextensible segments; use top.condition = tensioner)"});
   }
   if (fixed_bottom && p.top_condition == "tensioner") {
-    const double horizontal = std::hypot(p.bottom_x - p.top_x, p.bottom_y - p.top_y);
+    const double horizontal = std::hypot(p.bottom_x - top_x, p.bottom_y - top_y);
     if (horizontal > 0.9 * p.length)
       e.push_back({"bottom.x", num(p.bottom_x), "horizontal offset " + num(horizontal) +
                                                     " m from the top must be below 0.9·L = " + num(0.9 * p.length)});
@@ -286,6 +293,8 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
   checkWaveParameters(p, e);
   checkSeabedParameters(p, e);
   checkBuoyancyModules(p, e);
+  checkCurrentProfile(p, e);
+  checkVesselParameters(p, e);
   if (p.fatigue_enabled && p.fatigue_start_time >= p.end_time)
     e.push_back({"fatigue.start_time", num(p.fatigue_start_time),
                  "must be before solver.end_time = " + num(p.end_time) + " (no cycles would be counted)"});
@@ -422,6 +431,8 @@ std::vector<std::string> upgradeRiserParameters(Json& parameters) {
     parameters["buoyancy_modules"] = Json::array();
     notes.push_back("buoyancy_modules added, empty (new in the riser schema; save the scenario to keep it)");
   }
+  upgradeCurrentProfile(parameters, notes);
+  upgradeVesselParameters(parameters, notes);
   upgradeProbePosition(parameters, notes);
   upgradeAngles(parameters, notes);
   upgradeTangentialAddedMass(parameters, notes);

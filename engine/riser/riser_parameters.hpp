@@ -71,6 +71,13 @@ struct BuoyancyModuleRow {
   double added_mass_coefficient = 1.0;  // [-] on the modules' diameter
 };
 
+// One row of a current profile table (current.type = table): speed and heading at a depth below the water level.
+struct CurrentProfileRow {
+  double depth = 0.0;        // [m] below environment.water_level (rows of increasing depth)
+  double speed = 0.0;        // [m/s]
+  double heading_deg = 0.0;  // [deg] direction the current flows towards, from +x towards +y
+};
+
 struct RiserParameters {
   // geometry
   double length = 100.0;   // [m] unstretched length L
@@ -101,6 +108,8 @@ struct RiserParameters {
   double current_speed_surface = 1.0;      // [m/s] current at the water level
   double current_speed_seabed = 1.0;       // [m/s] current at the sea bed (linear in between)
   double current_direction_deg = 0.0;      // [deg] heading of the current in the xy-plane, from +x towards +y
+  std::string current_type = "linear";     // linear (the three fields above) | table (current_profile; riser_current.hpp)
+  std::vector<CurrentProfileRow> current_profile;  // table: speed and heading against depth, linear in between
   // top end
   std::string top_condition = "tensioner";  // "pinned", "clamped", "tensioner", "free"
   double top_x = 0.0;                       // [m] mean position of the top end
@@ -115,8 +124,19 @@ struct RiserParameters {
   double motion_phase_y_deg = 90.0;         // [deg] x and y a quarter period apart: an ellipse
   double motion_phase_z_deg = 0.0;          // [deg]
   double motion_ramp_time = 6.0;            // [s] smooth start of the top motion (0 = none)
-  std::string top_motion = "harmonic";      // "harmonic" (amplitudes above) or "table" (top_motion_table)
+  std::string top_motion = "harmonic";      // "harmonic" (amplitudes above), "table" (top_motion_table) or "vessel"
   std::vector<TopMotionRow> top_motion_table;  // time table of the top displacement (clamped cubic spline)
+  // vessel (riser_vessel.hpp; bound there): top.motion = vessel moves the top with a vessel's RAOs in the waves
+  std::string vessel_rao_file;              // CSV of displacement RAOs ("builtin:NAME" or a path)
+  std::string vessel_rao_phase = "lag";     // lag | lead: sign of the phases in the file
+  std::string vessel_rao_rotation_unit = "deg";  // deg | rad: roll, pitch, yaw amplitudes per metre of wave amplitude
+  double vessel_heading_deg = 0.0;          // [deg] vessel x axis (bow) from global +x towards +y
+  double vessel_hang_off_x = 0.0;           // [m] hang-off point (the top) from the RAO origin, vessel axes
+  double vessel_hang_off_y = 0.0;           // [m]
+  double vessel_hang_off_z = 0.0;           // [m]
+  double vessel_offset_x = 0.0;             // [m] static vessel offset: moves the top's mean position (global)
+  double vessel_offset_y = 0.0;             // [m]
+  double vessel_offset_z = 0.0;             // [m] (not for a tensioner, whose top height is set by the geometry)
   // bottom end
   std::string bottom_condition = "pinned";  // "pinned", "clamped", "free", "spring"
   double bottom_x = 0.0;                    // [m] anchor point

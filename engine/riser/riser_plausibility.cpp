@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "core/ocean_waves.hpp"
 #include "core/text_format.hpp"
@@ -53,8 +55,13 @@ std::vector<FieldError> riserPlausibility(const RiserParameters& p) {
     w.push_back({"bottom.z", num(p.bottom_z),
                  "the anchor is " + num(p.bottom_z - p.seabed_level) + " m above the sea bed (environment.seabed_level = " +
                      num(p.seabed_level) + " m): a riser anchored in mid-water"});
-  for (const auto& [path, speed] : {std::pair{"current.speed_surface", p.current_speed_surface},
-                                    std::pair{"current.speed_seabed", p.current_speed_seabed}})
+  std::vector<std::pair<std::string, double>> speeds;
+  if (p.current_type == "table")
+    for (std::size_t k = 0; k < p.current_profile.size(); ++k)
+      speeds.emplace_back("current.profile[" + std::to_string(k) + "].speed", p.current_profile[k].speed);
+  else
+    speeds = {{"current.speed_surface", p.current_speed_surface}, {"current.speed_seabed", p.current_speed_seabed}};
+  for (const auto& [path, speed] : speeds)
     if (std::abs(speed) > kFastestOceanCurrent)
       w.push_back({path, num(speed), "beyond " + num(kFastestOceanCurrent) +
                                          " m/s, faster than ocean currents met offshore; the drag coefficients are "

@@ -13,6 +13,7 @@
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser/riser_stress_convergence.hpp"
+#include "riser/riser_vessel.hpp"
 
 namespace maris::riser {
 
@@ -35,6 +36,8 @@ Results simulateRiser(const RiserModel& m, const RiserParameters& p, const Stati
 
 Results solveRiser(const RiserParameters& p, RunContext& context) {
   const RiserModel model = buildRiserModel(p);
+  if (model.vessel)
+    for (const std::string& w : model.vessel->warnings) context.warn(w);
   const StaticSolution statics = initialShape(model, p, context);
   // Natural frequencies about the static state: dense up to n = 199, shift-invert Krylov above (riser_modes_krylov).
   RiserModes modes;

@@ -35,7 +35,7 @@ class StaticProblem {
     force_ref_ = m_.top_tension;
     for (int i = 0; i <= m_.n; ++i) {
       const Segment& s = m_.segments[i];
-      const double v = std::max(std::abs(m_.current_surface), std::abs(m_.current_seabed));
+      const double v = m_.current_profile.max_speed;
       force_ref_ += (s.weight_per_length + s.buoyancy_per_length + s.normal_drag * v * v) * s.length;
       force_ref_ += m_.joints[i].stiffness.maxCoeff() / m_.length;
     }
@@ -345,6 +345,7 @@ RiserModel atRest(const RiserModel& model) {
   m.top_mean = model.topAt(0.0).position;
   m.top_table = TopMotionSpline{};
   m.motion_amplitude.setZero();
+  m.vessel = nullptr;
   m.sea = nullptr;  // calm water (the waves start from it with their ramp)
   return m;
 }
