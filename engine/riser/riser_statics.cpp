@@ -33,6 +33,7 @@ class StaticProblem {
             (bottomHeld(m_) ? 3 : 0);
     // Reference force for scaling: weight, tension, point loads, drag and spring stiffness.
     force_ref_ = m_.top_tension;
+    if (m_.axial_stiffness > 0) force_ref_ += std::abs(knownTopForce(m_, 2, 0.0, m_.initial_top, Vec3::Zero()));
     for (int i = 0; i <= m_.n; ++i) {
       const Segment& s = m_.segments[i];
       const double v = std::max(std::abs(m_.current_surface), std::abs(m_.current_seabed));
@@ -75,7 +76,7 @@ class StaticProblem {
     }
     for (std::size_t c = 0; c < top_free_.size(); ++c) {
       const int axis = top_free_[c];
-      const double known = m_.top == TopCondition::Tensioner ? lambda * m_.top_tension : 0.0;
+      const double known = knownTopForce(m_, axis, 0.0, x.top, Vec3::Zero(), lambda);
       r[c] = (below[axis] + known) / force_ref_;
     }
     if (bottomHeld(m_)) {
