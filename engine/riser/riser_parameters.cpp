@@ -444,6 +444,12 @@ std::vector<std::string> upgradeRiserParameters(Json& parameters) {
     (*output)["modes"] = true;
     notes.push_back("output.modes = true added (new in the riser schema: natural frequencies and modes, as before)");
   }
+  // Files from before the axial spring have inextensible risers.
+  auto model = parameters.find("model");
+  if (model != parameters.end() && model->is_object() && !model->contains("axial_flexibility")) {
+    (*model)["axial_flexibility"] = false;
+    notes.push_back("model.axial_flexibility = false added (new in the riser schema: inextensible, as before)");
+  }
   return notes;
 }
 
