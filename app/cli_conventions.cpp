@@ -59,15 +59,15 @@ std::string describeLeftOver(const CLI::App& app, const CLI::App& deepest) {
     if (&deepest != &app) addOptionNames(app, options);
     return "unknown option " + first + guessSuffix(first.substr(0, first.find('=')), options);
   }
-  if (&deepest == &app && app.get_require_subcommand_min() > 0) {
-    const auto commands = visibleCommands(app);
+  if (deepest.get_require_subcommand_min() > 0) {  // `maris-cli frob`, `maris-cli study frob`
+    const auto commands = visibleCommands(deepest);
     return "unknown command '" + first + "'" + guessSuffix(first, commands) + " (the commands: " + joined(commands) + ")";
   }
   return "unexpected extra argument '" + first + "'";
 }
 
 // CLI11's message for an error that is not a left-over argument, in the project's words where it helps.
-std::string describeParseError(const CLI::ParseError& error, const CLI::App& app, const CLI::App& deepest) {
+std::string describeParseError(const CLI::ParseError& error, const CLI::App& deepest) {
   const std::string what = error.what();
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&error)) {
     // CLI11: "--out: 1 required DIR missing".
@@ -78,8 +78,9 @@ std::string describeParseError(const CLI::ParseError& error, const CLI::App& app
       return name + " needs a value" + (type.empty() ? std::string() : " (" + type + ")");
     }
   }
-  if (dynamic_cast<const CLI::RequiredError*>(&error) && &deepest == &app && app.get_require_subcommand_min() > 0)
-    return "a command is required (the commands: " + joined(visibleCommands(app)) + ")";
+  if (dynamic_cast<const CLI::RequiredError*>(&error) && deepest.get_require_subcommand_min() > 0 &&
+      deepest.get_subcommands().empty())
+    return "a command is required (the commands: " + joined(visibleCommands(deepest)) + ")";
   return what;
 }
 
@@ -128,7 +129,7 @@ ParseOutcome parseArguments(CLI::App& app, const std::vector<std::string>& argum
   } catch (const CLI::ParseError& e) {
     // An argument nothing took explains the failure better than what it caused ("a command is required").
     error = describeLeftOver(app, innermost(app));
-    if (error.empty()) error = describeParseError(e, app, innermost(app));
+    if (error.empty()) error = describeParseError(e, innermost(app));
     if (arguments.empty()) outcome.output = app.help();
   }
   if (!error.empty()) {

@@ -1,6 +1,7 @@
 // maris-cli: the headless runner over the same engine as the GUI.
-//   maris-cli list | show NAME | schema SCENE [--json] | scenes | default
+//   maris-cli list | show NAME | schema SCENE|study [--json] | scenes | default
 //           | run FILE|NAME [--set path=value ...] [--out DIR] [--force] [--allow-large] [--no-plots]
+//           | validate FILE... | study run|run-cases|collect|submit ...   (cli_study.hpp)
 // Options are parsed with CLI11 under the conventions shared with `maris` (cli_conventions.hpp):
 // --help, --version, usage errors with exit code 1; the other exit codes are listed there.
 #include <atomic>
@@ -19,12 +20,16 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_conventions.hpp"
+#include "cli_study.hpp"
+#include "cli_study_internal.hpp"
 #include "core/errors.hpp"
 #include "core/input_limits.hpp"
+#include "core/resources.hpp"
 #include "core/run_folder.hpp"
 #include "core/run_output.hpp"
 #include "catalog.hpp"
 #include "plot_writer.hpp"
+#include "study/study_schema.hpp"
 
 namespace {
 
@@ -65,12 +70,6 @@ struct RunOptions {
   bool allow_large = false;            // --allow-large: run beyond the work limits
 };
 
-// Indents every line after the first of a multi-line message by two spaces.
-std::string indentLines(std::string text) {
-  for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3)) text.insert(at + 1, "  ");
-  return text;
-}
-
 int cmdList() {
   std::printf("%-34s %-8s %s\n", "NAME", "SCENE", "DESCRIPTION");
   for (const auto& b : builtinScenarios()) {
@@ -101,6 +100,10 @@ int cmdShow(const std::string& id) {
 }
 
 int cmdSchema(const std::string& scene_name, bool as_json) {
+  if (scene_name == "study" && !findScene(scene_name)) {  // the study file format
+    std::cout << (as_json ? study::studySchemaJson().dump(2) + "\n" : study::describeStudySchema());
+    return kExitOk;
+  }
   const auto& scene = requireScene(scene_name);
   if (as_json) {
     Json j{{"scene", scene.name}, {"title", scene.title}, {"description", scene.description},
@@ -142,7 +145,8 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
 
   Scenario scenario;
   std::string id;
-  if (std::filesystem::exists(std::filesystem::symlink_status(target))) {  // a link loop is reported by the loader
+  const bool from_file = std::filesystem::exists(std::filesystem::symlink_status(target));
+  if (from_file) {  // a link loop is reported by the loader
     scenario = loadScenarioFile(target);
     id = std::filesystem::path(target).stem().string();
   } else {
@@ -154,7 +158,12 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
   // Old field names first, so --set and the saved scenario.json use the current schema.
   for (const auto& note : upgradeParameters(scene, scenario.parameters))
     std::fprintf(stderr, "note: %s\n", note.c_str());
+  // The file's data paths are relative to its folder (scenario.json in DIR then names them absolutely);
+  // --set values are relative to the current folder, as anything typed in a shell.
+  if (from_file)
+    resolveDataPaths(scene.schema, scenario.parameters, std::filesystem::absolute(target).parent_path());
   for (const auto& o : options.overrides) applyOverride(scenario, o);
+  resolveDataPaths(scene.schema, scenario.parameters, std::filesystem::current_path());  // those given by --set
   if (out_dir.empty()) out_dir = "maris-results/" + id;
 
   // Everything that can refuse the run does so before the solve: work limits, then the output folder.
@@ -196,6 +205,7 @@ struct Commands {
   std::string scene;      // schema SCENE
   bool as_json = false;   // schema --json
   RunOptions run_options;
+  StudyCommands study;  // validate, study run|run-cases|collect|submit
 
   Commands() {
     applyConventions(app, true);
@@ -203,8 +213,9 @@ struct Commands {
     list = app.add_subcommand("list", "built-in scenarios (name, scene, description)");
     show = app.add_subcommand("show", "print a built-in scenario as JSON, ready to edit");
     show->add_option("NAME", name, "a built-in scenario's name (see `maris-cli list`)")->required()->type_name("");
-    schema = app.add_subcommand("schema", "the parameter schema of a scene (names, units, defaults, ranges)");
-    schema->add_option("SCENE", scene, "a scene's name (see `maris-cli scenes`)")->required()->type_name("");
+    schema = app.add_subcommand("schema", "the parameter schema of a scene (names, units, defaults, ranges), or of "
+                                          "study files (`schema study`)");
+    schema->add_option("SCENE", scene, "a scene's name (see `maris-cli scenes`), or study")->required()->type_name("");
     schema->add_flag("--json", as_json, "as JSON");
     scenes = app.add_subcommand("scenes", "the scenes compiled in");
     default_scenario = app.add_subcommand("default", "the name of the default built-in scenario");
@@ -220,6 +231,7 @@ struct Commands {
     run->add_flag("--no-plots", run_options.no_plots, "write no PNG plots");
     run->add_flag("--force", run_options.force, "replace an earlier run's results in DIR (as a whole)");
     run->add_flag("--allow-large", run_options.allow_large, "run beyond the work and memory limits");
+    study.add(app);
   }
 };
 
@@ -244,6 +256,7 @@ int main(int argc, char** argv) {
     }
     if (commands.show->parsed()) return cmdShow(commands.name);
     if (commands.schema->parsed()) return cmdSchema(commands.scene, commands.as_json);
+    if (const auto code = commands.study.dispatch(argc, argv)) return *code;
     if (commands.run->parsed()) {
       commands.run_options.out_given = commands.run->get_option("--out")->count() > 0;
       return cmdRun(commands.run_options, argc, argv);

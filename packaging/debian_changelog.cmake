@@ -44,8 +44,8 @@ function(maris_read_changelog file prefix)
   set(${prefix}_VERSIONS ${versions} PARENT_SCOPE)
 endfunction()
 
-# RFC 5322 date at 12:00 UTC of an ISO date (Sakamoto's day-of-week rule).
-function(maris_rfc5322_date iso out)
+# RFC 5322 date at <hour>:00 UTC of an ISO date (Sakamoto's day-of-week rule).
+function(maris_rfc5322_date iso hour out)
   string(REGEX MATCH "^([0-9]+)-0?([0-9]+)-0?([0-9]+)$" _ "${iso}")
   set(y ${CMAKE_MATCH_1})
   set(m ${CMAKE_MATCH_2})
@@ -61,7 +61,7 @@ function(maris_rfc5322_date iso out)
   set(months Jan Feb Mar Apr May Jun Jul Aug Sep Oct Nov Dec)
   list(GET months ${i} month)
   string(SUBSTRING "${iso}" 0 4 year)
-  set(${out} "${day}, ${d} ${month} ${year} 12:00:00 +0000" PARENT_SCOPE)
+  set(${out} "${day}, ${d} ${month} ${year} ${hour}:00:00 +0000" PARENT_SCOPE)
 endfunction()
 set(_maris_weekdays Sun Mon Tue Wed Thu Fri Sat)
 
@@ -86,8 +86,18 @@ endfunction()
 
 function(maris_debian_changelog prefix source revision maintainer file)
   set(text "")
+  # Entries are dated at noon UTC of their day; versions released on the same day as older ones come an
+  # hour later each, since Debian wants every entry newer than the one below it.
+  set(older ${${prefix}_VERSIONS})
   foreach(v IN LISTS ${prefix}_VERSIONS)
-    maris_rfc5322_date(${${prefix}_${v}_DATE} date)
+    list(REMOVE_AT older 0)
+    set(hour 12)
+    foreach(o IN LISTS older)
+      if(${prefix}_${o}_DATE STREQUAL ${prefix}_${v}_DATE)
+        math(EXPR hour "${hour} + 1")
+      endif()
+    endforeach()
+    maris_rfc5322_date(${${prefix}_${v}_DATE} ${hour} date)
     maris_changelog_item("${${prefix}_${v}_SUMMARY}" item)
     maris_changelog_item("The changes of this version are listed in changelog.gz (CHANGELOG.md of the source)." more)
     string(APPEND text "${source} (${v}-${revision}) unstable; urgency=medium\n\n${item}${more}\n"

@@ -8,7 +8,8 @@ packages=(
   libgtest-dev
   xvfb xauth
   file lintian appstream desktop-file-utils
-  python3
+  python3 locales
+  slurm-wlm munge
 )
 missing=()
 for p in "${packages[@]}"; do

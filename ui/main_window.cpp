@@ -27,6 +27,8 @@
 #include "run/results_summary.hpp"
 #include "run/run_panel.hpp"
 #include "scene_library.hpp"
+#include "study/study_panel.hpp"
+#include "study/study_runner.hpp"
 #include "themed_icon.hpp"
 #include "view3d/scene_view.hpp"
 
@@ -84,6 +86,22 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
   connect(browser_, &ScenarioBrowser::exampleActivated, this, &MainWindow::openExample);
   connect(browser_, &ScenarioBrowser::fileActivated, this, &MainWindow::openFile);
   connect(browser_, &ScenarioBrowser::openFileRequested, this, &MainWindow::openFileDialog);
+  connect(editor_, &ParameterEditor::sweepRequested, this, [this](const QString& path) {
+    // A quarter of the window for the study (its plot needs room); the 3D view and plots give way.
+    if (!study_dock_->isVisible()) {
+      study_dock_->show();
+      // Together with the left docks' width, or the left docks alone would give the room.
+      resizeDocks({left_dock_, study_dock_}, {std::min(440, width() / 4), std::max(380, width() / 4)}, Qt::Horizontal);
+    }
+    study_dock_->raise();
+    study_->sweep(path);
+  });
+  connect(study_, &StudyPanel::caseOpened, this, &MainWindow::openStudyCase);
+  connect(study_, &StudyPanel::message, this, [this](const QString& text) { status(text); });
+  connect(study_, &StudyPanel::logged, this,
+          [this](int level, const QString& text) { run_panel_->log(static_cast<RunPanel::Level>(level), text); });
+  connect(study_->runner(), &StudyRunner::runningChanged, this, &MainWindow::updateRunEnabled);
+  run_panel_->follow(study_->runner());
 
   // Sized to the screen it opens on; a geometry saved by an earlier session wins.
   if (const QScreen* screen = this->screen()) {
@@ -155,10 +173,14 @@ void MainWindow::createDocks() {
   editor_ = new ParameterEditor(document_, this);
   run_panel_ = new RunPanel(runs_, run_action_, cancel_action_, this);
   summary_ = new ResultsSummary(this);
+  study_ = new StudyPanel(document_, library_, this);
   QDockWidget* scenarios = dock(tr("Scenarios"), QStringLiteral("scenarioDock"), browser_, Qt::LeftDockWidgetArea);
   QDockWidget* parameters = dock(tr("Parameters"), QStringLiteral("parameterDock"), editor_, Qt::LeftDockWidgetArea);
   QDockWidget* run = dock(tr("Run"), QStringLiteral("runDock"), run_panel_, Qt::BottomDockWidgetArea);
   QDockWidget* results = dock(tr("Results"), QStringLiteral("resultsDock"), summary_, Qt::BottomDockWidgetArea);
+  left_dock_ = scenarios;
+  study_dock_ = dock(tr("Study"), QStringLiteral("studyDock"), study_, Qt::RightDockWidgetArea);
+  study_dock_->hide();  // shown by "Sweep this parameter…" or View ▸ Study
   splitDockWidget(scenarios, parameters, Qt::Vertical);
   splitDockWidget(run, results, Qt::Horizontal);
   resizeDocks({scenarios, parameters}, {220, 560}, Qt::Vertical);
@@ -166,7 +188,7 @@ void MainWindow::createDocks() {
   resizeDocks({run}, {270}, Qt::Vertical);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  for (QDockWidget* d : {scenarios, parameters, run, results}) view->addAction(d->toggleViewAction());
+  for (QDockWidget* d : {scenarios, parameters, run, results, study_dock_}) view->addAction(d->toggleViewAction());
   view->addSeparator();
   view->addAction(tr("Reset 3D &Camera"), this, [this] { view_->resetCamera(); });
   view->addSeparator();
@@ -244,18 +266,24 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::updateRunEnabled() {
-  const bool running = runs_->isRunning();
+  // A study and a single run share the cores and the progress bar: one at a time.
+  const bool running = runs_->isRunning() || study_->isRunning();
   const bool valid = document_->isValid();
   run_action_->setEnabled(valid && !running);
   cancel_action_->setEnabled(running);
   const int problems = static_cast<int>(document_->errors().size());
   if (document_->isEmpty())
     validity_->setText(tr("No scenario"));
+  else if (valid && !document_->warnings().empty() && !running)
+    validity_->setText(tr("Ready, %n plausibility warning(s)", nullptr, static_cast<int>(document_->warnings().size())));
   else if (valid)
     validity_->setText(running ? tr("Running…") : tr("Ready"));
   else
     validity_->setText(tr("%n invalid value(s)", nullptr, problems));
-  validity_->setStyleSheet(valid || document_->isEmpty() ? QString() : QStringLiteral("color: #d62728;"));
+  const bool doubtful = valid && !document_->warnings().empty();
+  validity_->setStyleSheet(!valid && !document_->isEmpty() ? QStringLiteral("color: #d62728;")
+                           : doubtful                     ? QStringLiteral("color: #a86400;")
+                                                          : QString());
 }
 
 void MainWindow::status(const QString& text, int timeout_ms) { statusBar()->showMessage(text, timeout_ms); }
@@ -275,6 +303,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     return;
   }
   runs_->cancel();
+  study_->cancelStudy();
   saveSettings();
   event->accept();
 }

@@ -15,6 +15,7 @@
 #include "theme.hpp"
 
 class QAction;
+class QDockWidget;
 class QMenu;
 class QLabel;
 class QSplitter;
@@ -31,6 +32,7 @@ class ResultsSummary;
 class PlotPanel;
 class LiveResults;
 class SceneView;
+class StudyPanel;
 
 // The size of a first window: 90 % of the screen's available area, at most 1600 × 1000.
 QSize defaultWindowSize(const QSize& available);
@@ -71,6 +73,9 @@ class MainWindow : public QMainWindow {
   LiveResults* liveResults() const { return live_; }
   ResultsSummary* summary() const { return summary_; }
   ScenarioBrowser* browser() const { return browser_; }
+  StudyPanel* study() const { return study_; }
+  // Shows case `index` of the study's results in the plots, 3D view and Results dock, as a run.
+  bool openStudyCase(int index);
   const RunHistory& history() const { return history_; }
   QAction* runAction() const { return run_action_; }
   QAction* cancelAction() const { return cancel_action_; }
@@ -130,6 +135,10 @@ class MainWindow : public QMainWindow {
   SceneView* view_ = nullptr;
   LiveResults* live_ = nullptr;
   QSplitter* central_ = nullptr;
+  StudyPanel* study_ = nullptr;
+  QDockWidget* study_dock_ = nullptr;
+  QDockWidget* left_dock_ = nullptr;  // the scenario browser's dock (the parameter editor's column)
+  quint64 next_study_case_id_ = 1'000'000'000;  // above the run controller's ids
   QLabel* validity_ = nullptr;
   QAction* run_action_ = nullptr;
   QAction* cancel_action_ = nullptr;

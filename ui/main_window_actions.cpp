@@ -18,6 +18,7 @@
 #include "run/run_panel.hpp"
 #include "scene_library.hpp"
 #include "start_folder.hpp"
+#include "study/study_panel.hpp"
 #include "view3d/scene_view.hpp"
 
 namespace maris::ui {
@@ -33,13 +34,13 @@ bool MainWindow::loadScenario(const Scenario& scenario, const QString& path, con
     status(last_error_);
     return false;
   }
-  // Results of another scene make no sense next to this scenario.
-  if (document_->scene() != scene) {
-    plots_->clear();
-    view_->clear();
-    summary_->clear();
-    shown_run_ = 0;
-  }
+  // Results of another scenario do not belong beside this one (probe 3 may sit at another arc length, the
+  // riser have another length): the views are cleared. The finished runs stay in the history, and runs of
+  // the same scenario are offered for overlays again once it runs.
+  plots_->clear();
+  view_->clear();
+  summary_->clear();
+  shown_run_ = 0;
   example_id_ = example_id;
   // Renamed fields of older files are rewritten before editing, so the editor shows them and Save writes them.
   Scenario upgraded = scenario;
@@ -141,7 +142,7 @@ bool MainWindow::writeReport(const QString& dir) {
 }
 
 bool MainWindow::startRun() {
-  if (runs_->isRunning() || !document_->isValid()) {
+  if (runs_->isRunning() || study_->isRunning() || !document_->isValid()) {
     if (!document_->isValid()) status(tr("Fix the invalid values first (marked red in the parameter editor)."));
     return false;
   }
@@ -169,6 +170,11 @@ bool MainWindow::confirmLargeRun() {
 }
 
 void MainWindow::cancelRun() {
+  if (study_->isRunning()) {
+    study_->cancelStudy();
+    status(tr("Cancelling the study…"), 0);
+    return;
+  }
   if (!runs_->isRunning()) return;
   runs_->cancel();
   status(tr("Cancelling…"), 0);
@@ -177,10 +183,11 @@ void MainWindow::cancelRun() {
 void MainWindow::showRecord(const RunRecord& record) {
   shown_run_ = record.id;
   plots_->showResults(record.results, record.label);
-  std::vector<RunRecord> same_scene;
+  // Overlays and the all-runs CSV combine runs whose columns mean the same: runs of the same scenario.
+  std::vector<RunRecord> same_scenario;
   for (const auto& r : history_.runs())
-    if (r.scenario.scene == record.scenario.scene) same_scene.push_back(r);
-  plots_->setAvailableRuns(same_scene, record.id);
+    if (sameScenario(r.scenario, record.scenario)) same_scenario.push_back(r);
+  plots_->setAvailableRuns(same_scenario, record.id);
   view_->showResults(record.results);
   summary_->showRun(record);
 }
@@ -193,6 +200,15 @@ void MainWindow::restoreShownRun() {
     plots_->clear();
     view_->clear();
   }
+}
+
+bool MainWindow::openStudyCase(int index) {
+  const std::optional<RunRecord> record = study_->caseRecord(index, next_study_case_id_++);
+  if (!record) return false;
+  showRecord(history_.add(*record, true));
+  if (!view_->isPlaying()) view_->setFrame(view_->frameCount() - 1);
+  status(tr("Showing %1").arg(record->label));
+  return true;
 }
 
 void MainWindow::onRunFinished(const RunRecord& finished) {

@@ -51,4 +51,15 @@ std::string readDataText(std::string_view path, std::string_view scene, const st
   return text;
 }
 
+void resolveDataPaths(const Schema& schema, Json& parameters, const std::filesystem::path& folder) {
+  for (const auto& field : schema.fields) {
+    if (!field.data_path) continue;
+    Json* value = const_cast<Json*>(findAtPath(parameters, field.path));
+    if (!value || !value->is_string()) continue;  // validation reports a wrong type
+    const std::string path = value->get<std::string>();
+    if (path.empty() || isBuiltinDataPath(path) || std::filesystem::path(path).is_absolute()) continue;
+    *value = (std::filesystem::absolute(folder) / path).lexically_normal().string();
+  }
+}
+
 }  // namespace maris

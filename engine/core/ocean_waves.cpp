@@ -84,6 +84,13 @@ double waveNumber(double omega, double depth, double gravity) {
   return k;
 }
 
+double groupVelocity(double omega, double depth, double gravity) {
+  const double k = waveNumber(omega, depth, gravity);
+  if (std::isinf(depth)) return 0.5 * omega / k;
+  const double kh2 = 2.0 * k * depth;
+  return 0.5 * omega / k * (1.0 + (kh2 > 700.0 ? 0.0 : kh2 / std::sinh(kh2)));
+}
+
 double uniform01(std::uint64_t draw) { return static_cast<double>(draw >> 11) * 0x1.0p-53; }
 
 WaveField::WaveField(std::vector<WaveComponent> components, double direction_rad, double depth, double gravity,

@@ -27,6 +27,9 @@ inline constexpr double kDeepWater = std::numeric_limits<double>::infinity();
 // Throws std::invalid_argument when ω ≤ 0, g ≤ 0 or h ≤ 0.
 double waveNumber(double omega, double depth, double gravity);
 
+// Group velocity C_g = ½ (ω/k)(1 + 2kh / sinh 2kh) [m/s] (deep water: g/(2ω)); same arguments and errors.
+double groupVelocity(double omega, double depth, double gravity);
+
 // How the linear kinematics reach the instantaneous surface η:
 //   Wheeler: evaluated at z' = h (z − η)/(h + η) (deep water z' = z − η), so z = η maps to z' = 0 and
 //            z = −h to −h (Wheeler 1970, J. Petroleum Technology 22(3), 359–367);

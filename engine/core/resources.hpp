@@ -2,10 +2,13 @@
 // executables run from any folder without an install step.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "core/schema.hpp"
 
 namespace maris {
 
@@ -27,5 +30,9 @@ bool isBuiltinDataPath(std::string_view path);
 std::optional<std::string> dataPathProblem(std::string_view path, std::string_view scene);
 // The text behind `path`; throws InputError(field, path, reason) when it cannot be read.
 std::string readDataText(std::string_view path, std::string_view scene, const std::string& field);
+// Makes every relative data path in `parameters` (the schema's fields marked data_path; not "builtin:",
+// not empty) absolute against `folder`, the folder of the file that holds them: a scenario or study finds
+// its data beside it whatever the current folder, and the scenario.json a run writes still finds it.
+void resolveDataPaths(const Schema& schema, Json& parameters, const std::filesystem::path& folder);
 
 }  // namespace maris

@@ -1,8 +1,10 @@
 #include "core/results.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
+#include "core/csv_field.hpp"
 #include "core/input_limits.hpp"
 
 namespace maris {
@@ -18,7 +20,13 @@ const Column* Table::find(const std::string& column_name) const {
   return nullptr;
 }
 
-static void appendCsvField(std::string& out, const std::string& field) {
+std::string csvNumber(double value) {
+  char text[64];
+  const auto result = std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
+  return std::string(text, result.ptr);
+}
+
+void appendCsvField(std::string& out, const std::string& field) {
   if (field.find_first_of(",\"\n") == std::string::npos) {
     out += field;
     return;
@@ -43,14 +51,11 @@ std::string Table::toCsv() const {
     appendCsvField(out, columns[i].unit.empty() ? "-" : columns[i].unit);
   }
   out += '\n';
-  char buf[32];
   for (std::size_t r = 0; r < rows(); ++r) {
     for (std::size_t i = 0; i < columns.size(); ++i) {
       if (i) out += ',';
       const double v = r < columns[i].values.size() ? columns[i].values[r] : std::nan("");
-      // 17 significant digits: the CSV round-trips the double exactly.
-      std::snprintf(buf, sizeof buf, "%.17g", v);
-      out += buf;
+      out += csvNumber(v);
     }
     out += '\n';
   }

@@ -86,6 +86,10 @@ struct View3D {
   std::string scalar_unit;       // "Pa"
   std::optional<double> water_level_z;  // [m] still-water free surface, drawn as a translucent plane
   std::optional<double> seabed_z;       // [m] sea bed plane
+  // Optional: the shapes the motion is measured from (a riser's static shape), drawn as a faint ghost. A
+  // frame's shape with the same name, kind and point count can be drawn with its displacement from its
+  // reference magnified (the view states the factor).
+  std::vector<Shape3D> reference;
   bool empty() const { return frames.empty(); }
 };
 

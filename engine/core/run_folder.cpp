@@ -42,6 +42,18 @@ void syncDirectory(const fs::path& dir) {
   ::close(fd);
 }
 
+// Makes every file below `dir` durable (written unsynced: writeStagedFile, plot images) with one
+// syncfs(2) of its file system: one flush of the device instead of one per file (each fsync of a freshly
+// written file costs a journal commit and a device flush, ~4 ms here; a small run writes ten files).
+void syncTree(const fs::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) fail("cannot read back " + quoted(dir) + ": " + std::strerror(errno));
+  const bool synced = ::syncfs(fd) == 0;
+  const int err = errno;
+  ::close(fd);
+  if (!synced) fail("cannot write the files of " + quoted(dir) + ": " + std::strerror(err));
+}
+
 }  // namespace
 
 bool isRunFolder(const fs::path& dir) {
@@ -120,7 +132,7 @@ void RunFolder::release() {
 
 void RunFolder::commit() {
   if (committed_ || staging_.empty()) fail("run folder " + quoted(target_) + " was already committed");
-  syncDirectory(staging_);
+  syncTree(staging_);
   std::error_code ec;
   const bool exists = fs::exists(fs::symlink_status(target_, ec));
   if (!exists || fs::is_empty(target_, ec)) {

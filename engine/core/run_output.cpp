@@ -7,9 +7,6 @@
 
 namespace maris {
 
-namespace {
-
-// "2026-11-28T11:12:08Z": ISO 8601, UTC, whole seconds.
 std::string isoUtc(std::chrono::system_clock::time_point t) {
   const std::time_t seconds = std::chrono::system_clock::to_time_t(t);
   std::tm utc{};
@@ -18,8 +15,6 @@ std::string isoUtc(std::chrono::system_clock::time_point t) {
   return std::string(text, std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc));
 }
 
-}  // namespace
-
 std::vector<std::filesystem::path> writeRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
                                                   const Results& results,
                                                   std::chrono::system_clock::time_point started_at) {
@@ -27,7 +22,7 @@ std::vector<std::filesystem::path> writeRunFolder(const std::filesystem::path& d
   std::vector<std::filesystem::path> written;
   auto put = [&](const std::string& name, const std::string& content) {
     const auto file = dir / name;
-    writeFileAtomic(file, content);
+    writeStagedFile(file, content);
     written.push_back(file);
   };
   put("scenario.json", scenarioToText(scenario));

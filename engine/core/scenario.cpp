@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include <sys/stat.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "core/input_limits.hpp"
@@ -82,24 +83,30 @@ Scenario loadScenarioFile(const std::filesystem::path& file) {
   return scenarioFromText(readTextFile(file), file.string());
 }
 
+namespace {
+
+// Writes all of `content` to `fd`; false (errno set) on an error.
+bool writeAll(int fd, const std::string& content) {
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+}  // namespace
+
 void writeFileAtomic(const std::filesystem::path& file, const std::string& content) {
   const auto dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
   std::string tmpl = (dir / ("." + file.filename().string() + ".XXXXXX")).string();
   const int fd = ::mkstemp(tmpl.data());
   if (fd < 0) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
-  std::size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0) {
-      const int err = errno;
-      ::close(fd);
-      ::unlink(tmpl.c_str());
-      throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(err));
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const int err = errno;
+  const bool written = writeAll(fd, content) && ::fsync(fd) == 0;
+  const int write_error = errno;
+  if (::close(fd) != 0 || !written) {
+    const int err = written ? errno : write_error;
     ::unlink(tmpl.c_str());
     throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(err));
   }
@@ -110,6 +117,15 @@ void writeFileAtomic(const std::filesystem::path& file, const std::string& conte
     ::unlink(tmpl.c_str());
     throw std::runtime_error("cannot write " + file.string() + ": " + ec.message());
   }
+}
+
+void writeStagedFile(const std::filesystem::path& file, const std::string& content) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
+  const bool written = writeAll(fd, content);
+  const int write_error = errno;
+  if (::close(fd) != 0 || !written)
+    throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(written ? errno : write_error));
 }
 
 void saveScenarioFile(const Scenario& scenario, const std::filesystem::path& file) {

@@ -34,6 +34,9 @@ void saveScenarioFile(const Scenario& scenario, const std::filesystem::path& fil
 // Writes `content` to `file` atomically: a temp file in the same folder, flushed, then renamed.
 // Throws std::runtime_error naming the file and the OS error.
 void writeFileAtomic(const std::filesystem::path& file, const std::string& content);
+// Writes `content` to `file` in place, without syncing it: for a file in a private staging folder that
+// is synced and moved into place as a whole (RunFolder::commit). Throws std::runtime_error.
+void writeStagedFile(const std::filesystem::path& file, const std::string& content);
 std::string readTextFile(const std::filesystem::path& file);
 
 // Applies "geometry.length=120" to scenario.parameters. The value is parsed as JSON when it

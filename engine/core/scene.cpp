@@ -31,6 +31,15 @@ WorkEstimate estimateWork(const SceneDefinition& scene, const Json& parameters) 
   return scene.estimate(upgraded);
 }
 
+std::vector<FieldError> plausibilityWarnings(const SceneDefinition& scene, const Json& parameters) {
+  if (!scene.plausibility || !validateParameters(scene, parameters).empty()) return {};
+  Json upgraded = parameters;
+  upgradeParameters(scene, upgraded);
+  std::vector<FieldError> warnings = scene.plausibility(upgraded);
+  for (auto& w : warnings) w.path = "parameters." + w.path;
+  return warnings;
+}
+
 Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunContext& context) {
   if (scenario.scene != scene.name)
     throw InputError("scene", "\"" + scenario.scene + "\"", "does not match the solver's scene \"" + scene.name + "\"");
@@ -38,6 +47,11 @@ Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunC
   for (auto& note : upgradeParameters(scene, parameters)) context.warn(std::move(note));
   auto errors = validateParameters(scene, parameters);
   if (!errors.empty()) throw InputError(std::move(errors));
+  if (scene.plausibility)
+    for (auto& w : scene.plausibility(parameters)) {
+      w.path = "parameters." + w.path;
+      context.warn(w.str());
+    }
   const double t0 = context.elapsedSeconds();
   Results r = scene.run(parameters, context);
   r.stats.wall_time_s = context.elapsedSeconds() - t0;

@@ -33,12 +33,23 @@ struct SceneDefinition {
   // parameters in well under a second (no solve). Front ends refuse a run beyond defaultWorkLimits() unless
   // the user allows a large run (workLimitErrors(estimateWork(...))); a scene without it is never refused.
   std::function<WorkEstimate(const Json& parameters)> estimate;
+  // Optional: parameters that are valid but doubtful for what the model covers (a riser top in the air, a
+  // current beyond the drag data, waves steeper than a wave can be), each as path (relative to "parameters"),
+  // value and why. Never refuses a run: front ends show them before a run, and runScenario adds them to the
+  // run's warnings. A built-in example that warns says why in its description.
+  std::function<std::vector<FieldError>(const Json& parameters)> plausibility;
 };
 
 // Sets scene.estimate from a typed estimator over the scene's parameter struct.
 template <class P>
 void setWorkEstimate(SceneDefinition& scene, SchemaBinder<P> binder, std::function<WorkEstimate(const P&)> estimate) {
   scene.estimate = [binder, estimate](const Json& j) { return estimate(binder.read(j)); };
+}
+
+// Sets scene.plausibility from typed checks over the scene's parameter struct.
+template <class P>
+void setPlausibility(SceneDefinition& scene, SchemaBinder<P> binder, std::function<std::vector<FieldError>(const P&)> checks) {
+  scene.plausibility = [binder, checks](const Json& j) { return checks(binder.read(j)); };
 }
 
 // Builds a type-erased scene from a typed parameter struct P, its binder, a checker and a solver.
@@ -67,7 +78,11 @@ std::vector<FieldError> validateParameters(const SceneDefinition& scene, const J
 // The scene's estimate for these parameters (upgraded; all zero without an estimator or for invalid parameters).
 WorkEstimate estimateWork(const SceneDefinition& scene, const Json& parameters);
 
-// Upgrades a copy of the parameters (notes become warnings), validates (throws InputError with every
+// The scene's plausibility warnings for these parameters, paths prefixed with "parameters." (upgraded; none
+// without checks or for invalid parameters, which have errors instead).
+std::vector<FieldError> plausibilityWarnings(const SceneDefinition& scene, const Json& parameters);
+
+// Upgrades a copy of the parameters (notes become warnings; so do plausibility warnings), validates (throws InputError with every
 // problem), then runs. Fills stats.wall_time_s and warnings.
 Results runScenario(const SceneDefinition& scene, const Scenario& scenario, RunContext& context);
 

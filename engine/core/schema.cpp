@@ -350,6 +350,7 @@ static Json specToJson(const ParamSpec& f) {
     j["max_exclusive"] = f.range.max_open;
   }
   if (!f.choices.empty()) j["choices"] = f.choices;
+  if (f.data_path) j["data_path"] = true;
   if (!f.columns.empty()) {
     j["columns"] = Json::array();
     for (const auto& c : f.columns) j["columns"].push_back(specToJson(c));

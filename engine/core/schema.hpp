@@ -55,6 +55,8 @@ struct ParamSpec {
   std::vector<ParamSpec> columns;    // Table
   std::size_t min_items = 0;         // RealList / Table length bounds
   std::size_t max_items = 100000;
+  bool data_path = false;            // Text naming a data file or folder: a relative path resolves against the
+                                     // folder of the scenario or study file that holds it (resolveDataPaths)
 
   std::string group() const;  // first path component ("geometry")
   std::string key() const;    // last path component ("length")

@@ -38,6 +38,12 @@ class SchemaBinder {
   void text(std::string path, std::string P::*member, std::string description) {
     add(makeSpec(std::move(path), ParamKind::Text, "", Range::any(), std::move(description)), member);
   }
+  // A data file or folder ("builtin:NAME" or a path): text that resolveDataPaths makes absolute.
+  void dataPath(std::string path, std::string P::*member, std::string description) {
+    auto spec = makeSpec(std::move(path), ParamKind::Text, "", Range::any(), std::move(description));
+    spec.data_path = true;
+    add(std::move(spec), member);
+  }
   void realList(std::string path, std::vector<double> P::*member, std::string unit, Range element_range,
                 std::size_t min_items, std::size_t max_items, std::string description) {
     auto spec = makeSpec(std::move(path), ParamKind::RealList, std::move(unit), element_range, std::move(description));

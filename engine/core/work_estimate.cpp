@@ -41,7 +41,7 @@ std::vector<FieldError> workLimitErrors(const WorkEstimate& estimate, const Work
     WorkQuantity gigabytes{estimate.memory_bytes.value / 1e9, estimate.memory_bytes.parameters};
     check(errors, gigabytes, limits.memory_bytes / 1e9, "GB of memory");
   }
-  check(errors, estimate.seconds, limits.seconds, "s of solver work that cannot be cancelled (a dense eigen solve or FFT)");
+  check(errors, estimate.seconds, limits.seconds, "s of solver work that cannot be stopped once started (a dense eigen solve or FFT)");
   return errors;
 }
 

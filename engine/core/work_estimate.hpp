@@ -22,7 +22,7 @@ struct WorkEstimate {
   WorkQuantity cells;         // unknowns of the largest system (segments, mesh cells, panels, dense matrix order)
   WorkQuantity samples;       // numbers kept for the results (table entries, 3D frame points)
   WorkQuantity memory_bytes;  // peak memory of the solve [bytes]
-  WorkQuantity seconds;       // longest uninterruptible stretch (dense eigen solve, FFT) [s], estimated from its size
+  WorkQuantity seconds;       // longest call that cannot be stopped once started (dense eigen solve, FFT) [s], from its size
   double output_bytes = 0.0;  // size of the run's files [bytes] (CSV, JSON, plots)
 };
 
@@ -32,7 +32,7 @@ struct WorkLimits {
   double cells = 5e6;
   double samples = 2e8;
   double memory_bytes = 8e9;  // also at most half of the machine's physical memory (defaultWorkLimits)
-  double seconds = 5.0;       // a stretch that cannot be cancelled (dense eigen solve, one FFT) delays a cancellation
+  double seconds = 5.0;       // such a call keeps a core busy after a cancellation (core/abandonable.hpp) or delays it
 };
 
 WorkLimits defaultWorkLimits();

@@ -103,16 +103,16 @@ void bindOutputCalibrationSeries(SchemaBinder<P>& b) {
   b.integer("detail.cycles", &P::detail_cycles, "-", Range::closed(4, 2000), "Cycles recorded for history/spectrum");
   b.integer("detail.animation_frames", &P::animation_frames, "-", Range::closed(1, 1000), "Frames of the 3D view");
   b.boolean("calibration.enabled", &P::calibrate, "Fit the free coefficients to reference points first");
-  b.text("calibration.reference_file", &P::reference_file,
-         "CSV of reference points (flow_speed, submergence_ratio, amplitude, frequency, power + sigmas); "
-         "empty = the paper's points");
+  b.dataPath("calibration.reference_file", &P::reference_file,
+             "CSV of reference points (flow_speed, submergence_ratio, amplitude, frequency, power + sigmas); "
+             "empty = the paper's points");
   b.text("calibration.free_coefficients", &P::free_coefficients,
          "Comma-separated parameter paths to fit (see docs/fiv.md for the allowed ones)");
   b.integer("calibration.max_iterations", &P::calibration_iterations, "-", Range::closed(1, 500),
             "Levenberg–Marquardt iterations at most");
   b.choice("analysis.mode", &P::analysis, {"sweep", "post_process"},
            "Sweep the model over U and h*, or post-process an imported time series");
-  b.text("analysis.series_file", &P::series_file, "CSV with columns time [s], y [m], optional ydot [m/s], lift [N]");
+  b.dataPath("analysis.series_file", &P::series_file, "CSV with columns time [s], y [m], optional ydot [m/s], lift [N]");
   b.real("analysis.series_flow_speed", &P::series_flow_speed, "m/s", Range::positive(100),
          "Current speed of the imported series (for efficiency)");
 }

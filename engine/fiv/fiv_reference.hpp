@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/table_reader.hpp"
+
 namespace maris::fiv {
 
 struct ReferencePoint {
@@ -29,12 +31,7 @@ std::vector<ReferencePoint> loadReferencePoints(const std::string& file);
 // Label of an h* value for column names: "h1.11", "hinf".
 std::string submergenceLabel(double submergence_ratio);
 
-// Rows of a simple numeric CSV (names row, optional units row, '#' comments, empty cell = nullopt).
-struct CsvColumns {
-  std::vector<std::string> names;
-  std::vector<std::vector<std::optional<double>>> rows;
-  int column(const std::string& name) const;  // -1 if absent
-};
-CsvColumns parseNumericCsv(const std::string& text, const std::string& origin);
+// The shared table reader (core/table_reader.hpp) with the fiv conventions: empty cell = not given, "inf" read.
+TextTable parseNumericCsv(const std::string& text, const TableSpec& spec);
 
 }  // namespace maris::fiv

@@ -69,16 +69,19 @@ SpectralPeaks analyseSpectra(const std::vector<double>& displacement, const std:
 }
 
 ImportedSeries parseSeriesCsv(const std::string& text, const std::string& origin) {
-  const CsvColumns csv = parseNumericCsv(text, origin);
+  const TableSpec spec{"parameters.analysis.series_file", origin, "columns time, y and optional ydot, lift"};
+  const TextTable csv = parseNumericCsv(text, spec);
   const int ct = csv.column("time"), cy = csv.column("y"), cv = csv.column("ydot"), cl = csv.column("lift");
-  if (ct < 0 || cy < 0) throw InputError(origin, "header", "needs columns \"time\" and \"y\" (optional \"ydot\", \"lift\")");
+  if (ct < 0 || cy < 0)
+    throw InputError({tableError(spec, 0, "needs columns \"time\" and \"y\" (optional \"ydot\", \"lift\") in the names row")});
   ImportedSeries raw;
-  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
-    const auto& r = csv.rows[i];
-    if (!r[ct] || !r[cy] || (cv >= 0 && !r[cv]) || (cl >= 0 && !r[cl]))
-      throw InputError(origin, "data row " + std::to_string(i + 1), "has an empty cell");
+  for (const auto& row : csv.rows) {
+    const auto& r = row.cells;
+    for (int c : {ct, cy, cv, cl})
+      if (c >= 0 && (!r[c] || !std::isfinite(*r[c])))
+        throw InputError({tableError(spec, row.line, "expected a finite number", &csv, c)});
     if (!raw.time.empty() && *r[ct] <= raw.time.back())
-      throw InputError(origin, "data row " + std::to_string(i + 1), "time must increase strictly");
+      throw InputError({tableError(spec, row.line, "time must increase strictly from row to row", &csv, ct)});
     raw.time.push_back(*r[ct]);
     raw.y.push_back(*r[cy]);
     if (cv >= 0) raw.ydot.push_back(*r[cv]);

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/abandonable.hpp"
 #include "core/errors.hpp"
 #include "riser/riser_modes.hpp"
 #include "riser/riser_statics.hpp"
@@ -98,7 +99,7 @@ std::optional<ConveyingPipe> conveyingPipeOf(const RiserParameters& p, const Ris
 
 BendingPair firstTwoBendingFrequencies(const RiserModel& m, RunContext& context) {
   const StaticSolution statics = solveStatics(m, context);
-  const RiserModes modes = computeModes(m, statics, 12);
+  const RiserModes modes = runAbandonable(context, [m, statics] { return computeModes(m, statics, 12); });
   std::vector<double> distinct;
   for (std::size_t k = 0; k < modes.frequencies.size(); ++k) {
     if (modes.torsion_share[k] > 0.5) continue;

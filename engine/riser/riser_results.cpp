@@ -244,11 +244,13 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     Shape3D tube;
     tube.kind = Shape3D::Kind::Tube;
     tube.name = "riser";
-    tube.radius = std::max(0.5 * m_.segments[0].outer_diameter, 0.004 * m_.length);
+    tube.radius = 0.5 * m_.segments[0].outer_diameter;  // the real size: the 3D view thickens thin tubes and says so
     tube.points = prof.position;
     tube.scalars = prof.bending_stress;
     tube.scalars.front() = tube.scalars[1];
     tube.scalars.back() = tube.scalars[m_.n];
+    // The first frame is the start (the static shape when statics ran): the reference of the motion.
+    if (r_.view.reference.empty()) r_.view.reference.push_back(tube);
     fr.shapes.push_back(std::move(tube));
     Shape3D top;
     top.kind = Shape3D::Kind::Sphere;
@@ -303,6 +305,7 @@ std::shared_ptr<const Results> RiserRecorder::partialResults() const {
   out->view.scalar_unit = r_.view.scalar_unit;
   out->view.water_level_z = r_.view.water_level_z;
   out->view.seabed_z = r_.view.seabed_z;
+  out->view.reference = r_.view.reference;
   if (!r_.view.frames.empty()) out->view.frames.push_back(r_.view.frames.back());
   out->addScalar("time", history_.columns.front().values.back(), "s", "Simulated time reached so far");
   addProbeScalars(*out);

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <string>
 
+#include "core/abandonable.hpp"
 #include "core/scene.hpp"
 #include "riser/riser_envelope.hpp"
 #include "riser/riser_frequency_sweep.hpp"
 #include "riser/riser_integration.hpp"
+#include "riser/riser_plausibility.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser/riser_stress_convergence.hpp"
@@ -38,7 +40,8 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
   RiserModes modes;
   if (p.modes && p.solve_statics && 3 * (model.n + 1) <= 600) {
     context.progress(0.0, "natural frequencies");
-    modes = computeModes(model, statics, 6);
+    // Eigen's dense solve cannot be interrupted: a cancelled run leaves it to finish on its own.
+    modes = runAbandonable(context, [model, statics] { return computeModes(model, statics, 6); });
     if (modes.slowly_growing_count > 0)
       context.warn(slowGrowthNote(modes.slowly_growing_count, modes.largest_growth_rate, modes.largest_growth_per_radian));
     if (modes.unstable_count > 0)
@@ -76,6 +79,7 @@ SceneDefinition makeRiserScene() {
       riser::riserBinder(), riser::checkRiserParameters, riser::solveRiser);
   scene.upgrade = riser::upgradeRiserParameters;
   setWorkEstimate<riser::RiserParameters>(scene, riser::riserBinder(), riser::estimateRiserWork);
+  setPlausibility<riser::RiserParameters>(scene, riser::riserBinder(), riser::riserPlausibility);
   return scene;
 }
 

@@ -2,15 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 
 #include <Eigen/Dense>
 
 #include "core/checked_count.hpp"
 #include "core/errors.hpp"
+#include "core/formats/format_detect.hpp"
+#include "core/formats/peer_at2.hpp"
 #include "core/resources.hpp"
+#include "core/table_reader.hpp"
 
 namespace maris::seismic {
 
@@ -85,21 +86,23 @@ Accelerogram correctAccelerogram(const std::vector<double>& time, const std::vec
 }
 
 Accelerogram loadAccelerogram(const std::string& path, double dt, double peak_acceleration, const std::string& field) {
-  std::stringstream in(readDataText(path, "seismic", field));
+  const std::string text = readDataText(path, "seismic", field);
   std::vector<double> time, acc;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::replace(line.begin(), line.end(), ';', ' ');
-    std::istringstream row(line);
-    double t, a;
-    if (!(row >> t >> a)) {
-      if (time.empty()) continue;  // header line
-      throw InputError(field, "\"" + line + "\"", "expected two numbers (time [s], acceleration [m/s^2]) per row");
+  if (formats::detectFormat(text) == formats::FileFormat::peer_at2) {
+    // A PEER record: uniform step, accelerations in g (converted to m/s² by the reader).
+    const formats::PeerRecord rec = formats::parsePeerAt2(text, field, path);
+    acc = rec.acceleration;
+    for (std::size_t k = 0; k < acc.size(); ++k) time.push_back(static_cast<double>(k) * rec.dt);
+  } else {
+    TableSpec spec{field, path, "two columns: time [s], acceleration [m/s^2]; or a PEER .AT2 record"};
+    spec.names = TableSpec::Names::optional;
+    spec.min_columns = 2;
+    refuseForeignFormat(text, spec);
+    const TextTable table = parseTable(text, spec);
+    for (const auto& row : table.rows) {
+      time.push_back(*row.cells[0]);
+      acc.push_back(*row.cells[1]);
     }
-    time.push_back(t);
-    acc.push_back(a);
   }
   return correctAccelerogram(time, acc, dt, peak_acceleration, field);
 }

@@ -2,7 +2,8 @@
 //   - the paper's 0.2 s pulse, read as Liu's cubic B-spline displacement pulse (the text does not
 //     give its form): unit peak at T/2, spectrum [sin(πfT/4)/(πfT/4)]^4 with its first zero at 4/T;
 //   - a Ricker wavelet (displacement), peak frequency f_p, centred at t_c;
-//   - a recorded accelerogram (time [s], acceleration [m/s^2] CSV), baseline-corrected, scaled to a
+//   - a recorded accelerogram: a table of time [s], acceleration [m/s^2] (core/table_reader.hpp) or a PEER
+//     .AT2 record (core/formats/peer_at2.hpp, g to m/s^2 with g = 9.80665), baseline-corrected, scaled to a
 //     target peak acceleration and integrated twice.
 #pragma once
 

@@ -45,7 +45,7 @@ SchemaBinder<SeismicParameters> seismicBinder() {
          "Ricker peak frequency");
   b.real("input.amplitude", &P::input_amplitude, "m", Range::positive(10.0),
          "Peak incident displacement (pulse, Ricker)");
-  b.text("input.accelerogram_file", &P::accelerogram_file, "CSV file: time [s], acceleration [m/s^2]; builtin:synthetic_kanai_tajimi.csv for the shipped synthetic record");
+  b.dataPath("input.accelerogram_file", &P::accelerogram_file, "CSV or whitespace-separated file: time [s], acceleration [m/s^2]; or a PEER .AT2 record (in g, converted with g = 9.80665 m/s^2); builtin:synthetic_kanai_tajimi.csv for the shipped synthetic record");
   b.real("input.accelerogram_peak_acceleration", &P::accelerogram_peak_acceleration, "m/s^2", Range::positive(50.0),
          "Peak acceleration the record is scaled to");
   b.real("seabed.density", &P::seabed_density, "kg/m^3", Range::closed(500.0, 5000.0), "Seabed density");
@@ -119,7 +119,7 @@ std::vector<FieldError> checkSeismicParameters(const SeismicParameters& p) {
       errors.push_back({"geometry.layers[" + std::to_string(i) + "].vp", num(p.layers[i].vp),
                         "must be at least sqrt(2)·vs = " + num(root2 * p.layers[i].vs) + " m/s (Poisson ratio >= 0)"});
   if (p.input_kind == "accelerogram" && p.accelerogram_file.empty())
-    errors.push_back({"input.accelerogram_file", "\"\"", "must name a CSV file when input.kind is \"accelerogram\""});
+    errors.push_back({"input.accelerogram_file", "\"\"", "must name a CSV or PEER .AT2 file when input.kind is \"accelerogram\""});
   // Mesh size guard: Δ = v_min/(10 f_cut) over the model box.
   const ModelExtent box = modelExtent(p);
   const double delta = slowestSpeed(p) / (10.0 * p.cutoff_frequency);

@@ -33,8 +33,9 @@ WorkEstimate estimateSeismicWork(const SeismicParameters& p) {
   w.memory_bytes = {concurrent * per_job + 8.0 * snapshots, step_parameters};
   w.output_bytes = csvOutputBytes(recorded + snapshots / 4, 10);
   // The free-field synthesis' FFTs (FreeFieldSynthesis: ≥ 2× the trace, 8× beyond the SV critical angle) cannot be
-  // cancelled; core fft measured at 3.5e-8 s per n·log2 n on a loaded 2-core machine (0.75 s at n = 2^20).
-  constexpr double kFftSecondsPerButterflyLevel = 3.5e-8;
+  // cancelled; FFTW (FFTW_ESTIMATE plans, as core/spectrum makes them) measured at 1.26e-9 s per n·log2 n for
+  // n = 2^20 and 2^22 on a 2-core machine (26 ms and 116 ms), taken twice for a loaded one.
+  constexpr double kFftSecondsPerButterflyLevel = 2.5e-9;
   const double trace = steps + 8;
   const double n_fft = std::exp2(std::ceil(std::log2(8.0 * trace)));
   w.seconds = {kFftSecondsPerButterflyLevel * n_fft * std::log2(n_fft), step_parameters};

@@ -3,48 +3,12 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <cstdlib>
 #include <numeric>
 
 #include "core/errors.hpp"
+#include "core/table_reader.hpp"
 
 namespace maris::ship {
-
-namespace {
-
-std::string trim(std::string_view s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string_view::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r");
-  return std::string(s.substr(b, e - b + 1));
-}
-
-std::vector<std::string> splitCsvLine(std::string_view line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = line.find(',', start);
-    out.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
-
-bool parseNumber(const std::string& s, double& value) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  value = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size();
-}
-
-// The unit of a header name "x_m" is "m"; a bare name "x" has none (a units row must follow).
-bool headerNamesMetres(const std::vector<std::string>& header) {
-  return std::all_of(header.begin(), header.begin() + 3,
-                     [](const std::string& h) { return h.size() > 2 && h.substr(h.size() - 2) == "_m"; });
-}
-
-}  // namespace
 
 double OffsetsTable::deepest() const {
   double d = 0.0;
@@ -53,69 +17,48 @@ double OffsetsTable::deepest() const {
   return d;
 }
 
-OffsetsTable parseOffsetsCsv(std::string_view text, const std::string& origin) {
-  std::vector<FieldError> errors;
-  auto fail = [&](int line, const std::string& value, const std::string& message) {
-    if (errors.size() < 20) errors.push_back({origin, value, "line " + std::to_string(line) + ": " + message});
-  };
-  std::vector<std::string_view> lines;
-  for (std::size_t pos = 0; pos <= text.size();) {
-    auto nl = text.find('\n', pos);
-    if (nl == std::string_view::npos) nl = text.size();
-    lines.push_back(text.substr(pos, nl - pos));
-    pos = nl + 1;
-  }
-  std::size_t row = 0;
-  while (row < lines.size() && trim(lines[row]).empty()) ++row;
-  if (row == lines.size()) throw InputError(origin, "\"\"", "the offsets table is empty (expected a header x_m,z_m,half_breadth_m)");
-  const auto header = splitCsvLine(lines[row]);
-  if (header.size() < 3) throw InputError(origin, trim(lines[row]), "line 1: expected 3 columns x_m,z_m,half_breadth_m");
-  ++row;
-  if (!headerNamesMetres(header)) {
-    // A units row must follow and say metres for the three columns.
-    const auto units = row < lines.size() ? splitCsvLine(lines[row]) : std::vector<std::string>{};
-    if (units.size() < 3 || units[0] != "m" || units[1] != "m" || units[2] != "m")
-      throw InputError(origin, row < lines.size() ? trim(lines[row]) : "",
-                       "line " + std::to_string(row + 1) +
-                           ": the columns need units: name them x_m,z_m,half_breadth_m or add a units row m,m,m");
-    ++row;
+OffsetsTable parseOffsetsCsv(std::string_view text, const std::string& field, const std::string& file) {
+  TableSpec spec{field, file, "columns x_m,z_m,half_breadth_m (or x,z,half_breadth and a units row m,m,m)"};
+  spec.min_columns = 3;
+  refuseForeignFormat(text, spec);
+  TextTable csv = parseTable(text, spec, true);
+  std::vector<FieldError> errors = std::move(csv.errors);
+  // The unit of a name "x_m" is "m"; a bare name "x" needs "m" in the units row.
+  for (int c = 0; c < 3; ++c) {
+    const std::string& name = csv.names[c];
+    const bool metres = csv.units[c] == "m" || (name.size() > 2 && name.compare(name.size() - 2, 2, "_m") == 0);
+    if (!metres)
+      throw InputError({tableError(spec, 0,
+                                   "the columns need units: name them x_m,z_m,half_breadth_m or add a units row m,m,m",
+                                   &csv, c)});
   }
 
   OffsetsTable table;
-  for (; row < lines.size(); ++row) {
-    const int line = static_cast<int>(row) + 1;
-    if (trim(lines[row]).empty()) continue;
-    const auto f = splitCsvLine(lines[row]);
-    double v[3] = {0, 0, 0};
-    bool ok = true;
-    for (int c = 0; c < 3; ++c) {
-      const std::string field = c < static_cast<int>(f.size()) ? f[c] : std::string();
-      if (!parseNumber(field, v[c]) || !std::isfinite(v[c])) {
-        fail(line, field, "column " + header[c] + (field.empty() ? " is missing" : " is not a finite number"));
-        ok = false;
-      }
-    }
-    if (!ok) continue;
-    if (v[2] < 0.0) {
-      fail(line, f[2], "column " + header[2] + " is negative: half-breadths must be >= 0");
+  for (const auto& row : csv.rows) {
+    const auto& v = row.cells;
+    if (!v[0] || !v[1] || !v[2]) continue;  // a bad cell, already reported
+    if (*v[2] < 0.0) {
+      errors.push_back(tableError(spec, row.line, "is negative: half-breadths must be >= 0", &csv, 2));
       continue;
     }
-    if (v[1] > 0.0) {
+    if (*v[1] > 0.0) {
       ++table.ignored_rows_above_waterline;
       continue;
     }
-    if (table.stations.empty() || v[0] != table.stations.back().x) {
-      if (!table.stations.empty() && v[0] < table.stations.back().x) {
-        fail(line, f[0], "stations must be listed with x ascending (previous station x = " +
-                             std::to_string(table.stations.back().x) + " m)");
+    if (table.stations.empty() || *v[0] != table.stations.back().x) {
+      if (!table.stations.empty() && *v[0] < table.stations.back().x) {
+        errors.push_back(tableError(spec, row.line,
+                                    "stations must be listed with x ascending (previous station x = " +
+                                        std::to_string(table.stations.back().x) + " m)",
+                                    &csv, 0));
         continue;
       }
-      table.stations.push_back({v[0], {}, {}});
+      table.stations.push_back({*v[0], {}, {}});
     }
-    table.stations.back().z.push_back(v[1]);
-    table.stations.back().half_breadth.push_back(v[2]);
+    table.stations.back().z.push_back(*v[1]);
+    table.stations.back().half_breadth.push_back(*v[2]);
   }
-
+  const std::string origin = field;
   // Sort each station by z ascending and check it has distinct depths.
   for (auto& s : table.stations) {
     std::vector<std::size_t> order(s.z.size());

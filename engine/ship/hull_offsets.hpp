@@ -26,10 +26,11 @@ struct OffsetsTable {
   double deepest() const;                // [m] most negative z of any station
 };
 
-// Parses the CSV text. `origin` names the source in error messages (a parameter path or a file name).
-// Throws InputError listing every bad row: missing or non-numeric entries, negative or non-finite
-// half-breadths, stations out of order, duplicate z within a station, too few stations or points.
-OffsetsTable parseOffsetsCsv(std::string_view text, const std::string& origin);
+// Parses the CSV text with the shared table reader (core/table_reader.hpp). `field` (a parameter path) and
+// `file` name the source in error messages. Throws InputError listing every bad row: missing or non-numeric
+// entries, negative or non-finite half-breadths, stations out of order, duplicate z within a station, too few
+// stations or points.
+OffsetsTable parseOffsetsCsv(std::string_view text, const std::string& field, const std::string& file = "");
 
 // Multiplies every length of the table by `scale`.
 OffsetsTable scaledOffsets(const OffsetsTable& table, double scale);

@@ -6,6 +6,7 @@
 #include "core/errors.hpp"
 #include "core/input_limits.hpp"
 #include "core/resources.hpp"
+#include "core/table_reader.hpp"
 #include "core/scenario.hpp"
 #include "core/text_format.hpp"
 
@@ -41,7 +42,7 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
          "Parametric hull: waterline exponent p, Y ∝ 1 − |2ξ/L|^p");
   b.real("hull.section_exponent", &P::section_exponent, "-", Range::closed(1, 20),
          "Parametric hull: section exponent q, Y ∝ 1 − |z/T|^q");
-  b.text("hull.offsets_file", &P::offsets_file, "Offsets CSV (x_m,z_m,half_breadth_m) when hull.source = offsets_file");
+  b.dataPath("hull.offsets_file", &P::offsets_file, "Offsets CSV (x_m,z_m,half_breadth_m) when hull.source = offsets_file");
   b.real("hull.offsets_length_pp", &P::offsets_length_pp, "m", Range::positive(1000),
          "Lpp of the offsets file as written (the table is scaled to hull.length)");
   b.real("hull.wetted_surface", &P::wetted_surface, "m^2", Range::nonNegative(1e6),
@@ -90,9 +91,9 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
   b.real("numerics.relative_tolerance", &P::relative_tolerance, "-", Range::closed(1e-10, 0.1),
          "Relative tolerance of the wave-angle quadrature and tail, per speed");
   b.integer("numerics.threads", &P::threads, "-", Range::closed(0, 256), "Threads for the speed sweep (0 = all cores)");
-  b.text("measured.file", &P::measured_file,
-         "Optional CSV of measured points: columns froude, c_total; builtin:NAME for a data set shipped in "
-         "resources/data/ship (e.g. builtin:kcs_tokyo2015_case21_efd.csv)");
+  b.dataPath("measured.file", &P::measured_file,
+             "Optional CSV of measured points: columns froude, c_total; builtin:NAME for a data set shipped in "
+             "resources/data/ship (e.g. builtin:kcs_tokyo2015_case21_efd.csv)");
   return b;
 }
 
@@ -137,7 +138,7 @@ HullForm buildHullForm(const ShipParameters& p) {
     return makeParametricHull(p.length, p.beam, p.draft, p.waterline_exponent, p.section_exponent);
   if (p.hull_source == "offsets_file") {
     const std::string text = readDataText(p.offsets_file, "ship", "parameters.hull.offsets_file");
-    auto table = parseOffsetsCsv(text, "parameters.hull.offsets_file (" + p.offsets_file + ")");
+    auto table = parseOffsetsCsv(text, "parameters.hull.offsets_file", p.offsets_file);
     // The table is scaled by hull.length / hull.offsets_length_pp: an Lpp far from the stations' span (e.g. the
     // default 1 m left for a 7.3 m model) would scale the hull into nonsense.
     const double span = table.stations.back().x - table.stations.front().x;
@@ -152,56 +153,25 @@ HullForm buildHullForm(const ShipParameters& p) {
     if (p.hull_source != b.source) continue;
     const auto text = builtinResource(b.resource);
     if (!text) throw InputError("parameters.hull.source", Json(p.hull_source).dump(), "built-in table is missing");
-    return makeOffsetsHull(b.name, parseOffsetsCsv(*text, b.resource), b.length_pp, p.length / b.length_pp);
+    return makeOffsetsHull(b.name, parseOffsetsCsv(*text, "parameters.hull.source", b.resource), b.length_pp, p.length / b.length_pp);
   }
   throw InputError("parameters.hull.source", Json(p.hull_source).dump(), "unknown hull source");
 }
 
 MeasuredPoints readMeasuredPoints(const std::string& path) {
-  const std::string origin = "parameters.measured.file (" + path + ")";
-  const std::string text = readDataText(path, "ship", origin);
+  TableSpec spec{"parameters.measured.file", path, "columns froude and c_total (others ignored)"};
+  spec.empty_cells = true;
+  const TextTable csv = readTable(path, "ship", spec);
+  const int froude = csv.column("froude"), ct = csv.column("c_total");
+  if (froude < 0 || ct < 0) throw InputError({tableError(spec, 0, "expected a names row with columns froude and c_total")});
   MeasuredPoints m;
-  std::size_t pos = 0;
-  int line = 0, froude_col = -1, ct_col = -1;
   std::vector<FieldError> errors;
-  while (pos < text.size()) {
-    auto nl = text.find('\n', pos);
-    if (nl == std::string::npos) nl = text.size();
-    std::string row = text.substr(pos, nl - pos);
-    pos = nl + 1;
-    ++line;
-    if (!row.empty() && row.back() == '\r') row.pop_back();
-    if (row.empty()) continue;
-    std::vector<std::string> f;
-    for (std::size_t a = 0;;) {
-      const auto c = row.find(',', a);
-      f.push_back(row.substr(a, c == std::string::npos ? std::string::npos : c - a));
-      if (c == std::string::npos) break;
-      a = c + 1;
-    }
-    if (froude_col < 0) {
-      for (std::size_t k = 0; k < f.size(); ++k) {
-        if (f[k] == "froude") froude_col = static_cast<int>(k);
-        if (f[k] == "c_total") ct_col = static_cast<int>(k);
-      }
-      if (froude_col < 0 || ct_col < 0)
-        throw InputError(origin, row, "line 1: expected a header with columns froude and c_total");
-      continue;
-    }
-    char* end = nullptr;
-    const auto field = [&](int k) { return k < static_cast<int>(f.size()) ? f[k] : std::string(); };
-    const std::string sf = field(froude_col), sc = field(ct_col);
-    const double fn = std::strtod(sf.c_str(), &end);
-    const bool ok_fn = !sf.empty() && end == sf.c_str() + sf.size();
-    const double ct = std::strtod(sc.c_str(), &end);
-    const bool ok_ct = !sc.empty() && end == sc.c_str() + sc.size();
-    if (!ok_fn && !ok_ct && line == 2) continue;  // a units row
-    if (!ok_fn || !ok_ct || !std::isfinite(fn) || !std::isfinite(ct)) {
-      errors.push_back({origin, row, "line " + std::to_string(line) + ": froude and c_total must be numbers"});
-      continue;
-    }
-    m.froude.push_back(fn);
-    m.c_total.push_back(ct);
+  for (const auto& row : csv.rows) {
+    for (int c : {froude, ct})
+      if (!row.cells[c]) errors.push_back(tableError(spec, row.line, "expected a number, found an empty cell", &csv, c));
+    if (!row.cells[froude] || !row.cells[ct]) continue;
+    m.froude.push_back(*row.cells[froude]);
+    m.c_total.push_back(*row.cells[ct]);
   }
   if (!errors.empty()) throw InputError(std::move(errors));
   return m;

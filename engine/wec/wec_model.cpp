@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "core/errors.hpp"
+#include "core/ocean_waves.hpp"
+#include "core/wave_spectrum.hpp"
 #include "wec/wec_nemoh.hpp"
 #include "wec/wec_wamit.hpp"
 
@@ -101,23 +103,7 @@ FloatExcitation excitationAt(const WecModel& model, const FloatModel& f, double 
   return {s * h.surge.excitation * location, h.heave.excitation * location};
 }
 
-double finiteDepthWaveNumber(double omega, double gravity, double depth) {
-  const double w2 = omega * omega / gravity;
-  double k = std::max(w2, omega / std::sqrt(gravity * depth));
-  for (int i = 0; i < 50; ++i) {
-    const double th = std::tanh(k * depth);
-    const double f = k * th - w2, df = th + k * depth * (1.0 - th * th);
-    const double step = f / df;
-    k -= step;
-    if (std::abs(step) < 1e-15 * k) break;
-  }
-  return k;
-}
-
-double groupVelocity(double omega, double gravity, double depth) {
-  const double k = finiteDepthWaveNumber(omega, gravity, depth), kh2 = 2.0 * k * depth;
-  return 0.5 * omega / k * (1.0 + (kh2 > 700.0 ? 0.0 : kh2 / std::sinh(kh2)));
-}
+double waveNumber(double omega, double gravity) { return ocean::waveNumber(omega, ocean::kDeepWater, gravity); }
 
 // ---------------------------------------------------------------------------------------------
 double WaveField::ramp(double t) const {
@@ -144,22 +130,9 @@ WaveField makeRegularWave(double height, double omega, double ramp, double direc
 
 std::vector<double> spectrumDensity(const std::string& kind, double hs, double tp, double gamma,
                                     const std::vector<double>& omega) {
-  const double wp = 2.0 * kPi / tp;
-  auto shape = [&](double w) {
-    if (w <= 0.0) return 0.0;
-    const double pm = std::pow(w, -5.0) * std::exp(-1.25 * std::pow(wp / w, 4.0));
-    if (kind != "jonswap") return pm;
-    const double sigma = w <= wp ? 0.07 : 0.09;
-    return pm * std::pow(gamma, std::exp(-std::pow(w - wp, 2) / (2.0 * sigma * sigma * wp * wp)));
-  };
-  // Normalise so that 4√m0 = Hs, m0 integrated on a fine grid over [0.2, 6]·ω_p.
-  const int n = 4000;
-  double m0 = 0.0;
-  const double lo = 0.2 * wp, hi = 6.0 * wp, h = (hi - lo) / n;
-  for (int i = 0; i <= n; ++i) m0 += (i == 0 || i == n ? 0.5 : 1.0) * h * shape(lo + h * i);
-  const double scale = hs * hs / 16.0 / m0;
+  const ocean::WaveSpectrum spectrum = kind == "jonswap" ? ocean::jonswap(hs, tp, gamma) : ocean::piersonMoskowitz(hs, tp);
   std::vector<double> s(omega.size());
-  for (std::size_t i = 0; i < omega.size(); ++i) s[i] = scale * shape(omega[i]);
+  for (std::size_t i = 0; i < omega.size(); ++i) s[i] = spectrum.density(omega[i]);
   return s;
 }
 

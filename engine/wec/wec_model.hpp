@@ -77,12 +77,8 @@ WecModel buildWecModel(const WecParameters& p);
 // Cancellable through `context` (if given).
 void buildRadiation(WecModel& model, double kernel_duration, double kernel_dt, const RunContext* context = nullptr);
 
-// Deep-water wave number k = ω²/g [1/m].
-inline double waveNumber(double omega, double gravity) { return omega * omega / gravity; }
-// Finite-depth wave number: root of ω² = g k tanh(k h) (Newton from the deep-water value) [1/m],
-// and group velocity C_g = ½ (ω/k)(1 + 2kh / sinh 2kh) [m/s]. Used for the depth flag and checks.
-double finiteDepthWaveNumber(double omega, double gravity, double depth);
-double groupVelocity(double omega, double gravity, double depth);
+// Deep-water wave number k = ω²/g [1/m] (ocean::waveNumber with h = ∞).
+double waveNumber(double omega, double gravity);
 
 // Excitation per unit amplitude on float `f` at its equilibrium position for waves along `direction`:
 // the surge force of waves travelling along −x is the mirror image (sign flip), and the location phase
@@ -110,7 +106,8 @@ WaveField makeRegularWave(double height, double omega, double ramp, double direc
 // Irregular sea: equally spaced components on [0.3, 3.5]·ω_p (99.7 % of the variance), amplitudes √(2 S Δω)
 // rescaled so that the components' 4√m0 = Hs exactly, phases uniform from std::mt19937_64(seed).
 WaveField makeIrregularWave(const WecParameters& p, double direction);
-// One-sided spectrum S(ω) [m²·s/rad] (JONSWAP with σ = 0.07/0.09, or Pierson–Moskowitz), normalised to Hs.
+// One-sided spectrum S(ω) [m²·s/rad]: core/wave_spectrum's JONSWAP (σ = 0.07/0.09) or Pierson–Moskowitz, with
+// m0 = Hs²/16 over the whole frequency axis.
 std::vector<double> spectrumDensity(const std::string& kind, double hs, double tp, double gamma,
                                     const std::vector<double>& omega);
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/formats/tecplot.hpp"
 #include "core/resources.hpp"
 #include "wec/wec_radiation.hpp"
 
@@ -21,52 +22,13 @@ namespace {
                        what);
 }
 
-// One Tecplot zone: its title and its numeric rows (first column = frequency variable).
-struct Zone {
-  std::string title;
-  int line = 0;  // line of the zone header
-  std::vector<std::vector<double>> rows;
-};
+using Zone = formats::TecplotZone;
+using TecFile = formats::TecplotFile;
 
-struct TecFile {
-  std::string variables;  // text of the VARIABLES line
-  std::vector<Zone> zones;
-};
-
-bool isBlank(const std::string& s) { return s.find_first_not_of(" \t\r") == std::string::npos; }
-
+// Through the input gate, then the shared Tecplot reader; errors name the file and line.
 TecFile readTec(const std::filesystem::path& file) {
-  std::istringstream in(readDataText(file.string(), "wec", "parameters.hydro.nemoh_directory"));
-  TecFile tec;
-  std::string text;
-  int line = 0;
-  while (std::getline(in, text)) {
-    ++line;
-    if (isBlank(text)) continue;
-    const auto first = text.find_first_not_of(" \t");
-    const char c = text[first];
-    const bool numeric = std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.';
-    if (!numeric) {
-      std::string upper = text;
-      std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char ch) { return std::toupper(ch); });
-      if (upper.find("VARIABLES") != std::string::npos) tec.variables = text;
-      if (upper.compare(first, 4, "ZONE") == 0) tec.zones.push_back({text, line, {}});
-      continue;  // column-name lines of the header
-    }
-    if (tec.zones.empty()) fail(file, line, "numbers before the first Zone line");
-    std::istringstream s(text);
-    std::vector<double> row;
-    double v = 0.0;
-    while (s >> v) row.push_back(v);
-    if (!s.eof()) fail(file, line, "cannot read a number in '" + text + "'");
-    if (!tec.zones.back().rows.empty() && row.size() != tec.zones.back().rows.front().size())
-      fail(file, line, "expected " + std::to_string(tec.zones.back().rows.front().size()) + " columns, found " +
-                           std::to_string(row.size()));
-    if (!std::all_of(row.begin(), row.end(), [](double x) { return std::isfinite(x); }))
-      fail(file, line, "non-finite value");
-    tec.zones.back().rows.push_back(std::move(row));
-  }
-  return tec;
+  return formats::parseTecplot(readDataText(file.string(), "wec", "parameters.hydro.nemoh_directory"),
+                               "hydro.nemoh_directory", file.string());
 }
 
 // Integers that follow `word` in a zone title ("Motion of body 1 in DoF 3" → body 1, DoF 3).

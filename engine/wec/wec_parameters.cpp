@@ -32,10 +32,10 @@ SchemaBinder<WecParameters> wecBinder() {
   b.real("water.depth", &P::depth, "m", Range::positive(1e4), "Water depth (coefficients are deep-water; flagged where kh < pi)");
   b.choice("hydro.source", &P::hydro_source, {"hemisphere_hulme", "wamit_files", "nemoh_files"},
            "Hydrodynamic coefficients: Hulme's floating hemisphere, WAMIT .1/.3 files or Nemoh/Capytaine .tec files");
-  b.text("hydro.wamit_stem", &P::wamit_stem, "WAMIT files without extension (reads <stem>.1 and <stem>.3)");
+  b.dataPath("hydro.wamit_stem", &P::wamit_stem, "WAMIT files without extension (reads <stem>.1 and <stem>.3)");
   b.real("hydro.wamit_length_scale", &P::wamit_length_scale, "m", Range::positive(1e4), "WAMIT ULEN");
-  b.text("hydro.nemoh_directory", &P::nemoh_directory,
-         "Folder with Nemoh (or Capytaine legacy-export) RadiationCoefficients.tec and ExcitationForce.tec");
+  b.dataPath("hydro.nemoh_directory", &P::nemoh_directory,
+             "Folder with Nemoh (or Capytaine legacy-export) RadiationCoefficients.tec and ExcitationForce.tec");
   b.table("floats", &P::floats, floatRowBinder(), 1, 8, "Floats, each on its own arm and hinge");
   b.choice("waves.type", &P::wave_type, {"none", "regular", "irregular"}, "Incident waves");
   b.choice("waves.direction", &P::wave_direction, {"+x", "-x"}, "Direction of wave travel");

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <map>
 #include <numbers>
-#include <sstream>
 
 #include "core/errors.hpp"
+#include "core/formats/wamit.hpp"
 #include "core/resources.hpp"
 
 namespace maris::wec {
@@ -18,8 +18,8 @@ namespace {
                    (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + what);
 }
 
-std::istringstream openFile(const std::filesystem::path& file) {
-  return std::istringstream(readDataText(file.string(), "wec", "parameters.hydro.wamit_stem"));
+std::string readFile(const std::filesystem::path& file) {
+  return readDataText(file.string(), "wec", "parameters.hydro.wamit_stem");
 }
 
 // Rows keyed by period (rounded to 1e-9 s to merge the .1 and .3 keys).
@@ -35,51 +35,31 @@ std::shared_ptr<TabulatedHydro> readWamit(const std::filesystem::path& stem, dou
 
   // Added mass and damping.
   const auto file1 = std::filesystem::path(stem.string() + ".1");
-  auto in1 = openFile(file1);
-  std::string text;
-  int line = 0;
-  while (std::getline(in1, text)) {
-    ++line;
-    std::istringstream s(text);
-    double per = 0.0, a = 0.0, b = 0.0;
-    int i = 0, j = 0;
-    if (!(s >> per >> i >> j >> a)) {
-      if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
-      fail(file1, line, "expected 'PER I J A [B]', found '" + text + "'");
-    }
-    if (i != j || (i != 1 && i != 3)) continue;
-    if (per == 0.0) {  // infinite frequency
-      (i == 1 ? a_inf_surge : a_inf_heave) = a * density * l3;
+  for (const auto& r : formats::parseWamit1(readFile(file1), "hydro.wamit_stem", file1.string())) {
+    if (r.i != r.j || (r.i != 1 && r.i != 3)) continue;
+    if (r.period == 0.0) {  // infinite frequency
+      (r.i == 1 ? a_inf_surge : a_inf_heave) = r.added_mass * density * l3;
       continue;
     }
-    if (per < 0.0) continue;  // zero frequency: not needed
-    if (!(s >> b)) fail(file1, line, "damping coefficient missing");
-    const double omega = 2.0 * std::numbers::pi / per;
-    auto& r = rows[periodKey(per)];
-    r.omega = omega;
-    auto& mode = i == 1 ? r.hydro.surge : r.hydro.heave;
-    mode.added_mass = a * density * l3;
-    mode.damping = b * density * omega * l3;
+    if (r.period < 0.0) continue;  // zero frequency: not needed
+    if (!r.damping) fail(file1, r.line, "damping coefficient missing");
+    const double omega = 2.0 * std::numbers::pi / r.period;
+    auto& row = rows[periodKey(r.period)];
+    row.omega = omega;
+    auto& mode = r.i == 1 ? row.hydro.surge : row.hydro.heave;
+    mode.added_mass = r.added_mass * density * l3;
+    mode.damping = *r.damping * density * omega * l3;
   }
   if (rows.empty()) fail(file1, 0, "no surge or heave rows with a positive period");
 
   // Excitation, heading 0.
   const auto file3 = std::filesystem::path(stem.string() + ".3");
-  auto in3 = openFile(file3);
-  line = 0;
-  while (std::getline(in3, text)) {
-    ++line;
-    std::istringstream s(text);
-    double per = 0.0, beta = 0.0, mod = 0.0, pha = 0.0, re = 0.0, im = 0.0;
-    int i = 0;
-    if (!(s >> per >> beta >> i >> mod >> pha >> re >> im)) {
-      if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
-      fail(file3, line, "expected 'PER BETA I MOD PHA RE IM', found '" + text + "'");
-    }
-    if ((i != 1 && i != 3) || std::abs(beta) > 1e-6 || per <= 0.0) continue;
-    auto it = rows.find(periodKey(per));
-    if (it == rows.end()) fail(file3, line, "period " + std::to_string(per) + " s is not in " + file1.string());
-    (i == 1 ? it->second.hydro.surge : it->second.hydro.heave).excitation = Complex(re, im) * density * gravity * l2;
+  for (const auto& r : formats::parseWamit3(readFile(file3), "hydro.wamit_stem", file3.string())) {
+    if ((r.i != 1 && r.i != 3) || std::abs(r.heading) > 1e-6 || r.period <= 0.0) continue;
+    auto it = rows.find(periodKey(r.period));
+    if (it == rows.end()) fail(file3, r.line, "period " + std::to_string(r.period) + " s is not in " + file1.string());
+    (r.i == 1 ? it->second.hydro.surge : it->second.hydro.heave).excitation =
+        Complex(r.re, r.im) * density * gravity * l2;
   }
   std::vector<TabulatedHydro::Row> list;
   for (auto& [key, r] : rows) list.push_back(r);

@@ -54,7 +54,8 @@ struct UsageCase {
 
 TEST(CliUsage, EveryUsageMistakeExitsOneAndNamesIt) {
   const std::vector<UsageCase> cases = {
-      {{}, {"maris-cli: a command is required (the commands: list, show, schema, scenes, default, run)", "Usage:"}},
+      {{}, {"maris-cli: a command is required (the commands: list, show, schema, scenes, default, run, validate, study)",
+           "Usage:"}},
       {{"frobnicate"}, {"maris-cli: unknown command 'frobnicate'", "(see maris-cli --help)"}},
       {{"lsit"}, {"unknown command 'lsit'; did you mean list?"}},
       {{"--frobnicate"}, {"maris-cli: unknown option --frobnicate"}},
@@ -69,6 +70,15 @@ TEST(CliUsage, EveryUsageMistakeExitsOneAndNamesIt) {
       {{"show", "a", "b"}, {"maris-cli show: unexpected extra argument 'b'"}},
       {{"schema", "any_scene", "--yaml"}, {"maris-cli schema: unknown option --yaml"}},
       {{"list", "everything"}, {"maris-cli list: unexpected extra argument 'everything'"}},
+      {{"validate"}, {"maris-cli validate: FILE is required"}},
+      {{"study"}, {"maris-cli study: a command is required (the commands: run, run-cases, collect, submit)"}},
+      {{"study", "rnu"}, {"maris-cli study: unknown command 'rnu'; did you mean run?"}},
+      {{"study", "run"}, {"maris-cli study run: STUDY is required"}},
+      {{"study", "run", "s.json", "--jobs", "0"}, {"maris-cli study run: --jobs"}},
+      {{"study", "run", "s.json", "--resum"}, {"unknown option --resum; did you mean --resume?"}},
+      {{"study", "run-cases", "dir"}, {"maris-cli study run-cases: --first is required"}},
+      {{"study", "submit", "s.json", "--out", "d", "--engine", "pbs"}, {"maris-cli study submit: --engine"}},
+      {{"study", "submit", "s.json", "--out", "d"}, {"maris-cli study submit: --engine is required"}},
   };
   for (const auto& c : cases) {
     const auto r = runCli(c.args);

@@ -21,6 +21,7 @@
 #include "main_window.hpp"
 #include "plots/plot_panel.hpp"
 #include "run/run_controller.hpp"
+#include "run/run_history.hpp"
 #include "run/run_panel.hpp"
 #include "test_scene.hpp"
 #include "ui_test_support.hpp"
@@ -242,6 +243,21 @@ class MainWindowTest : public QObject {
     int total = 0;
     for (int i = 0; i < plot->graphCount(); ++i) total += plot->graph(i)->dataCount();
     QCOMPARE(total, 20 + 50 + 3);  // shown run, overlaid run, reference points
+  }
+
+  void openingAnotherScenarioClearsItsResultsAndKeepsRunsApart() {
+    QVERIFY(runToCompletion());
+    QCOMPARE(window_->sceneView()->frameCount(), 10);
+    // Another example of the same scene: the old results leave the views, the run stays in the history.
+    QVERIFY(window_->openExample(QStringLiteral("rod_slow")));
+    QCOMPARE(window_->sceneView()->frameCount(), 0);
+    QCOMPARE(window_->plots()->count(), 0);
+    QCOMPARE(window_->history().runs().size(), std::size_t(1));
+    // Its own run is not offered the other scenario's run to overlay (their columns need not mean the same).
+    QVERIFY(sameScenario(window_->history().runs().front().scenario, window_->history().runs().front().scenario));
+    Scenario other = window_->history().runs().front().scenario;
+    other.name += " (copy)";
+    QVERIFY(!sameScenario(window_->history().runs().front().scenario, other));
   }
 
   void saveAndReopenRoundTrips() {

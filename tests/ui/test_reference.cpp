@@ -85,11 +85,11 @@ class ReferenceTest : public QObject {
       return "(accepted)";
     };
     const std::string not_number = message("x,y\nm,m\n1,2\n3,abc\n");
-    QVERIFY2(not_number.find("line 4, column 2 ('y'): 'abc' is not a number") != std::string::npos, not_number.c_str());
+    QVERIFY2(not_number.find("line 4, column 2 (y): expected a number, found \"abc\"") != std::string::npos, not_number.c_str());
     const std::string short_row = message("x,y\n1,2\n3\n");
-    QVERIFY2(short_row.find("line 3 has 1 cells") != std::string::npos, short_row.c_str());
+    QVERIFY2(short_row.find("line 3: expected 2 cells (as the first row), found 1") != std::string::npos, short_row.c_str());
     QVERIFY(message("x,y\nm,m\n").find("no rows of numbers") != std::string::npos);
-    QVERIFY(message("just one column\n1\n").find("at least two columns") != std::string::npos);
+    QVERIFY(message("one_column\n1\n").find("at least 2 are needed") != std::string::npos);
     QVERIFY(message("").find("no table") != std::string::npos);
   }
 
@@ -172,7 +172,18 @@ class ReferenceTest : public QObject {
     panel.exportAllRunsCsv(file);
     QFile in(file);
     QVERIFY(in.open(QIODevice::ReadOnly));
-    const Table back = tableFromCsv(in.readAll().toStdString(), "runs");
+    // Every row names its run's scenario in the second column; without it the rest is the numeric table.
+    const QString scenario = QStringLiteral("\"%1\"").arg(QString::fromStdString(a.scenario.name));
+    QStringList numeric;
+    int line = 0;
+    for (const QString& row : QString::fromUtf8(in.readAll()).split('\n', Qt::SkipEmptyParts)) {
+      QStringList cells = row.split(',');
+      QCOMPARE(cells.value(1), line == 0 ? QStringLiteral("\"scenario\"") : line == 1 ? QStringLiteral("\"-\"") : scenario);
+      cells.removeAt(1);
+      numeric << cells.join(',');
+      ++line;
+    }
+    const Table back = tableFromCsv(numeric.join('\n').toStdString() + "\n", "runs");
     QCOMPARE(back.columns.size(), std::size_t(3));
     QCOMPARE(back.columns[0].name, std::string("run"));
     QCOMPARE(back.columns[1].name, std::string("arc_length"));

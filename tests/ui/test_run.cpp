@@ -33,20 +33,6 @@ Scenario rodScenario(double delay, bool fail = false) {
   return s;
 }
 
-std::vector<std::vector<std::string>> readCsv(const QString& file) {
-  std::ifstream in(file.toStdString());
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
 // A table "line" of y = x² over x = 0 … n − 1 [m, N], as a live run's growing history would be.
 std::shared_ptr<const Results> growingLine(int n) {
   auto r = std::make_shared<Results>();
@@ -352,7 +338,7 @@ class RunTest : public QObject {
     QFile svg_file(svg);
     QVERIFY(svg_file.open(QIODevice::ReadOnly));
     QVERIFY(svg_file.readAll().contains("<svg"));
-    const auto rows = readCsv(csv);
+    const auto rows = test::readCsv(csv);
     QCOMPARE(rows.size(), std::size_t(2 + 50));
     QCOMPARE(rows[0], (std::vector<std::string>{"arc_length", "deflection"}));
     QCOMPARE(rows[1], (std::vector<std::string>{"m", "m"}));

@@ -140,6 +140,8 @@ Results solveRod(const RodParameters& p, RunContext& ctx) {
   r.view.water_level_z = 0.0;
   r.view.seabed_z = -p.length - 10.0;
   r.addScalar("max_deflection", max_d, "m", "Largest deflection along the rod at t = 0");
+  // Closed form in both geometry fields, so a study's plot can be checked value by value.
+  r.addScalar("rod_volume", M_PI * p.radius * p.radius * p.length, "m^3", "Volume of the drawn rod, pi r^2 L");
   r.stats.method = "closed form";
   r.stats.steps = rows;
   if (p.method == "absolute") ctx.warn("absolute coordinates are only a label in the test scene");

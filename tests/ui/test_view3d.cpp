@@ -89,7 +89,7 @@ ModelColour modelColour(const QImage& image, int top, int bottom) {
   ModelColour m;
   for (int y = top; y < bottom; ++y) {
     const QColor bg = image.pixelColor(2, y);
-    for (int x = 0; x < image.width() * 3 / 4; ++x) {
+    for (int x = image.width() / 5; x < image.width() * 3 / 4; ++x) {  // clear of the triad and the colour bar
       const QColor c = image.pixelColor(x, y);
       if (std::max({std::abs(c.red() - bg.red()), std::abs(c.green() - bg.green()), std::abs(c.blue() - bg.blue())}) < 40)
         continue;
@@ -160,19 +160,19 @@ class View3dTest : public QObject {
     test::keepScreenshot(image, QStringLiteral("view3d_tube"));
     QVERIFY(!image.isNull());
     const int w = image.width(), h = image.height();
-    // Rows clear of the caption (top) and the axes triad (bottom); columns left of the colour bar
-    // (the right 22 %).
-    const int top = h * 8 / 100, bottom = h * 70 / 100;
-    const double middle = test::saturatedFraction(image, QRect(w * 2 / 5, top, w / 5, bottom - top));
-    const double left = test::saturatedFraction(image, QRect(0, top, w / 4, bottom - top));
-    const double right = test::saturatedFraction(image, QRect(w * 3 / 5, top, w * 17 / 100, bottom - top));
+    // The model is framed in the part of the view left of the colour bar (the right 20 %), centred at 40 %
+    // of the width. Rows clear of the caption (top); columns clear of the axes triad (bottom left).
+    const int top = h * 12 / 100, bottom = h * 90 / 100;
+    const double middle = test::saturatedFraction(image, QRect(w * 3 / 10, top, w / 5, bottom - top));
+    const double left = test::saturatedFraction(image, QRect(0, top, w / 5, h * 75 / 100 - top));
+    const double right = test::saturatedFraction(image, QRect(w * 55 / 100, top, w * 22 / 100, bottom - top));
     qInfo("saturated pixels: middle %.3f, left %.3f, right %.3f", middle, left, right);
     QVERIFY(middle > 0.02);
     QCOMPARE(left, 0.0);
     QCOMPARE(right, 0.0);
     // Scalars grow downwards: the upper part of the tube is blue, the lower part red.
-    const ColourSums upper = saturatedColours(image.copy(0, 0, w * 3 / 4, h), top, (top + bottom) / 2);
-    const ColourSums lower = saturatedColours(image.copy(0, 0, w * 3 / 4, h), (top + bottom) / 2, bottom);
+    const ColourSums upper = saturatedColours(image.copy(w / 5, 0, w * 11 / 20, h), top, (top + bottom) / 2);
+    const ColourSums lower = saturatedColours(image.copy(w / 5, 0, w * 11 / 20, h), (top + bottom) / 2, bottom);
     QVERIFY(upper.pixels > 0 && lower.pixels > 0);
     QVERIFY(upper.blue > upper.red);
     QVERIFY(lower.red > lower.blue);
@@ -192,7 +192,7 @@ class View3dTest : public QObject {
     QTest::qWait(50);
     const QImage image = view.glWidget()->grabFramebuffer();
     const int w = image.width(), h = image.height();
-    const double middle = test::saturatedFraction(image, QRect(w * 2 / 5, h / 10, w / 5, h * 6 / 10));
+    const double middle = test::saturatedFraction(image, QRect(w * 3 / 10, h / 10, w / 5, h * 6 / 10));
     qInfo("saturated pixels in the middle: %.3f", middle);
     QVERIFY(middle > 0.02);
   }
@@ -264,7 +264,7 @@ class View3dTest : public QObject {
     ColorMapControl* control = view.colorControl();
     QVERIFY(control->isEnabled());
     const int h = view.glWidget()->height() * view.devicePixelRatioF();
-    const int top = h * 8 / 100, middle = h * 39 / 100, bottom = h * 70 / 100;
+    const int top = h * 12 / 100, middle = h * 51 / 100, bottom = h * 90 / 100;
     auto grab = [&](const char* name) {
       QTest::qWait(30);
       const QImage image = view.glWidget()->grabFramebuffer();

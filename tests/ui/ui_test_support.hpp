@@ -8,6 +8,11 @@
 #include <QStandardPaths>
 #include <QtTest>
 
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
 namespace maris::test {
 
 // Keeps QSettings (recent files, theme, colour maps) of tests away from the user's own and from each other:
@@ -43,6 +48,21 @@ inline int distinctColours(const QImage& image, int limit = 64) {
       if (colours.size() >= limit) return limit;
     }
   return static_cast<int>(colours.size());
+}
+
+// The cells of a CSV file without quoted fields, row by row (split at every comma).
+inline std::vector<std::vector<std::string>> readCsv(const QString& file) {
+  std::ifstream in(file.toStdString());
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
 }
 
 // Saves `image` under $MARIS_UI_SCREENSHOT_DIR (if set) for people to look at.

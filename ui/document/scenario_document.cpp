@@ -46,10 +46,13 @@ void ScenarioDocument::applyValue(const std::string& path, const Json& value) {
   revalidate();
 }
 
-QString ScenarioDocument::errorText(const std::string& path) const {
+namespace {
+
+// The messages of `problems` at `path` or inside it ("sections" also matches "sections[1].outer_diameter").
+QString problemsAt(const std::vector<FieldError>& problems, const std::string& path) {
   const std::string full = "parameters." + path;
   QStringList lines;
-  for (const auto& e : errors_) {
+  for (const auto& e : problems) {
     const bool same = e.path == full;
     const bool inside = e.path.size() > full.size() && e.path.compare(0, full.size(), full) == 0 &&
                         (e.path[full.size()] == '.' || e.path[full.size()] == '[');
@@ -61,8 +64,15 @@ QString ScenarioDocument::errorText(const std::string& path) const {
   return lines.join('\n');
 }
 
+}  // namespace
+
+QString ScenarioDocument::errorText(const std::string& path) const { return problemsAt(errors_, path); }
+
+QString ScenarioDocument::warningText(const std::string& path) const { return problemsAt(warnings_, path); }
+
 void ScenarioDocument::revalidate() {
   errors_ = scene_ ? validateParameters(*scene_, scenario_.parameters) : std::vector<FieldError>{};
+  warnings_ = scene_ && errors_.empty() ? plausibilityWarnings(*scene_, scenario_.parameters) : std::vector<FieldError>{};
   emit errorsChanged();
 }
 

@@ -41,6 +41,10 @@ class ScenarioDocument : public QObject {
   bool isValid() const { return scene_ && errors_.empty(); }
   // Errors at `path` or inside it ("sections" also matches "sections[1].outer_diameter"), joined.
   QString errorText(const std::string& path) const;
+  // The scene's plausibility warnings for valid parameters (a riser top in the air, a current beyond the
+  // model's range): the run goes ahead, the editor shows them at their fields. Paths as errors().
+  const std::vector<FieldError>& warnings() const { return warnings_; }
+  QString warningText(const std::string& path) const;
 
  signals:
   void scenarioReset();                   // a different scenario was loaded
@@ -57,6 +61,7 @@ class ScenarioDocument : public QObject {
   QString file_path_;
   QUndoStack undo_;
   std::vector<FieldError> errors_;
+  std::vector<FieldError> warnings_;
 };
 
 // A field's label for people: "segment count" from "discretisation.segment_count".

@@ -10,6 +10,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QStyle>
@@ -27,6 +28,9 @@ namespace maris::ui {
 namespace {
 
 const char* kInvalidStyle = "border: 1px solid #d62728; background: rgba(214, 39, 40, 40);";
+const char* kDoubtfulStyle = "border: 1px solid #c77c02; background: rgba(255, 170, 0, 40);";
+const char* kErrorTextStyle = "color: #d62728;";
+const char* kWarningTextStyle = "color: #a86400;";
 
 QString groupTitle(const std::string& group) {
   QString title = QString::fromStdString(group);
@@ -49,7 +53,7 @@ ParameterEditor::ParameterEditor(ScenarioDocument* document, QWidget* parent)
   description_->setWordWrap(true);
   description_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   problems_->setWordWrap(true);
-  problems_->setStyleSheet(QStringLiteral("color: #d62728;"));
+  problems_->setStyleSheet(QString::fromLatin1(kErrorTextStyle));
 
   auto* scroll = new QScrollArea(this);
   scroll->setWidgetResizable(true);
@@ -84,6 +88,23 @@ QLabel* ParameterEditor::errorLabel(const std::string& path) const {
 QToolButton* ParameterEditor::resetButton(const std::string& path) const {
   const auto it = rows_.find(path);
   return it == rows_.end() ? nullptr : it->second.reset;
+}
+
+QMenu* ParameterEditor::fieldMenu(const std::string& path, QWidget* parent) {
+  const auto it = rows_.find(path);
+  if (it == rows_.end()) return nullptr;
+  const Row& row = it->second;
+  auto* line = qobject_cast<QLineEdit*>(row.editor);
+  QMenu* menu = line ? line->createStandardContextMenu() : new QMenu;
+  menu->setParent(parent, Qt::Popup);
+  if (row.spec->kind == ParamKind::Real || row.spec->kind == ParamKind::Integer) {
+    if (!menu->isEmpty()) menu->addSeparator();
+    QAction* sweep = menu->addAction(tr("Sweep this parameter…"));
+    sweep->setObjectName(QStringLiteral("sweepAction"));
+    const QString p = QString::fromStdString(path);
+    connect(sweep, &QAction::triggered, this, [this, p] { emit sweepRequested(p); });
+  }
+  return menu;
 }
 
 void ParameterEditor::rebuild() {
@@ -135,8 +156,17 @@ void ParameterEditor::rebuild() {
     row.reset->setFocusPolicy(Qt::NoFocus);  // Tab goes from field to field, not through these
     row.error = new QLabel(fields_host_);
     row.error->setWordWrap(true);
-    row.error->setStyleSheet(QStringLiteral("color: #d62728;"));
+    row.error->setStyleSheet(QString::fromLatin1(kErrorTextStyle));
     row.error->hide();
+    if (spec.kind == ParamKind::Real || spec.kind == ParamKind::Integer)
+      for (QWidget* w : {static_cast<QWidget*>(label), row.editor}) {
+        w->setContextMenuPolicy(Qt::CustomContextMenu);
+        connect(w, &QWidget::customContextMenuRequested, this, [this, w, path = spec.path](const QPoint& at) {
+          QMenu* menu = fieldMenu(path, this);
+          menu->setAttribute(Qt::WA_DeleteOnClose);
+          menu->popup(w->mapToGlobal(at));
+        });
+      }
     connect(row.reset, &QToolButton::clicked, this,
             [this, &spec] { document_->edit(spec.path, spec.default_value); });
 
@@ -265,12 +295,17 @@ void ParameterEditor::refreshErrors() {
   const auto& errors = document_->errors();
   for (auto& [path, row] : rows_) {
     const QString message = document_->errorText(path);
-    row.error->setText(message);
-    row.error->setVisible(!message.isEmpty());
+    // A valid value the model doubts (a plausibility warning) is marked in amber; the run goes ahead.
+    const QString doubt = message.isEmpty() ? document_->warningText(path) : QString();
+    row.error->setText(message.isEmpty() ? doubt : message);
+    row.error->setStyleSheet(QString::fromLatin1(message.isEmpty() ? kWarningTextStyle : kErrorTextStyle));
+    row.error->setVisible(!message.isEmpty() || !doubt.isEmpty());
     if (auto* table = qobject_cast<TableEditor*>(row.editor))
       table->markErrors(errors, "parameters." + path);
     else
-      row.editor->setStyleSheet(message.isEmpty() ? QString() : QString::fromLatin1(kInvalidStyle));
+      row.editor->setStyleSheet(!message.isEmpty() ? QString::fromLatin1(kInvalidStyle)
+                                : !doubt.isEmpty() ? QString::fromLatin1(kDoubtfulStyle)
+                                                   : QString());
   }
   // Problems no field shows (unknown fields, whole-scenario checks) are listed at the top.
   QStringList loose;
@@ -288,7 +323,12 @@ void ParameterEditor::refreshErrors() {
   if (!errors.empty())
     text = tr("%n invalid value(s): Run is disabled until they are fixed.", nullptr, static_cast<int>(errors.size()));
   if (!loose.isEmpty()) text += QStringLiteral("\n") + loose.join('\n');
+  const auto& warnings = document_->warnings();
+  if (errors.empty() && !warnings.empty())
+    text = tr("%n plausibility warning(s), marked in amber: the scenario runs, but check the values.", nullptr,
+              static_cast<int>(warnings.size()));
   problems_->setText(text);
+  problems_->setStyleSheet(QString::fromLatin1(errors.empty() ? kWarningTextStyle : kErrorTextStyle));
   problems_->setVisible(!text.isEmpty());
 }
 

@@ -3,7 +3,8 @@
 // value is invalid, the validation message in words under it. Edits go to the document as
 // undoable commands; the editor only mirrors the document (scenarioReset / valueChanged /
 // errorsChanged), so undo and redo update it like any other change; Ctrl+Z / Ctrl+Shift+Z in a
-// field act on the document's undo stack too, and Tab moves from field to field.
+// field act on the document's undo stack too, and Tab moves from field to field. The context menu
+// of a number field (and of its label) offers "Sweep this parameter…".
 #pragma once
 
 #include <map>
@@ -14,6 +15,7 @@
 #include "core/schema.hpp"
 
 class QLabel;
+class QMenu;
 class QToolButton;
 class QVBoxLayout;
 
@@ -32,6 +34,13 @@ class ParameterEditor : public QWidget {
   QLabel* errorLabel(const std::string& path) const;
   QToolButton* resetButton(const std::string& path) const;
   QLabel* problemsLabel() const { return problems_; }
+  // The context menu of a field (its editor's own actions, then "Sweep this parameter…" for a real
+  // or integer field); the caller owns it. nullptr for an unknown path.
+  QMenu* fieldMenu(const std::string& path, QWidget* parent = nullptr);
+
+ signals:
+  // "Sweep this parameter…" was chosen for the field at `path` (below "parameters").
+  void sweepRequested(const QString& path);
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;

@@ -1,5 +1,6 @@
 #include "plots/plot_export.hpp"
 
+#include <map>
 #include <cstdio>
 #include <stdexcept>
 
@@ -53,7 +54,27 @@ Table plotDataOfRuns(const std::vector<RunData>& runs, const PlotSpec& spec) {
 void writeRunsCsv(const std::filesystem::path& file, const std::vector<RunData>& runs, const PlotSpec& spec) {
   const Table table = plotDataOfRuns(runs, spec);
   if (table.columns.empty()) throw std::runtime_error("no run has the data of plot '" + spec.name + "'");
-  writeFileAtomic(file, table.toCsv());
+  std::map<unsigned long long, std::string> scenario_of;
+  for (const auto& r : runs) scenario_of[r.id] = r.scenario;
+  // The numeric table with a text column spliced in after "run": names row, units row, then each data row by
+  // its run number.
+  const std::string numeric = table.toCsv();
+  std::string csv;
+  std::size_t start = 0;
+  for (int line = 0; start < numeric.size(); ++line) {
+    const std::size_t end = numeric.find('\n', start);
+    const std::string row = numeric.substr(start, end - start);
+    const std::size_t comma = row.find(',');
+    const std::string first = row.substr(0, comma);
+    std::string cell = line == 0 ? "scenario" : line == 1 ? "-" : scenario_of[std::stoull(first)];
+    std::string quoted = "\"";
+    for (char c : cell) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    quoted += '"';
+    csv += first + "," + quoted + (comma == std::string::npos ? "" : row.substr(comma)) + "\n";
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  writeFileAtomic(file, csv);
 }
 
 namespace {

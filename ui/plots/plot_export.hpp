@@ -26,9 +26,11 @@ void writePlotCsv(const std::filesystem::path& file, const Results& results, con
 struct RunData {
   unsigned long long id = 0;
   const Results* results = nullptr;
+  std::string scenario;  // the scenario's name, written beside the run number
 };
 Table plotDataOfRuns(const std::vector<RunData>& runs, const PlotSpec& spec);
-// Writes plotDataOfRuns as CSV, atomically. Throws std::runtime_error if no run has the data.
+// Writes plotDataOfRuns as CSV, atomically, with a "scenario" column after "run" naming each run's scenario.
+// Throws std::runtime_error if no run has the data.
 void writeRunsCsv(const std::filesystem::path& file, const std::vector<RunData>& runs, const PlotSpec& spec);
 
 // `text` made safe for one cell of a Markdown table: `|` and `\` escaped with a backslash, line

@@ -165,6 +165,7 @@ void PlotPanel::setAvailableRuns(const std::vector<RunRecord>& runs, quint64 sho
   overlay_menu_->clear();
   shown_run_ = shown_run;
   for (const auto& r : runs) {
+    if (r.id == shown_run) shown_scenario_ = r.scenario.name;
     if (r.id == shown_run) continue;
     runs_.push_back(r);
     QAction* a = overlay_menu_->addAction(r.label);
@@ -246,8 +247,8 @@ void PlotPanel::clearReferences() {
 void PlotPanel::exportAllRunsCsv(const QString& file) {
   PlotView* v = currentView();
   if (!v || !shown_) throw std::runtime_error("no plot with data to export");
-  std::vector<RunData> runs{{shown_run_, shown_.get()}};
-  for (const auto& r : runs_) runs.push_back({r.id, r.results.get()});
+  std::vector<RunData> runs{{shown_run_, shown_.get(), shown_scenario_}};
+  for (const auto& r : runs_) runs.push_back({r.id, r.results.get(), r.scenario.name});
   std::sort(runs.begin(), runs.end(), [](const RunData& a, const RunData& b) { return a.id < b.id; });
   writeRunsCsv(file.toStdString(), runs, v->spec());
 }

@@ -84,6 +84,7 @@ class PlotPanel : public QWidget {
   std::vector<RunRecord> runs_;
   std::set<quint64> overlaid_;
   quint64 shown_run_ = 0;
+  std::string shown_scenario_;  // the shown run's scenario name (setAvailableRuns), for the all-runs CSV
   std::map<std::string, std::vector<Table>> references_;  // by plot name
 };
 

@@ -11,8 +11,9 @@
 
 namespace maris::ui {
 
-// Parses CSV text into a table named `name`. Throws std::runtime_error naming the line and column of
-// the first problem (not a number, wrong number of cells, no data rows, fewer than two columns).
+// Parses CSV text into a table named `name` with the engine's table reader (core/table_reader.hpp).
+// Throws InputError (a std::runtime_error) naming the line and column of each problem (not a number, wrong
+// number of cells, no data rows, fewer than two columns, a file in another known format).
 Table tableFromCsv(const std::string& text, const std::string& name);
 
 // Which columns of `reference` to draw on `spec`'s axes: x is the column named like the plot's x

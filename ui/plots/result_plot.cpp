@@ -45,10 +45,6 @@ Qt::PenStyle runPenStyle(int run) {
   return styles[run % 5];
 }
 
-void setLogScale(QCPAxis* axis) {
-  axis->setScaleType(QCPAxis::stLogarithmic);
-  axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-}
 
 // Graphs of one source's y columns. With one y column the runs differ by colour, with several by
 // line style (colour then names the column).
@@ -118,9 +114,17 @@ Qt::Alignment emptiestCorner(const QCustomPlot& plot, const QCPAxisRect& rect, i
   return corners[std::min_element(counts, counts + 4) - counts];
 }
 
+
+}  // namespace
+
+void setLogScale(QCPAxis* axis) {
+  axis->setScaleType(QCPAxis::stLogarithmic);
+  axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+}
+
 // A legend inside the axes at their emptiest corner, or under them when its entries are too wide
 // to sit inside without covering the curves.
-void addLegend(QCustomPlot& plot, QCPAxisRect& rect) {
+void addPlotLegend(QCustomPlot& plot, QCPAxisRect& rect) {
   auto* legend = new QCPLegend;
   const QFontMetrics metrics(legend->font());
   int widest = 0;
@@ -146,8 +150,6 @@ void addLegend(QCustomPlot& plot, QCPAxisRect& rect) {
   legend->setBorderPen(QPen(colors.foreground, 0.8));
   legend->setTextColor(colors.foreground);
 }
-
-}  // namespace
 
 bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec) {
   return fillPlot(plot, std::vector<PlotSource>{{QString(), &results}}, spec);
@@ -209,7 +211,7 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   if (spec.log_x) setLogScale(x_axis);
   if (spec.log_y) setLogScale(y_axis);
   plot.rescaleAxes();
-  if (plot.graphCount() > 1) addLegend(plot, *rect);
+  if (plot.graphCount() > 1) addPlotLegend(plot, *rect);
   applyPlotColors(plot);
   return true;
 }

@@ -10,6 +10,8 @@
 #include "core/results.hpp"
 
 class QCustomPlot;
+class QCPAxis;
+class QCPAxisRect;
 
 namespace maris::ui {
 
@@ -41,6 +43,13 @@ void applyPlotColors(QCustomPlot& plot);
 // After the axes changed (log scale, rescale): moves a legend that sits inside the axes to the
 // corner where it hides the fewest data points.
 void moveLegendToEmptiestCorner(QCustomPlot& plot);
+
+// A logarithmic scale with decade ticks.
+void setLogScale(QCPAxis* axis);
+
+// A legend of the plot's graphs inside `rect` at its emptiest corner, or under the axes when its
+// entries are too wide to sit inside without covering the curves; in the palette's colours.
+void addPlotLegend(QCustomPlot& plot, QCPAxisRect& rect);
 
 // Number of data points of the graphs drawn from the first source's y columns.
 int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec);

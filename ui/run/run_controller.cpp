@@ -7,12 +7,10 @@
 
 namespace maris::ui {
 
-namespace {
 qint64 steadyNanoseconds() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
-}  // namespace
 
 void RunWorker::run(const RunJob& job) {
   const quint64 id = job.id;
@@ -24,18 +22,29 @@ void RunWorker::run(const RunJob& job) {
                            emit partial(id, std::move(partial_results));
                          },
                          job.partial_interval_s);
-  try {
-    auto results = std::make_shared<const Results>(runScenario(job.scene, job.scenario, context));
-    emit finished(id, std::move(results));
-  } catch (const RunCancelled&) {
+  RunOutcome outcome = runCaught(job.scene, job.scenario, context);
+  if (outcome.results)
+    emit finished(id, std::move(outcome.results));
+  else if (outcome.cancelled)
     emit cancelled(id, steadyNanoseconds());
+  else
+    emit failed(id, outcome.error);
+}
+
+RunOutcome runCaught(const SceneDefinition& scene, const Scenario& scenario, RunContext& context) {
+  RunOutcome outcome;
+  try {
+    outcome.results = std::make_shared<const Results>(runScenario(scene, scenario, context));
+  } catch (const RunCancelled&) {
+    outcome.cancelled = true;
   } catch (const InputError& e) {
-    emit failed(id, tr("The scenario is invalid:\n%1").arg(QString::fromStdString(describeErrors(e.errors()))));
+    outcome.error = RunWorker::tr("The scenario is invalid:\n%1").arg(QString::fromStdString(describeErrors(e.errors())));
   } catch (const SolverError& e) {
-    emit failed(id, tr("The solver failed: %1").arg(QString::fromStdString(e.what())));
+    outcome.error = RunWorker::tr("The solver failed: %1").arg(QString::fromStdString(e.what()));
   } catch (const std::exception& e) {
-    emit failed(id, tr("The run failed: %1").arg(QString::fromStdString(e.what())));
+    outcome.error = RunWorker::tr("The run failed: %1").arg(QString::fromStdString(e.what()));
   }
+  return outcome;
 }
 
 RunController::RunController(QObject* parent) : QObject(parent), worker_(new RunWorker) {

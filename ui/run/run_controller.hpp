@@ -30,6 +30,19 @@ struct RunRecord {
   QString label;         // "run 3" plus what differs from the run before ("segment count = 100")
 };
 
+// Nanoseconds of std::chrono::steady_clock: when a cancel was asked for and when a solver stopped.
+qint64 steadyNanoseconds();
+
+// What one run through runScenario gave: results, or the failure in words, or a cancellation.
+struct RunOutcome {
+  ResultsPtr results;  // set when the run finished
+  QString error;       // set when it failed (the engine's message, as the run log shows it)
+  bool cancelled = false;
+};
+// Runs `scenario` through maris::runScenario and turns every engine exception into an outcome. The
+// single run (RunWorker) and each case of a study (StudyRunner) go through here, so both report alike.
+RunOutcome runCaught(const SceneDefinition& scene, const Scenario& scenario, RunContext& context);
+
 // What the worker runs; owned by the job, so the GUI may edit its own scenario meanwhile.
 struct RunJob {
   quint64 id = 0;

@@ -25,10 +25,10 @@ void collectDifferences(const Json& before, const Json& after, const std::string
 
 }  // namespace
 
-const RunRecord& RunHistory::add(RunRecord record) {
+const RunRecord& RunHistory::add(RunRecord record, bool keep_label) {
   const RunRecord* previous = nullptr;
   for (auto it = runs_.rbegin(); it != runs_.rend(); ++it)
-    if (it->scenario.scene == record.scenario.scene) {
+    if (sameScenario(it->scenario, record.scenario)) {
       previous = &*it;
       break;
     }
@@ -37,11 +37,13 @@ const RunRecord& RunHistory::add(RunRecord record) {
     const QString diff = parameterDifference(previous->scenario.parameters, record.scenario.parameters);
     if (!diff.isEmpty()) label += QStringLiteral(" (%1)").arg(diff);
   }
-  record.label = label;
+  if (!keep_label) record.label = label;
   runs_.push_back(std::move(record));
   while (runs_.size() > capacity_) runs_.pop_front();
   return runs_.back();
 }
+
+bool sameScenario(const Scenario& a, const Scenario& b) { return a.scene == b.scene && a.name == b.name; }
 
 const RunRecord* RunHistory::find(quint64 id) const {
   for (const auto& r : runs_)

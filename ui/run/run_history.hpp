@@ -1,5 +1,5 @@
 // The finished runs of this session, newest last, kept so plots can overlay them (e.g. 20 vs 100
-// segments). Each run's label says what differs from the run before it of the same scene.
+// segments). Each run's label says what differs from the run before it of the same scenario.
 #pragma once
 
 #include <deque>
@@ -12,8 +12,9 @@ class RunHistory {
  public:
   explicit RunHistory(std::size_t capacity = 8) : capacity_(capacity) {}
 
-  // Adds a run, labels it and drops the oldest beyond capacity. Returns the stored record.
-  const RunRecord& add(RunRecord record);
+  // Adds a run, labels it (unless `keep_label`: a study's case comes named) and drops the oldest
+  // beyond capacity. Returns the stored record.
+  const RunRecord& add(RunRecord record, bool keep_label = false);
   const std::deque<RunRecord>& runs() const { return runs_; }
   const RunRecord* latest() const { return runs_.empty() ? nullptr : &runs_.back(); }
   const RunRecord* find(quint64 id) const;
@@ -23,6 +24,10 @@ class RunHistory {
   std::size_t capacity_;
   std::deque<RunRecord> runs_;
 };
+
+// Runs of one scenario (same scene and name): their tables' columns mean the same, so they may share a plot or
+// a CSV. Runs of two scenarios of one scene may not (probe 3 at s = 75 m in one, 375 m in the other).
+bool sameScenario(const Scenario& a, const Scenario& b);
 
 // "segment count = 100, method = absolute" for the leaf values that differ between two
 // parameter objects (at most `max_items`, then "…").

@@ -12,6 +12,7 @@
 #include <QToolButton>
 
 #include "run/run_controller.hpp"
+#include "study/study_runner.hpp"
 
 namespace maris::ui {
 
@@ -66,6 +67,20 @@ RunPanel::RunPanel(RunController* controller, QAction* run_action, QAction* canc
   });
   connect(controller, &RunController::failed, this, [this] { stopped(tr("Failed")); });
   connect(controller, &RunController::cancelled, this, [this] { stopped(tr("Cancelled")); });
+}
+
+void RunPanel::follow(StudyRunner* study) {
+  connect(study, &StudyRunner::progressed, this, &RunPanel::onProgress);
+  connect(study, &StudyRunner::started, this, [this](int cases) {
+    progress_->setValue(0);
+    stage_->setText(tr("Starting a study of %n case(s)…", nullptr, cases));
+    time_->clear();
+  });
+  connect(study, &StudyRunner::finished, this, [this](int succeeded, int failed) {
+    progress_->setValue(progress_->maximum());
+    stage_->setText(tr("Study finished: %1 succeeded, %2 failed").arg(succeeded).arg(failed));
+  });
+  connect(study, &StudyRunner::cancelled, this, [this] { stopped(tr("Study cancelled")); });
 }
 
 void RunPanel::stopped(const QString& stage) {

@@ -1,7 +1,7 @@
 // The run panel dock: Run / Cancel buttons (the main window's actions), a progress bar with the
 // solver's stage, elapsed and estimated remaining time, and a log of runs, warnings and errors
 // that follows its newest line unless the user scrolled up. A cancelled or failed run resets the
-// bar and the time left.
+// bar and the time left. A study's runs (StudyRunner) show here the same way.
 #pragma once
 
 #include <QWidget>
@@ -14,11 +14,15 @@ class QProgressBar;
 namespace maris::ui {
 
 class RunController;
+class StudyRunner;
 
 class RunPanel : public QWidget {
   Q_OBJECT
  public:
   RunPanel(RunController* controller, QAction* run_action, QAction* cancel_action, QWidget* parent = nullptr);
+
+  // Shows a study's progress over its cases in the same bar, stage line and time label.
+  void follow(StudyRunner* study);
 
   enum class Level { Info, Warning, Error };
   void log(Level level, const QString& text);

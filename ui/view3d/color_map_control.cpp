@@ -19,7 +19,8 @@ QString number(double v) { return QString::number(v, 'g', 6); }
 }  // namespace
 
 ColorMapControl::ColorMapControl(QWidget* parent)
-    : QToolButton(parent), map_(new QComboBox), automatic_(new QCheckBox(tr("Automatic (all frames)"))),
+    : QToolButton(parent), map_(new QComboBox), automatic_(new QCheckBox(tr("Automatic"))),
+      per_frame_(new QCheckBox(tr("Each frame its own range"))),
       min_(new QLineEdit), max_(new QLineEdit), problem_(new QLabel) {
   setText(tr("Colours"));
   setToolTip(tr("Colour map and colour-bar range of the coloured quantity"));
@@ -36,6 +37,9 @@ ColorMapControl::ColorMapControl(QWidget* parent)
   auto* form = new QFormLayout(form_host);
   form->addRow(tr("Map"), map_);
   form->addRow(tr("Range"), automatic_);
+  form->addRow(QString(), per_frame_);
+  per_frame_->setObjectName(QStringLiteral("colorPerFrame"));
+  per_frame_->setToolTip(tr("Automatic range of the frame shown (else of all frames of the run)"));
   form->addRow(tr("Min"), min_);
   form->addRow(tr("Max"), max_);
   form->addRow(problem_);
@@ -61,6 +65,11 @@ ColorMapControl::ColorMapControl(QWidget* parent)
       onRangeEdited();  // the fields hold the data's range: a fixed range starts from it
     }
   });
+  connect(per_frame_, &QCheckBox::toggled, this, [this](bool on) {
+    if (on == settings_.per_frame) return;
+    settings_.per_frame = on;
+    emit settingsChanged(settings_);
+  });
   connect(min_, &QLineEdit::editingFinished, this, &ColorMapControl::onRangeEdited);
   connect(max_, &QLineEdit::editingFinished, this, &ColorMapControl::onRangeEdited);
   syncEnabled();
@@ -68,9 +77,10 @@ ColorMapControl::ColorMapControl(QWidget* parent)
 
 void ColorMapControl::showSettings(const ColorSettings& settings, double data_lo, double data_hi) {
   settings_ = settings;
-  const QSignalBlocker b1(map_), b2(automatic_);
+  const QSignalBlocker b1(map_), b2(automatic_), b3(per_frame_);
   map_->setCurrentIndex(static_cast<int>(settings.map));
   automatic_->setChecked(settings.automatic);
+  per_frame_->setChecked(settings.per_frame);
   min_->setText(number(settings.automatic ? data_lo : settings.min));
   max_->setText(number(settings.automatic ? data_hi : settings.max));
   problem_->hide();
@@ -103,6 +113,7 @@ void ColorMapControl::onRangeEdited() {
 void ColorMapControl::syncEnabled() {
   min_->setEnabled(!automatic_->isChecked());
   max_->setEnabled(!automatic_->isChecked());
+  per_frame_->setEnabled(automatic_->isChecked());
 }
 
 }  // namespace maris::ui

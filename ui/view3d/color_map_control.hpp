@@ -26,6 +26,7 @@ class ColorMapControl : public QToolButton {
   // The form's widgets, for tests that drive them as a user would.
   QComboBox* mapBox() const { return map_; }
   QCheckBox* automaticBox() const { return automatic_; }
+  QCheckBox* perFrameBox() const { return per_frame_; }
   QLineEdit* minEdit() const { return min_; }
   QLineEdit* maxEdit() const { return max_; }
 
@@ -39,6 +40,7 @@ class ColorMapControl : public QToolButton {
   ColorSettings settings_;
   QComboBox* map_;
   QCheckBox* automatic_;
+  QCheckBox* per_frame_;
   QLineEdit* min_;
   QLineEdit* max_;
   QLabel* problem_;

@@ -9,23 +9,11 @@
 
 #include <vtkColorTransferFunction.h>
 
+#include "plots/viridis.hpp"
+
 namespace maris::ui {
 
 namespace {
-
-// Viridis (van der Walt and Smith, matplotlib 2015) at eleven evenly spaced stops; linear RGB
-// interpolation between them stays within a few levels of the full 256-entry table.
-constexpr std::array<std::array<int, 3>, 11> kViridis{{{0x44, 0x01, 0x54},
-                                                       {0x48, 0x24, 0x75},
-                                                       {0x41, 0x44, 0x87},
-                                                       {0x35, 0x5f, 0x8d},
-                                                       {0x2a, 0x78, 0x8e},
-                                                       {0x21, 0x91, 0x8c},
-                                                       {0x22, 0xa8, 0x84},
-                                                       {0x44, 0xbf, 0x70},
-                                                       {0x7a, 0xd1, 0x51},
-                                                       {0xbd, 0xdf, 0x26},
-                                                       {0xfd, 0xe7, 0x25}}};
 
 constexpr std::array<ColorMap, 4> kMaps{ColorMap::CoolWarm, ColorMap::Viridis, ColorMap::Rainbow, ColorMap::Greyscale};
 
@@ -46,6 +34,7 @@ std::optional<ColorSettings> loadColorSettings(const std::string& quantity) {
   ColorSettings out;
   out.map = *map;
   out.automatic = settings.value(QStringLiteral("automatic"), true).toBool();
+  out.per_frame = settings.value(QStringLiteral("per_frame"), false).toBool();
   bool min_ok = false, max_ok = false;
   out.min = settings.value(QStringLiteral("min")).toDouble(&min_ok);
   out.max = settings.value(QStringLiteral("max")).toDouble(&max_ok);
@@ -62,6 +51,7 @@ void saveColorSettings(const std::string& quantity, const ColorSettings& setting
   store.beginGroup(settingsGroup(quantity));
   store.setValue(QStringLiteral("map"), colorMapKey(settings.map));
   store.setValue(QStringLiteral("automatic"), settings.automatic);
+  store.setValue(QStringLiteral("per_frame"), settings.per_frame);
   store.setValue(QStringLiteral("min"), settings.min);
   store.setValue(QStringLiteral("max"), settings.max);
 }

@@ -34,6 +34,7 @@ struct ColorSettings {
   bool automatic = true;  // range from the data; else [min, max]
   double min = 0.0;       // [unit of the quantity] used when !automatic
   double max = 1.0;
+  bool per_frame = false;  // automatic: the shown frame's min … max, else all frames'
   bool operator==(const ColorSettings&) const = default;
 };
 

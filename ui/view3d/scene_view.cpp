@@ -1,11 +1,14 @@
 #include "view3d/scene_view.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include <QComboBox>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QInputDialog>
+#include <QResizeEvent>
 #include <QLabel>
 #include <QSlider>
 #include <QStyle>
@@ -17,6 +20,7 @@
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkColorTransferFunction.h>
+#include <vtkDoubleArray.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkRenderer.h>
@@ -27,6 +31,7 @@
 #include "plots/result_plot.hpp"
 #include "theme.hpp"
 #include "themed_icon.hpp"
+#include "view3d/color_bar_scale.hpp"
 #include "view3d/color_map_control.hpp"
 #include "view3d/shape_actors.hpp"
 #include "view3d/vtk_gl_widget.hpp"
@@ -43,14 +48,25 @@ bool nearModel(double z, const Bounds3D& model) {
   return z >= model.b[4] - reach && z <= model.b[5] + reach;
 }
 
+// Another model (a new scenario, a longer riser, another hull) rather than the same one again: its size
+// differs by more than 20 % or its centre moved by more than a fifth of its size. The motion within one
+// run, and a rerun of the same model, stay below that and keep the user's view.
+bool framesAnew(const Bounds3D& framed, const Bounds3D& now) {
+  if (framed.empty() || now.empty()) return !now.empty();
+  const double size_ratio = now.diagonal() / std::max(framed.diagonal(), 1e-300);
+  const double shift = (now.centre() - framed.centre()).norm() / std::max(framed.diagonal(), 1e-300);
+  return size_ratio > 1.2 || size_ratio < 1 / 1.2 || shift > 0.2;
+}
+
 }  // namespace
 
 SceneView::SceneView(QWidget* parent)
     : QWidget(parent), gl_(new VtkGlWidget(this)), slider_(new QSlider(Qt::Horizontal, this)),
-      play_(new QToolButton(this)), time_(new QLabel(this)),
+      play_(new QToolButton(this)), magnify_(new QComboBox(this)), time_(new QLabel(this)),
       empty_(new QLabel(tr("No 3D view yet: run the scenario."), this)), timer_(new QTimer(this)),
       color_control_(new ColorMapControl(this)),
       colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
+      bar_colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
       scalar_bar_(vtkSmartPointer<vtkScalarBarActor>::New()), caption_(vtkSmartPointer<vtkTextActor>::New()),
       triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
   vtkRenderer* renderer = gl_->renderer();
@@ -62,8 +78,9 @@ SceneView::SceneView(QWidget* parent)
   renderer->SetMaximumNumberOfPeels(4);
   renderer->SetOcclusionRatio(0.0);
 
-  scalar_bar_->SetLookupTable(colors_);
-  scalar_bar_->SetNumberOfLabels(5);
+  // The bar has a lookup table of its own: the same colours over the range in the display unit (MPa, kN).
+  scalar_bar_->SetLookupTable(bar_colors_);
+  scalar_bar_->UseCustomLabelsOn();
   // Vertical at the right edge, labels to its right: it stays clear of sea beds and long
   // models, which fill the lower part of the picture.
   scalar_bar_->SetOrientationToVertical();
@@ -83,8 +100,7 @@ SceneView::SceneView(QWidget* parent)
   }
   scalar_bar_->GetTitleTextProperty()->SetFontSize(14);
   scalar_bar_->GetLabelTextProperty()->BoldOff();
-  scalar_bar_->SetLabelFormat("%#.3g");
-  caption_->GetTextProperty()->SetFontSize(16);
+  caption_->GetTextProperty()->SetFontSize(14);
   caption_->GetTextProperty()->SetVerticalJustificationToTop();
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   caption_->GetPositionCoordinate()->SetValue(0.015, 0.98);
@@ -109,10 +125,18 @@ SceneView::SceneView(QWidget* parent)
   time_->setMinimumWidth(time_->fontMetrics().horizontalAdvance(QStringLiteral("t = -0000.000 s (000/000)")));
   empty_->setAlignment(Qt::AlignCenter);
 
+  magnify_->addItem(tr("Displacement × 1"), 1.0);
+  magnify_->addItem(tr("Displacement × 10"), 10.0);
+  magnify_->addItem(tr("Displacement × 100"), 100.0);
+  magnify_->setObjectName(QStringLiteral("magnification"));
+  magnify_->setToolTip(tr("Draw the motion from the static shape (the faint ghost) magnified"));
+  magnify_->setEnabled(false);
+
   auto* controls = new QHBoxLayout;
   controls->addWidget(play_);
   controls->addWidget(slider_, 1);
   controls->addWidget(time_);
+  controls->addWidget(magnify_);
   controls->addWidget(color_control_);
   controls->addWidget(reset);
   controls->addWidget(save);
@@ -131,7 +155,11 @@ SceneView::SceneView(QWidget* parent)
   connect(slider_, &QSlider::valueChanged, this, &SceneView::setFrame);
   color_control_->setEnabled(false);
   connect(color_control_, &ColorMapControl::settingsChanged, this, &SceneView::setColorSettings);
+  connect(magnify_, &QComboBox::currentIndexChanged, this,
+          [this](int index) { setMagnification(magnify_->itemData(index).toDouble()); });
   connect(reset, &QToolButton::clicked, this, &SceneView::resetCamera);
+  connect(gl_, &VtkGlWidget::resetCameraRequested, this, &SceneView::resetCamera);
+  connect(gl_, &VtkGlWidget::cameraMovedByUser, this, [this] { user_moved_camera_ = true; });
   connect(save, &QToolButton::clicked, this, &SceneView::exportPngInteractive);
   applyPaletteColors();
 }
@@ -197,7 +225,20 @@ void SceneView::showResults(std::shared_ptr<const Results> results) {
   frame_ = std::min(frame_, frameCount() - 1);
   slider_->setValue(frame_);
   drawFrame();
-  if (!camera_placed_) resetCamera();
+  // Framed anew for another model, and (unless the user placed the camera) whenever the model no longer fits:
+  // part of it outside the picture, or filling less than half of it.
+  bool fits = true;
+  if (camera_placed_ && !user_moved_camera_) {
+    const auto e = projectedModelExtent();
+    fits = e[0] >= -1 && e[1] <= 1 && e[2] >= -1 && e[3] <= 1 && std::max(e[1] - e[0], e[3] - e[2]) >= 1.0;
+  }
+  if (!camera_placed_ || !fits || framesAnew(framed_bounds_, framingBounds())) resetCamera();
+}
+
+void SceneView::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  // The fit depends on the view's aspect ratio: a view first framed while hidden or small is framed again.
+  if (results_ && camera_placed_ && !user_moved_camera_) resetCamera();
 }
 
 void SceneView::rebuildStatic() {
@@ -206,8 +247,28 @@ void SceneView::rebuildStatic() {
   static_actors_.clear();
   const View3D& view = results_->view;
   const Bounds3D bounds = viewBounds(view);
-  // Thin members (a 0.5 m riser in a 1 km scene) are drawn at least 0.4 % of the scene size thick.
+  // Thin members (a 0.5 m riser in a 1 km scene) are drawn at least 0.4 % of the scene size thick; the
+  // caption says by how much the thinnest tube is drawn thicker than it is.
   min_tube_radius_ = 0.004 * bounds.diagonal();
+  double thinnest = 0;
+  for (const auto& frame : view.frames)
+    for (const auto& shape : frame.shapes)
+      if (shape.kind == Shape3D::Kind::Tube && shape.radius > 0)
+        thinnest = thinnest == 0 ? shape.radius : std::min(thinnest, shape.radius);
+  drawn_thickness_ratio_ = thinnest > 0 ? std::max(1.0, min_tube_radius_ / thinnest) : 1.0;
+  magnify_->setEnabled(!view.reference.empty());
+  // The static shape as a faint ghost: what the motion (and its magnification) is measured from.
+  for (Shape3D ghost : view.reference) {
+    ghost.scalars.clear();
+    ghost.color = {0.55, 0.55, 0.55};
+    ghost.opacity = 0.3;
+    ShapeStyle style;
+    style.min_tube_radius = min_tube_radius_;
+    if (auto actor = makeShapeActor(ghost, style)) {
+      renderer->AddActor(actor);
+      static_actors_.push_back(actor);
+    }
+  }
   data_lo_ = 0.0;
   data_hi_ = 1.0;
   have_scalars_ = scalarRange(view, data_lo_, data_hi_);
@@ -224,12 +285,7 @@ void SceneView::rebuildStatic() {
   applyColorSettings();
   color_control_->setEnabled(have_scalars_);
   renderer->RemoveViewProp(scalar_bar_);
-  if (have_scalars_) {
-    // The colour bar sits in a strip ~15 % of the view wide; a long quantity name ("modal amplitude
-    // (displacement, or twist for torsion modes)") would run off the right edge.
-    scalar_bar_->SetTitle(wrapAtSpaces(axisLabel(view.scalar_name, view.scalar_unit), 22).toStdString().c_str());
-    renderer->AddViewProp(scalar_bar_);
-  }
+  if (have_scalars_) renderer->AddViewProp(scalar_bar_);
   Bounds3D ground = bounds;
   if (view.water_level_z && nearModel(*view.water_level_z, bounds)) {
     auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.22);
@@ -247,9 +303,25 @@ void SceneView::applyColorSettings() {
   const auto [lo, hi] = colorRange();
   fillColorMap(colors_, color_settings_.map, lo, hi);
   color_control_->showSettings(color_settings_, data_lo_, data_hi_);
+  if (!results_) return;
+  // The bar reads in an engineering unit with ticks on a 1–2–5 grid; the title wraps to the bar's strip
+  // (~15 % of the view): a long quantity name ("modal amplitude (displacement, or twist for torsion modes)")
+  // would run off the right edge.
+  const ColorBarScale scale = colorBarScale(lo, hi, results_->view.scalar_unit);
+  fillColorMap(bar_colors_, color_settings_.map, lo * scale.factor, hi * scale.factor);
+  auto ticks = vtkSmartPointer<vtkDoubleArray>::New();
+  for (double t : scale.ticks) ticks->InsertNextValue(t);
+  scalar_bar_->SetCustomLabels(ticks);
+  scalar_bar_->SetLabelFormat(scale.label_format.c_str());
+  const QString range = !color_settings_.automatic ? tr("fixed range")
+                        : color_settings_.per_frame ? tr("range of this frame")
+                                                    : tr("range of all frames");
+  const QString title = wrapAtSpaces(axisLabel(results_->view.scalar_name, scale.unit), 22) + QStringLiteral("\n") + range;
+  scalar_bar_->SetTitle(title.toStdString().c_str());
 }
 
 std::pair<double, double> SceneView::colorRange() const {
+  if (color_settings_.automatic && color_settings_.per_frame) return {frame_lo_, frame_hi_};
   if (color_settings_.automatic || !(color_settings_.max > color_settings_.min)) return {data_lo_, data_hi_};
   return {color_settings_.min, color_settings_.max};
 }
@@ -271,7 +343,17 @@ void SceneView::drawFrame() {
   ShapeStyle style;
   style.colors = have_scalars_ ? colors_.Get() : nullptr;
   style.min_tube_radius = min_tube_radius_;
-  for (const Shape3D& shape : results_->view.frames[frame_].shapes) {
+  const Frame3D& frame = results_->view.frames[frame_];
+  if (have_scalars_ && color_settings_.automatic && color_settings_.per_frame) {
+    // Each frame its own range: the colours and the bar follow the frame shown.
+    frame_lo_ = data_lo_;
+    frame_hi_ = data_hi_;
+    if (frameScalarRange(frame, frame_lo_, frame_hi_) && !(frame_hi_ > frame_lo_))
+      frame_hi_ = frame_lo_ + (frame_lo_ == 0.0 ? 1.0 : std::abs(frame_lo_) * 1e-6);
+    applyColorSettings();
+  }
+  for (const Shape3D& drawn : frame.shapes) {
+    const Shape3D shape = magnifiedShape(drawn, results_->view, magnification_);
     if (auto actor = makeShapeActor(shape, style)) {
       renderer->AddActor(actor);
       frame_actors_.push_back(actor);
@@ -290,7 +372,35 @@ void SceneView::updateTimeLabel() {
   // A static result (one frame) has no time worth showing.
   const bool animated = frameCount() > 1;
   time_->setText(animated ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : QString());
-  caption_->SetInput(animated ? text.toStdString().c_str() : "");
+  QStringList lines;
+  if (animated) lines << text;
+  const QString notes = drawingNotes();
+  if (!notes.isEmpty()) lines << notes;
+  caption_->SetInput(lines.join('\n').toStdString().c_str());
+}
+
+QString SceneView::drawingNotes() const {
+  QStringList notes;
+  if (results_ && !results_->view.reference.empty())
+    notes << (magnification_ == 1.0 ? tr("grey ghost: static shape")
+                                    : tr("displacement × %1 from the static shape (grey ghost)").arg(magnification_));
+  // Thin members are drawn thicker than they are; say so once it is more than a rounding.
+  if (drawn_thickness_ratio_ > 1.5) notes << tr("tubes drawn up to %1 × their diameter").arg(std::round(drawn_thickness_ratio_));
+  return notes.join('\n');
+}
+
+void SceneView::setMagnification(double factor) {
+  if (!(factor >= 1.0) || factor == magnification_) return;
+  magnification_ = factor;
+  const int index = magnify_->findData(factor);
+  if (index >= 0 && magnify_->currentIndex() != index) {
+    const QSignalBlocker blocker(magnify_);
+    magnify_->setCurrentIndex(index);
+  }
+  if (!results_) return;
+  drawFrame();
+  // A magnified motion may reach outside the old framing.
+  if (!user_moved_camera_ || framesAnew(framed_bounds_, framingBounds())) resetCamera();
 }
 
 void SceneView::setFrame(int index) {
@@ -315,13 +425,39 @@ void SceneView::setPlaying(bool playing) {
 
 bool SceneView::isPlaying() const { return timer_->isActive(); }
 
-void SceneView::resetCamera() {
-  if (!results_) return;
-  Bounds3D bounds = viewBounds(results_->view);
+Bounds3D SceneView::framingBounds() const {
+  if (!results_) return {};
+  Bounds3D bounds = viewBounds(results_->view, magnification_);
   // The still-water and sea-bed planes belong in the picture when they are drawn.
   const Bounds3D model = bounds;
   for (const auto& z : {results_->view.water_level_z, results_->view.seabed_z})
     if (z && nearModel(*z, model)) bounds.add(Eigen::Vector3d(model.centre().x(), model.centre().y(), *z));
+  return bounds;
+}
+
+std::array<double, 4> SceneView::projectedModelExtent() const {
+  std::array<double, 4> extent{1e300, -1e300, 1e300, -1e300};
+  const Bounds3D bounds = framingBounds();
+  if (bounds.empty()) return {0, 0, 0, 0};
+  gl_->matchWindowSize();
+  vtkRenderer* renderer = gl_->renderer();
+  for (int corner = 0; corner < 8; ++corner) {
+    renderer->SetWorldPoint(bounds.b[corner & 1], bounds.b[2 + ((corner >> 1) & 1)], bounds.b[4 + ((corner >> 2) & 1)], 1.0);
+    renderer->WorldToView();
+    double view[3];
+    renderer->GetViewPoint(view);
+    extent[0] = std::min(extent[0], view[0]);
+    extent[1] = std::max(extent[1], view[0]);
+    extent[2] = std::min(extent[2], view[1]);
+    extent[3] = std::max(extent[3], view[1]);
+  }
+  return extent;
+}
+
+void SceneView::resetCamera() {
+  if (!results_) return;
+  gl_->matchWindowSize();
+  const Bounds3D bounds = framingBounds();
   const Eigen::Vector3d c = bounds.centre();
   // An oblique view from the front-right and slightly above, z up.
   const Eigen::Vector3d from = Eigen::Vector3d(0.55, -1.0, 0.35).normalized();
@@ -330,13 +466,30 @@ void SceneView::resetCamera() {
   const Eigen::Vector3d eye = c + from * bounds.diagonal() * 2.0;
   camera->SetPosition(eye.x(), eye.y(), eye.z());
   camera->SetViewUp(0, 0, 1);
+  // Zoom below narrows the view angle; starting from VTK's default each time keeps repeated framings alike.
+  camera->SetViewAngle(30.0);
+  camera->SetWindowCenter(0.0, 0.0);
   gl_->renderer()->ResetCamera(bounds.b.data());
-  // A margin around the model for the caption; with a colour bar (the right ~18 % of the view)
-  // the model moves left and shrinks a little so that the bar does not cover it.
-  camera->SetWindowCenter(have_scalars_ ? 0.14 : 0.0, 0.0);
-  camera->Zoom(have_scalars_ ? 0.85 : 0.92);
+  // ResetCamera fits the bounding sphere, which leaves a long model (a hull, a 2-D section, a riser seen
+  // across) small in a wide view. Fit the projected box instead: zoom until it fills the free part of the
+  // view (the right ~20 % holds the colour bar, the top the caption), then shift it to that part's centre.
+  const double right = have_scalars_ ? 0.55 : 0.95, left = -0.95, top = 0.80, bottom = -0.95;
+  constexpr double kFill = 0.92;
+  for (int pass = 0; pass < 3; ++pass) {  // perspective makes one zoom step inexact: refine twice
+    camera->SetWindowCenter(0.0, 0.0);
+    const auto e = projectedModelExtent();
+    const double half_x = 0.5 * (e[1] - e[0]), half_y = 0.5 * (e[3] - e[2]);
+    const double zoom = std::min(half_x > 0 ? 0.5 * (right - left) * kFill / half_x : 1e3,
+                                 half_y > 0 ? 0.5 * (top - bottom) * kFill / half_y : 1e3);
+    if (std::isfinite(zoom) && zoom > 0 && std::abs(zoom - 1.0) > 1e-3) camera->Zoom(std::clamp(zoom, 0.05, 20.0));
+  }
+  camera->SetWindowCenter(0.0, 0.0);
+  const auto e = projectedModelExtent();
+  camera->SetWindowCenter(0.5 * (e[0] + e[1]) - 0.5 * (left + right), 0.5 * (e[2] + e[3]) - 0.5 * (top + bottom));
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
+  user_moved_camera_ = false;
+  framed_bounds_ = bounds;
   gl_->requestRender();
 }
 

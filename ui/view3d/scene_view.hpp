@@ -1,10 +1,12 @@
 // The 3D tab: draws a run's View3D (shapes per animation frame, colour map with a colour bar,
 // still-water and sea-bed planes), an axes triad, a time slider with play/pause, reset camera and
 // PNG export at a chosen resolution, and a "Colours" control (map, automatic or fixed range),
-// remembered per coloured quantity (across sessions, QSettings). The first results reset the camera; later
-// results (new runs, live partial results) keep the user's view.
+// remembered per coloured quantity (across sessions, QSettings). Results of a model of another size or place
+// (a new scenario, another length) frame the camera anew; results of the same model (a rerun, live partial
+// results) keep the user's view. Until the user moves the camera, a resized view is framed anew too.
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -18,8 +20,11 @@
 
 #include "core/results.hpp"
 #include "view3d/color_maps.hpp"
+#include "view3d/shape_actors.hpp"
 
+class QComboBox;
 class QLabel;
+class QResizeEvent;
 class QSlider;
 class QTimer;
 class QToolButton;
@@ -40,8 +45,8 @@ class SceneView : public QWidget {
   explicit SceneView(QWidget* parent = nullptr);
   ~SceneView() override;
 
-  // A run's results, finished or partial (a live run's): the frame shown stays, the camera is placed
-  // for the first results only.
+  // A run's results, finished or partial (a live run's): the frame shown stays; the camera is placed
+  // anew when the model's bounds differ from those it was framed for (framesAnew).
   void showResults(std::shared_ptr<const Results> results);
   void clear();
 
@@ -64,8 +69,18 @@ class SceneView : public QWidget {
   // The range the colours and the colour bar span now (the data's or the user's).
   std::pair<double, double> colorRange() const;
   ColorMapControl* colorControl() const { return color_control_; }
+  // Displacements from the reference shape (View3D::reference, drawn as a ghost) drawn × 1, 10 or 100.
+  void setMagnification(double factor);
+  double magnification() const { return magnification_; }
+  QComboBox* magnificationBox() const { return magnify_; }
+  // What the view states about its drawing (magnification, drawn thickness), shown in its caption.
+  QString drawingNotes() const;
 
   VtkGlWidget* glWidget() const { return gl_; }
+  // Where the model's bounding box (and the water and sea-bed levels drawn with it) falls in the view:
+  // {x_min, x_max, y_min, y_max} of its eight projected corners in normalised view coordinates, the view
+  // spanning [-1, 1] in each direction. For tests of the framing.
+  std::array<double, 4> projectedModelExtent() const;
   // Number of model actors in the current frame (planes, colour bar and triad not counted).
   int modelActorCount() const { return static_cast<int>(frame_actors_.size()); }
 
@@ -74,6 +89,7 @@ class SceneView : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;  // a new palette (theme) recolours background and text
+  void resizeEvent(QResizeEvent* event) override;  // framed anew while the user has not moved the camera
 
  private:
   void applyPaletteColors();
@@ -81,10 +97,12 @@ class SceneView : public QWidget {
   void applyColorSettings();
   void drawFrame();
   void updateTimeLabel();
+  Bounds3D framingBounds() const;  // the model and the water and sea-bed planes drawn with it
 
   VtkGlWidget* gl_;
   QSlider* slider_;
   QToolButton* play_;
+  QComboBox* magnify_;
   QLabel* time_;
   QLabel* empty_;
   QTimer* timer_;
@@ -92,7 +110,10 @@ class SceneView : public QWidget {
   std::shared_ptr<const Results> results_;
   int frame_ = 0;
   bool camera_placed_ = false;
-  vtkSmartPointer<vtkColorTransferFunction> colors_;
+  bool user_moved_camera_ = false;  // since the last automatic framing
+  Bounds3D framed_bounds_;          // what the camera was last framed for
+  vtkSmartPointer<vtkColorTransferFunction> colors_;      // SI values to colours (the model)
+  vtkSmartPointer<vtkColorTransferFunction> bar_colors_;  // the same in the colour bar's display unit
   vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
   vtkSmartPointer<vtkTextActor> caption_;
   vtkSmartPointer<vtkOrientationMarkerWidget> triad_;
@@ -101,6 +122,9 @@ class SceneView : public QWidget {
   double min_tube_radius_ = 0.0;
   bool have_scalars_ = false;
   double data_lo_ = 0.0, data_hi_ = 1.0;  // scalar range of all frames
+  double frame_lo_ = 0.0, frame_hi_ = 1.0;  // scalar range of the frame shown
+  double magnification_ = 1.0;
+  double drawn_thickness_ratio_ = 1.0;  // drawn tube radius / real radius of the thinnest tube (≥ 1)
   std::string colored_quantity_;          // View3D::scalar_name of the shown results
   ColorSettings color_settings_;
   std::map<std::string, ColorSettings> color_memory_;  // by quantity; also saved with QSettings

@@ -46,27 +46,51 @@ Eigen::Vector3d Bounds3D::centre() const {
   return {0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])};
 }
 
-Bounds3D viewBounds(const View3D& view) {
+Shape3D magnifiedShape(const Shape3D& shape, const View3D& view, double magnification) {
+  if (magnification == 1.0) return shape;
+  for (const Shape3D& ref : view.reference) {
+    if (ref.name != shape.name || ref.kind != shape.kind || ref.points.size() != shape.points.size()) continue;
+    Shape3D out = shape;
+    for (std::size_t i = 0; i < out.points.size(); ++i)
+      out.points[i] = ref.points[i] + magnification * (shape.points[i] - ref.points[i]);
+    return out;
+  }
+  return shape;
+}
+
+Bounds3D viewBounds(const View3D& view, double magnification) {
   Bounds3D bounds;
+  auto add = [&](const Shape3D& shape) {
+    double pad = shape.radius;
+    if (shape.kind == Shape3D::Kind::Box) pad = 0.5 * shape.size.maxCoeff();
+    for (const auto& p : shape.points) bounds.add(p, pad);
+  };
   for (const auto& frame : view.frames)
-    for (const auto& shape : frame.shapes) {
-      double pad = shape.radius;
-      if (shape.kind == Shape3D::Kind::Box) pad = 0.5 * shape.size.maxCoeff();
-      for (const auto& p : shape.points) bounds.add(p, pad);
-    }
+    for (const auto& shape : frame.shapes) add(magnification == 1.0 ? shape : magnifiedShape(shape, view, magnification));
   return bounds;
+}
+
+bool frameScalarRange(const Frame3D& frame, double& lo, double& hi) {
+  bool any = false;
+  for (const auto& shape : frame.shapes)
+    for (double s : shape.scalars) {
+      if (!std::isfinite(s)) continue;
+      lo = any ? std::min(lo, s) : s;
+      hi = any ? std::max(hi, s) : s;
+      any = true;
+    }
+  return any;
 }
 
 bool scalarRange(const View3D& view, double& lo, double& hi) {
   bool any = false;
-  for (const auto& frame : view.frames)
-    for (const auto& shape : frame.shapes)
-      for (double s : shape.scalars) {
-        if (!std::isfinite(s)) continue;
-        lo = any ? std::min(lo, s) : s;
-        hi = any ? std::max(hi, s) : s;
-        any = true;
-      }
+  for (const auto& frame : view.frames) {
+    double frame_lo = 0, frame_hi = 0;
+    if (!frameScalarRange(frame, frame_lo, frame_hi)) continue;
+    lo = any ? std::min(lo, frame_lo) : frame_lo;
+    hi = any ? std::max(hi, frame_hi) : frame_hi;
+    any = true;
+  }
   return any;
 }
 

@@ -25,8 +25,16 @@ struct Bounds3D {
   Eigen::Vector3d centre() const;
 };
 
-// Bounds of every shape of every frame (animated models keep one stable frame of reference).
-Bounds3D viewBounds(const View3D& view);
+// Bounds of every shape of every frame (animated models keep one stable frame of reference), with the
+// displacements from View3D::reference magnified by `magnification` (magnifiedShape).
+Bounds3D viewBounds(const View3D& view, double magnification = 1.0);
+
+// `shape` with its displacement from its reference (the View3D::reference shape of the same name, kind and
+// point count) multiplied by `magnification`; the shape itself when it has no reference or at 1.
+Shape3D magnifiedShape(const Shape3D& shape, const View3D& view, double magnification);
+
+// Min and max of the scalars of one frame; false if it has none.
+bool frameScalarRange(const Frame3D& frame, double& lo, double& hi);
 // Min and max of all scalars of all frames; false if there are none.
 bool scalarRange(const View3D& view, double& lo, double& hi);
 

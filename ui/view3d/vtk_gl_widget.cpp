@@ -170,6 +170,16 @@ QImage VtkGlWidget::renderImage(int width_px, int height_px) {
   return image;
 }
 
+void VtkGlWidget::matchWindowSize() {
+  const QSize size = devicePixelSize();
+  const int* now = window_->GetSize();
+  if (now[0] == size.width() && now[1] == size.height()) return;
+  if (!makeCurrent()) return;
+  window_->SetSize(size.width(), size.height());
+  interactor_->SetSize(size.width(), size.height());
+  context_->doneCurrent();
+}
+
 QImage VtkGlWidget::grabFramebuffer() {
   const QSize size = devicePixelSize();
   if (!makeCurrent()) return {};
@@ -210,6 +220,7 @@ void VtkGlWidget::forwardMouse(QMouseEvent* event, unsigned long vtk_event) {
 }
 
 void VtkGlWidget::mousePressEvent(QMouseEvent* event) {
+  emit cameraMovedByUser();
   switch (event->button()) {
     case Qt::LeftButton: forwardMouse(event, vtkCommand::LeftButtonPressEvent); break;
     case Qt::MiddleButton: forwardMouse(event, vtkCommand::MiddleButtonPressEvent); break;
@@ -230,14 +241,12 @@ void VtkGlWidget::mouseReleaseEvent(QMouseEvent* event) {
 void VtkGlWidget::mouseMoveEvent(QMouseEvent* event) { forwardMouse(event, vtkCommand::MouseMoveEvent); }
 
 void VtkGlWidget::mouseDoubleClickEvent(QMouseEvent* event) {
-  // A double click resets the view to show everything.
-  if (event->button() == Qt::LeftButton) {
-    renderer_->ResetCamera();
-    requestRender();
-  }
+  // A double click asks for the view that shows everything (the owner frames the model).
+  if (event->button() == Qt::LeftButton) emit resetCameraRequested();
 }
 
 void VtkGlWidget::wheelEvent(QWheelEvent* event) {
+  emit cameraMovedByUser();
   setEventPosition(event->position(), event->modifiers());
   const int delta = event->angleDelta().y();
   if (delta > 0) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent, event);

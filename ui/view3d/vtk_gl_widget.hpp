@@ -47,10 +47,20 @@ class VtkGlWidget : public QWidget {
   // more than the redraw itself (docs/gui.md), so the view has one resolution, live runs included.
   QImage grabFramebuffer();
 
+  // Gives the render window the widget's present size (otherwise set at the next paint), so that a camera
+  // fitted now (vtkRenderer::ResetCamera uses the window's aspect ratio) fits the picture that will be shown.
+  void matchWindowSize();
+
   // Wall time of the last render for the widget (VTK render and read-back) in milliseconds: what a
   // redraw costs the GUI thread (with a software OpenGL renderer, far more than anything else).
   double lastPaintMilliseconds() const { return last_paint_ms_; }
   int paintCount() const { return paint_count_; }
+
+ signals:
+  // A mouse button or the wheel went to the camera (rotate, pan, zoom).
+  void cameraMovedByUser();
+  // A double click: show the whole model again.
+  void resetCameraRequested();
 
  protected:
   void paintEvent(QPaintEvent* event) override;

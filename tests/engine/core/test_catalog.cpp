@@ -82,6 +82,16 @@ TEST(Catalog, EveryBuiltInScenarioValidatesAndRoundTrips) {
   }
 }
 
+TEST(Catalog, BuiltInScenariosRaiseNoPlausibilityWarningUnlessTheyExplainIt) {
+  // A shipped example runs clean; one whose point is a doubtful setting says so in its description.
+  for (const auto& b : builtinScenarios()) {
+    const auto warnings = plausibilityWarnings(requireScene(b.scenario.scene), b.scenario.parameters);
+    if (warnings.empty()) continue;
+    EXPECT_NE(b.scenario.description.find("warn"), std::string::npos)
+        << b.id << " warns without saying why:\n" << describeErrors(warnings);
+  }
+}
+
 TEST(Catalog, EverySceneHasAnExampleAndTheDefaultExists) {
   for (const auto& s : sceneCatalog()) {
     bool found = false;

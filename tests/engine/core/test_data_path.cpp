@@ -36,3 +36,30 @@ TEST(DataPath, FilesAreReadAndMissingFilesNamed) {
   EXPECT_TRUE(maris::dataPathProblem(file.string(), "ship").has_value());
   EXPECT_THROW(maris::readDataText(file.string(), "ship", "f"), maris::InputError);
 }
+
+// A relative data path becomes absolute against the folder of the file that holds it; built-in names,
+// absolute paths, empty text and fields that are not data paths stay as they are.
+TEST(DataPath, RelativePathsResolveAgainstTheFilesFolder) {
+  maris::Schema schema;
+  maris::ParamSpec data;
+  data.path = "hull.offsets_file";
+  data.kind = maris::ParamKind::Text;
+  data.data_path = true;
+  maris::ParamSpec name = data;
+  name.path = "hull.name";
+  name.data_path = false;
+  maris::ParamSpec other = data;
+  other.path = "measured.file";
+  schema.fields = {data, name, other};
+  maris::Json parameters = {{"hull", {{"offsets_file", "../data/hull.csv"}, {"name", "hull.csv"}}},
+                            {"measured", {{"file", "builtin:kcs.csv"}}}};
+  maris::resolveDataPaths(schema, parameters, "/studies/ships");
+  EXPECT_EQ(parameters["hull"]["offsets_file"], "/studies/data/hull.csv");
+  EXPECT_EQ(parameters["hull"]["name"], "hull.csv");
+  EXPECT_EQ(parameters["measured"]["file"], "builtin:kcs.csv");
+  parameters["measured"]["file"] = "/abs/file.csv";
+  parameters["hull"]["offsets_file"] = "";
+  maris::resolveDataPaths(schema, parameters, "/elsewhere");
+  EXPECT_EQ(parameters["measured"]["file"], "/abs/file.csv");
+  EXPECT_EQ(parameters["hull"]["offsets_file"], "");
+}

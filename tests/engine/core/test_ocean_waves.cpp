@@ -27,6 +27,21 @@ long double bisectionWaveNumber(double omega, double depth) {
   return 0.5L * (lo + hi);
 }
 
+// Group velocity against dω/dk of the dispersion relation ω(k) = √(g k tanh kh) by a central difference
+// (an independent route: truncation ~(δk)² ω''' ≈ 1e-10 relative at δk = 1e-5 k), and its two limits:
+// g/(2ω) in deep water (exactly) and √(g h) for kh → 0.
+TEST(OceanWaves, GroupVelocityIsTheSlopeOfTheDispersionRelation) {
+  auto omega_of = [](double k, double h) { return std::sqrt(kG * k * std::tanh(k * h)); };
+  for (double h : {5.0, 50.0, 500.0})
+    for (double omega : {0.2, 0.6, 1.5}) {
+      const double k = waveNumber(omega, h, kG), dk = 1e-5 * k;
+      const double slope = (omega_of(k + dk, h) - omega_of(k - dk, h)) / (2.0 * dk);
+      EXPECT_NEAR(groupVelocity(omega, h, kG), slope, 1e-8 * slope) << "h = " << h << ", omega = " << omega;
+    }
+  EXPECT_EQ(groupVelocity(0.8, kDeepWater, kG), 0.5 * kG / 0.8);
+  EXPECT_NEAR(groupVelocity(0.01, 1.0, kG), std::sqrt(kG * 1.0), 1e-5 * std::sqrt(kG));
+}
+
 TEST(OceanWaves, DispersionMatchesBisectionTo1e12FromShallowToDeep) {
   for (double depth : {1.0, 10.0, 100.0, 1000.0}) {
     for (double period : {2.0, 5.0, 10.0, 20.0, 60.0}) {

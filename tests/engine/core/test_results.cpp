@@ -1,9 +1,16 @@
 // Result containers: CSV with names and units rows that round-trips doubles; summary.json.
 #include <gtest/gtest.h>
 
+#include <clocale>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
+#include <unistd.h>
+
+#include "core/csv_field.hpp"
 #include "core/results.hpp"
 
 namespace maris {
@@ -26,6 +33,32 @@ TEST(Results, CsvHasNameRowUnitRowAndExactNumbers) {
   const auto comma = row1.find(',');
   const double x = std::stod(row1.substr(comma + 1));
   EXPECT_EQ(x, 1.0 / 3.0);  // 17 significant digits round-trip a double exactly
+}
+
+// The desktop application runs in the user's locale (Qt sets it from the environment), where printf writes a
+// decimal comma: CSV numbers must not follow it. A German locale is built into a scratch folder with
+// localedef (glibc's, from the locale sources Debian ships) so that the check runs on any machine.
+TEST(Results, CsvNumbersUseAPointInADecimalCommaLocale) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("maris_locale_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string make = "localedef -i de_DE -f UTF-8 '" + (dir / "de_DE.UTF-8").string() + "' >/dev/null 2>&1";
+  ASSERT_EQ(std::system(make.c_str()), 0) << make;
+  const std::string old_locpath = std::getenv("LOCPATH") ? std::getenv("LOCPATH") : "";
+  ::setenv("LOCPATH", dir.c_str(), 1);
+  ASSERT_NE(std::setlocale(LC_NUMERIC, "de_DE.UTF-8"), nullptr);
+  char printed[16];
+  std::snprintf(printed, sizeof printed, "%.2g", 0.5);
+  const std::string printf_text = printed;
+  Table t;
+  t.add("x", "m", {0.5, -1.25e-7});
+  const std::string csv = t.toCsv();
+  std::setlocale(LC_NUMERIC, "C");
+  if (old_locpath.empty()) ::unsetenv("LOCPATH"); else ::setenv("LOCPATH", old_locpath.c_str(), 1);
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(printf_text, "0,5");  // the locale was in effect
+  EXPECT_EQ(csv, "x\nm\n0.5\n-1.2499999999999999e-07\n");
+  EXPECT_EQ(csvNumber(0.1), "0.10000000000000001");
+  EXPECT_EQ(csvNumber(std::nan("")), "nan");
 }
 
 TEST(Results, SummaryCarriesUnitsAndSolverStatistics) {

@@ -110,9 +110,9 @@ TEST(HullGeometry, BadOffsetsAreReportedByLineAndColumn) {
     FAIL() << "bad offsets were accepted";
   } catch (const InputError& e) {
     const std::string all = describeErrors(e.errors());
-    EXPECT_NE(all.find("line 4: column half_breadth_m is missing"), std::string::npos) << all;
-    EXPECT_NE(all.find("line 5: column half_breadth_m is negative"), std::string::npos) << all;
-    EXPECT_NE(all.find("line 6: column half_breadth_m is not a finite number"), std::string::npos) << all;
+    EXPECT_NE(all.find("line 4, column 3 (half_breadth_m): expected a number, found an empty cell"), std::string::npos) << all;
+    EXPECT_NE(all.find("line 5, column 3 (half_breadth_m): is negative"), std::string::npos) << all;
+    EXPECT_NE(all.find("line 6, column 3 (half_breadth_m): expected a number, found \"abc\""), std::string::npos) << all;
     EXPECT_EQ(e.errors().front().path, "parameters.hull.offsets_file");
   }
   EXPECT_THROW(parseOffsetsCsv("x,z,half_breadth\n0,0,1\n", "f"), InputError);  // no units

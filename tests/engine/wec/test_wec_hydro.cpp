@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/errors.hpp"
+#include "core/ocean_waves.hpp"
 #include "wec/wec_hydro.hpp"
 #include "wec/wec_model.hpp"
 #include "wec/wec_wamit.hpp"
@@ -54,7 +55,7 @@ TEST(WecHydro, WamitImportSatisfiesHaskind) {
   for (const auto& r : db->rows()) {
     const double period = 2.0 * std::numbers::pi / r.omega;
     if (period < 4.0 || period > 8.0) continue;
-    const double k = finiteDepthWaveNumber(r.omega, kWamitG, 50.0), cg = groupVelocity(r.omega, kWamitG, 50.0);
+    const double k = maris::ocean::waveNumber(r.omega, 50.0, kWamitG), cg = maris::ocean::groupVelocity(r.omega, 50.0, kWamitG);
     EXPECT_NEAR(std::norm(r.hydro.heave.excitation) * k / (4 * kRho * kWamitG * cg * r.hydro.heave.damping), 1.0, 0.01)
         << "T = " << period;
     EXPECT_NEAR(std::norm(r.hydro.surge.excitation) * k / (8 * kRho * kWamitG * cg * r.hydro.surge.damping), 1.0, 0.01)

@@ -171,7 +171,7 @@ TEST(WecNemoh, BadFilesNameFileAndLine) {
     out << " 1.0 2.0 abc\n";
   }
   const std::string e1 = importError(bad_number);
-  EXPECT_NE(e1.find("ExcitationForce.tec line"), std::string::npos) << e1;
+  EXPECT_NE(e1.find("ExcitationForce.tec\": line"), std::string::npos) << e1;
 
   const fs::path no_heave = scratch("no_heave");
   std::vector<TabulatedHydro::Row> few(rows.begin(), rows.begin() + 6);

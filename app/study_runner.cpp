@@ -1,0 +1,245 @@
+#include "study_runner.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <map>
+
+#include <fcntl.h>
+#include <sched.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core/input_limits.hpp"
+#include "core/run_output.hpp"
+
+extern char** environ;
+
+namespace maris::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using study::CaseOutcome;
+using study::CaseStatus;
+
+constexpr double kKillGraceSeconds = 5.0;  // from SIGTERM (timeout) to SIGKILL
+
+struct RunningCase {
+  std::string id;
+  Clock::time_point started;
+  std::chrono::system_clock::time_point started_at;
+  bool timed_out = false;
+  Clock::time_point kill_at;
+};
+
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string durationText(double seconds) {
+  char text[32];
+  if (seconds < 90) std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 5400) std::snprintf(text, sizeof text, "%.0f min", seconds / 60);
+  else std::snprintf(text, sizeof text, "%.1f h", seconds / 3600);
+  return text;
+}
+
+// Starts `maris-cli run CASE.json --out CASE/` with its messages going to CASE.log; 0 when it cannot start.
+pid_t spawnCase(const study::StudyFolder& folder, const std::string& id, const CaseRunOptions& options) {
+  const std::string scenario = folder.caseScenario(id).string(), out = folder.caseRun(id).string();
+  const std::string log = folder.caseLog(id).string();
+  std::vector<std::string> args = {"maris-cli", "run", scenario, "--out", out};
+  if (!options.case_plots) args.push_back("--no-plots");
+  if (options.allow_large) args.push_back("--allow-large");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&files, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigemptyset(&defaults);
+  for (int s : {SIGINT, SIGTERM, SIGCHLD, SIGPIPE}) sigaddset(&defaults, s);
+  posix_spawnattr_setsigmask(&attributes, &none);  // the study blocks these; the case must receive them
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+  pid_t pid = 0;
+  // The running executable itself, also if its file was replaced since it started.
+  const int error = ::posix_spawn(&pid, "/proc/self/exe", &files, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  posix_spawnattr_destroy(&attributes);
+  return error == 0 ? pid : 0;
+}
+
+std::string readLog(const study::StudyFolder& folder, const std::string& id) {
+  try {
+    return readInputFile(folder.caseLog(id), "log", InputLimits::kScenarioFileBytes);
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
+class Progress {
+ public:
+  Progress(std::size_t total, bool enabled) : total_(total), enabled_(enabled), tty_(::isatty(STDERR_FILENO)) {}
+  void show(const CaseRunTally& tally, std::size_t running, bool force) {
+    if (!enabled_ || (!force && secondsSince(last_) < (tty_ ? 0.5 : 5.0))) return;
+    last_ = Clock::now();
+    const std::size_t finished = tally.ok + tally.failed + tally.timeout;
+    const std::size_t done = finished + tally.skipped;
+    std::string left;
+    if (finished > 0 && done < total_)
+      left = ", about " + durationText(secondsSince(start_) / static_cast<double>(finished) *
+                                       static_cast<double>(total_ - done)) + " left";
+    std::fprintf(stderr, "%scases: %zu/%zu done, %zu failed, %zu running%s%s", tty_ ? "\r" : "", done, total_,
+                 tally.failed + tally.timeout, running, left.c_str(), tty_ ? "\033[K" : "\n");
+    std::fflush(stderr);
+  }
+  void finish() {
+    if (enabled_ && tty_) std::fputc('\n', stderr);
+  }
+
+ private:
+  std::size_t total_;
+  bool enabled_, tty_;
+  Clock::time_point start_ = Clock::now(), last_ = Clock::now() - std::chrono::hours(1);
+};
+
+}  // namespace
+
+unsigned availableProcessors() {
+  cpu_set_t set;
+  if (::sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+  const long online = ::sysconf(_SC_NPROCESSORS_ONLN);
+  return online > 0 ? static_cast<unsigned>(online) : 1u;
+}
+
+CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::string>& ids,
+                      const CaseRunOptions& options) {
+  CaseRunTally tally;
+  const auto start = Clock::now();
+  std::vector<std::string> queue;
+  for (const auto& id : ids) {
+    if (folder.caseComplete(id)) ++tally.skipped;
+    else queue.push_back(id);
+  }
+  sigset_t waited, previous;
+  sigemptyset(&waited);
+  for (int s : {SIGINT, SIGTERM, SIGCHLD}) sigaddset(&waited, s);
+  ::sigprocmask(SIG_BLOCK, &waited, &previous);
+
+  Progress progress(ids.size(), options.progress);
+  std::map<pid_t, RunningCase> running;
+  std::size_t next = 0;
+  const unsigned jobs = std::max(1u, options.jobs);
+  auto record = [&](CaseOutcome outcome) {
+    if (outcome.status == CaseStatus::Ok) ++tally.ok;
+    if (outcome.status == CaseStatus::Failed) ++tally.failed;
+    if (outcome.status == CaseStatus::Timeout) ++tally.timeout;
+    if (outcome.status != CaseStatus::Ok) tally.failed_ids.push_back(outcome.id);
+    study::writeCaseOutcome(folder, outcome);
+  };
+  auto finish = [&](pid_t pid, int status) {
+    const auto it = running.find(pid);
+    if (it == running.end()) return;
+    RunningCase c = it->second;
+    running.erase(it);
+    CaseOutcome outcome;
+    outcome.id = c.id;
+    outcome.wall_s = secondsSince(c.started);
+    outcome.started_at = isoUtc(c.started_at);
+    outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    const bool complete = folder.caseComplete(c.id);
+    if (outcome.exit_code == 0 && complete) {
+      outcome.status = CaseStatus::Ok;
+    } else if (complete) {
+      outcome.status = CaseStatus::Ok;  // its results were committed before the end (a late signal)
+    } else if (c.timed_out) {
+      outcome.status = CaseStatus::Timeout;
+      outcome.message = "no result within the timeout of " + durationText(options.timeout_s) + "; stopped";
+    } else if (tally.cancel_signal != 0 && (outcome.exit_code == 130 || outcome.exit_code == 143 ||
+                                            outcome.exit_code == 128 + SIGKILL)) {
+      return;  // cancelled with the study: not run, so --resume runs it
+    } else {
+      outcome.status = CaseStatus::Failed;
+      outcome.message = study::failureMessage(readLog(folder, c.id));
+      if (outcome.message.empty())
+        outcome.message = WIFSIGNALED(status) ? "ended by signal " + std::to_string(WTERMSIG(status))
+                                              : "exit code " + std::to_string(outcome.exit_code) + " without results";
+    }
+    record(std::move(outcome));
+  };
+
+  for (;;) {
+    while (tally.cancel_signal == 0 && running.size() < jobs && next < queue.size()) {
+      const std::string& id = queue[next++];
+      const pid_t pid = spawnCase(folder, id, options);
+      if (pid == 0) {
+        record({id, CaseStatus::Failed, 127, "could not start maris-cli for the case", 0.0,
+                isoUtc(std::chrono::system_clock::now())});
+        continue;
+      }
+      running[pid] = {id, Clock::now(), std::chrono::system_clock::now(), false, {}};
+    }
+    progress.show(tally, running.size(), false);
+    if (running.empty()) break;
+
+    // Sleep until a case ends, a signal arrives, a timeout falls due or the progress line is due.
+    double wait_s = 1.0;
+    for (const auto& [pid, c] : running) {
+      if (options.timeout_s > 0 && !c.timed_out) wait_s = std::min(wait_s, options.timeout_s - secondsSince(c.started));
+      if (c.timed_out) wait_s = std::min(wait_s, -std::chrono::duration<double>(Clock::now() - c.kill_at).count());
+    }
+    wait_s = std::max(wait_s, 0.001);
+    timespec timeout{static_cast<time_t>(wait_s), static_cast<long>((wait_s - static_cast<double>(static_cast<time_t>(wait_s))) * 1e9)};
+    siginfo_t info{};
+    const int signal = ::sigtimedwait(&waited, &info, &timeout);
+    if ((signal == SIGINT || signal == SIGTERM) && tally.cancel_signal == 0) {
+      tally.cancel_signal = signal;
+      for (const auto& [pid, c] : running) ::kill(pid, signal);
+      if (options.progress) std::fprintf(stderr, "\nstopping: %zu running cases are cancelled\n", running.size());
+    } else if (signal == SIGINT || signal == SIGTERM) {
+      for (const auto& [pid, c] : running) ::kill(pid, SIGKILL);  // asked twice: stop now
+    }
+    int status = 0;
+    for (pid_t pid; (pid = ::waitpid(-1, &status, WNOHANG)) > 0;) finish(pid, status);
+    for (auto& [pid, c] : running) {
+      if (options.timeout_s > 0 && !c.timed_out && secondsSince(c.started) >= options.timeout_s) {
+        c.timed_out = true;
+        c.kill_at = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kKillGraceSeconds));
+        ::kill(pid, SIGTERM);
+      } else if (c.timed_out && Clock::now() >= c.kill_at) {
+        ::kill(pid, SIGKILL);
+        c.kill_at = Clock::now() + std::chrono::hours(1);
+      }
+    }
+  }
+  progress.show(tally, 0, true);
+  progress.finish();
+  // A signal that arrived after the last case ended still cancels the study (it is pending, not lost).
+  sigset_t pending;
+  if (tally.cancel_signal == 0 && ::sigpending(&pending) == 0) {
+    if (sigismember(&pending, SIGINT)) tally.cancel_signal = SIGINT;
+    if (sigismember(&pending, SIGTERM)) tally.cancel_signal = SIGTERM;
+  }
+  if (tally.cancel_signal != 0) {
+    // Consume the pending signal so restoring the mask does not kill the study before it reports.
+    timespec zero{0, 0};
+    while (::sigtimedwait(&waited, nullptr, &zero) > 0) {
+    }
+  }
+  ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+  std::sort(tally.failed_ids.begin(), tally.failed_ids.end());
+  tally.wall_s = secondsSince(start);
+  return tally;
+}
+
+}  // namespace maris::cli

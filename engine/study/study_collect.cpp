@@ -1,0 +1,180 @@
+#include "study/study_collect.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/csv_field.hpp"
+#include "core/input_limits.hpp"
+#include "core/run_output.hpp"
+
+namespace maris::study {
+
+namespace {
+
+std::string valueCell(const Json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_float()) return csvNumber(value.get<double>());
+  return value.dump();  // integers, booleans, lists
+}
+
+bool isNumber(ParamKind kind) { return kind == ParamKind::Real || kind == ParamKind::Integer; }
+
+std::string plainUnit(const std::string& unit) { return unit.empty() ? "-" : unit; }
+
+// The scalars of a complete case's summary.json.
+CaseScalars readScalars(const std::filesystem::path& summary) {
+  const Json j = parseJsonLimited(readInputFile(summary, summary.string(), InputLimits::kScenarioFileBytes),
+                                  summary.string());
+  CaseScalars scalars;
+  for (const auto& [name, s] : j.at("results").items())
+    if (s.is_object() && s.contains("value") && s["value"].is_number())
+      scalars[name] = {s["value"].get<double>(), s.value("unit", "-")};
+  return scalars;
+}
+
+}  // namespace
+
+std::size_t CollectedStudy::count(CaseStatus status) const {
+  return static_cast<std::size_t>(
+      std::count_if(cases.begin(), cases.end(), [status](const CollectedCase& c) { return c.status == status; }));
+}
+
+CollectedStudy collectStudy(const StudyFolder& folder, const StudyManifest& manifest) {
+  std::vector<CollectedCase> cases;
+  std::vector<CaseScalars> scalars(manifest.ids.size());
+  for (std::size_t i = 0; i < manifest.ids.size(); ++i) {
+    CollectedCase c;
+    c.id = manifest.ids[i];
+    c.values = manifest.values[i];
+    c.outcome.id = c.id;
+    if (auto outcome = readCaseOutcome(folder, c.id)) c.outcome = *outcome;
+    if (folder.caseComplete(c.id)) {
+      try {
+        scalars[i] = readScalars(folder.caseRun(c.id) / "summary.json");
+        c.status = CaseStatus::Ok;
+        c.outcome.status = CaseStatus::Ok;
+      } catch (const std::exception& e) {
+        c.status = CaseStatus::Failed;
+        c.outcome.message = std::string("summary.json cannot be read: ") + e.what();
+      }
+    } else if (c.outcome.status == CaseStatus::Failed || c.outcome.status == CaseStatus::Timeout) {
+      c.status = c.outcome.status;
+    }
+    cases.push_back(std::move(c));
+  }
+  return collectScalars(manifest.parameters, manifest.results, std::move(cases), scalars);
+}
+
+CollectedStudy collectScalars(std::vector<StudyParameter> parameters, const std::vector<std::string>& requested,
+                              std::vector<CollectedCase> cases, const std::vector<CaseScalars>& scalars) {
+  CollectedStudy collected;
+  collected.parameters = std::move(parameters);
+  collected.cases = std::move(cases);
+  std::map<std::string, std::string> units;  // every scalar name of the complete cases, with its unit
+  for (std::size_t i = 0; i < collected.cases.size() && i < scalars.size(); ++i)
+    if (collected.cases[i].status == CaseStatus::Ok)
+      for (const auto& [name, value] : scalars[i]) units.emplace(name, value.second);
+  if (requested.empty()) {
+    for (const auto& [name, unit] : units) collected.result_names.push_back(name);
+  } else {
+    collected.result_names = requested;
+    std::vector<std::string> known;
+    for (const auto& [name, unit] : units) known.push_back(name);
+    for (const auto& name : requested) {
+      if (units.count(name) || known.empty()) continue;
+      const auto guess = didYouMean(name, known);
+      collected.warnings.push_back("result '" + name + "' is in no complete case's summary.json" +
+                                   (guess.empty() ? std::string() : "; did you mean '" + guess + "'?"));
+    }
+  }
+  for (const auto& name : collected.result_names) collected.result_units.push_back(units.count(name) ? units[name] : "-");
+  for (std::size_t i = 0; i < collected.cases.size(); ++i)
+    for (const auto& name : collected.result_names) {
+      std::optional<double> value;
+      if (collected.cases[i].status == CaseStatus::Ok && i < scalars.size())
+        if (const auto it = scalars[i].find(name); it != scalars[i].end()) value = it->second.first;
+      collected.cases[i].results.push_back(value);
+    }
+  return collected;
+}
+
+std::string studyCsv(const CollectedStudy& collected) {
+  std::string out = "case,status";
+  for (const auto& p : collected.parameters) appendCsvField(out += ',', p.path);
+  for (const auto& name : collected.result_names) appendCsvField(out += ',', name);
+  out += "\n-,-";
+  for (const auto& p : collected.parameters) appendCsvField(out += ',', plainUnit(p.unit));
+  for (const auto& unit : collected.result_units) appendCsvField(out += ',', plainUnit(unit));
+  out += '\n';
+  for (const auto& c : collected.cases) {
+    out += c.id;
+    out += ',';
+    out += toString(c.status);
+    for (const auto& v : c.values) appendCsvField(out += ',', valueCell(v));
+    for (const auto& r : c.results) {
+      out += ',';
+      if (r) out += csvNumber(*r);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+void writeCollected(const StudyFolder& folder, StudyManifest& manifest, const CollectedStudy& collected) {
+  writeFileAtomic(folder.csv(), studyCsv(collected));
+  Json cases = Json::array();
+  for (const auto& c : collected.cases) {
+    Json j = {{"id", c.id}, {"status", toString(c.status)}};
+    if (c.status != CaseStatus::Missing) {
+      j["exit_code"] = c.outcome.exit_code;
+      j["wall_s"] = c.outcome.wall_s;
+      if (!c.outcome.started_at.empty()) j["started_at"] = c.outcome.started_at;
+    }
+    if (!c.outcome.message.empty() && c.status != CaseStatus::Ok) j["message"] = c.outcome.message;
+    cases.push_back(std::move(j));
+  }
+  manifest.json["collected"] = {{"at", isoUtc(std::chrono::system_clock::now())},
+                                {"ok", collected.count(CaseStatus::Ok)},
+                                {"failed", collected.count(CaseStatus::Failed)},
+                                {"timeout", collected.count(CaseStatus::Timeout)},
+                                {"missing", collected.count(CaseStatus::Missing)},
+                                {"results", collected.result_names},
+                                {"warnings", collected.warnings},
+                                {"cases", cases}};
+  writeFileAtomic(folder.manifest(), manifest.json.dump(1) + "\n");
+}
+
+std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyManifest& manifest) {
+  std::vector<StudyPlot> plots;
+  std::vector<std::size_t> numeric;
+  for (std::size_t p = 0; p < collected.parameters.size(); ++p)
+    if (isNumber(collected.parameters[p].kind)) numeric.push_back(p);
+  const bool map = manifest.json.value("design", "") == "grid" && collected.parameters.size() == 2 && numeric.size() == 2;
+  for (std::size_t r = 0; r < collected.result_names.size(); ++r) {
+    const std::string& result = collected.result_names[r];
+    if (map)
+      plots.push_back({result + "_map", result + " over " + collected.parameters[0].path + " and " +
+                                            collected.parameters[1].path, r, 1, true});
+    for (const auto p : numeric)
+      plots.push_back({result + "_vs_" + collected.parameters[p].path,
+                       result + " against " + collected.parameters[p].path, r, p, false});
+  }
+  return plots;
+}
+
+bool logSpaced(const StudyManifest& manifest, const std::string& path) {
+  const Json& document = manifest.json.contains("study") ? manifest.json["study"] : manifest.json;
+  for (const char* design : {"grid", "latin_hypercube"}) {
+    const auto d = document.find(design);
+    if (d == document.end() || !d->is_object()) continue;
+    const Json& entries = d->contains("bounds") ? d->at("bounds") : *d;
+    const auto e = entries.find(path);
+    if (e != entries.end() && e->is_object() && e->value("spacing", "") == "log") return true;
+  }
+  return false;
+}
+
+}  // namespace maris::study

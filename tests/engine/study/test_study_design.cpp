@@ -1,0 +1,139 @@
+// The three designs of a study: counts, values, order, units and seeds. Expected values are closed
+// forms (evenly spaced values, powers of ten) or properties of the design (one sample per stratum).
+#include <cmath>
+#include <random>
+#include <set>
+
+#include "study_test_util.hpp"
+
+namespace maris::study::test {
+
+namespace {
+
+// The ship scene's built-in scenario is the base: fields of every kind (number, integer, choice).
+class StudyDesign : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!findBuiltin("ship_default")) GTEST_SKIP() << "needs the ship scene";
+  }
+  static Study read(const Json& document) { return studyFromJson(document, std::filesystem::temp_directory_path()); }
+};
+
+}  // namespace
+
+TEST_F(StudyDesign, GridIsTheFullFactorialWithTheLastParameterFastest) {
+  const Study study = read(studyOver("ship_default", "grid",
+                                     {{"water.kind", {"fresh", "sea"}}, {"hull.length", {{"from", 2}, {"to", 4}, {"count", 3}}}}));
+  ASSERT_EQ(study.parameters.size(), 2u);
+  EXPECT_EQ(study.parameters[0].path, "hull.length");  // alphabetical order of path
+  EXPECT_EQ(study.parameters[0].unit, "m");
+  EXPECT_EQ(study.parameters[1].path, "water.kind");
+  EXPECT_EQ(study.parameters[1].unit, "-");
+  const auto cases = expandStudy(study);
+  ASSERT_EQ(cases.size(), 6u);
+  const double lengths[] = {2, 2, 3, 3, 4, 4};
+  const char* kinds[] = {"fresh", "sea", "fresh", "sea", "fresh", "sea"};
+  for (std::size_t c = 0; c < 6; ++c) {
+    EXPECT_EQ(cases[c].id, caseId(c, 6));
+    EXPECT_EQ(cases[c].values[0].get<double>(), lengths[c]) << c;  // (2a + 4b)/2 is exact
+    EXPECT_EQ(cases[c].values[1], kinds[c]) << c;
+    EXPECT_EQ(cases[c].scenario.parameters["hull"]["length"].get<double>(), lengths[c]);
+    EXPECT_EQ(cases[c].scenario.parameters["water"]["kind"], kinds[c]);
+    EXPECT_EQ(cases[c].scenario.scene, "ship");
+  }
+  EXPECT_EQ(cases[0].id, "0001");
+  EXPECT_TRUE(caseErrors(study, cases, false).empty());
+}
+
+TEST_F(StudyDesign, LogSpacingIsEvenInTheLogarithmWithExactEnds) {
+  const Study study = read(studyOver("ship_default", "grid",
+                                     {{"hull.beam", {{"from", 0.1}, {"to", 10}, {"count", 5}, {"spacing", "log"}}}}));
+  const auto cases = expandStudy(study);
+  ASSERT_EQ(cases.size(), 5u);
+  EXPECT_EQ(cases.front().values[0].get<double>(), 0.1);
+  EXPECT_EQ(cases.back().values[0].get<double>(), 10.0);
+  for (int i = 0; i < 5; ++i) {
+    const double expected = std::pow(10.0, -1.0 + 0.5 * i);  // closed form 10^(-1 + i/2)
+    EXPECT_NEAR(cases[i].values[0].get<double>(), expected, 4e-16 * expected) << i;
+  }
+}
+
+TEST_F(StudyDesign, IntegerRangesGiveWholeNumbersAndRefuseRepeats) {
+  const Study study = read(studyOver("ship_default", "grid", {{"speed.count", {{"from", 2}, {"to", 10}, {"count", 5}}}}));
+  const auto cases = expandStudy(study);
+  ASSERT_EQ(cases.size(), 5u);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_TRUE(cases[i].values[0].is_number_integer()) << cases[i].values[0];
+    EXPECT_EQ(cases[i].values[0].get<long long>(), 2 + 2 * i);
+  }
+  const std::string text = inputErrorText(
+      [] { read(studyOver("ship_default", "grid", {{"speed.count", {{"from", 2}, {"to", 4}, {"count", 5}}}})); });
+  EXPECT_NE(text.find("grid.speed.count.count"), std::string::npos) << text;
+  EXPECT_NE(text.find("repeated whole numbers"), std::string::npos) << text;
+}
+
+// mt19937_64's sequence is fixed by the C++ standard ([rand.predef]: the 10000th output of a
+// default-constructed engine is 9981545732273789042), so a seed gives the same sample everywhere.
+TEST_F(StudyDesign, LatinHypercubeHasOneSamplePerStratumAndRepeatsForASeed) {
+  std::mt19937_64 reference;
+  reference.discard(9999);
+  ASSERT_EQ(reference(), 9981545732273789042ull);
+
+  const Json bounds = {{"hull.length", {2, 4}}, {"hull.beam", {{"from", 0.1}, {"to", 1}, {"spacing", "log"}}}};
+  const Json design = {{"count", 20}, {"seed", 42}, {"bounds", bounds}};
+  const auto cases = expandStudy(read(studyOver("ship_default", "latin_hypercube", design)));
+  ASSERT_EQ(cases.size(), 20u);
+  std::set<int> length_strata, beam_strata;
+  for (const auto& c : cases) {
+    const double beam = c.values[0].get<double>(), length = c.values[1].get<double>();  // hull.beam < hull.length
+    ASSERT_GE(length, 2.0);
+    ASSERT_LE(length, 4.0);
+    ASSERT_GE(beam, 0.1);
+    ASSERT_LE(beam, 1.0);
+    length_strata.insert(static_cast<int>(std::floor((length - 2.0) / 2.0 * 20)));
+    beam_strata.insert(static_cast<int>(std::floor(std::log(beam / 0.1) / std::log(10.0) * 20)));
+  }
+  EXPECT_EQ(length_strata.size(), 20u);  // every one of the 20 intervals holds exactly one case
+  EXPECT_EQ(beam_strata.size(), 20u);    // also in log(beam)
+
+  const auto again = expandStudy(read(studyOver("ship_default", "latin_hypercube", design)));
+  for (std::size_t c = 0; c < cases.size(); ++c) EXPECT_EQ(again[c].values, cases[c].values) << c;
+  Json other = design;
+  other["seed"] = 43;
+  const auto different = expandStudy(read(studyOver("ship_default", "latin_hypercube", other)));
+  std::size_t same = 0;
+  for (std::size_t c = 0; c < cases.size(); ++c) same += different[c].values == cases[c].values;
+  EXPECT_LT(same, 2u);
+}
+
+TEST_F(StudyDesign, TableRowsAreCasesAndItsPathIsRelativeToTheStudy) {
+  ScratchFolder folder("maris_study_table");
+  folder.write("loads.csv", "# two hulls in two waters\nhull.length, water.kind\n2.5, fresh\n3.5, sea\n4, sea\n");
+  folder.write("numbers.csv", "hull.length;hull.beam\nm;m\n2.5;0.3\n3.5;0.4\n");
+  Json document = studyOver("ship_default", "table", "loads.csv");
+  const Study study = studyFromJson(document, folder.path);
+  EXPECT_EQ(study.table_file, folder.path / "loads.csv");
+  const auto cases = expandStudy(study);
+  ASSERT_EQ(cases.size(), 3u);
+  EXPECT_EQ(study.parameters[0].path, "hull.length");  // the columns' order
+  EXPECT_EQ(cases[1].values[0].get<double>(), 3.5);
+  EXPECT_EQ(cases[1].values[1], "sea");
+  EXPECT_EQ(cases[2].values[0].get<double>(), 4.0);
+  const auto with_units = expandStudy(studyFromJson(studyOver("ship_default", "table", "numbers.csv"), folder.path));
+  ASSERT_EQ(with_units.size(), 2u);  // the units row is not a case
+  EXPECT_EQ(with_units[1].values[1].get<double>(), 0.4);
+
+  folder.write("bad.csv", "hull.lenght,hull.beam\n2,0.3\n");
+  folder.write("units.csv", "hull.length\nmm\n2000\n");
+  folder.write("ragged.csv", "hull.length,hull.beam\n2,0.3\n3\n");
+  const auto bad = inputErrorText([&] { studyFromJson(studyOver("ship_default", "table", "bad.csv"), folder.path); });
+  EXPECT_NE(bad.find("did you mean 'hull.length'"), std::string::npos) << bad;
+  const auto units = inputErrorText([&] { studyFromJson(studyOver("ship_default", "table", "units.csv"), folder.path); });
+  EXPECT_NE(units.find("unit 'm'"), std::string::npos) << units;
+  const auto ragged = inputErrorText([&] { studyFromJson(studyOver("ship_default", "table", "ragged.csv"), folder.path); });
+  EXPECT_NE(ragged.find("table line 3"), std::string::npos) << ragged;
+  const auto missing = inputErrorText([&] { studyFromJson(studyOver("ship_default", "table", "none.csv"), folder.path); });
+  EXPECT_NE(missing.find("table"), std::string::npos) << missing;
+}
+
+}  // namespace maris::study::test

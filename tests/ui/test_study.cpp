@@ -1,0 +1,329 @@
+// Studies in the GUI, off-screen: a sweep started from the parameter editor's context menu runs its
+// cases on the worker pool, plots every case (values equal to the same cases run one at a time
+// through the single-run controller, and to the test scene's closed form pi r^2 L), opens a
+// clicked case in the results view, writes study.csv and the plot; two parameters give a line per
+// value and a heat map; Cancel stops the pool; a study file saves and reopens; a study with a bad
+// case runs nothing.
+#include <QAction>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QDir>
+#include <QFile>
+#include <QMenu>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <cmath>
+
+#include "document/scenario_document.hpp"
+#include "editor/parameter_editor.hpp"
+#include "main_window.hpp"
+#include "plots/study_plot.hpp"
+#include "run/run_controller.hpp"
+#include "run/run_history.hpp"
+#include "run/results_summary.hpp"
+#include "study/study_panel.hpp"
+#include "study/study_plot_view.hpp"
+#include "study/study_runner.hpp"
+#include "study/sweep_dialog.hpp"
+#include "test_scene.hpp"
+#include "ui_test_support.hpp"
+
+using namespace maris;
+using namespace maris::ui;
+
+namespace {
+
+int columnOf(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+// The sweep prompt of the panel, answered without a dialog.
+StudyPanel::SweepPrompt answer(SweepRange range, bool add_only = false) {
+  return [range, add_only](const ParamSpec& spec, const SweepRange&) -> std::optional<std::pair<SweepRange, bool>> {
+    SweepRange r = range;
+    r.path = spec.path;
+    return std::make_pair(r, add_only);
+  };
+}
+
+// Chooses "Sweep this parameter…" in the field's context menu, as a user would.
+bool chooseSweep(ParameterEditor* editor, const std::string& path) {
+  std::unique_ptr<QMenu> menu(editor->fieldMenu(path));
+  if (!menu) return false;
+  for (QAction* a : menu->actions())
+    if (a->objectName() == QLatin1String("sweepAction")) {
+      a->trigger();
+      return true;
+    }
+  return false;
+}
+
+const double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+class StudyTest : public QObject {
+  Q_OBJECT
+
+  std::unique_ptr<MainWindow> window_;
+  StudyPanel* panel() const { return window_->study(); }
+
+  bool runAndWait(int timeout_ms = 60000) {
+    QSignalSpy finished(panel(), &StudyPanel::studyFinished);
+    if (!panel()->isRunning() && finished.isEmpty()) return false;
+    return finished.wait(timeout_ms);
+  }
+
+ private slots:
+  void initTestCase() { test::isolateSettings(); }
+
+  void init() {
+    window_ = std::make_unique<MainWindow>(test::rodLibrary());
+    window_->resize(1400, 900);
+    window_->show();
+    panel()->setThreads(2);
+  }
+  void cleanup() { window_.reset(); }
+
+  void sweepFromTheEditorPlotsTheSingleRunsValuesAndWritesTheCsv() {
+    panel()->setSweepPrompt(answer({"", 50.0, 150.0, 5, false}));
+    QSignalSpy finished(panel(), &StudyPanel::studyFinished);
+    QVERIFY(chooseSweep(window_->editor(), "geometry.length"));
+    QVERIFY(panel()->isRunning());
+    QVERIFY(!window_->runAction()->isEnabled());  // one thing at a time on the cores
+    QVERIFY(window_->cancelAction()->isEnabled());
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.first().at(0).toInt(), 5);
+    QCOMPARE(finished.first().at(1).toInt(), 0);
+
+    StudyPlotView* view = panel()->plotView();
+    const int r = view->resultBox()->findData(QStringLiteral("rod_volume"));
+    QVERIFY(r >= 0);
+    view->resultBox()->setCurrentIndex(r);
+    QVERIFY(view->hasData());
+    QCOMPARE(view->drawn().points, 5);
+    QCOMPARE(view->plot()->graphCount(), 1);
+    QCOMPARE(view->plot()->xAxis->label(), QStringLiteral("length [m]"));
+    QCOMPARE(view->plot()->yAxis->label(), QStringLiteral("rod volume [m^3]"));
+
+    // Each point equals the same case run alone through the single-run controller (bitwise), and
+    // the closed form pi r^2 L (r = 0.5 m) to 1e-12 relative.
+    QCPGraph* graph = view->plot()->graph(0);
+    const Scenario base = window_->document()->scenario();
+    for (int k = 0; k < 5; ++k) {
+      const double length = 50.0 + 25.0 * k;
+      const auto point = graph->data()->at(k);
+      QVERIFY(std::abs(point->key - length) <= 1e-12 * length);
+      const double length_run = point->key;  // the case's own value, as the engine expanded it
+      Scenario alone = base;
+      alone.parameters["geometry"]["length"] = length_run;
+      RunController controller;
+      QSignalSpy done(&controller, &RunController::finished);
+      controller.start(*window_->document()->scene(), alone);
+      QVERIFY(done.wait(20000));
+      const double single = done.first().at(0).value<RunRecord>().results->findScalar("rod_volume")->value;
+      QCOMPARE(point->value, single);
+      QVERIFY(std::abs(point->value - kPi * 0.25 * length) <= 1e-12 * point->value);
+    }
+
+    // Clicking the third point opens that case in the results view.
+    const QPointF at = studyCasePixel(*view->plot(), view->drawn(), 2);
+    QVERIFY(at.x() >= 0);
+    QTest::mouseClick(view->plot(), Qt::LeftButton, {}, at.toPoint());
+    const RunRecord* shown = window_->history().latest();
+    QVERIFY(shown);
+    QVERIFY2(shown->label.startsWith(QStringLiteral("study case 0003")), qPrintable(shown->label));
+    QCOMPARE(shown->scenario.parameters["geometry"]["length"].get<double>(), graph->data()->at(2)->key);
+    QCOMPARE(shown->results->findScalar("rod_volume")->value, graph->data()->at(2)->value);
+    test::keepScreenshot(window_->grab().toImage(), QStringLiteral("study_window"));
+
+    // study.csv: one row per case with the varied parameter and every scalar.
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("study.csv"));
+    QVERIFY(panel()->exportCsv(csv));
+    const auto rows = test::readCsv(csv);
+    QVERIFY(!rows.empty());
+    const int length_col = columnOf(rows[0], "geometry.length");
+    const int volume_col = columnOf(rows[0], "rod_volume");
+    QVERIFY2(length_col >= 0 && volume_col >= 0, rows[0].empty() ? "" : rows[0].front().c_str());
+    int data_rows = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      char* end = nullptr;
+      const double length = std::strtod(rows[i][length_col].c_str(), &end);
+      if (end == rows[i][length_col].c_str()) continue;  // the units row
+      ++data_rows;
+      const double volume = std::strtod(rows[i][volume_col].c_str(), nullptr);
+      QVERIFY(std::abs(volume - kPi * 0.25 * length) <= 1e-12 * volume);
+    }
+    QCOMPARE(data_rows, 5);
+    // The plot as PNG and SVG through the plot export.
+    const QString png = dir.filePath(QStringLiteral("study.png"));
+    QVERIFY(panel()->exportPlot(png));
+    QImage image(png);
+    QCOMPARE(image.size(), QSize(1200, 800));
+    QVERIFY(test::distinctColours(image) > 4);
+    test::keepScreenshot(image, QStringLiteral("study_lines"));
+    const QString svg = dir.filePath(QStringLiteral("study.svg"));
+    QVERIFY(panel()->exportPlot(svg));
+    QFile svg_file(svg);
+    QVERIFY(svg_file.open(QIODevice::ReadOnly));
+    QVERIFY(svg_file.readAll().contains("<svg"));
+  }
+
+  void sweepDialogProposesAndChecksTheRange() {
+    const ParamSpec* spec = window_->document()->scene()->schema.find("geometry.length");
+    const SweepRange proposed = proposedSweep(*spec, window_->document()->value("geometry.length"));
+    QCOMPARE(proposed.from, 50.0);  // half and one and a half times 100 m
+    QCOMPARE(proposed.to, 150.0);
+    QCOMPARE(proposed.count, 5);
+    SweepDialog dialog(*spec, proposed, window_.get());
+    dialog.show();
+    QVERIFY(dialog.sweepButton()->isEnabled());
+    dialog.fromEdit()->setText(QStringLiteral("-1"));
+    QVERIFY(!dialog.sweepButton()->isEnabled());
+    QVERIFY2(dialog.problemLabel()->text().startsWith(QStringLiteral("from: must be in (0, 1000]")),
+             qPrintable(dialog.problemLabel()->text()));
+    dialog.fromEdit()->setText(QStringLiteral("10"));
+    dialog.spacingBox()->setCurrentIndex(1);
+    QVERIFY(dialog.sweepButton()->isEnabled());
+    QCOMPARE(dialog.range(), (SweepRange{"geometry.length", 10.0, 150.0, 5, true}));
+    test::keepScreenshot(dialog.grab().toImage(), QStringLiteral("study_sweep_dialog"));
+    // An integer field: whole numbers, no more values than there are between the ends.
+    const ParamSpec* points = window_->document()->scene()->schema.find("discretisation.point_count");
+    QVERIFY(sweepProblem(*points, {"discretisation.point_count", 2.0, 4.0, 5, false}).contains(QStringLiteral("at most 3")));
+    QVERIFY(sweepProblem(*points, {"discretisation.point_count", 2.0, 4.0, 3, false}).isEmpty());
+  }
+
+  void twoParametersGiveALinePerValueAndAHeatMap() {
+    panel()->setSweepPrompt(answer({"", 2.0, 3.0, 2, false}, true));
+    QVERIFY(chooseSweep(window_->editor(), "geometry.radius"));
+    panel()->setSweepPrompt(answer({"", 10.0, 1000.0, 3, true}, true));
+    QVERIFY(chooseSweep(window_->editor(), "geometry.length"));
+    QCOMPARE(panel()->parameters().size(), std::size_t(2));
+    QVERIFY(!panel()->isRunning());  // "Add to study" does not run
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    StudyPlotView* view = panel()->plotView();
+    view->resultBox()->setCurrentIndex(view->resultBox()->findData(QStringLiteral("rod_volume")));
+    view->againstBox()->setCurrentIndex(view->againstBox()->findData(QStringLiteral("geometry.length")));  // a line per radius
+    QCOMPARE(view->plot()->graphCount(), 2);
+    QCOMPARE(view->drawn().points, 6);
+    QCOMPARE(view->plot()->xAxis->scaleType(), QCPAxis::stLogarithmic);  // log spacing: log axis
+    QVERIFY(std::abs(view->plot()->graph(0)->data()->at(1)->key - 100.0) < 1e-12);  // 10, 100, 1000
+    QCOMPARE(view->plot()->graph(0)->name(), QStringLiteral("radius = 2 m"));
+    QVERIFY(view->kindBox()->isEnabled());
+    view->kindBox()->setCurrentIndex(1);
+    QCOMPARE(view->drawn().kind, StudyPlotKind::HeatMap);
+    QCOMPARE(view->drawn().points, 6);
+    auto* map = qobject_cast<QCPColorMap*>(view->plot()->plottable(0));
+    QVERIFY(map);
+    // Cell (length 1000, radius 3): pi r^2 L.
+    QVERIFY(std::abs(map->data()->cell(2, 1) - kPi * 9.0 * 1000.0) <= 1e-12 * kPi * 9.0 * 1000.0);
+    test::keepScreenshot(window_->grab().toImage(), QStringLiteral("study_heat_map"));
+    const QPointF cell = studyCasePixel(*view->plot(), view->drawn(), 5);
+    QCOMPARE(studyCaseAt(*view->plot(), view->drawn(), cell), 5);
+  }
+
+  void cancelStopsThePoolQuickly() {
+    window_->document()->edit("run.delay", Json(5.0));
+    panel()->setSweepPrompt(answer({"", 50.0, 120.0, 8, false}));
+    QSignalSpy cancelled(panel(), &StudyPanel::studyCancelled);
+    QSignalSpy progress(panel()->runner(), &StudyRunner::progressed);
+    QVERIFY(panel()->sweep(QStringLiteral("geometry.length")));
+    QTRY_VERIFY_WITH_TIMEOUT(progress.count() >= 3, 10000);
+    QElapsedTimer clock;
+    clock.start();
+    window_->cancelAction()->trigger();  // Esc, as for a single run
+    QVERIFY(cancelled.wait(5000));
+    qInfo("study cancel: workers stopped %.1f ms after the request, GUI heard after %lld ms",
+          panel()->runner()->lastCancelLatency() * 1e3, static_cast<long long>(clock.elapsed()));
+    QVERIFY(panel()->runner()->lastCancelLatency() < 1.0);
+    QVERIFY(!panel()->isRunning());
+    QVERIFY(window_->runAction()->isEnabled());
+    int cancelled_cases = 0;
+    for (int i = 0; i < panel()->session().caseCount(); ++i)
+      if (panel()->session().outcome(i).status == StudySession::Status::Cancelled) ++cancelled_cases;
+    QCOMPARE(cancelled_cases, 8);  // 5 s each: none finished
+  }
+
+  void aStudySavesAndReopens() {
+    panel()->setSweepPrompt(answer({"", 0.2, 0.8, 4, false}, true));
+    QVERIFY(panel()->sweep(QStringLiteral("geometry.radius")));
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("radius.study.json"));
+    QVERIFY2(panel()->saveStudy(file), qPrintable(panel()->lastError()));
+    const Scenario base = window_->document()->scenario();
+    // The editor moves on; the reopened study keeps its own base and grid.
+    window_->document()->edit("geometry.length", Json(300.0));
+    panel()->clearParameters();
+    QVERIFY2(panel()->openStudy(file), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->parameters().size(), std::size_t(1));
+    QCOMPARE(panel()->parameters()[0].path, std::string("geometry.radius"));
+    QCOMPARE(panel()->parameters()[0].count, 4);
+    QCOMPARE(panel()->session().base().parameters, base.parameters);
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    const StudyPlotData data = panel()->session().plotData("rod_volume");
+    QCOMPARE(data.caseCount(), std::size_t(4));
+    for (std::size_t c = 0; c < 4; ++c) {
+      const double radius = data.parameters[0].values[c];
+      QVERIFY(std::abs(data.result[c] - kPi * radius * radius * 100.0) <= 1e-12 * data.result[c]);
+    }
+  }
+
+  // A load-case table (one column per parameter path, one row per case) over the open scenario runs
+  // its rows; each case's volume is pi r^2 L of its own row (closed form), and study.csv lists them.
+  void aLoadCaseTableRunsItsRows() {
+    QTemporaryDir dir;
+    const QString table = dir.filePath(QStringLiteral("cases.csv"));
+    QFile file(table);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.length,geometry.radius\n120,0.3\n80,0.2\n150,0.5\n");
+    file.close();
+    QVERIFY2(panel()->openCaseTable(table), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().kindName(), QStringLiteral("table"));
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    const StudyPlotData data = panel()->session().plotData("rod_volume");
+    QCOMPARE(data.caseCount(), std::size_t(3));
+    const double rows[3][2] = {{120, 0.3}, {80, 0.2}, {150, 0.5}};
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double expected = kPi * rows[c][1] * rows[c][1] * rows[c][0];
+      QVERIFY(std::abs(data.result[c] - expected) <= 1e-12 * expected);
+    }
+    const QString csv = dir.filePath(QStringLiteral("study.csv"));
+    QVERIFY(panel()->exportCsv(csv));
+    const auto lines = test::readCsv(csv);
+    QCOMPARE(lines.size(), std::size_t(5));  // names, units, three cases
+    QCOMPARE(lines[4][1], std::string("ok"));
+    // A bad table is refused with the field named.
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.lenght\n120\n");
+    file.close();
+    QVERIFY(!panel()->openCaseTable(table));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("geometry.lenght")), qPrintable(panel()->lastError()));
+  }
+
+  void aStudyWithABadCaseRunsNothing() {
+    // The radius must stay below half the length: with r = 5 m the case L = 5 m is refused by the
+    // scene's cross-field check (at geometry.radius), the others are valid.
+    window_->document()->edit("geometry.radius", Json(5.0));
+    panel()->setSweepPrompt(answer({"", 5.0, 100.0, 3, false}));
+    QSignalSpy started(panel()->runner(), &StudyRunner::started);
+    QVERIFY(!panel()->sweep(QStringLiteral("geometry.length")));
+    QCOMPARE(started.count(), 0);
+    QVERIFY(!panel()->isRunning());
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("geometry.radius")), qPrintable(panel()->lastError()));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("nothing was run")), qPrintable(panel()->lastError()));
+  }
+};
+
+QTEST_MAIN(StudyTest)
+#include "test_study.moc"

@@ -1,0 +1,74 @@
+// Plots of a study's results: one result scalar against one varied parameter, a line per
+// combination of the other varied parameters (markers only when no two cases share one: a table or
+// Latin-hypercube sample), or a heat map over two varied parameters of a full grid. Built from
+// plain per-case numbers (what study.csv holds), so the GUI's study panel and a headless PNG writer
+// draw the same picture. Every drawn point remembers its case, so a click can open that case.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <QPointF>
+#include <QString>
+
+class QCustomPlot;
+
+namespace maris::ui {
+
+// One varied parameter and its value in each case.
+struct StudyParameterData {
+  std::string name;  // the parameter path, "geometry.length"
+  std::string unit;
+  bool log = false;  // varied on a log scale: the x axis is logarithmic
+  std::vector<double> values;
+};
+
+// A study's numbers for one result scalar: every varied parameter and the result, per case. A
+// case without the result (failed, cancelled, not run) holds NaN and is left out of the plot.
+struct StudyPlotData {
+  std::string title;  // above the plot (empty: none)
+  std::vector<StudyParameterData> parameters;
+  std::string result_name;
+  std::string result_unit;
+  std::vector<double> result;
+  std::size_t caseCount() const { return result.size(); }
+};
+
+enum class StudyPlotKind { Lines, HeatMap };
+
+// Where each drawn point came from, for clicks: per graph the case of each data point (in the
+// graph's key order); for a heat map the case of each cell (x fastest) and the grid's values.
+struct DrawnStudyPlot {
+  StudyPlotKind kind = StudyPlotKind::Lines;
+  std::vector<std::vector<int>> graph_cases;
+  std::vector<double> cell_x, cell_y;  // heat map: the distinct values along each axis
+  std::vector<int> cell_case;          // heat map: case per cell, -1 where none
+  int points = 0;                      // points (or filled cells) drawn
+};
+
+// The label of a parameter or result for people: "length [m]" from "geometry.length".
+QString studyAxisLabel(const std::string& name, const std::string& unit);
+
+// True when parameters `a` and `b` form a full grid (every pair of their distinct values occurs in
+// exactly one case) and no other parameter varies: what a heat map needs.
+bool isFullGrid(const StudyPlotData& data, int a, int b);
+
+// Clears `plot` and draws the result against parameter `x` (Lines) or over parameters `x` and the
+// other one (HeatMap; needs exactly two parameters on a full grid). False (nothing drawn) when the
+// data do not allow it. `drawn` (optional) receives where each point came from.
+bool fillStudyPlot(QCustomPlot& plot, const StudyPlotData& data, int x, StudyPlotKind kind,
+                   DrawnStudyPlot* drawn = nullptr);
+
+// Draws as fillStudyPlot does and writes the picture to a PNG/PDF/SVG file (by suffix), atomically: the
+// plots of `maris-cli study run` and `study collect`. False when nothing could be drawn or written.
+bool saveStudyPlotImage(const StudyPlotData& data, int x, StudyPlotKind kind, const QString& file, int width_px,
+                        int height_px);
+
+// The case whose point (or heat-map cell) is under the widget pixel `pixel` (within `radius_px` for
+// points), or -1.
+int studyCaseAt(QCustomPlot& plot, const DrawnStudyPlot& drawn, QPointF pixel, double radius_px = 8.0);
+
+// The widget pixel of case `index`'s point (or cell centre); (-1, -1) if it is not drawn.
+QPointF studyCasePixel(QCustomPlot& plot, const DrawnStudyPlot& drawn, int index);
+
+}  // namespace maris::ui

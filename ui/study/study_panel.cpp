@@ -1,0 +1,466 @@
+#include "study/study_panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include "core/errors.hpp"
+#include "document/scenario_document.hpp"
+#include "scene_library.hpp"
+#include "start_folder.hpp"
+#include "study/study_plot_view.hpp"
+#include "study/study_runner.hpp"
+
+namespace maris::ui {
+
+namespace {
+
+enum Column { kParameter, kFrom, kTo, kValues, kSpacing, kColumnCount };
+
+QString number(double v) { return QString::number(v, 'g', 12); }
+
+// A file dialog's folder, remembered per purpose.
+QString askFile(QWidget* parent, bool save, const QString& title, const QString& key, const QString& name,
+                const QString& filter) {
+  const QString last = QSettings().value(QStringLiteral("study/") + key).toString();
+  const QString start = startFolder(last) + QLatin1Char('/') + name;
+  const QString file = save ? QFileDialog::getSaveFileName(parent, title, start, filter)
+                            : QFileDialog::getOpenFileName(parent, title, startFolder(last), filter);
+  if (!file.isEmpty()) QSettings().setValue(QStringLiteral("study/") + key, QFileInfo(file).absolutePath());
+  return file;
+}
+
+}  // namespace
+
+StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLibrary> library, QWidget* parent)
+    : QWidget(parent), document_(document), library_(std::move(library)), runner_(new StudyRunner(this)),
+      base_(new QLabel(this)), table_(new QTableWidget(0, kColumnCount, this)),
+      add_(new QPushButton(tr("Add parameter…"), this)), remove_(new QPushButton(tr("Remove"), this)),
+      run_(new QPushButton(tr("Run study"), this)), cancel_(new QPushButton(tr("Cancel"), this)),
+      threads_box_(new QSpinBox(this)), summary_(new QLabel(this)), plot_view_(new StudyPlotView(this)),
+      refresh_timer_(new QTimer(this)) {
+  sweep_prompt_ = [this](const ParamSpec& spec, const SweepRange& proposed) -> std::optional<std::pair<SweepRange, bool>> {
+    SweepDialog dialog(spec, proposed, this);
+    if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+    return std::make_pair(dialog.range(), dialog.addOnly());
+  };
+  base_->setWordWrap(true);
+  summary_->setWordWrap(true);
+  table_->setObjectName(QStringLiteral("studyParameters"));
+  table_->setHorizontalHeaderLabels({tr("Parameter"), tr("From"), tr("To"), tr("Values"), tr("Spacing")});
+  table_->horizontalHeader()->setSectionResizeMode(kParameter, QHeaderView::Stretch);
+  for (int c = kFrom; c < kColumnCount; ++c) table_->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+  table_->verticalHeader()->hide();
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() + 3 * table_->verticalHeader()->defaultSectionSize());
+  table_->setMaximumHeight(table_->horizontalHeader()->sizeHint().height() + 6 * table_->verticalHeader()->defaultSectionSize());
+  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads_box_->setRange(1, std::max(64, hardware));
+  threads_box_->setValue(hardware);
+  threads_box_->setToolTip(tr("Cases run at once (one worker thread each)"));
+  run_->setObjectName(QStringLiteral("runStudy"));
+  cancel_->setObjectName(QStringLiteral("cancelStudy"));
+
+  auto* file_menu = new QMenu(this);
+  file_menu->addAction(tr("Open study…"), this, [this] {
+    const QString f = askFile(this, false, tr("Open study"), QStringLiteral("studyFolder"), {}, tr("Maris study (*.json)"));
+    if (!f.isEmpty()) openStudy(f);
+  });
+  file_menu->addAction(tr("Save study as…"), this, [this] {
+    const QString f = askFile(this, true, tr("Save study"), QStringLiteral("studyFolder"), QStringLiteral("study.json"),
+                              tr("Maris study (*.json)"));
+    if (!f.isEmpty()) saveStudy(f.endsWith(QLatin1String(".json")) ? f : f + ".json");
+  });
+  file_menu->addSeparator();
+  file_menu->addAction(tr("Export study.csv…"), this, [this] {
+    const QString f = askFile(this, true, tr("Export study.csv"), QStringLiteral("exportFolder"),
+                              QStringLiteral("study.csv"), tr("CSV (*.csv)"));
+    if (!f.isEmpty()) exportCsv(f);
+  });
+  file_menu->addAction(tr("Export plot…"), this, [this] {
+    const QString f = askFile(this, true, tr("Export study plot"), QStringLiteral("exportFolder"),
+                              QStringLiteral("study_plot.png"), tr("Pictures (*.png *.svg *.pdf)"));
+    if (!f.isEmpty()) exportPlot(f);
+  });
+  file_menu->addSeparator();
+  file_menu->addAction(tr("New study from the open scenario"), this, [this] { clearParameters(); });
+  file_menu->addAction(tr("New load-case table study (CSV)…"), this, [this] {
+    const QString f = askFile(this, false, tr("Load-case table"), QStringLiteral("studyFolder"), {},
+                              tr("CSV: one column per parameter path, one row per case (*.csv)"));
+    if (!f.isEmpty()) openCaseTable(f);
+  });
+  auto* file_button = new QPushButton(tr("Study"), this);
+  file_button->setMenu(file_menu);
+
+  auto* definition = new QWidget(this);
+  auto* grid = new QGridLayout(definition);
+  grid->setContentsMargins(0, 0, 0, 0);
+  grid->addWidget(base_, 0, 0, 1, 6);
+  grid->addWidget(table_, 1, 0, 1, 6);
+  // Two short rows of buttons: the dock fits beside the left column and the central views.
+  grid->addWidget(add_, 2, 0);
+  grid->addWidget(remove_, 2, 1);
+  grid->addWidget(file_button, 2, 2);
+  grid->addWidget(run_, 3, 0);
+  grid->addWidget(cancel_, 3, 1);
+  auto* workers = new QHBoxLayout;
+  workers->addWidget(new QLabel(tr("Workers"), this));
+  workers->addWidget(threads_box_);
+  grid->addLayout(workers, 3, 2);
+  grid->addWidget(summary_, 4, 0, 1, 6);
+  grid->setColumnStretch(5, 1);
+  auto* split = new QSplitter(Qt::Vertical, this);
+  split->addWidget(definition);
+  split->addWidget(plot_view_);
+  split->setStretchFactor(1, 1);
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(split);
+
+  connect(add_, &QPushButton::clicked, this, &StudyPanel::addParameterDialog);
+  connect(remove_, &QPushButton::clicked, this, [this] {
+    const int row = table_->currentRow();
+    if (row >= 0 && row < static_cast<int>(grid_.size())) removeParameter(grid_[row].path);
+  });
+  connect(run_, &QPushButton::clicked, this, [this] { startStudy(); });
+  connect(cancel_, &QPushButton::clicked, this, &StudyPanel::cancelStudy);
+  connect(threads_box_, &QSpinBox::valueChanged, this, [this](int n) { threads_ = n; });
+  connect(table_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
+    const int row = item->row();
+    if (row < 0 || row >= static_cast<int>(grid_.size()) || item->column() == kParameter) return;
+    SweepRange& r = grid_[row];
+    bool ok = false;
+    const double v = item->text().trimmed().toDouble(&ok);
+    if (item->column() == kFrom) r.from = ok ? v : std::nan("");
+    if (item->column() == kTo) r.to = ok ? v : std::nan("");
+    if (item->column() == kValues) r.count = ok ? static_cast<int>(v) : 0;
+    rebuildTable();
+  });
+  connect(runner_, &StudyRunner::caseFinished, this, &StudyPanel::onCaseFinished);
+  connect(runner_, &StudyRunner::caseFailed, this, &StudyPanel::onCaseFailed);
+  connect(runner_, &StudyRunner::runningChanged, this, &StudyPanel::updateButtons);
+  refresh_timer_->setSingleShot(true);
+  refresh_timer_->setInterval(250);
+  connect(refresh_timer_, &QTimer::timeout, plot_view_, &StudyPlotView::refresh);
+  connect(runner_, &StudyRunner::finished, this, [this](int succeeded, int failed) {
+    refresh_timer_->stop();
+    plot_view_->refresh();
+    const QString text = tr("Study finished: %1 of %2 cases succeeded, %3 failed")
+                             .arg(succeeded).arg(session_.caseCount()).arg(failed);
+    summary_->setText(text);
+    emit logged(failed ? 1 : 0, text);
+    emit message(text);
+    emit studyFinished(succeeded, failed);
+  });
+  connect(runner_, &StudyRunner::cancelled, this, [this] {
+    refresh_timer_->stop();
+    session_.markUnfinishedCancelled();
+    plot_view_->refresh();
+    const QString text = tr("Study cancelled: the workers stopped %1 ms after the request")
+                             .arg(runner_->lastCancelLatency() * 1e3, 0, 'f', 1);
+    summary_->setText(text);
+    emit logged(0, text);
+    emit message(text);
+    emit studyCancelled();
+  });
+  connect(plot_view_, &StudyPlotView::caseClicked, this, &StudyPanel::caseOpened);
+  connect(document_, &ScenarioDocument::scenarioReset, this, &StudyPanel::rebuildTable);
+  connect(document_, &ScenarioDocument::errorsChanged, this, &StudyPanel::updateButtons);
+  plot_view_->setSession(&session_);
+  rebuildTable();
+}
+
+StudyPanel::~StudyPanel() = default;
+
+bool StudyPanel::sweep(const QString& path) {
+  const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
+  const ParamSpec* spec = scene ? scene->schema.find(path.toStdString()) : nullptr;
+  if (!spec) return false;
+  const Json current = from_file_ ? Json() : document_->value(spec->path);
+  const auto answer = sweep_prompt_(*spec, proposedSweep(*spec, current));
+  if (!answer) return false;
+  if (!answer->second) grid_.clear();
+  addParameter(answer->first);
+  return answer->second || startStudy();
+}
+
+void StudyPanel::addParameter(const SweepRange& range) {
+  const auto it = std::find_if(grid_.begin(), grid_.end(), [&](const SweepRange& r) { return r.path == range.path; });
+  if (it != grid_.end())
+    *it = range;
+  else
+    grid_.push_back(range);
+  rebuildTable();
+}
+
+void StudyPanel::removeParameter(const std::string& path) {
+  grid_.erase(std::remove_if(grid_.begin(), grid_.end(), [&](const SweepRange& r) { return r.path == path; }),
+              grid_.end());
+  rebuildTable();
+}
+
+void StudyPanel::clearParameters() {
+  grid_.clear();
+  from_file_ = false;
+  rebuildTable();
+}
+
+void StudyPanel::setThreads(int threads) {
+  threads_ = threads;
+  if (threads > 0) threads_box_->setValue(threads);
+}
+
+bool StudyPanel::isRunning() const { return runner_->isRunning(); }
+
+void StudyPanel::fail(const QString& text) {
+  last_error_ = text;
+  summary_->setText(text.section(QLatin1Char('\n'), 0, 0));
+  emit logged(2, text);
+  emit message(text.section(QLatin1Char('\n'), 0, 0));
+}
+
+bool StudyPanel::startStudy() {
+  if (runner_->isRunning()) return false;
+  const bool file_study = from_file_ && session_.isDefined();
+  if (!file_study) {
+    if (!document_->isValid()) {
+      fail(tr("Fix the invalid values of the scenario first (marked red in the parameter editor)."));
+      return false;
+    }
+    if (grid_.empty()) {
+      fail(tr("Add a parameter to vary first (or right-click a number field: Sweep this parameter…)."));
+      return false;
+    }
+    for (const SweepRange& r : grid_) {
+      const ParamSpec* spec = document_->scene()->schema.find(r.path);
+      const QString problem = spec ? sweepProblem(*spec, r)
+                                   : tr("not a parameter of the scene %1").arg(QString::fromStdString(document_->scene()->name));
+      if (!problem.isEmpty()) {
+        fail(tr("%1: %2").arg(QString::fromStdString(r.path), problem));
+        return false;
+      }
+    }
+    session_.define(*document_->scene(), document_->scenario(), grid_);
+  } else if (!grid_.empty() && grid_ != session_.grid()) {
+    session_.define(*session_.scene(), session_.base(), grid_);
+  }
+  try {
+    session_.expand();
+  } catch (const InputError& e) {
+    fail(tr("The study has invalid cases; nothing was run:\n%1").arg(QString::fromStdString(describeErrors(e.errors()))));
+    plot_view_->refresh();
+    return false;
+  } catch (const std::exception& e) {
+    fail(tr("The study cannot be built: %1").arg(QString::fromUtf8(e.what())));
+    plot_view_->refresh();
+    return false;
+  }
+  plot_view_->refresh();
+  const int threads = threads_ > 0 ? threads_ : threads_box_->value();
+  if (!runner_->start(*session_.scene(), session_.caseScenarios(), threads)) return false;
+  const QString text = tr("Study started: %n case(s) of %1 on %2 worker(s)", nullptr, session_.caseCount())
+                           .arg(QString::fromStdString(session_.base().name))
+                           .arg(runner_->threadCount());
+  summary_->setText(text);
+  emit logged(0, text);
+  return true;
+}
+
+void StudyPanel::cancelStudy() { runner_->cancel(); }
+
+void StudyPanel::onCaseFinished(int index, ResultsPtr results, double wall_time_s) {
+  session_.setOutcome(index, {StudySession::Status::Finished, std::move(results), {}, wall_time_s});
+  // The plot grows as cases finish: redrawn at most four times a second (a study of small cases
+  // finishes hundreds per second), and once more when the study ends.
+  if (!refresh_timer_->isActive()) refresh_timer_->start();
+}
+
+void StudyPanel::onCaseFailed(int index, const QString& message) {
+  session_.setOutcome(index, {StudySession::Status::Failed, nullptr, message, 0.0});
+  emit logged(1, tr("case %1 (%2) failed: %3").arg(session_.caseId(index), session_.caseLabel(index), message));
+}
+
+std::optional<RunRecord> StudyPanel::caseRecord(int index, quint64 id) const {
+  if (index < 0 || index >= session_.caseCount() || !session_.outcome(index).results) return std::nullopt;
+  RunRecord record;
+  record.id = id;
+  record.scenario = session_.caseScenario(index);
+  record.results = session_.outcome(index).results;
+  record.wall_time_s = session_.outcome(index).wall_time_s;
+  record.started_at = std::chrono::system_clock::now();
+  record.label = tr("study case %1 (%2)").arg(session_.caseId(index), session_.caseLabel(index));
+  return record;
+}
+
+bool StudyPanel::exportCsv(const QString& file) {
+  try {
+    session_.writeCsv(file);
+  } catch (const std::exception& e) {
+    fail(tr("Could not write %1: %2").arg(file, QString::fromUtf8(e.what())));
+    return false;
+  }
+  emit message(tr("Wrote %1").arg(file));
+  return true;
+}
+
+bool StudyPanel::exportPlot(const QString& file) {
+  if (!plot_view_->exportTo(file)) {
+    fail(plot_view_->hasData() ? tr("Could not write %1 (PNG, SVG or PDF)").arg(file)
+                               : tr("No study results to plot: run the study first."));
+    return false;
+  }
+  emit message(tr("Wrote %1").arg(file));
+  return true;
+}
+
+bool StudyPanel::saveStudy(const QString& file) {
+  try {
+    if (!from_file_ || !session_.isDefined()) {
+      if (document_->isEmpty()) throw std::runtime_error("no scenario is open");
+      session_.define(*document_->scene(), document_->scenario(), grid_);
+      plot_view_->refresh();
+    }
+    session_.save(file);
+  } catch (const std::exception& e) {
+    fail(tr("Could not save the study %1: %2").arg(file, QString::fromUtf8(e.what())));
+    return false;
+  }
+  emit message(tr("Saved %1").arg(file));
+  return true;
+}
+
+bool StudyPanel::openStudy(const QString& file) {
+  if (runner_->isRunning()) return false;
+  StudySession loaded;
+  try {
+    loaded.load(file, *library_);
+  } catch (const InputError& e) {
+    fail(tr("Could not open the study %1:\n%2").arg(file, QString::fromStdString(describeErrors(e.errors()))));
+    return false;
+  } catch (const std::exception& e) {
+    fail(tr("Could not open the study %1: %2").arg(file, QString::fromUtf8(e.what())));
+    return false;
+  }
+  session_ = std::move(loaded);
+  grid_ = session_.grid();
+  from_file_ = true;
+  plot_view_->refresh();
+  rebuildTable();
+  emit message(tr("Opened study %1").arg(file));
+  return true;
+}
+
+bool StudyPanel::openCaseTable(const QString& file) {
+  if (runner_->isRunning()) return false;
+  if (!document_->isValid()) {
+    fail(tr("Open a valid scenario first: the load cases vary it."));
+    return false;
+  }
+  StudySession table;
+  try {
+    table.defineTable(*document_->scene(), document_->scenario(), file);
+  } catch (const InputError& e) {
+    fail(tr("Could not read the case table %1:\n%2").arg(file, QString::fromStdString(describeErrors(e.errors()))));
+    return false;
+  } catch (const std::exception& e) {
+    fail(tr("Could not read the case table %1: %2").arg(file, QString::fromUtf8(e.what())));
+    return false;
+  }
+  session_ = std::move(table);
+  grid_.clear();
+  from_file_ = true;
+  plot_view_->refresh();
+  rebuildTable();
+  emit message(tr("Load-case table %1: run the study to run its cases").arg(file));
+  return true;
+}
+
+void StudyPanel::addParameterDialog() {
+  const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
+  if (!scene) return;
+  QStringList paths;
+  for (const ParamSpec& spec : scene->schema.fields)
+    if ((spec.kind == ParamKind::Real || spec.kind == ParamKind::Integer) &&
+        std::none_of(grid_.begin(), grid_.end(), [&](const SweepRange& r) { return r.path == spec.path; }))
+      paths << QString::fromStdString(spec.path);
+  if (paths.isEmpty()) return;
+  bool ok = false;
+  const QString path = QInputDialog::getItem(this, tr("Add parameter"), tr("Parameter"), paths, 0, false, &ok);
+  if (!ok) return;
+  const ParamSpec* spec = scene->schema.find(path.toStdString());
+  const auto answer = sweep_prompt_(*spec, proposedSweep(*spec, from_file_ ? Json() : document_->value(spec->path)));
+  if (answer) addParameter(answer->first);
+}
+
+void StudyPanel::rebuildTable() {
+  const QSignalBlocker block(table_);
+  const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
+  if (from_file_ && session_.isDefined())
+  {
+    QStringList varied;
+    if (grid_.empty())
+      for (const std::string& path : session_.parameterPaths()) varied << QString::fromStdString(path).toHtmlEscaped();
+    base_->setText(tr("Base: <b>%1</b> (a %2 study%3)")
+                       .arg(QString::fromStdString(session_.base().name).toHtmlEscaped(), session_.kindName(),
+                            varied.isEmpty() ? QString() : tr(" of %1").arg(varied.join(QStringLiteral(", ")))));
+  }
+  else if (scene)
+    base_->setText(tr("Base: the open scenario, <b>%1</b>").arg(QString::fromStdString(document_->scenario().name).toHtmlEscaped()));
+  else
+    base_->setText(tr("Open a scenario to build a study from it."));
+  table_->setRowCount(static_cast<int>(grid_.size()));
+  for (int row = 0; row < static_cast<int>(grid_.size()); ++row) {
+    const SweepRange& r = grid_[row];
+    const ParamSpec* spec = scene ? scene->schema.find(r.path) : nullptr;
+    const QString unit = spec && spec->unit != "-" ? QStringLiteral(" [%1]").arg(QString::fromStdString(spec->unit)) : QString();
+    auto* name = new QTableWidgetItem(QString::fromStdString(r.path) + unit);
+    name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+    table_->setItem(row, kParameter, name);
+    table_->setItem(row, kFrom, new QTableWidgetItem(number(r.from)));
+    table_->setItem(row, kTo, new QTableWidgetItem(number(r.to)));
+    table_->setItem(row, kValues, new QTableWidgetItem(QString::number(r.count)));
+    auto* spacing = new QComboBox(table_);
+    spacing->addItems({tr("linear"), tr("log")});
+    spacing->setCurrentIndex(r.log ? 1 : 0);
+    connect(spacing, &QComboBox::currentIndexChanged, this, [this, path = r.path](int index) {
+      for (SweepRange& g : grid_)
+        if (g.path == path) g.log = index == 1;
+      rebuildTable();
+    });
+    table_->setCellWidget(row, kSpacing, spacing);
+    const QString problem = spec ? sweepProblem(*spec, r) : tr("not a parameter of this scene");
+    name->setToolTip(problem);
+    if (!problem.isEmpty()) name->setForeground(QColor(0xd6, 0x27, 0x28));
+  }
+  updateButtons();
+}
+
+void StudyPanel::updateButtons() {
+  const bool running = runner_->isRunning();
+  const bool have_base = (from_file_ && session_.isDefined()) || document_->isValid();
+  run_->setEnabled(!running && have_base && (!grid_.empty() || from_file_));
+  cancel_->setEnabled(running);
+  add_->setEnabled(!running);
+  remove_->setEnabled(!running && !grid_.empty());
+  table_->setEnabled(!running);
+  if (!running && grid_.empty() && !from_file_)
+    summary_->setText(tr("Right-click a number field in the parameter editor: Sweep this parameter…"));
+}
+
+}  // namespace maris::ui

@@ -1,0 +1,112 @@
+// The Study dock: a study built from the open scenario. Its varied parameters (a full-factorial
+// grid: from, to, values, spacing per number field), or a table or Latin-hypercube study opened
+// from a file; Run study (every case on a pool of worker threads, StudyRunner) and Cancel; the
+// result plot (StudyPlotView) whose points open their case's full results in the main window;
+// export of study.csv and of the plot; save and open of the study file.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include <QWidget>
+
+#include "study/study_session.hpp"
+#include "study/sweep_dialog.hpp"
+
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+class QTimer;
+
+namespace maris::ui {
+
+class ScenarioDocument;
+class StudyPlotView;
+class StudyRunner;
+struct SceneLibrary;
+
+class StudyPanel : public QWidget {
+  Q_OBJECT
+ public:
+  StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLibrary> library, QWidget* parent = nullptr);
+  ~StudyPanel() override;
+
+  // "Sweep this parameter…": asks for the range (through the sweep prompt), then either replaces
+  // the grid by it and runs the study, or adds it to the grid. False if nothing was done.
+  bool sweep(const QString& path);
+  // Adds (or replaces, by path) a varied parameter of the grid.
+  void addParameter(const SweepRange& range);
+  void removeParameter(const std::string& path);
+  void clearParameters();
+  const std::vector<SweepRange>& parameters() const { return grid_; }
+
+  // Builds the study from the open scenario and the grid (unless one was opened from a file),
+  // expands and validates every case and starts them. False (reason in lastError()) if invalid.
+  bool startStudy();
+  void cancelStudy();
+  bool isRunning() const;
+  // Worker threads for the next study (0: one per hardware thread).
+  void setThreads(int threads);
+
+  bool exportCsv(const QString& file);
+  bool exportPlot(const QString& file);
+  bool saveStudy(const QString& file);
+  // A load-case table study over the open scenario (one case per row of the CSV file); false, with the
+  // reason logged, when the table or a case is bad.
+  bool openCaseTable(const QString& file);
+  bool openStudy(const QString& file);
+
+  // A finished case as a run record for the results view ("study case 0003 (length = 120 m)").
+  // Its id is `id`; nullopt if the case has no results.
+  std::optional<RunRecord> caseRecord(int index, quint64 id) const;
+
+  const StudySession& session() const { return session_; }
+  StudyRunner* runner() const { return runner_; }
+  StudyPlotView* plotView() const { return plot_view_; }
+  QTableWidget* parameterTable() const { return table_; }
+  QString lastError() const { return last_error_; }
+
+  // How the panel asks for a sweep's range (tests replace the dialog): nullopt to cancel; the
+  // bool is true for "Add to study" (no run).
+  using SweepPrompt = std::function<std::optional<std::pair<SweepRange, bool>>(const ParamSpec&, const SweepRange&)>;
+  void setSweepPrompt(SweepPrompt prompt) { sweep_prompt_ = std::move(prompt); }
+
+ signals:
+  void caseOpened(int index);              // a plot point was clicked
+  void message(const QString& text);       // for the status bar
+  void logged(int level, const QString& text);  // 0 info, 1 warning, 2 error (RunPanel::Level)
+  void studyFinished(int succeeded, int failed);
+  void studyCancelled();
+
+ private:
+  void rebuildTable();
+  void updateButtons();
+  void onCaseFinished(int index, ResultsPtr results, double wall_time_s);
+  void onCaseFailed(int index, const QString& message);
+  void addParameterDialog();
+  void fail(const QString& text);
+
+  ScenarioDocument* document_;
+  std::shared_ptr<const SceneLibrary> library_;
+  StudySession session_;
+  std::vector<SweepRange> grid_;
+  bool from_file_ = false;  // the session was opened from a study file (its own base and cases)
+  int threads_ = 0;
+  StudyRunner* runner_;
+  QLabel* base_;
+  QTableWidget* table_;
+  QPushButton* add_;
+  QPushButton* remove_;
+  QPushButton* run_;
+  QPushButton* cancel_;
+  QSpinBox* threads_box_;
+  QLabel* summary_;
+  StudyPlotView* plot_view_;
+  QTimer* refresh_timer_;
+  QString last_error_;
+  SweepPrompt sweep_prompt_;
+};
+
+}  // namespace maris::ui

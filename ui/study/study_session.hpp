@@ -1,0 +1,84 @@
+// The study the Study panel shows: its definition (the open scenario as base, the varied
+// parameters), its cases as the engine expands them, and each case's outcome once it ran. The
+// study file, the expansion into cases, the validation of every case and study.csv are the
+// engine's (engine/study/); this class only keeps them together with the results in memory and
+// turns them into plot data. No physics and no second expansion here.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <QString>
+
+#include "plots/study_plot.hpp"
+#include "run/run_controller.hpp"
+#include "study/sweep_dialog.hpp"
+
+namespace maris::ui {
+
+struct SceneLibrary;
+
+class StudySession {
+ public:
+  enum class Status { Pending, Finished, Failed, Cancelled };
+  struct CaseOutcome {
+    Status status = Status::Pending;
+    ResultsPtr results;
+    QString error;
+    double wall_time_s = 0.0;
+  };
+
+  // A grid study over `base` (kept inline in the study file). Clears cases and outcomes.
+  void define(const SceneDefinition& scene, const Scenario& base, std::vector<SweepRange> grid);
+  // A load-case table study over `base`: one case per data row of `csv_file` (a column per parameter
+  // path; a units row may follow the names). Throws InputError naming every problem of the table.
+  void defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file);
+  // Reads a study file (grid, table or Latin hypercube); its base scenario's scene must be in
+  // `library`. Throws InputError (every problem) or std::runtime_error.
+  void load(const QString& file, const SceneLibrary& library);
+  // Writes the study file atomically. Throws std::runtime_error.
+  void save(const QString& file) const;
+
+  bool isDefined() const { return scene_ != nullptr; }
+  const SceneDefinition* scene() const { return scene_.get(); }
+  const Scenario& base() const { return base_; }
+  // The varied parameters of a grid study (empty for a table or sample loaded from a file).
+  const std::vector<SweepRange>& grid() const { return grid_; }
+  // The varied parameters' paths, whatever the design.
+  std::vector<std::string> parameterPaths() const;
+  // "grid", "table" or "latin hypercube".
+  QString kindName() const;
+
+  // Expands the study into its cases and validates every one. Throws InputError naming every bad
+  // case and field (nothing is kept then).
+  void expand();
+  int caseCount() const;
+  const Scenario& caseScenario(int index) const;
+  QString caseId(int index) const;  // "0001"
+  // "length = 120 m, tension = 2e+06 N": the varied values of a case.
+  QString caseLabel(int index) const;
+  std::vector<Scenario> caseScenarios() const;
+
+  void setOutcome(int index, CaseOutcome outcome);
+  const CaseOutcome& outcome(int index) const { return outcomes_.at(index); }
+  // Cases not finished or failed become Cancelled (after a cancel).
+  void markUnfinishedCancelled();
+
+  // The scalar results the finished cases have, in the order of the first case that has them.
+  std::vector<std::string> resultNames() const;
+  // The varied parameters (names, units, per-case values) and `result` per case (NaN where missing).
+  StudyPlotData plotData(const std::string& result) const;
+  // study.csv of the cases so far (the engine's writer), atomically. Throws std::runtime_error.
+  void writeCsv(const QString& file) const;
+
+ private:
+  struct Impl;
+  std::shared_ptr<const SceneDefinition> scene_;
+  Scenario base_;
+  std::vector<SweepRange> grid_;
+  std::shared_ptr<Impl> impl_;  // the engine's study and cases
+  std::vector<CaseOutcome> outcomes_;
+};
+
+}  // namespace maris::ui

@@ -1,0 +1,194 @@
+// StudySession: the calls into the engine's study model (study file, expansion and validation of the
+// cases, study.csv). The panel's grid becomes the same study document `maris-cli study run` reads.
+#include <algorithm>
+
+#include "core/errors.hpp"
+#include "core/run_output.hpp"
+#include "scene_library.hpp"
+#include "study/study_collect.hpp"
+#include "study/study_session.hpp"
+#include "study/study_session_impl.hpp"
+
+namespace maris::ui {
+
+namespace {
+
+bool logSpacing(const Json& entry) { return entry.is_object() && entry.value("spacing", "") == "log"; }
+
+// A grid entry as the panel edits it (an explicit list shows as its first and last value and count).
+SweepRange toSweep(const std::string& path, const std::vector<Json>& values, const Json& entry) {
+  SweepRange r;
+  r.path = path;
+  if (entry.is_object()) {
+    r.from = entry.value("from", 0.0);
+    r.to = entry.value("to", 0.0);
+    r.count = entry.value("count", 0);
+    r.log = logSpacing(entry);
+  } else if (!values.empty() && values.front().is_number() && values.back().is_number()) {
+    r.from = values.front().get<double>();
+    r.to = values.back().get<double>();
+    r.count = static_cast<int>(values.size());
+  }
+  return r;
+}
+
+// The study's scenes: the GUI's library (which may hold scenes beside the catalog's).
+study::SceneSource librarySource(const SceneLibrary& library) {
+  study::SceneSource source;
+  source.scene = [&library](const std::string& name) { return library.findScene(name); };
+  source.builtin = [&library](const std::string& id) -> const Scenario* {
+    const BuiltinScenario* found = library.findExample(id);
+    return found ? &found->scenario : nullptr;
+  };
+  source.builtin_ids = [&library] {
+    std::vector<std::string> ids;
+    for (const auto& example : library.examples) ids.push_back(example.id);
+    return ids;
+  };
+  return source;
+}
+
+// One scene, for a study over the open scenario (kept inline, so no built-in is looked up).
+study::SceneSource oneScene(const SceneDefinition& scene) {
+  study::SceneSource source;
+  source.scene = [&scene](const std::string& name) { return name == scene.name ? &scene : nullptr; };
+  source.builtin = [](const std::string&) -> const Scenario* { return nullptr; };
+  source.builtin_ids = [] { return std::vector<std::string>(); };
+  return source;
+}
+
+std::vector<bool> logParameters(const study::Study& s) {
+  std::vector<bool> log;
+  for (std::size_t p = 0; p < s.parameters.size(); ++p) {
+    if (s.kind == study::DesignKind::LatinHypercube)
+      log.push_back(p < s.bounds.size() && s.bounds[p].spacing == study::Spacing::Log);
+    else if (s.kind == study::DesignKind::Grid)
+      log.push_back(logSpacing(s.document.at("grid").value(s.parameters[p].path, Json())));
+    else
+      log.push_back(false);
+  }
+  return log;
+}
+
+}  // namespace
+
+void StudySession::define(const SceneDefinition& scene, const Scenario& base, std::vector<SweepRange> grid) {
+  // In the order of their paths, as a study file reads back (JSON objects keep no order).
+  std::sort(grid.begin(), grid.end(), [](const SweepRange& a, const SweepRange& b) { return a.path < b.path; });
+  Json ranges = Json::object();
+  for (const SweepRange& r : grid)
+    ranges[r.path] = {{"from", r.from}, {"to", r.to}, {"count", r.count}, {"spacing", r.log ? "log" : "linear"}};
+  const Json document = {{"format", study::kStudyFormat},
+                         {"name", base.name + " study"},
+                         {"base", scenarioToJson(base)},
+                         {"grid", ranges}};
+  auto owned = std::make_shared<const SceneDefinition>(scene);
+  auto impl = std::make_shared<Impl>();
+  impl->study = study::studyFromJson(document, std::filesystem::current_path(), oneScene(*owned));
+  impl->log = logParameters(impl->study);
+  scene_ = std::move(owned);
+  base_ = base;
+  grid_ = std::move(grid);
+  impl_ = std::move(impl);
+  outcomes_.clear();
+}
+
+void StudySession::defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file) {
+  const std::filesystem::path table = std::filesystem::absolute(csv_file.toStdString());
+  const Json document = {{"format", study::kStudyFormat},
+                         {"name", base.name + " load cases"},
+                         {"base", scenarioToJson(base)},
+                         {"table", table.string()}};
+  auto owned = std::make_shared<const SceneDefinition>(scene);
+  auto impl = std::make_shared<Impl>();
+  impl->study = study::studyFromJson(document, table.parent_path(), oneScene(*owned));
+  impl->log = logParameters(impl->study);
+  scene_ = std::move(owned);
+  base_ = base;
+  grid_.clear();
+  impl_ = std::move(impl);
+  outcomes_.clear();
+}
+
+std::vector<std::string> StudySession::parameterPaths() const {
+  std::vector<std::string> paths;
+  if (impl_)
+    for (const auto& p : impl_->study.parameters) paths.push_back(p.path);
+  return paths;
+}
+
+void StudySession::load(const QString& file, const SceneLibrary& library) {
+  auto impl = std::make_shared<Impl>();
+  impl->study = study::loadStudyFile(file.toStdString(), librarySource(library));
+  const SceneDefinition* scene = library.findScene(impl->study.base.scene);
+  if (!scene) throw InputError("base.scene", impl->study.base.scene, "is not a scene of this program");
+  impl->log = logParameters(impl->study);
+  std::vector<SweepRange> grid;
+  if (impl->study.kind == study::DesignKind::Grid)
+    for (std::size_t p = 0; p < impl->study.parameters.size(); ++p) {
+      const std::string& path = impl->study.parameters[p].path;
+      grid.push_back(toSweep(path, impl->study.grid[p], impl->study.document.at("grid").value(path, Json())));
+    }
+  scene_ = std::make_shared<const SceneDefinition>(*scene);
+  impl->study.scene = scene_.get();  // the session's own copy, however long the library lives
+  base_ = impl->study.base;
+  grid_ = std::move(grid);
+  impl_ = std::move(impl);
+  outcomes_.clear();
+}
+
+void StudySession::save(const QString& file) const {
+  if (!impl_) throw std::runtime_error("no study is defined");
+  Json document = impl_->study.document;
+  // The base as it runs (a file or built-in name read relative to the old study file would not resolve
+  // from another folder); a table is written with its absolute path for the same reason.
+  document["base"] = scenarioToJson(impl_->study.base);
+  document.erase("set");
+  if (impl_->study.kind == study::DesignKind::Table) document["table"] = impl_->study.table_file.string();
+  writeFileAtomic(file.toStdString(), document.dump(2) + "\n");
+}
+
+QString StudySession::kindName() const {
+  if (!impl_) return QObject::tr("grid");
+  switch (impl_->study.kind) {
+    case study::DesignKind::Table: return QObject::tr("table");
+    case study::DesignKind::LatinHypercube: return QObject::tr("latin hypercube");
+    case study::DesignKind::Grid: break;
+  }
+  return QObject::tr("grid");
+}
+
+void StudySession::expand() {
+  if (!impl_ || !scene_) throw std::runtime_error("no study is defined");
+  impl_->cases.clear();
+  outcomes_.clear();
+  std::vector<study::StudyCase> cases = study::expandStudy(impl_->study);
+  const std::vector<FieldError> errors = study::caseErrors(impl_->study, cases, false);
+  if (!errors.empty()) throw InputError(errors);
+  impl_->cases = std::move(cases);
+  outcomes_.assign(impl_->cases.size(), CaseOutcome{});
+}
+
+void StudySession::writeCsv(const QString& file) const {
+  if (!impl_ || impl_->cases.empty()) throw std::runtime_error("the study has no cases yet: run it first");
+  std::vector<study::CollectedCase> cases;
+  std::vector<study::CaseScalars> scalars;
+  for (std::size_t i = 0; i < impl_->cases.size(); ++i) {
+    study::CollectedCase c;
+    c.id = impl_->cases[i].id;
+    c.values = impl_->cases[i].values;
+    const CaseOutcome& o = outcomes_.at(i);
+    c.status = o.status == Status::Finished && o.results ? study::CaseStatus::Ok
+               : o.status == Status::Failed               ? study::CaseStatus::Failed
+                                                          : study::CaseStatus::Missing;
+    study::CaseScalars values;
+    if (o.results)
+      for (const Scalar& s : o.results->scalars) values[s.name] = {s.value, s.unit.empty() ? "-" : s.unit};
+    cases.push_back(std::move(c));
+    scalars.push_back(std::move(values));
+  }
+  const auto collected = study::collectScalars(impl_->study.parameters, impl_->study.results, std::move(cases), scalars);
+  writeFileAtomic(file.toStdString(), study::studyCsv(collected));
+}
+
+}  // namespace maris::ui

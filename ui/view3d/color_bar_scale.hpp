@@ -1,0 +1,30 @@
+// What a colour bar writes beside its colours: the range in an engineering unit (2.7e7 Pa as 27 MPa), tick
+// values on a 1–2–5 grid, and a label format that prints them exactly, zero as "0".
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace maris::ui {
+
+// Tick values on a 1, 2 or 5 × 10^k grid inside [lo, hi], about `target` of them (at least two when the range
+// allows, the ends included when they fall on the grid). A value within 1e-9 steps of zero is exactly 0.
+std::vector<double> niceTicks(double lo, double hi, int target = 5);
+
+// A printf format that shows every tick with the digits its grid needs and no more ("%.2g" for 0.01, 0.02, …;
+// zero prints as "0"); never an exponent for values from 0.001 to 99 999.
+std::string tickLabelFormat(const std::vector<double>& ticks);
+
+struct ColorBarScale {
+  double factor = 1.0;        // display value = SI value × factor
+  std::string unit;           // the display unit ("MPa" for "Pa" × 1e-6)
+  std::vector<double> ticks;  // in the display unit
+  std::string label_format;   // printf format of a tick
+};
+
+// The display unit for values of `si_unit` spanning [lo, hi]: a prefixed unit (k, M, G; m for lengths) when the
+// larger magnitude would need 4 or more digits or leading zeros, the SI unit otherwise and for units without
+// prefixes; then the ticks and their format in that unit.
+ColorBarScale colorBarScale(double lo, double hi, const std::string& si_unit, int target_ticks = 5);
+
+}  // namespace maris::ui
