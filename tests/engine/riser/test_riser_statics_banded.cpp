@@ -37,12 +37,7 @@ TEST(RiserStaticsBanded, EveryBuiltInScenarioSolvesStaticsOnTheOrderNPath) {
     RunContext context;
     const StaticSolution s = solveStatics(m, context);
     EXPECT_TRUE(s.banded) << path;
-    // Known gap: the fixed-height top's axial spring (6.3e7 N/m on the top's z) stops the O(n) Newton from the
-    // straight start after 6 iterations; dynamic relaxation and the O(n) Newton from there find it (warned).
-    const bool axial_spring = m.axial_stiffness > 0;
-    if (!axial_spring) {
-      EXPECT_TRUE(context.warnings().empty()) << path << ": " << context.warnings().front();
-    }
+    EXPECT_TRUE(context.warnings().empty()) << path << ": " << context.warnings().front();
     EXPECT_LT(s.residual, 1e-11) << path;  // the dense path's tolerance (scaled residual)
     ++solved;
   }
