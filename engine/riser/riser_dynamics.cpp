@@ -96,6 +96,17 @@ Eigen::VectorXd restState(const RiserModel& m, const std::vector<Eigen::Quaterni
   return y;
 }
 
+double knownTopForce(const RiserModel& m, int c, double t, const Vec3& top_position, const Vec3& top_velocity,
+                     double load_factor) {
+  if (m.axial_stiffness > 0 && c == 2) {
+    const TopKinematics hang_off = m.topAt(t);
+    const double stretch = hang_off.position.z() - top_position.z();
+    const double rate = hang_off.velocity.z() - top_velocity.z();
+    return m.axial_stiffness * (stretch + m.stiffness_damping * rate) + load_factor * m.axial_weight_share;
+  }
+  return m.top == TopCondition::Tensioner && c == 2 ? load_factor * m.top_tension : 0.0;
+}
+
 void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, RiserPose& pose) {
   const TopKinematics top = m.topAt(t);
   Vec3 rt = top.position, vt = top.velocity;
@@ -287,7 +298,7 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
   const TopKinematics top = m.topAt(t);
   ws.rhs[0] = top.acceleration - (joint ? Vec3::Zero() : stabilisation(m, phi, 0, alpha)) - wb(f).head<3>();
   for (int c = 0; c < 3; ++c)
-    if (topForceKnown(m, c)) ws.rhs[0][c] = m.top == TopCondition::Tensioner ? m.top_tension : 0.0;
+    if (topForceKnown(m, c)) ws.rhs[0][c] = knownTopForce(m, c, t, pose.position[f], pose.velocity[f]);
   for (int k = 1; k < nb - 1; ++k) {
     const int j = f + k;
     ws.rhs[k] = kappa(j - 1) + stabilisation(m, phi, k, alpha) + farEnd(wb(j - 1), d(j - 1)) - wb(j).head<3>();
@@ -352,7 +363,7 @@ void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, co
   const bool joint = m.formulation == Formulation::Joint;
   row_residual[0] = x[f].head<3>() - top.acceleration + (joint ? Vec3::Zero() : stabilisation(m, phi, 0, alpha));
   for (int c = 0; c < 3; ++c)
-    if (topForceKnown(m, c)) row_residual[0][c] = reaction[f][c] - (m.top == TopCondition::Tensioner ? m.top_tension : 0.0);
+    if (topForceKnown(m, c)) row_residual[0][c] = reaction[f][c] - knownTopForce(m, c, t, pose.position[f], pose.velocity[f]);
   for (int k = 1; k < nb - 1; ++k) {
     const int j = f + k;
     row_residual[k] = x[j].head<3>() - farEnd(x[j - 1], d(j - 1)) - kappa(j - 1) - stabilisation(m, phi, k, alpha);
@@ -464,6 +475,12 @@ double totalEnergy(const RiserModel& m, const RiserPose& pose) {
 double highestFrequencyEstimate(const RiserModel& m) {
   const double delta = m.element_length;
   double tension = m.top == TopCondition::Tensioner ? m.top_tension : 0.0;
+  if (m.axial_stiffness > 0) {
+    // The spring's pull at rest plus the stretch of the top's largest horizontal excursion a, a²/(2L).
+    const double a = m.motion_amplitude.head<2>().norm();
+    const double stretch = m.top_mean.z() - m.initial_top.z() + m.motion_amplitude.z() + a * a / (2 * m.length);
+    tension = m.axial_stiffness * std::max(stretch, 0.0) + m.axial_weight_share;
+  }
   double mu_min = 1e300;
   for (const auto& s : m.segments) {
     tension += std::abs(s.weight_per_length - s.buoyancy_per_length) * s.length;

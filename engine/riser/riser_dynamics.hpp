@@ -60,6 +60,12 @@ std::string stateComponentName(const RiserModel& m, Eigen::Index k);
 // State of a pose at rest: orientations `orientation` (n+1), top at `top`, zero velocities and work.
 Eigen::VectorXd restState(const RiserModel& m, const std::vector<Eigen::Quaterniond>& orientation, const Vec3& top);
 
+// Known force on the top's component c (topForceKnown): the tensioner's pull, zero for a free top, or the axial
+// spring k (H − z) + β k (Ḣ − ż) + W/2 between the prescribed point H(t) and the chain's top (position, velocity),
+// its weight share W/2 scaled by `load_factor` (statics' load continuation).
+double knownTopForce(const RiserModel& m, int c, double t, const Vec3& top_position, const Vec3& top_velocity,
+                     double load_factor = 1.0);
+
 // Fills pose (positions, orientations, velocities of all segments) from the state at time t.
 void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, RiserPose& pose);
 

@@ -10,6 +10,7 @@
 #include "core/ode.hpp"
 #include "riser/riser_charted_alpha.hpp"
 #include "riser/riser_vessel.hpp"
+#include "riser/riser_integrator_cost.hpp"
 
 namespace maris::riser {
 namespace {
@@ -24,6 +25,23 @@ constexpr double kNewtonShare = 1e-3;
 constexpr long kHistorySamples = 2000;
 // RK4 is stable for ωh up to 2√2 ≈ 2.83 on the imaginary axis; with ω_max an estimate, 2.8 is taken as its limit.
 constexpr double kRk4StabilityLimit = 2.8;
+
+// Whole steps per frame interval (the integration chunk): a shortened step before each frame changes
+// generalized-α's coefficients and costs two Newton-matrix refreshes per chunk (case 5 with its 0.5 s
+// frames, A3, n = 400: 53.6 ms took 744 steps, 12 rejected, 10 s CPU; 50 ms 720 steps, 4.0 s). Rounding
+// down only makes the step more accurate.
+double wholeStepsPerFrame(const RiserParameters& p, double step) {
+  if (p.end_time <= 0) return step;
+  const double frame = p.end_time / std::max(1, p.frame_count);
+  return frame / std::ceil(frame / step - 1e-9);
+}
+
+// Newton's tolerance: 1e-3 of the asked tolerance or of the step's expected error, whichever is larger, within
+// [1e-10, 1e-6] (integrateImplicit says why).
+double newtonTolerance(const RiserParameters& p, double expected_error) {
+  return std::clamp(kNewtonShare * std::max(p.tolerance, expected_error), kTightNewtonTolerance,
+                    kLooseNewtonTolerance);
+}
 
 // One recorder sample after the start: time, whether it is a 3D frame, and a profile table name.
 struct Sample {
@@ -60,10 +78,11 @@ std::vector<Sample> sampleSchedule(const RiserParameters& p, long grid, double s
   return merged;
 }
 
-void accumulate(SolverStats& total, const OdeStats& s) {
+void accumulate(RiserSolverStats& total, const OdeStats& s) {
   total.steps += s.steps;
   total.rejected_steps += s.rejected_steps;
   total.rhs_evaluations += s.rhs_evaluations;
+  total.matrix_refreshes += s.jacobian_evaluations;
   total.error_estimate += s.error_estimate;
 }
 
@@ -101,7 +120,7 @@ std::string rk4InstabilityNote(const IntegrationPlan& plan) {
 // Explicit integrators from sample to sample, projecting the state at every sample.
 void integrateExplicit(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
                        const std::vector<Sample>& samples, Eigen::VectorXd& y, RiserRecorder& recorder,
-                       RunContext& context, SolverStats& stats) {
+                       RunContext& context, RiserSolverStats& stats) {
   RiserWorkspace ws = makeWorkspace(m, plan.stabilisation_rate);
   const OdeRhs rhs = [&](double t, const Eigen::VectorXd& state, Eigen::VectorXd& dy) {
     evaluateRhs(m, ws, t, state, dy);
@@ -137,7 +156,7 @@ void integrateExplicit(const RiserModel& m, const RiserParameters& p, const Inte
 // Implicit generalized-α in chunks between frames/profile times; the observer samples in between.
 void integrateImplicit(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
                        const std::vector<Sample>& samples, Eigen::VectorXd& y, RiserRecorder& recorder,
-                       RunContext& context, SolverStats& stats) {
+                       RunContext& context, RiserSolverStats& stats) {
   ChartedGeneralizedAlpha integrator(m, plan.stabilisation_rate);
   OdeOptions options;
   // Newton tolerance: 1e-3 of the asked tolerance or of the step's expected error, whichever is larger, within
@@ -148,8 +167,7 @@ void integrateImplicit(const RiserModel& m, const RiserParameters& p, const Inte
   // motion at T/200, T/400, T/800 with Newton at 1e-6; 1.7e-4, 4.2e-5, 1.0e-5 with Newton at 1e-9. Below the
   // step's expected error a tighter Newton buys nothing: case 5 at 50 ms (expected 6e-4 of the motion) with the
   // scenario's tolerance 1e-6 took 3284 residuals in A2 with Newton at 1e-9 against 1441 at 1e-6, same error.
-  options.rtol = std::clamp(kNewtonShare * std::max(p.tolerance, plan.expected_error), kTightNewtonTolerance,
-                            kLooseNewtonTolerance);
+  options.rtol = newtonTolerance(p, plan.expected_error);
   options.atol = options.rtol;
   options.step = plan.step;
   options.min_step = plan.step * 1e-6;
@@ -203,6 +221,7 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   // RK4: half its stability limit 2.8/ω_max, and at least 40 steps per period of the top motion.
   double h_rk4 = 0.5 * kRk4StabilityLimit / plan.highest_frequency;
   if (harmonic_top) h_rk4 = std::min(h_rk4, p.motion_period / 40);
+  double h_rk4_run = h_rk4;  // auto: also within the step its accuracy needs
   // Implicit: 50 steps per top period (or per run), unresolved fast modes are damped (ρ∞ = 0.8).
   double h_implicit = harmonic_top ? p.motion_period / 50 : std::max(p.end_time, 1e-9) / 200;
   // A top moved by the vessel follows the waves: the same step counts per mean wave period T_m01.
@@ -218,30 +237,29 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   } else if (choice == "implicit") {
     plan.method = Integrator::Implicit;
   } else {
-    // auto: RK4 at its stability step is the cheapest explicit choice (DOPRI5 is stability-bound as well
-    // and needs ~2.7x the evaluations on riser_default) and far more accurate than 1e-6; the implicit
-    // integrator wins when the explicit step count explodes (stiff torsion, fine discretisations), or
-    // when a loose tolerance (>= 1e-3, its measured accuracy at 50 steps per period) makes it cheaper.
-    const double explicit_steps = p.end_time / h_rk4;
-    const double chunks = p.frame_count + static_cast<double>(p.stress_times.size());
-    // Cost in right-hand sides: ~2.5 residuals per implicit step (Newton), plus one iteration matrix per chunk:
-    // 2·(9s + 5) + 3 banded balance differences (riser_newton; joint coordinates through the absolute twin of
-    // riser_joint_newton, one more for its state), independent of n in both formulations.
-    const bool absolute = m.formulation == Formulation::Absolute;
-    const double reach = m.flow_speed != 0.0 ? 2 : 1;
-    const double matrix_cost = 2 * (9 * reach + 5) + (absolute ? 3 : 4);
-    // Step for the tolerance from the error model of generalized-α (implicitStepForTolerance).
-    if (harmonic_top)
+    // auto: the cheaper of RK4 and generalized-α at the asked tolerance, by predicted right-hand-side
+    // evaluations (riser_integrator_cost). RK4 takes the smaller of its stability step and the step whose phase
+    // error on the top motion meets the tolerance; the implicit step meets it by the error model
+    // (implicitStepForTolerance) and its Newton tolerance follows from that step, as in integrateImplicit.
+    // DOPRI5 is stability-bound as well and needs ~2.7x RK4's evaluations (riser_default); it is not chosen.
+    if (harmonic_top) {
+      h_rk4_run = std::min(h_rk4, rk4AccuracyStep(p.motion_period, p.end_time, p.tolerance));
       h_implicit = std::min(h_implicit, implicitStepForTolerance(m.formulation, p.motion_period, p.tolerance));
-    const double implicit_cost = 2.5 * p.end_time / h_implicit + chunks * matrix_cost;
-    const bool stiff = explicit_steps > kExplicitStepBudget;
-    const bool loose = (p.tolerance >= 1e-3 || absolute) && implicit_cost < 4 * explicit_steps;
-    plan.method = stiff || loose ? Integrator::Implicit : Integrator::Rk4;
-    plan.reason = "auto: " + std::to_string(static_cast<long>(explicit_steps)) + " explicit steps" +
-                  (stiff ? " exceed the budget of 2e6" : loose ? ", implicit cheaper at this tolerance" : "");
+    }
+    const double h_whole = wholeStepsPerFrame(p, h_implicit);
+    const double expected = harmonic_top ? implicitErrorModel(m.formulation) * std::pow(h_whole / p.motion_period, 2) : 0.0;
+    const IntegratorCost implicit_cost = predictImplicitCost(m, p, h_whole, newtonTolerance(p, expected));
+    const IntegratorCost rk4_cost = predictRk4Cost(p, h_rk4_run);
+    const bool stiff = rk4_cost.steps > kExplicitStepBudget;
+    const bool implicit = stiff || implicit_cost.total() < rk4_cost.total();
+    plan.method = implicit ? Integrator::Implicit : Integrator::Rk4;
+    plan.rk4_prediction = rk4_cost;
+    plan.implicit_prediction = implicit_cost;
+    plan.reason = explainAutoChoice(m, implicit, implicit_cost, rk4_cost);
+    if (stiff) plan.reason += "; RK4's steps exceed the budget of 2e6";
   }
   if (plan.method == Integrator::Rk4) {
-    plan.step = p.time_step > 0 ? p.time_step : h_rk4;
+    plan.step = p.time_step > 0 ? p.time_step : h_rk4_run;
     const long steps = p.end_time > 0 ? std::max(1L, checkedCount(p.end_time / plan.step, kMaxTimeSteps,
                                                                   "parameters.solver.time_step",
                                                                   "time steps over solver.end_time"))
@@ -256,15 +274,7 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
     plan.step = p.time_step;  // largest step, if given
     plan.stabilisation_rate = 0.1 * plan.highest_frequency / (0.5 * kRk4StabilityLimit);
   } else {
-    plan.step = p.time_step > 0 ? p.time_step : h_implicit;
-    if (p.time_step <= 0 && p.end_time > 0) {
-      // Whole steps per frame interval (the integration chunk): a shortened step before each frame changes
-      // generalized-α's coefficients and costs two Newton-matrix refreshes per chunk (case 5 with its 0.5 s
-      // frames, A3, n = 400: 53.6 ms took 744 steps, 12 rejected, 10 s CPU; 50 ms 720 steps, 4.0 s). Rounding
-      // down only makes the step more accurate.
-      const double frame = p.end_time / std::max(1, p.frame_count);
-      plan.step = frame / std::ceil(frame / plan.step - 1e-9);
-    }
+    plan.step = p.time_step > 0 ? p.time_step : wholeStepsPerFrame(p, h_implicit);
     plan.stabilisation_rate = 1.0 / plan.step;
     if (harmonic_top) {
       plan.expected_error = implicitErrorModel(m.formulation) * std::pow(plan.step / p.motion_period, 2);
@@ -277,9 +287,9 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   return plan;
 }
 
-SolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
+RiserSolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
                            Eigen::VectorXd& y, RiserRecorder& recorder, RunContext& context) {
-  SolverStats stats;
+  RiserSolverStats stats;
   stats.error_unit = "-";
   if (p.end_time <= 0) {
     stats.method = "no time integration (solver.end_time = 0): the initial shape" +

@@ -29,6 +29,14 @@ namespace maris::riser {
 
 enum class Integrator { Rk4, Dopri5, Implicit };
 
+// Predicted cost of one integrator over a run (riser_integrator_cost), in right-hand-side evaluations.
+struct IntegratorCost {
+  double step = 0.0;                  // [s]
+  double steps = 0.0;                 // over solver.end_time
+  double evaluations_per_step = 0.0;  // [right-hand-side evaluations]
+  double total() const { return steps * evaluations_per_step; }
+};
+
 struct IntegrationPlan {
   Integrator method = Integrator::Rk4;
   double step = 0.0;                // [s] RK4/implicit step; DOPRI5: largest step (0 = unlimited)
@@ -37,6 +45,7 @@ struct IntegrationPlan {
   std::string reason;               // why this integrator (auto) and step
   double expected_error = 0.0;      // [-] implicit with harmonic top motion: probe error / motion from
                                     // implicitErrorModel (0 if no estimate)
+  IntegratorCost rk4_prediction, implicit_prediction;  // auto only: what each would cost at its step
 };
 
 // Error model of generalized-α on a riser driven by a harmonic top motion of period T: probe error ≈ C (h/T)²
@@ -51,17 +60,23 @@ bool hasHarmonicTopMotion(const RiserModel& m);
 double implicitStepForTolerance(Formulation formulation, double period, double tolerance);
 
 // Chooses integrator, step and stabilisation from solver.integrator, solver.time_step and solver.tolerance.
-// "auto": implicit when the explicit stability limit would need more than 2e6 steps (stiff torsion of fine
-// discretisations) or when solver.tolerance >= 1e-3 (any tolerance in absolute coordinates) and the implicit
-// run is estimated cheaper, at the step implicitStepForTolerance (at most T/50; any implicit step without
-// solver.time_step is rounded down to whole steps per frame interval); else RK4 at half its stability
-// limit (see docs/riser.md for the measured costs of the three).
+// "auto": the cheaper of RK4 and generalized-α in predicted right-hand-side evaluations at the asked tolerance
+// (riser_integrator_cost; implicit also when RK4 would need more than 2e6 steps): RK4 at half its stability
+// limit or the step its phase error on the top motion needs, whichever is smaller; generalized-α at the step
+// implicitStepForTolerance (at most T/50; any implicit step without solver.time_step is rounded down to whole
+// steps per frame interval). The method line gives both predictions (docs/riser.md: measured costs).
 IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p);
+
+// The solver statistics with the implicit integrator's Newton-matrix refreshes (for the cost of a run,
+// riser_integrator_cost).
+struct RiserSolverStats : SolverStats {
+  long matrix_refreshes = 0;
+};
 
 // Integrates y (at t = 0) to p.end_time, sampling `recorder` at ≈ 2000 history points, p.frame_count frames
 // and the stress times. Returns the solver statistics (steps, rejected, RHS evaluations, error estimate).
 // Throws SolverError (diverging state, naming time, step and quantity), RunCancelled.
-SolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
+RiserSolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
                            Eigen::VectorXd& y, RiserRecorder& recorder, RunContext& context);
 
 // Name of a time for table names: 12.5 -> "12_5".

@@ -162,7 +162,7 @@ std::pair<int, double> RiserModel::locate(double s) const {
 }
 
 bool topForceKnown(const RiserModel& m, int c) {
-  return m.top == TopCondition::Free || (m.top == TopCondition::Tensioner && c == 2);
+  return m.top == TopCondition::Free || ((m.top == TopCondition::Tensioner || m.axial_stiffness > 0) && c == 2);
 }
 
 bool bottomHeld(const RiserModel& m) {
@@ -250,6 +250,13 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   m.anchor = Vec3(p.bottom_x, p.bottom_y, p.bottom_z);
   m.spring_stiffness = p.bottom_spring_stiffness;
   m.spring_damping = p.bottom_spring_damping;
+  if (p.axial_flexibility) {
+    double compliance = 0.0, submerged = 0.0;  // Σ Δ/(E A) [m/N]; submerged weight [N]
+    for (int i = 1; i <= m.n; ++i) compliance += d / (sectionAt(p, (i - 0.5) * d).youngs_modulus * m.joints[i].wall_area);
+    for (const Segment& g : m.segments) submerged += (g.weight_per_length - g.buoyancy_per_length) * g.length;
+    m.axial_stiffness = compliance > 0 ? 1.0 / compliance : 0.0;
+    m.axial_weight_share = 0.5 * submerged;
+  }
   m.motion_amplitude = Vec3(p.motion_amplitude_x, p.motion_amplitude_y, p.motion_amplitude_z);
   if (m.top == TopCondition::Tensioner) m.motion_amplitude.z() = 0.0;
   if (m.top == TopCondition::Free) m.motion_amplitude.setZero();
@@ -274,11 +281,13 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   Vec3 top(p.top_x + p.vessel_offset_x, p.top_y + p.vessel_offset_y, p.top_z + p.vessel_offset_z);
   const bool fixed_bottom = bottomHeld(m);
   std::vector<Vec3> points;
-  if (m.top == TopCondition::Tensioner) {
+  const Vec3 hang_off = top;
+  const bool axial = m.axial_stiffness > 0;
+  if (m.top == TopCondition::Tensioner || axial) {
     const double h = std::hypot(top.x() - m.anchor.x(), top.y() - m.anchor.y());
     top.z() = m.anchor.z() + std::sqrt(std::max(p.length * p.length - h * h, 0.0));
   }
-  if (m.top == TopCondition::Tensioner) {
+  if (m.top == TopCondition::Tensioner || axial) {
     const Vec3 dir = (m.anchor - top).normalized();
     for (double sk : s) points.push_back(top + sk * dir);
   } else if (fixed_bottom && m.top != TopCondition::Free && (m.anchor - top).norm() < p.length) {
@@ -293,9 +302,9 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     for (double sk : s) points.push_back(top + sk * dir);
   }
   m.initial_top = top;
-  m.top_mean = top;
+  m.top_mean = axial ? hang_off : top;
   if (p.top_motion == "vessel" && m.top != TopCondition::Free && m.sea)
-    m.vessel = buildVesselMotion(p, m.sea, top, m.top == TopCondition::Tensioner);
+    m.vessel = buildVesselMotion(p, m.sea, m.top_mean, m.top == TopCondition::Tensioner);
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
   Vec3 previous = Vec3::UnitX();
   for (int i = 0; i <= m.n; ++i) {

@@ -113,6 +113,10 @@ struct RiserModel {
   Vec3 top_mean = Vec3::Zero();  // [m] top position at rest
   Vec3 anchor = Vec3::Zero();    // [m] bottom anchor
   double spring_stiffness = 0.0, spring_damping = 0.0;  // bottom spring [N/m], [N·s/m]
+  // model.axial_flexibility: the riser's stretch as a spring between the top's prescribed point and the chain's top
+  // (k = 1/Σ Δ/(E A_wall) [N/m], 0 = off), carrying half the submerged weight on top of k·stretch [N] (the mean
+  // tension of a vertical riser sets its stretch); damped like the joints, β k.
+  double axial_stiffness = 0.0, axial_weight_share = 0.0;
   Vec3 motion_amplitude = Vec3::Zero(), motion_phase = Vec3::Zero();  // [m], [rad]
   double motion_omega = 0.0, ramp_time = 0.0;  // [rad/s], [s]
   TopMotionSpline top_table;                   // non-empty: top motion from the time table (replaces harmonic)
@@ -136,7 +140,7 @@ struct RiserModel {
   std::pair<int, double> locate(double s) const;
 };
 
-// Top components whose force is known (free top: all; tensioner: z) instead of their motion.
+// Top components whose force is known (free top: all; tensioner and axial spring: z) instead of their motion.
 bool topForceKnown(const RiserModel& m, int c);
 // Bottom end held at a point (pinned or clamped): its position is a constraint with a reaction.
 bool bottomHeld(const RiserModel& m);

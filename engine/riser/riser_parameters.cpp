@@ -94,6 +94,9 @@ SchemaBinder<P> makeBinder() {
   b.boolean("model.torsion", &P::torsion, "Torsion on (J3/A3) or off (J2/A2: segments do not spin about their axes)");
   b.real("model.stiffness_damping", &P::stiffness_damping, "s", Range::nonNegative(10.0),
          "Stiffness-proportional spring damping β: damping moments = β·C·(relative angle rates)");
+  b.boolean("model.axial_flexibility", &P::axial_flexibility,
+            "Axial stretch of the riser (pinned top and bottom): a spring k = 1/Σ(Δ/(E·A_wall)) between the top's "
+            "point and the chain, so the top may be held above the riser's length (a fixed-height hang-off)");
   b.real("environment.gravity", &P::gravity, "m/s^2", Range::nonNegative(100.0), "Gravitational acceleration");
   b.real("environment.water_density", &P::water_density, "kg/m^3", Range::nonNegative(1e4), "Sea water density");
   b.real("environment.water_level", &P::water_level, "m", Range::any(), "z of the still-water surface");
@@ -257,12 +260,37 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
   const bool fixed_bottom = p.bottom_condition == "pinned" || p.bottom_condition == "clamped";
   // The mean top: top.x/y/z moved by the static vessel offset.
   const double top_x = p.top_x + p.vessel_offset_x, top_y = p.top_y + p.vessel_offset_y, top_z = p.top_z + p.vessel_offset_z;
-  if (fixed_bottom && (p.top_condition == "pinned" || p.top_condition == "clamped")) {
+  const bool axial = p.axial_flexibility;
+  if (axial && (p.top_condition != "pinned" || !fixed_bottom))
+    e.push_back({"model.axial_flexibility", "true",
+                 "the axial spring needs top.condition = pinned (now \"" + p.top_condition +
+                     "\") and bottom.condition pinned or clamped (now \"" + p.bottom_condition + "\")"});
+  bool stiff_wall = p.youngs_modulus > 0;
+  for (const auto& s : p.sections) stiff_wall = stiff_wall && s.youngs_modulus > 0;
+  if (axial && !stiff_wall)
+    e.push_back({"section.youngs_modulus", num(p.youngs_modulus),
+                 "model.axial_flexibility needs E > 0 in every section (the axial spring is 1/Σ Δ/(E·A))"});
+  if (axial && fixed_bottom && p.top_condition == "pinned") {
+    // The chain hangs straight from the spring at the start; its stretch must stay elastic and the riser near
+    // the vertical through the anchor, where the lumped spring stands for the stretch along the axis.
+    const double horizontal = std::hypot(p.bottom_x - top_x, p.bottom_y - top_y);
+    const double chord = std::hypot(horizontal, p.bottom_z - top_z);
+    if (horizontal > 0.1 * p.length)
+      e.push_back({"bottom.x", num(p.bottom_x), "horizontal offset " + num(horizontal) +
+                                                    " m from the top must be below 0.1·L = " + num(0.1 * p.length) +
+                                                    " with model.axial_flexibility (a near-vertical riser)"});
+    if (std::abs(chord - p.length) > 0.01 * p.length)
+      e.push_back({"top.z", num(p.top_z), "the top is " + num(chord) + " m from the anchor: with " +
+                                              "model.axial_flexibility the stretch must be within ±1 % of L = " +
+                                              num(p.length) + " m (elastic strain)"});
+  }
+  if (!axial && fixed_bottom && (p.top_condition == "pinned" || p.top_condition == "clamped")) {
     const double chord = std::hypot(std::hypot(p.bottom_x - top_x, p.bottom_y - top_y), p.bottom_z - top_z);
     if (chord > 0.999 * p.length)
       e.push_back({"bottom.z", num(p.bottom_z),
                    "anchor is " + num(chord) + " m from the top: must be closer than 0.999·L = " +
-                       num(0.999 * p.length) + " m (inextensible segments; use top.condition = tensioner)"});
+                       num(0.999 * p.length) + " m (inextensible segments; use top.condition = tensioner, or model.axial_flexibility = true for a "
+                       "fixed-height top)"});
   }
   if (fixed_bottom && p.top_condition == "tensioner") {
     const double horizontal = std::hypot(p.bottom_x - top_x, p.bottom_y - top_y);
@@ -441,6 +469,12 @@ std::vector<std::string> upgradeRiserParameters(Json& parameters) {
   if (output != parameters.end() && output->is_object() && !output->contains("modes")) {
     (*output)["modes"] = true;
     notes.push_back("output.modes = true added (new in the riser schema: natural frequencies and modes, as before)");
+  }
+  // Files from before the axial spring have inextensible risers.
+  auto model = parameters.find("model");
+  if (model != parameters.end() && model->is_object() && !model->contains("axial_flexibility")) {
+    (*model)["axial_flexibility"] = false;
+    notes.push_back("model.axial_flexibility = false added (new in the riser schema: inextensible, as before)");
   }
   return notes;
 }

@@ -98,6 +98,7 @@ struct RiserParameters {
   std::string formulation = "joint";  // "joint" (J) or "absolute" (A)
   bool torsion = true;                // true: J3/A3; false: J2/A2 (no spin about segment axes)
   double stiffness_damping = 0.0;     // [s] β: spring damping moments B = β·C (Rayleigh, stiffness-proportional)
+  bool axial_flexibility = false;     // pinned top: the riser's axial stretch as a spring k = 1/Σ(Δ/EA) at the top
   // environment
   double gravity = 9.81;             // [m/s^2]
   double water_density = 1025.0;     // [kg/m^3] ρ_w

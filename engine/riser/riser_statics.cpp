@@ -33,6 +33,7 @@ class StaticProblem {
             (bottomHeld(m_) ? 3 : 0);
     // Reference force for scaling: weight, tension, point loads, drag and spring stiffness.
     force_ref_ = m_.top_tension;
+    if (m_.axial_stiffness > 0) force_ref_ += std::abs(knownTopForce(m_, 2, 0.0, m_.initial_top, Vec3::Zero()));
     for (int i = 0; i <= m_.n; ++i) {
       const Segment& s = m_.segments[i];
       const double v = m_.current_profile.max_speed;
@@ -75,7 +76,7 @@ class StaticProblem {
     }
     for (std::size_t c = 0; c < top_free_.size(); ++c) {
       const int axis = top_free_[c];
-      const double known = m_.top == TopCondition::Tensioner ? lambda * m_.top_tension : 0.0;
+      const double known = knownTopForce(m_, axis, 0.0, x.top, Vec3::Zero(), lambda);
       r[c] = (below[axis] + known) / force_ref_;
     }
     if (bottomHeld(m_)) {
@@ -336,6 +337,47 @@ bool relaxThenNewton(const RiserModel& m, StaticProblem& problem, Configuration&
   return false;
 }
 
+// The fixed-height top on its axial spring (k = EA/L, 6.3e7 N/m for the peer riser): from the straight start the
+// O(n) Newton stalls (6 iterations, β' down to its floor), as the spring's tension depends on the sag's shortening
+// of the chain only to second order, which the linearisation at the straight shape cannot see. So the same riser is
+// solved under a constant top tension T (the tensioner, whose statics the O(n) Newton solves), with T the root of
+// the scalar mismatch g(T) = k (z_hang-off − z_top(T)) + W/2 − T (secant steps, each an O(n) solve warm-started
+// from the last shape); at the root both models have the same equilibrium, which the O(n) Newton with the spring
+// then confirms. False when any solve fails (the caller then relaxes).
+bool axialSpringNewton(const RiserModel& m, StaticProblem& problem, Configuration& x, int& iterations,
+                       double& residual_norm, RunContext& context) {
+  RiserModel tensioned = m;
+  tensioned.axial_stiffness = 0.0;
+  tensioned.axial_weight_share = 0.0;
+  tensioned.top = TopCondition::Tensioner;
+  const double hang_off = m.topAt(0.0).position.z();
+  const auto spring_tension = [&](const Configuration& c) {
+    return m.axial_stiffness * (hang_off - c.top.z()) + m.axial_weight_share;
+  };
+  Configuration shape = x;
+  const auto mismatch = [&](double tension, double& g) {
+    tensioned.top_tension = tension;
+    StaticProblem fixed_tension(tensioned);
+    if (!bandedNewton(tensioned, fixed_tension, shape, iterations, residual_norm, context)) return false;
+    g = spring_tension(shape) - tension;
+    return true;
+  };
+  double t0 = spring_tension(x), g0 = 0.0;
+  if (!mismatch(t0, g0)) return false;
+  double t1 = t0 + g0, g1 = 0.0;
+  if (!mismatch(t1, g1)) return false;
+  for (int k = 0; k < 30 && std::abs(g1) > 1e-13 * std::abs(t1) && g1 != g0; ++k) {
+    const double t2 = t1 - g1 * (t1 - t0) / (g1 - g0);
+    t0 = t1;
+    g0 = g1;
+    t1 = t2;
+    if (!mismatch(t1, g1)) return false;
+  }
+  if (!bandedNewton(m, problem, shape, iterations, residual_norm, context)) return false;
+  x = std::move(shape);
+  return true;
+}
+
 // The model held at its t = 0 top position with no top motion: a prescribed top acceleration at t = 0 (a
 // clamped spline table, or harmonic motion without a ramp) would otherwise enter a(q) and no shape would
 // have a(q) = 0 (riser_top_motion_table fell back to the dense path for this), and a top velocity the drag.
@@ -362,7 +404,8 @@ StaticSolution solveStatics(const RiserModel& model, RunContext& context, Static
   // continuation only if both fail (from the initial shape again).
   if (method == StaticMethod::Automatic) {
     Configuration fast = x;
-    bool found = bandedNewton(m, problem, fast, out.iterations, residual, context);
+    bool found = m.axial_stiffness > 0 ? axialSpringNewton(m, problem, fast, out.iterations, residual, context)
+                                       : bandedNewton(m, problem, fast, out.iterations, residual, context);
     if (!found) {
       const int tried = out.iterations;
       fast = x;

@@ -247,10 +247,10 @@ TEST_F(CliStudy, ValidateChecksScenariosAndStudiesAndResolvesDataPathsAgainstThe
 }
 
 TEST_F(CliStudy, FailedAndTimedOutCasesAreRecordedAndTheStudyGoesOn) {
-  // Case 0002 simulates 60 s (about 20 s of work): the 5 s timeout stops it; the others (well under a second,
-  // with room for a loaded machine) finish.
+  // Case 0002 simulates 60 s with explicit RK4 (about 20 s of work; `auto` picks the implicit integrator there,
+  // under a second): the 5 s timeout stops it; the others (well under a second, with room for a loaded machine) finish.
   writeText(dir_ / "timeout.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
-    "grid": {"solver.end_time": [0.1, 60, 0.2]}})");
+    "set": {"solver.integrator": "rk4"}, "grid": {"solver.end_time": [0.1, 60, 0.2]}})");
   const auto r = runCli({"study", "run", "timeout.json", "--out", "t", "--jobs", "2", "--timeout", "5", "--no-plots"},
                         dir_.string());
   EXPECT_EQ(r.exit_code, 3) << r.err;

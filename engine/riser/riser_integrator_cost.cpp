@@ -1,0 +1,104 @@
+#include "riser/riser_integrator_cost.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace maris::riser {
+namespace {
+
+// Measured weights (bench_riser_auto_cost, case 5 and the peer riser, n = 20…400), in right-hand sides:
+// a chart residual is one evaluation plus the chart maps; a banded solve of the force-space Newton matrix
+// (9(n + 1) unknowns, bandwidth 14) and, in joint coordinates, the twin's solve and the map back.
+constexpr double kResidualCost = 1.1;
+constexpr double kAbsoluteSolveCost = 0.35;
+constexpr double kJointSolveCost = 0.55;
+constexpr double kFactorisationCost = 2.0;
+// One right-hand side per segment [µs] (docs/riser_work_precision.md: 0.50–0.67 µs from n = 10 to 1000), for
+// the per-step times of the method line only.
+constexpr double kRhsMicrosecondsPerSegment = 0.55;
+
+std::string grouped(double value) {
+  const long v = std::lround(value);
+  std::string digits = std::to_string(v), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ' ';
+    out += digits[i];
+  }
+  return out;
+}
+
+std::string milliseconds(double evaluations, const RiserModel& m) {
+  std::ostringstream s;
+  s.precision(2);
+  s << evaluations * kRhsMicrosecondsPerSegment * m.segmentCount() * 1e-3 << " ms";
+  return s.str();
+}
+
+}  // namespace
+
+double newtonIterationsPerStep(double newton_tolerance) {
+  // 2.5 residuals per step at Newton tolerance 1e-6 (case 5, 50 ms), about one more per two decades tighter.
+  const double decades = std::max(0.0, std::log10(1e-6 / std::max(newton_tolerance, 1e-300)));
+  return 2.5 + 0.5 * decades;
+}
+
+double bandedSolveCost(const RiserModel& m) {
+  return m.formulation == Formulation::Absolute ? kAbsoluteSolveCost : kJointSolveCost;
+}
+
+double matrixRefreshCost(const RiserModel& m) {
+  // 2·(9s + 5) + 1 grouped differences and 2 evaluations at the base point (riser_newton), one more for the
+  // joint coordinates' twin state; s = 2 with internal flow (its curvature stencil reaches two segments).
+  const double reach = m.flow_speed != 0.0 ? 2 : 1;
+  const double balances = 2 * (9 * reach + 5) + 3 + (m.formulation == Formulation::Joint ? 1 : 0);
+  return balances + kFactorisationCost;
+}
+
+IntegratorCost predictImplicitCost(const RiserModel& m, const RiserParameters& p, double step, double newton_tolerance) {
+  IntegratorCost c;
+  c.step = step;
+  c.steps = step > 0 ? p.end_time / step : 0.0;
+  const double chunks = std::max(1, p.frame_count) + static_cast<double>(p.stress_times.size());
+  const double iterations = newtonIterationsPerStep(newton_tolerance);
+  const double per_step = iterations * (kResidualCost + bandedSolveCost(m));
+  c.evaluations_per_step = c.steps > 0 ? per_step + chunks * matrixRefreshCost(m) / c.steps : 0.0;
+  return c;
+}
+
+IntegratorCost predictRk4Cost(const RiserParameters& p, double step) {
+  IntegratorCost c;
+  c.step = step;
+  c.steps = step > 0 ? p.end_time / step : 0.0;
+  c.evaluations_per_step = 4.0;
+  return c;
+}
+
+double rk4AccuracyStep(double period, double end_time, double tolerance) {
+  const double omega = 2 * std::numbers::pi / period;
+  const double phase = std::max(omega * end_time, 1.0);
+  return std::pow(120.0 * std::max(tolerance, 1e-14) / phase, 0.25) / omega;
+}
+
+double implicitCostOfRun(const RiserModel& m, const RiserSolverStats& stats) {
+  return static_cast<double>(stats.rhs_evaluations) * (kResidualCost + bandedSolveCost(m)) +
+         static_cast<double>(stats.matrix_refreshes) * matrixRefreshCost(m);
+}
+
+double explicitCostOfRun(const RiserSolverStats& stats) { return static_cast<double>(stats.rhs_evaluations); }
+
+std::string explainAutoChoice(const RiserModel& m, bool implicit, const IntegratorCost& implicit_cost,
+                              const IntegratorCost& rk4_cost) {
+  std::ostringstream s;
+  s.precision(2);
+  const std::string gen = "implicit generalized-α " + grouped(implicit_cost.steps) + " steps × " +
+                          milliseconds(implicit_cost.evaluations_per_step, m);
+  const std::string rk4 = "RK4 " + grouped(rk4_cost.steps) + " steps × " + milliseconds(rk4_cost.evaluations_per_step, m);
+  s << "auto → " << (implicit ? "implicit generalized-α" : "RK4") << ": predicted " << (implicit ? gen : rk4)
+    << " against " << (implicit ? rk4 : gen) << " (" << grouped(implicit_cost.total()) << " against "
+    << grouped(rk4_cost.total()) << " right-hand-side evaluations; DOPRI5 ≈ 2.7 × RK4's, stability-bound)";
+  return s.str();
+}
+
+}  // namespace maris::riser
