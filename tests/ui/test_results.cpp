@@ -31,7 +31,7 @@ namespace {
 RunRecord twoScalarRun() {
   auto results = std::make_shared<Results>();
   results->addScalar("tip_deflection", 0.125, "m", "Tip deflection");
-  results->addScalar("period", 2.5, "s", "First period");
+  results->addScalar("period", 2.5, "s", "First period", "T₁");
   RunRecord record;
   record.id = 1;
   record.scenario.name = "Rod";
@@ -65,18 +65,21 @@ class ResultsViewsTest : public QObject {
     QVERIFY(QTest::qWaitForWindowActive(&summary));
     summary.table()->setFocus();
     QApplication::clipboard()->clear();
+    // Labels for people: the declared one ("T₁"), else the name made readable ("Tip deflection").
+    QCOMPARE(summary.table()->item(0, 0)->text(), QStringLiteral("Tip deflection"));
+    QCOMPARE(summary.table()->item(1, 0)->text(), QStringLiteral("T₁"));
     // Nothing selected: Ctrl+C copies every scalar, one row each after the header.
     QTest::keyClick(summary.table(), Qt::Key_C, Qt::ControlModifier);
     QCOMPARE(QApplication::clipboard()->text(),
              QStringLiteral("Quantity\tValue\tUnit\tMeaning\n"
-                            "tip_deflection\t0.125\tm\tTip deflection\n"
-                            "period\t2.5\ts\tFirst period\n"));
+                            "Tip deflection\t0.125\tm\tTip deflection\n"
+                            "T₁\t2.5\ts\tFirst period\n"));
     // One row selected: the context menu's Copy copies that row only.
     summary.table()->selectRow(1);
     QVERIFY(summary.table()->actions().contains(summary.copyAction()));
     summary.copyAction()->trigger();
     QCOMPARE(QApplication::clipboard()->text(),
-             QStringLiteral("Quantity\tValue\tUnit\tMeaning\nperiod\t2.5\ts\tFirst period\n"));
+             QStringLiteral("Quantity\tValue\tUnit\tMeaning\nT₁\t2.5\ts\tFirst period\n"));
   }
 
   void exportWritesNamesUnitsAndValuesAsCsv() {

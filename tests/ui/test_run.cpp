@@ -163,6 +163,11 @@ class RunTest : public QObject {
     QCOMPARE(history.add(c).label, QStringLiteral("run 3"));
     QCOMPARE(history.runs().size(), std::size_t(2));
     QVERIFY(!history.find(1));
+    // With the scene's schema: the editor's label, 4 significant digits and the unit.
+    RunRecord d = c;
+    d.id = 4;
+    d.scenario.parameters["geometry"]["length"] = 1.5707963267948966;
+    QCOMPARE(history.add(d, false, &scene_.schema).label, QStringLiteral("run 4 (length = 1.571 m)"));
   }
 
   void plotsHoldTheExpectedPoints() {

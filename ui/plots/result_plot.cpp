@@ -14,12 +14,13 @@
 
 namespace maris::ui {
 
-QString axisLabel(const std::string& name, const std::string& unit) {
-  QString label = QString::fromStdString(name);
-  label.replace('_', ' ');
+QString axisLabel(const std::string& text, const std::string& unit) {
+  QString label = QString::fromStdString(text);
   if (!unit.empty() && unit != "-") label += QStringLiteral(" [%1]").arg(QString::fromStdString(unit));
   return label;
 }
+
+QString axisLabel(const Column& column) { return axisLabel(displayLabel(column), column.unit); }
 
 QString wrapAtSpaces(const QString& text, int max_line) {
   QStringList lines;
@@ -55,7 +56,7 @@ void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const 
     const Column* y = table.find(name);
     if (!y) continue;
     QCPGraph* g = plot.addGraph(x_axis, y_axis);
-    QString graph_name = axisLabel(y->name, y->unit);
+    QString graph_name = axisLabel(*y);
     if (several_sources) graph_name = source.label + ": " + graph_name;
     g->setName(graph_name);
     const int color_index = spec.y.size() == 1 ? run : series;
@@ -177,9 +178,9 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   }
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
   QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
-  x_axis->setLabel(axisLabel(x->name, x->unit));
+  x_axis->setLabel(axisLabel(*x));
   if (spec.y.size() == 1)
-    y_axis->setLabel(axisLabel(spec.y.front(), table->find(spec.y.front())->unit));
+    y_axis->setLabel(axisLabel(*table->find(spec.y.front())));
   else
     y_axis->setLabel(severalColumnsLabel(*table, spec));
 
@@ -193,7 +194,7 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   int markers = 0;
   auto add_markers = [&](const Table& ref, const Column* rx, const Column* ry, QCPScatterStyle::ScatterShape shape) {
     QCPGraph* g = plot.addGraph(x_axis, y_axis);
-    g->setName(QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + ": " + axisLabel(ry->name, ""));
+    g->setName(QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + ": " + QString::fromStdString(displayLabel(*ry)));
     g->setLineStyle(QCPGraph::lsNone);
     g->setScatterStyle(QCPScatterStyle(shape, QPen(drawingColors(plot.palette()).foreground, 1.2),
                                        QBrush(seriesColor(3 + markers++, plot.palette())), 7));

@@ -84,11 +84,11 @@ void ResultsSummary::showRun(const RunRecord& record) {
   table_->setRowCount(scalars + static_cast<int>(r.warnings.size()));
   for (int i = 0; i < static_cast<int>(r.scalars.size()); ++i) {
     const Scalar& s = r.scalars[i];
-    QString name = QString::fromStdString(s.name);
-    name.replace('_', ' ');
+    auto* name = new QTableWidgetItem(QString::fromStdString(displayLabel(s)));
+    name->setToolTip(QString::fromStdString(s.name));  // the key in summary.json and the CSV
     auto* value = new QTableWidgetItem(QString::number(s.value, 'g', 6));
     value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    table_->setItem(i, 0, new QTableWidgetItem(name));
+    table_->setItem(i, 0, name);
     table_->setItem(i, 1, value);
     table_->setItem(i, 2, new QTableWidgetItem(QString::fromStdString(s.unit)));
     table_->setItem(i, 3, new QTableWidgetItem(QString::fromStdString(s.description)));
@@ -125,7 +125,7 @@ QString ResultsSummary::copyText() const {
   for (int i = 0; i < static_cast<int>(scalars.size()); ++i) {
     if (!selected.isEmpty() && !selected.contains(i)) continue;
     const Scalar& s = scalars[i];
-    lines << QStringList{cell(s.name), QString::number(s.value, 'g', QLocale::FloatingPointShortest), cell(s.unit),
+    lines << QStringList{cell(displayLabel(s)), QString::number(s.value, 'g', QLocale::FloatingPointShortest), cell(s.unit),
                          cell(s.description)}
                  .join('\t');
   }
