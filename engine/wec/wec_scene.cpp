@@ -45,7 +45,7 @@ Table sweepTable(const std::vector<double>& omega, const std::vector<std::vector
   Table t = frequencyTable(omega, resp);
   std::vector<double> flag;
   for (double w : omega) flag.push_back(w >= omega_deep ? 1.0 : 0.0);
-  t.add("deep_water", "-", flag);
+  t.add("deep_water", "-", flag, "Deep water (1 = yes)");
   return t;
 }
 
@@ -84,7 +84,7 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
     Table pm;
     pm.name = "power_matrix";
     pm.title = "Mean PTO power of all floats in irregular seas (" + p.spectrum + ")";
-    pm.add("peak_period", "s", p.power_tp);
+    pm.add("peak_period", "s", p.power_tp, "T_p");
     for (double hs : p.power_hs) {
       std::vector<double> row;
       for (double tp : p.power_tp) {
@@ -93,7 +93,7 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
         for (const auto& f : model.floats) total += irregularMeanPower(model, f, p.spectrum, hs, tp, p.peak_enhancement);
         row.push_back(total);
       }
-      pm.add(powerMatrixColumn(hs), "W", row);
+      pm.add(powerMatrixColumn(hs), "W", row, formatText("P at H_s = %g m", hs));
     }
     res.tables.push_back(std::move(pm));
   }
@@ -169,7 +169,7 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
   Table t;
   t.name = "response_spectra";
   t.title = "Response spectra in the irregular sea (" + p.spectrum + ", frequency domain)";
-  t.add("omega", "rad/s", omega);
+  t.add("omega", "rad/s", omega, "ω");
   const double settle = p.ramp_duration + settlingTime(model);
   std::size_t k0 = 0;
   while (k0 + 1 < td.time.size() && td.time[k0] < settle) ++k0;
@@ -184,11 +184,11 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
     const std::string n = std::to_string(i + 1);
     const ResponseSpectra s = responseSpectra(model, model.floats[i], p.spectrum, p.significant_height,
                                               p.peak_period, p.peak_enhancement, omega);
-    if (i == 0) t.add("wave_spectrum", "m^2*s/rad", s.wave);
-    t.add("pitch_spectrum_" + n, "rad^2*s/rad", s.pitch);
-    t.add("hinge_fx_spectrum_" + n, "N^2*s/rad", s.hinge_fx);
-    t.add("hinge_fz_spectrum_" + n, "N^2*s/rad", s.hinge_fz);
-    t.add("moment_spectrum_" + n, "N^2*m^2*s/rad", s.moment_y);
+    if (i == 0) t.add("wave_spectrum", "m^2*s/rad", s.wave, "S_η");
+    t.add("pitch_spectrum_" + n, "rad^2*s/rad", s.pitch, "S_θ, float " + n);
+    t.add("hinge_fx_spectrum_" + n, "N^2*s/rad", s.hinge_fx, "S_Fx, float " + n);
+    t.add("hinge_fz_spectrum_" + n, "N^2*s/rad", s.hinge_fz, "S_Fz, float " + n);
+    t.add("moment_spectrum_" + n, "N^2*m^2*s/rad", s.moment_y, "S_My, float " + n);
     res.addScalar("sd_pitch_fd_" + n, s.sd_pitch * 180.0 / std::numbers::pi, "deg", "Std of pitch, frequency domain");
     res.addScalar("sd_hinge_fx_fd_" + n, s.sd_fx, "N", "Std of the horizontal hinge reaction, frequency domain");
     res.addScalar("sd_hinge_fz_fd_" + n, s.sd_fz, "N", "Std of the vertical hinge reaction, frequency domain");
