@@ -166,7 +166,7 @@ void addResistanceCurves(Results& r, const ShipParameters& p, const ShipModel& m
     const MeasuredPoints& mp = *measured;
     Table mt;
     mt.name = "measured";
-    mt.title = "Measured points (" + p.measured_file + ")";
+    mt.title = "Measured points";  // the legend's words; the file is named in the scenario
     mt.add("froude", "-", mp.froude, "Fn");
     mt.add("c_total", "-", mp.c_total, "C_T measured");
     r.tables.push_back(std::move(mt));
