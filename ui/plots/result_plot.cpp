@@ -9,6 +9,7 @@
 #include <QSvgGenerator>
 #include <qcustomplot.h>
 
+#include "plots/display_units.hpp"
 #include "plots/reference_data.hpp"
 #include "theme.hpp"
 
@@ -20,7 +21,7 @@ QString axisLabel(const std::string& text, const std::string& unit) {
   return label;
 }
 
-QString axisLabel(const Column& column) { return axisLabel(displayLabel(column), column.unit); }
+QString axisLabel(const Column& column) { return axisLabel(displayLabel(column), displayUnit(column.unit).unit); }
 
 QString wrapAtSpaces(const QString& text, int max_line) {
   QStringList lines;
@@ -38,7 +39,14 @@ QString wrapAtSpaces(const QString& text, int max_line) {
 
 namespace {
 
-QVector<double> toQVector(const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); }
+// A column's values in its display unit (plots/display_units.hpp).
+QVector<double> shownValues(const Column& column) {
+  const double factor = displayUnit(column.unit).factor;
+  QVector<double> out(column.values.begin(), column.values.end());
+  if (factor != 1.0)
+    for (double& v : out) v *= factor;
+  return out;
+}
 
 Qt::PenStyle runPenStyle(int run) {
   static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine,
@@ -63,7 +71,7 @@ void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const 
     QPen pen(seriesColor(color_index, plot.palette()), run == 0 ? 1.8 : 1.4);
     pen.setStyle(spec.y.size() == 1 ? Qt::SolidLine : runPenStyle(run));
     g->setPen(pen);
-    g->setData(toQVector(x.values), toQVector(y->values), true);
+    g->setData(shownValues(x), shownValues(*y), true);
     ++series;
   }
 }
@@ -74,7 +82,7 @@ QString severalColumnsLabel(const Table& table, const PlotSpec& spec) {
   QStringList units;
   for (const auto& name : spec.y) {
     const Column* y = table.find(name);
-    const QString unit = y ? QString::fromStdString(y->unit) : QString();
+    const QString unit = y ? QString::fromStdString(displayUnit(y->unit).unit) : QString();
     if (!unit.isEmpty() && unit != QLatin1String("-") && !units.contains(unit)) units << unit;
   }
   QString label = QString::fromStdString(spec.title);
@@ -198,7 +206,7 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
     g->setLineStyle(QCPGraph::lsNone);
     g->setScatterStyle(QCPScatterStyle(shape, QPen(drawingColors(plot.palette()).foreground, 1.2),
                                        QBrush(seriesColor(3 + markers++, plot.palette())), 7));
-    g->setData(toQVector(rx->values), toQVector(ry->values));
+    g->setData(shownValues(*rx), shownValues(*ry));
   };
   if (const Table* ref = primary.findTable(spec.reference_table)) {
     const Column* rx = ref->find(spec.x);
