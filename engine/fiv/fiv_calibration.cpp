@@ -17,6 +17,15 @@ namespace maris::fiv {
 
 namespace {
 
+// "galloping.force_scale" as people read it: "Calibrated force scale (galloping)".
+std::string calibratedLabel(const std::string& path) {
+  std::string text = "Calibrated " + path;
+  if (const std::size_t dot = path.rfind('.'); dot != std::string::npos)
+    text = "Calibrated " + path.substr(dot + 1) + " (" + path.substr(0, dot) + ")";
+  std::replace(text.begin(), text.end(), '_', ' ');
+  return text;
+}
+
 // σ of a reference value: the given one, else 5 % of the value (and never zero).
 double sigmaOf(const std::optional<double>& sigma, double value) {
   const double s = sigma.value_or(0.05 * std::abs(value));
@@ -155,7 +164,7 @@ void addCalibrationResults(Results& results, const CalibrationResult& cal) {
     results.addScalar("calibrated_" + cal.names[i], cal.fitted[i], "-",
                       "Fitted " + cal.names[i] + " (was " + std::to_string(cal.initial[i]) + "; ± " +
                           std::to_string(cal.standard_error[i]) + " standard error)",
-                      "Calibrated " + cal.names[i]);
+                      calibratedLabel(cal.names[i]));
     if (cal.converged) note << " " << cal.names[i] << "=" << cal.fitted[i];
   }
   results.addScalar("calibration_cost_initial", cal.cost_initial, "-", "Σ((model − reference)/σ)² before the fit", "Calibration cost before");
