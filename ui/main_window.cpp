@@ -22,6 +22,7 @@
 #include "browser/scenario_browser.hpp"
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
+#include "plots/display_units.hpp"
 #include "plots/plot_panel.hpp"
 #include "run/live_results.hpp"
 #include "run/results_summary.hpp"
@@ -202,6 +203,23 @@ void MainWindow::createDocks() {
     a->setData(themeKey(theme));
     a->setChecked(theme == theme_);
     themes->addAction(a);
+  }
+  // Display units of plots and the results dock, per kind of quantity (files stay SI).
+  loadDisplayUnits();
+  QMenu* units = view->addMenu(tr("&Units"));
+  const std::pair<const char*, QString> kinds[] = {{"N", tr("&Force")}, {"Pa", tr("&Stress")}, {"m", tr("&Length")}};
+  for (const auto& [si_unit, title] : kinds) {
+    QMenu* kind = units->addMenu(title);
+    auto* group = new QActionGroup(kind);
+    for (const std::string& choice : displayUnitChoices(si_unit)) {
+      QAction* a = kind->addAction(QString::fromStdString(choice), this, [this, si = std::string(si_unit), choice] {
+        setDisplayUnit(si, choice);
+        restoreShownRun();
+      });
+      a->setCheckable(true);
+      a->setChecked(displayUnit(si_unit).unit == choice);
+      group->addAction(a);
+    }
   }
   QMenu* plot = menuBar()->addMenu(tr("&Plot"));
   plot->addAction(plots_->addReferenceAction());

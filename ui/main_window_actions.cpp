@@ -212,7 +212,8 @@ bool MainWindow::openStudyCase(int index) {
 }
 
 void MainWindow::onRunFinished(const RunRecord& finished) {
-  const RunRecord& record = history_.add(finished);
+  const SceneDefinition* scene = library_->findScene(finished.scenario.scene);
+  const RunRecord& record = history_.add(finished, false, scene ? &scene->schema : nullptr);
   showRecord(record);
   // A finished run opens on its final state (the end of the time history, the last load step).
   if (!view_->isPlaying()) view_->setFrame(view_->frameCount() - 1);

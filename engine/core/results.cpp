@@ -9,8 +9,8 @@
 
 namespace maris {
 
-Column& Table::add(std::string column_name, std::string unit, std::vector<double> values) {
-  columns.push_back(Column{std::move(column_name), std::move(unit), std::move(values)});
+Column& Table::add(std::string column_name, std::string unit, std::vector<double> values, std::string label) {
+  columns.push_back(Column{std::move(column_name), std::move(unit), std::move(values), std::move(label)});
   return columns.back();
 }
 
@@ -74,9 +74,22 @@ const Scalar* Results::findScalar(const std::string& name) const {
   return nullptr;
 }
 
-void Results::addScalar(std::string name, double value, std::string unit, std::string description) {
-  scalars.push_back(Scalar{std::move(name), value, std::move(unit), std::move(description)});
+void Results::addScalar(std::string name, double value, std::string unit, std::string description,
+                        std::string label) {
+  scalars.push_back(Scalar{std::move(name), value, std::move(unit), std::move(description), std::move(label)});
 }
+
+std::string readableName(const std::string& name) {
+  std::string text = name;
+  for (char& c : text)
+    if (c == '_') c = ' ';
+  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z') text[0] = static_cast<char>(text[0] - 'a' + 'A');
+  return text;
+}
+
+std::string displayLabel(const Column& column) { return column.label.empty() ? readableName(column.name) : column.label; }
+
+std::string displayLabel(const Scalar& scalar) { return scalar.label.empty() ? readableName(scalar.name) : scalar.label; }
 
 void requireFiniteResults(const Results& results) {
   const double no_time = std::nan("");
@@ -100,6 +113,7 @@ Json summaryJson(const Results& results) {
     e["value"] = std::isfinite(s.value) ? Json(s.value) : Json(nullptr);
     e["unit"] = s.unit;
     e["description"] = s.description;
+    if (!s.label.empty()) e["label"] = s.label;
     j["results"][s.name] = e;
   }
   const auto& st = results.stats;

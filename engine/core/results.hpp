@@ -19,13 +19,23 @@ struct Scalar {
   double value = 0.0;
   std::string unit;         // "m", "Pa", "-"
   std::string description;  // one line for people
+  std::string label;        // short name for people, with symbols: "Tip deflection", "σ_b", "C_W"; written where
+                            // the result is made (empty: displayLabel falls back to the name)
 };
 
 struct Column {
   std::string name;  // "time", "tip_x"
   std::string unit;  // "s", "m", "-"
   std::vector<double> values;
+  std::string label;  // for people: "Time", "Tip x", "Fn", "A*/D" (empty: displayLabel falls back to the name)
 };
+
+// What people read for a result: its label, or, where the scene declared none, the name made readable
+// ("tip_x" as "Tip x"). CSV headers and summary.json keys stay the machine names.
+std::string displayLabel(const Column& column);
+std::string displayLabel(const Scalar& scalar);
+// The fallback alone: underscores as spaces, the first letter capitalised.
+std::string readableName(const std::string& name);
 
 // A table of equally long columns: a time series, a field along arc length at chosen times,
 // a spectrum, a resistance curve. Written as CSV: a row of names, a row of units, then data.
@@ -34,7 +44,7 @@ struct Table {
   std::string title;  // "Tip displacement history"
   std::vector<Column> columns;
 
-  Column& add(std::string column_name, std::string unit, std::vector<double> values = {});
+  Column& add(std::string column_name, std::string unit, std::vector<double> values = {}, std::string label = {});
   const Column* find(const std::string& column_name) const;
   std::size_t rows() const { return columns.empty() ? 0 : columns.front().values.size(); }
   std::string toCsv() const;
@@ -114,10 +124,10 @@ struct Results {
 
   const Table* findTable(const std::string& name) const;
   const Scalar* findScalar(const std::string& name) const;
-  void addScalar(std::string name, double value, std::string unit, std::string description);
+  void addScalar(std::string name, double value, std::string unit, std::string description, std::string label = {});
 };
 
-// summary.json content: scalars with units, solver statistics and warnings.
+// summary.json content: scalars with units (and labels, where declared), solver statistics and warnings.
 Json summaryJson(const Results& results);
 
 }  // namespace maris

@@ -17,6 +17,15 @@ namespace maris::fiv {
 
 namespace {
 
+// "galloping.force_scale" as people read it: "Calibrated force scale (galloping)".
+std::string calibratedLabel(const std::string& path) {
+  std::string text = "Calibrated " + path;
+  if (const std::size_t dot = path.rfind('.'); dot != std::string::npos)
+    text = "Calibrated " + path.substr(dot + 1) + " (" + path.substr(0, dot) + ")";
+  std::replace(text.begin(), text.end(), '_', ' ');
+  return text;
+}
+
 // σ of a reference value: the given one, else 5 % of the value (and never zero).
 double sigmaOf(const std::optional<double>& sigma, double value) {
   const double s = sigma.value_or(0.05 * std::abs(value));
@@ -154,16 +163,17 @@ void addCalibrationResults(Results& results, const CalibrationResult& cal) {
   for (std::size_t i = 0; i < cal.names.size(); ++i) {
     results.addScalar("calibrated_" + cal.names[i], cal.fitted[i], "-",
                       "Fitted " + cal.names[i] + " (was " + std::to_string(cal.initial[i]) + "; ± " +
-                          std::to_string(cal.standard_error[i]) + " standard error)");
+                          std::to_string(cal.standard_error[i]) + " standard error)",
+                      calibratedLabel(cal.names[i]));
     if (cal.converged) note << " " << cal.names[i] << "=" << cal.fitted[i];
   }
-  results.addScalar("calibration_cost_initial", cal.cost_initial, "-", "Σ((model − reference)/σ)² before the fit");
-  results.addScalar("calibration_cost", cal.cost, "-", "Σ((model − reference)/σ)² after the fit");
+  results.addScalar("calibration_cost_initial", cal.cost_initial, "-", "Σ((model − reference)/σ)² before the fit", "Calibration cost before");
+  results.addScalar("calibration_cost", cal.cost, "-", "Σ((model − reference)/σ)² after the fit", "Calibration cost");
   results.addScalar("calibration_iterations", cal.iterations, "-",
                     "Levenberg–Marquardt iterations; " + std::string(cal.converged ? "converged" : "not converged") +
-                        " (" + cal.stop_reason + ")");
+                        " (" + cal.stop_reason + ")", "Calibration iterations");
   results.addScalar("calibration_rms_residual", std::sqrt(cal.cost / std::max<std::size_t>(1, cal.residuals.size())),
-                    "-", "RMS of the normalised residuals after the fit");
+                    "-", "RMS of the normalised residuals after the fit", "Calibration RMS residual");
   results.warnings.push_back(note.str());
   Table t;
   t.name = "calibration_residuals";
@@ -180,14 +190,14 @@ void addCalibrationResults(Results& results, const CalibrationResult& cal) {
     sig.push_back(r.sigma);
     norm.push_back(r.normalised());
   }
-  t.add("U", "m/s", u);
-  t.add("h_star_or_0_for_deep", "-", h);
-  t.add("quantity", "-", q);
-  t.add("reference", "SI", ref);
-  t.add("model_before", "SI", before);
-  t.add("model_after", "SI", after);
-  t.add("sigma", "SI", sig);
-  t.add("normalised_residual_after", "-", norm);
+  t.add("U", "m/s", u, "Current speed U");
+  t.add("h_star_or_0_for_deep", "-", h, "h* (0: deep)");
+  t.add("quantity", "-", q, "Quantity (1 A*, 2 f*, 3 P)");
+  t.add("reference", "SI", ref, "Reference value");
+  t.add("model_before", "SI", before, "Model before the fit");
+  t.add("model_after", "SI", after, "Model after the fit");
+  t.add("sigma", "SI", sig, "σ");
+  t.add("normalised_residual_after", "-", norm, "Normalised residual after the fit");
   results.tables.push_back(std::move(t));
 }
 

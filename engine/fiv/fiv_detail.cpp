@@ -89,14 +89,14 @@ void addDetailResults(Results& results, const FivModel& model, const DetailPoint
   const LimitCycle& c = detail.cycle;
   const History& h = detail.history;
   const double fluid = sweptFluidPower(model.density, op.speed, model.length, model.side, c.amplitude);
-  results.addScalar("detail_speed", op.speed, "m/s", "Current speed of the detail point");
-  results.addScalar("detail_amplitude", c.amplitude, "m", "Limit-cycle amplitude A at the detail point");
-  results.addScalar("detail_amplitude_ratio", c.amplitude / model.side, "-", "A/D at the detail point");
-  results.addScalar("detail_frequency", c.frequency, "Hz", "Response frequency (zero up-crossings)");
-  results.addScalar("detail_power", c.power_damper, "W", "⟨cẏ²⟩ at the detail point (paper eq 13)");
-  results.addScalar("detail_power_fluid", c.power_fluid, "W", "⟨Fẏ⟩ at the detail point (paper eq 8)");
-  results.addScalar("detail_efficiency", betzEfficiency(c.power_damper, fluid), "-", "η at the detail point");
-  results.addScalar("detail_residual", c.residual, "-", "Estimated relative error of A at the detail point");
+  results.addScalar("detail_speed", op.speed, "m/s", "Current speed of the detail point", "U at the detail point");
+  results.addScalar("detail_amplitude", c.amplitude, "m", "Limit-cycle amplitude A at the detail point", "A at the detail point");
+  results.addScalar("detail_amplitude_ratio", c.amplitude / model.side, "-", "A/D at the detail point", "A/D at the detail point");
+  results.addScalar("detail_frequency", c.frequency, "Hz", "Response frequency (zero up-crossings)", "f at the detail point");
+  results.addScalar("detail_power", c.power_damper, "W", "⟨cẏ²⟩ at the detail point (paper eq 13)", "P at the detail point");
+  results.addScalar("detail_power_fluid", c.power_fluid, "W", "⟨Fẏ⟩ at the detail point (paper eq 8)", "⟨F ẏ⟩ at the detail point");
+  results.addScalar("detail_efficiency", betzEfficiency(c.power_damper, fluid), "-", "η at the detail point", "η at the detail point");
+  results.addScalar("detail_residual", c.residual, "-", "Estimated relative error of A at the detail point", "Residual at the detail point");
   if (h.time.empty()) return;
   // Histories, thinned to a plottable number of rows.
   const std::size_t stride = std::max<std::size_t>(1, h.time.size() / kMaxHistoryRows);
@@ -113,13 +113,13 @@ void addDetailResults(Results& results, const FivModel& model, const DetailPoint
     cg.push_back(h.force_galloping[i]);
     cw.push_back(h.force_vortex[i]);
   }
-  t.add("time", "s", ct);
-  t.add("y", "m", cy);
-  t.add("ydot", "m/s", cv);
-  t.add("wake_q", "-", cq);
-  t.add("lift", "N", cf);
-  t.add("force_galloping", "N", cg);
-  t.add("force_vortex", "N", cw);
+  t.add("time", "s", ct, "Time");
+  t.add("y", "m", cy, "Displacement y");
+  t.add("ydot", "m/s", cv, "Velocity ẏ");
+  t.add("wake_q", "-", cq, "Wake variable q");
+  t.add("lift", "N", cf, "Lift F");
+  t.add("force_galloping", "N", cg, "Galloping force");
+  t.add("force_vortex", "N", cw, "Vortex force");
   results.tables.push_back(std::move(t));
   const PlotSpec py = makePlot("detail_displacement", "Displacement y(t) at the detail point", "detail_history", "time", {"y"});
   const PlotSpec pf = makePlot("detail_lift", "Fluid force components at the detail point", "detail_history", "time",
@@ -134,16 +134,16 @@ void addDetailResults(Results& results, const FivModel& model, const DetailPoint
   Table s;
   s.name = "detail_spectrum";
   s.title = "Amplitude spectra of y and lift at the detail point";
-  s.add("frequency", "Hz", peaks.frequency);
-  s.add("y_amplitude", "m", peaks.displacement_amplitude);
-  s.add("lift_amplitude", "N", peaks.lift_amplitude);
+  s.add("frequency", "Hz", peaks.frequency, "Frequency f");
+  s.add("y_amplitude", "m", peaks.displacement_amplitude, "|Y(f)|");
+  s.add("lift_amplitude", "N", peaks.lift_amplitude, "|F(f)|");
   results.tables.push_back(std::move(s));
   results.plots.push_back(makePlot("detail_spectrum", "Amplitude spectra at the detail point", "detail_spectrum", "frequency",
                            {"y_amplitude", "lift_amplitude"}, true));
-  results.addScalar("detail_f1", peaks.f1, "Hz", "Main (response) peak of the y spectrum");
+  results.addScalar("detail_f1", peaks.f1, "Hz", "Main (response) peak of the y spectrum", "f₁ at the detail point");
   if (peaks.f2 > 0.0) {
-    results.addScalar("detail_f2", peaks.f2, "Hz", "Secondary (shedding) peak of the lift spectrum above 1.5 f1");
-    results.addScalar("detail_lift_alternations", peaks.alternations, "-", "n = round(f2/f1), paper eq 22");
+    results.addScalar("detail_f2", peaks.f2, "Hz", "Secondary (shedding) peak of the lift spectrum above 1.5 f1", "f₂ at the detail point");
+    results.addScalar("detail_lift_alternations", peaks.alternations, "-", "n = round(f2/f1), paper eq 22", "Lift alternations n at the detail point");
   }
   results.view = buildCylinderView(model, detail, animation_frames);
 }

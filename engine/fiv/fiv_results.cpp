@@ -35,13 +35,15 @@ void addDirectionColumns(Table& t, const FivModel& model, const std::vector<doub
     residual.push_back(c.residual);
     clear.push_back(branch.clearanceExceeded(c) ? 1.0 : 0.0);
   }
-  t.add("A_star_" + dir + "_" + label, "-", a_star);
-  t.add("f_star_" + dir + "_" + label, "-", f_star);
-  t.add("P_" + dir + "_" + label, "W", power);
-  t.add("PF_" + dir + "_" + label, "W", power_fluid);
-  t.add("eta_" + dir + "_" + label, "-", eta);
-  t.add("residual_" + dir + "_" + label, "-", residual);
-  t.add("clearance_exceeded_" + dir + "_" + label, "-", clear);
+  // Labels: the quantity's symbol, the sweep direction and the submergence ratio ("A*/D, up, h* = 1.11").
+  const std::string of = ", " + dir + ", h* = " + hstarText(branch.submergence_ratio);
+  t.add("A_star_" + dir + "_" + label, "-", a_star, "A*/D" + of);
+  t.add("f_star_" + dir + "_" + label, "-", f_star, "f*" + of);
+  t.add("P_" + dir + "_" + label, "W", power, "P = c⟨ẏ²⟩" + of);
+  t.add("PF_" + dir + "_" + label, "W", power_fluid, "⟨F ẏ⟩" + of);
+  t.add("eta_" + dir + "_" + label, "-", eta, "η" + of);
+  t.add("residual_" + dir + "_" + label, "-", residual, "Residual" + of);
+  t.add("clearance_exceeded_" + dir + "_" + label, "-", clear, "Clearance exceeded (1 = yes)" + of);
 }
 
 void addBranchScalars(Results& r, const FivModel& model, const std::vector<double>& speeds, const SweepBranch& b) {
@@ -49,10 +51,10 @@ void addBranchScalars(Results& r, const FivModel& model, const std::vector<doubl
   const std::string hs = "h* = " + hstarText(b.submergence_ratio);
   if (std::isfinite(b.linear_onset_speed))
     r.addScalar("linear_onset_speed_" + label, b.linear_onset_speed, "m/s",
-                "Quasi-steady galloping onset 2c/(ρDLκ_g A1), " + hs);
+                "Quasi-steady galloping onset 2c/(ρDLκ_g A1), " + hs, "Linear onset U, " + hs);
   if (b.onset_speed >= 0.0)
     r.addScalar("galloping_onset_speed_" + label, b.onset_speed, "m/s",
-                "Lowest up-sweep speed from which A/D stays above the onset threshold, " + hs);
+                "Lowest up-sweep speed from which A/D stays above the onset threshold, " + hs, "Galloping onset U, " + hs);
   std::size_t i_p = 0, i_eta = 0;
   std::vector<double> eta(speeds.size());
   for (std::size_t i = 0; i < speeds.size(); ++i) {
@@ -62,11 +64,11 @@ void addBranchScalars(Results& r, const FivModel& model, const std::vector<doubl
     if (c.power_damper > b.up[i_p].power_damper) i_p = i;
     if (eta[i] > eta[i_eta]) i_eta = i;
   }
-  r.addScalar("max_power_" + label, b.up[i_p].power_damper, "W", "Largest ⟨cẏ²⟩ of the up-sweep, " + hs);
+  r.addScalar("max_power_" + label, b.up[i_p].power_damper, "W", "Largest ⟨cẏ²⟩ of the up-sweep, " + hs, "max P, " + hs);
   r.addScalar("amplitude_ratio_at_max_speed_" + label, b.up.back().amplitude / model.side, "-",
-              "A/D at the highest speed (up-sweep), " + hs);
-  r.addScalar("max_efficiency_" + label, eta[i_eta], "-", "Largest η = P/(½ρU³L(D+2A)·16/27), " + hs);
-  r.addScalar("speed_of_max_efficiency_" + label, speeds[i_eta], "m/s", "Speed of the largest η, " + hs);
+              "A/D at the highest speed (up-sweep), " + hs, "A/D at the highest U, " + hs);
+  r.addScalar("max_efficiency_" + label, eta[i_eta], "-", "Largest η = P/(½ρU³L(D+2A)·16/27), " + hs, "max η, " + hs);
+  r.addScalar("speed_of_max_efficiency_" + label, speeds[i_eta], "m/s", "Speed of the largest η, " + hs, "U at max η, " + hs);
   // The cylinder would pierce the free surface: the model does not hold there.
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     if (!b.clearanceExceeded(b.up[i])) continue;
@@ -97,9 +99,9 @@ void addSweepResults(Results& results, const FivModel& model, const SweepResult&
     u_star.push_back(u / (model.f_n * model.side));
     re.push_back(u * model.side / model.viscosity);
   }
-  t.add("U", "m/s", sweep.speeds);
-  t.add("U_star", "-", u_star);
-  t.add("Re", "-", re);
+  t.add("U", "m/s", sweep.speeds, "Current speed U");
+  t.add("U_star", "-", u_star, "U*");
+  t.add("Re", "-", re, "Re");
   std::vector<std::string> a_up, a_both, f_up, p_up, eta_up;
   for (const SweepBranch& b : sweep.branches) {
     const std::string label = submergenceLabel(b.submergence_ratio);
@@ -108,7 +110,7 @@ void addSweepResults(Results& results, const FivModel& model, const SweepResult&
     if (std::isfinite(b.submergence_ratio)) {
       std::vector<double> froude;
       for (double u : sweep.speeds) froude.push_back(u / std::sqrt(model.gravity * b.submergence_ratio * model.side));
-      t.add("Fr_" + label, "-", froude);
+      t.add("Fr_" + label, "-", froude, "Fr, h* = " + hstarText(b.submergence_ratio));
     }
     a_up.push_back("A_star_up_" + label);
     a_both.push_back("A_star_up_" + label);
@@ -159,10 +161,14 @@ void addReferenceTables(Results& results, const FivModel& model, const std::vect
     }
   }
   const char* h_note = "-";
-  ta.add("U", "m/s", au), ta.add("U_star", "-", aus), ta.add("h_star_or_0_for_deep", h_note, ah), ta.add("A_star", "-", aa);
-  tf.add("U", "m/s", fu), tf.add("U_star", "-", fus), tf.add("h_star_or_0_for_deep", h_note, fh), tf.add("f_star", "-", ff);
-  tp.add("U", "m/s", pu), tp.add("U_star", "-", pus), tp.add("h_star_or_0_for_deep", h_note, ph), tp.add("P", "W", pp);
-  tp.add("eta_implied", "-", pe);
+  auto add_conditions = [&](Table& t, std::vector<double>& u, std::vector<double>& us, std::vector<double>& h) {
+    t.add("U", "m/s", std::move(u), "Current speed U");
+    t.add("U_star", "-", std::move(us), "U*");
+    t.add("h_star_or_0_for_deep", h_note, std::move(h), "h* (0: deep)");
+  };
+  add_conditions(ta, au, aus, ah), add_conditions(tf, fu, fus, fh), add_conditions(tp, pu, pus, ph);
+  ta.add("A_star", "-", aa, "A*/D measured"), tf.add("f_star", "-", ff, "f* measured"), tp.add("P", "W", pp, "P measured");
+  tp.add("eta_implied", "-", pe, "η implied");
   results.tables.push_back(std::move(ta));
   results.tables.push_back(std::move(tf));
   results.tables.push_back(std::move(tp));

@@ -19,11 +19,11 @@ namespace fiv {
 namespace {
 
 void addModelScalars(Results& r, const FivModel& m) {
-  r.addScalar("natural_frequency_water", m.f_n, "Hz", "f_n = √(k/(m + m_a))/2π");
-  r.addScalar("added_mass", m.added_mass, "kg", "m_a = C_a ρ D² L");
-  r.addScalar("damping_coefficient", m.damping, "N*s/m", "c_total (generator + transmission)");
-  r.addScalar("damping_ratio", m.damping_ratio, "-", "ξ = c / (2√(k m_t))");
-  r.addScalar("mass_ratio", m.mass / (m.density * m.side * m.side * m.length), "-", "m* = m / (ρ D² L)");
+  r.addScalar("natural_frequency_water", m.f_n, "Hz", "f_n = √(k/(m + m_a))/2π", "f_n in water");
+  r.addScalar("added_mass", m.added_mass, "kg", "m_a = C_a ρ D² L", "Added mass m_a");
+  r.addScalar("damping_coefficient", m.damping, "N*s/m", "c_total (generator + transmission)", "Damping c");
+  r.addScalar("damping_ratio", m.damping_ratio, "-", "ξ = c / (2√(k m_t))", "ξ");
+  r.addScalar("mass_ratio", m.mass / (m.density * m.side * m.side * m.length), "-", "m* = m / (ρ D² L)", "m*");
 }
 
 void warnAboutModel(const FivModel& m, RunContext& ctx) {
@@ -37,26 +37,26 @@ Results postProcess(const FivParameters& p, RunContext& ctx) {
   ctx.progress(0.1, "reading series");
   const ImportedSeries s = readSeriesCsv(p.series_file);
   const SeriesAnalysis a = analyseSeries(s, m.damping, m.density, p.series_flow_speed, m.length, m.side);
-  r.addScalar("amplitude", a.amplitude, "m", "Mean half peak-to-peak of y over whole cycles");
-  r.addScalar("amplitude_ratio", a.amplitude / m.side, "-", "A/D");
-  r.addScalar("amplitude_spread", a.amplitude_spread, "m", "Standard deviation of the per-cycle amplitudes");
-  r.addScalar("cycles", a.cycles, "-", "Whole cycles in the record");
-  r.addScalar("frequency", a.frequency, "Hz", "From zero up-crossings");
-  r.addScalar("f1", a.spectra.f1, "Hz", "Main peak of the y spectrum");
+  r.addScalar("amplitude", a.amplitude, "m", "Mean half peak-to-peak of y over whole cycles", "Amplitude A");
+  r.addScalar("amplitude_ratio", a.amplitude / m.side, "-", "A/D", "A/D");
+  r.addScalar("amplitude_spread", a.amplitude_spread, "m", "Standard deviation of the per-cycle amplitudes", "Amplitude spread");
+  r.addScalar("cycles", a.cycles, "-", "Whole cycles in the record", "Cycles");
+  r.addScalar("frequency", a.frequency, "Hz", "From zero up-crossings", "Frequency f");
+  r.addScalar("f1", a.spectra.f1, "Hz", "Main peak of the y spectrum", "f₁");
   if (a.spectra.f2 > 0.0) {
-    r.addScalar("f2", a.spectra.f2, "Hz", "Largest lift-spectrum peak above 1.5 f1");
-    r.addScalar("lift_alternations", a.spectra.alternations, "-", "n = round(f2/f1), paper eq 22");
+    r.addScalar("f2", a.spectra.f2, "Hz", "Largest lift-spectrum peak above 1.5 f1", "f₂");
+    r.addScalar("lift_alternations", a.spectra.alternations, "-", "n = round(f2/f1), paper eq 22", "Lift alternations n");
   }
-  r.addScalar("power", a.power_damper, "W", "c⟨ẏ²⟩ (paper eq 13)");
-  if (!s.lift.empty()) r.addScalar("power_fluid", a.power_fluid, "W", "⟨lift·ẏ⟩ (paper eq 8)");
-  r.addScalar("fluid_power", a.fluid_power, "W", "½ρU³L(D + 2A) (paper eq 14)");
-  r.addScalar("efficiency", a.efficiency, "-", "P / (P_fluid·16/27) (paper eq 15)");
+  r.addScalar("power", a.power_damper, "W", "c⟨ẏ²⟩ (paper eq 13)", "P = c⟨ẏ²⟩");
+  if (!s.lift.empty()) r.addScalar("power_fluid", a.power_fluid, "W", "⟨lift·ẏ⟩ (paper eq 8)", "⟨F ẏ⟩");
+  r.addScalar("fluid_power", a.fluid_power, "W", "½ρU³L(D + 2A) (paper eq 14)", "P_fluid");
+  r.addScalar("efficiency", a.efficiency, "-", "P / (P_fluid·16/27) (paper eq 15)", "η");
   Table spec;
   spec.name = "series_spectrum";
   spec.title = "Amplitude spectra of the imported y and lift";
-  spec.add("frequency", "Hz", a.spectra.frequency);
-  spec.add("y_amplitude", "m", a.spectra.displacement_amplitude);
-  spec.add("lift_amplitude", "N", a.spectra.lift_amplitude);
+  spec.add("frequency", "Hz", a.spectra.frequency, "Frequency f");
+  spec.add("y_amplitude", "m", a.spectra.displacement_amplitude, "|Y(f)|");
+  spec.add("lift_amplitude", "N", a.spectra.lift_amplitude, "|F(f)|");
   r.tables.push_back(std::move(spec));
   r.plots.push_back(makePlot("series_spectrum", "Amplitude spectra of the imported record", "series_spectrum", "frequency",
                      {"y_amplitude", "lift_amplitude"}, true));

@@ -1,3 +1,4 @@
+#include "riser/riser_labels.hpp"
 #include "riser/riser_envelope.hpp"
 
 #include <algorithm>
@@ -38,14 +39,14 @@ void addEnvelope(const RiserModel& model, Results& results) {
   Table t;
   t.name = "envelope";
   t.title = "Amplitude envelopes along the riser (second half of the run)";
-  t.add("arc_length", "m", arc);
-  t.add("displacement_amplitude", "m", displacement);
-  t.add("curvature_amplitude", "1/m", curvature);
+  t.add("arc_length", "m", arc, riserColumnLabel("arc_length"));
+  t.add("displacement_amplitude", "m", displacement, riserColumnLabel("displacement_amplitude"));
+  t.add("curvature_amplitude", "1/m", curvature, riserColumnLabel("curvature_amplitude"));
   results.tables.push_back(std::move(t));
   for (const char* c : {"displacement_amplitude", "curvature_amplitude"}) {
     PlotSpec p;
     p.name = std::string("envelope_") + c;
-    p.title = std::string("Envelope: ") + c;
+    p.title = "Envelope: " + riserColumnLabel(c);
     p.table = "envelope";
     p.x = "arc_length";
     p.y = {c};

@@ -1,4 +1,5 @@
 // Riser fatigue at the joints (contract in riser/riser_fatigue.hpp).
+#include "riser/riser_labels.hpp"
 #include "riser/riser_fatigue.hpp"
 
 #include <algorithm>
@@ -72,20 +73,20 @@ void addFatigueResults(const std::vector<JointFatigue>& joints, const fatigue::S
   Table t;
   t.name = "fatigue";
   t.title = "Fatigue damage at the joints (" + curve.name + ")";
-  t.add("arc_length", "m", std::move(s));
-  t.add("damage", "-", std::move(d));
-  t.add("damage_per_year", "1/yr", std::move(dy));
-  t.add("life", "yr", std::move(life));
-  t.add("hot_spot_angle", "deg", std::move(angle));
+  t.add("arc_length", "m", std::move(s), riserColumnLabel("arc_length"));
+  t.add("damage", "-", std::move(d), riserColumnLabel("damage"));
+  t.add("damage_per_year", "1/yr", std::move(dy), riserColumnLabel("damage_per_year"));
+  t.add("life", "yr", std::move(life), riserColumnLabel("life"));
+  t.add("hot_spot_angle", "deg", std::move(angle), riserColumnLabel("hot_spot_angle"));
   out.tables.push_back(std::move(t));
   out.plots.push_back(makePlot("fatigue_life", "Fatigue life along the riser", "fatigue", "arc_length", {"life"}, true));
   if (!worst) return;
   out.addScalar("min_fatigue_life", worst->life, "yr",
                 "Shortest fatigue life over the joints (damage over " + std::to_string(window) +
-                    " s scaled to a year; capped at 1e12 yr)");
-  out.addScalar("fatigue_hot_spot_arc_length", worst->arc_length, "m", "Arc length of the critical hot spot");
+                    " s scaled to a year; capped at 1e12 yr)", "Minimum fatigue life");
+  out.addScalar("fatigue_hot_spot_arc_length", worst->arc_length, "m", "Arc length of the critical hot spot", "Hot spot s");
   out.addScalar("fatigue_hot_spot_angle", 45.0 * worst->worst_point, "deg",
-                "Angle of the critical hot spot around the circumference, from the segment's y' axis towards z'");
+                "Angle of the critical hot spot around the circumference, from the segment's y' axis towards z'", "Hot-spot angle");
 }
 
 }  // namespace maris::riser

@@ -1,3 +1,4 @@
+#include "riser/riser_labels.hpp"
 #include "riser/riser_frequency_sweep.hpp"
 
 #include <algorithm>
@@ -126,11 +127,11 @@ void addFrequencySweeps(const RiserParameters& p, Results& results, RunContext& 
     Table t;
     t.name = "frequency_vs_pretension";
     t.title = "First two bending frequencies against pretension ratio i_T (n = " + std::to_string(p.segment_count) + ")";
-    for (const char* c : {"pretension_ratio"}) t.add(c, "-");
-    t.add("top_tension", "N");
+    for (const char* c : {"pretension_ratio"}) t.add(c, "-", {}, riserColumnLabel(c));
+    t.add("top_tension", "N", {}, riserColumnLabel("top_tension"));
     for (const char* c : {"omega_1", "omega_2", "omega_1_reference", "omega_2_reference", "omega_1_eq66", "omega_2_eq66"})
-      t.add(c, "rad/s");
-    for (const char* c : {"difference_1", "difference_2"}) t.add(c, "-");
+      t.add(c, "rad/s", {}, riserColumnLabel(c));
+    for (const char* c : {"difference_1", "difference_2"}) t.add(c, "-", {}, riserColumnLabel(c));
     bool referenced = true;
     for (double ratio : p.sweep_pretension_ratios) {
       context.throwIfCancelled();
@@ -154,9 +155,9 @@ void addFrequencySweeps(const RiserParameters& p, Results& results, RunContext& 
     Table t;
     t.name = "frequency_vs_segments";
     t.title = "First two bending frequencies against segment count n (T = " + num(p.top_tension) + " N)";
-    t.add("segment_count", "-");
-    for (const char* c : {"omega_1", "omega_2", "omega_1_reference", "omega_2_reference"}) t.add(c, "rad/s");
-    for (const char* c : {"error_1", "error_2"}) t.add(c, "-");
+    t.add("segment_count", "-", {}, riserColumnLabel("segment_count"));
+    for (const char* c : {"omega_1", "omega_2", "omega_1_reference", "omega_2_reference"}) t.add(c, "rad/s", {}, riserColumnLabel(c));
+    for (const char* c : {"error_1", "error_2"}) t.add(c, "-", {}, riserColumnLabel(c));
     bool referenced = true;
     for (double count : p.sweep_segment_counts) {
       const int n = static_cast<int>(std::lround(count));
@@ -183,7 +184,7 @@ void addFrequencySweeps(const RiserParameters& p, Results& results, RunContext& 
   if (max_difference >= 0)
     results.addScalar("sweep_max_difference", max_difference, "-",
                       "Largest |ω − ω_ref|/ω_ref of ω₁, ω₂ over the pretension sweep (Galerkin reference with "
-                      "depth-varying tension and internal flow)");
+                      "depth-varying tension and internal flow)", "max relative difference of ω");
   context.progress(1.0, "frequency sweep");
 }
 

@@ -1,3 +1,4 @@
+#include "riser/riser_labels.hpp"
 #include "riser/riser_results.hpp"
 
 #include <algorithm>
@@ -120,7 +121,8 @@ void RiserRecorder::addHistoryPlots(Results& out) const {
 void RiserRecorder::addProbeScalars(Results& out) const {
   for (std::size_t k = 0; k < probes_.size(); ++k)
     out.addScalar(probeColumn(k, "max_displacement"), probes_[k].max_displacement, "m",
-                  "Largest displacement from its start of " + probeLabel(k, probes_[k].arc_length));
+                  "Largest displacement from its start of " + probeLabel(k, probes_[k].arc_length),
+                  riserColumnLabel(probeColumn(k, "max_displacement")));
 }
 
 RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& parameters)
@@ -133,23 +135,23 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
   }
   history_.name = "history";
   history_.title = "Probe points, end reactions and energies over time";
-  for (const char* c : {"time"}) history_.add(c, "s");
+  for (const char* c : {"time"}) history_.add(c, "s", {}, riserColumnLabel(c));
   for (const char* c : {"probe_dx", "probe_dy", "probe_dz", "top_x", "top_y", "top_z", "end_x", "end_y", "end_z"})
-    history_.add(c, "m");
+    history_.add(c, "m", {}, riserColumnLabel(c));
   for (const char* c : {"top_force_x", "top_force_y", "top_force_z", "bottom_force_x", "bottom_force_y",
                         "bottom_force_z"})
-    history_.add(c, "N");
+    history_.add(c, "N", {}, riserColumnLabel(c));
   for (const char* c : {"kinetic_energy", "spring_energy", "gravity_energy", "total_energy", "work_drag",
                         "work_damping", "work_boundary", "work_flow", "energy_balance_error"})
-    history_.add(c, "J");
-  history_.add("constraint_drift", "m");
-  history_.add("probe_bending_stress", "Pa");
-  history_.add("probe_torsional_stress", "Pa");
+    history_.add(c, "J", {}, riserColumnLabel(c));
+  history_.add("constraint_drift", "m", {}, riserColumnLabel("constraint_drift"));
+  history_.add("probe_bending_stress", "Pa", {}, riserColumnLabel("probe_bending_stress"));
+  history_.add("probe_torsional_stress", "Pa", {}, riserColumnLabel("probe_torsional_stress"));
   for (std::size_t k = 1; k < probes_.size(); ++k) {
-    for (const char* c : {"dx", "dy", "dz"}) history_.add(probeColumn(k, c), "m");
-    for (const char* c : {"bending_stress", "torsional_stress"}) history_.add(probeColumn(k, c), "Pa");
+    for (const char* c : {"dx", "dy", "dz"}) history_.add(probeColumn(k, c), "m", {}, riserColumnLabel(probeColumn(k, c)));
+    for (const char* c : {"bending_stress", "torsional_stress"}) history_.add(probeColumn(k, c), "Pa", {}, riserColumnLabel(probeColumn(k, c)));
   }
-  if (m_.sea) history_.add("wave_elevation", "m");  // η at (waves.elevation_x, waves.elevation_y)
+  if (m_.sea) history_.add("wave_elevation", "m", {}, riserColumnLabel("wave_elevation"));  // η at (waves.elevation_x, waves.elevation_y)
   if (m_.seabed) seabed_.addColumns(history_);
   if (parameters.fatigue_enabled)
     for (int k = 1; k <= m_.n; ++k) {
@@ -161,10 +163,10 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
     }
   nodes_.name = "node_positions";
   nodes_.title = "Node positions of every stored frame";
-  nodes_.add("time", "s");
-  nodes_.add("node", "-");
-  nodes_.add("arc_length", "m");
-  for (const char* c : {"x", "y", "z"}) nodes_.add(c, "m");
+  nodes_.add("time", "s", {}, riserColumnLabel("time"));
+  nodes_.add("node", "-", {}, riserColumnLabel("node"));
+  nodes_.add("arc_length", "m", {}, riserColumnLabel("arc_length"));
+  for (const char* c : {"x", "y", "z"}) nodes_.add(c, "m", {}, riserColumnLabel(c));
   r_.view.scalar_name = "bending stress";
   r_.view.scalar_unit = "Pa";
   r_.view.water_level_z = m_.water_level;
@@ -282,7 +284,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     std::ostringstream title;  // 6 significant digits, no trailing zeros: "t = 24 s", "t = 12.5 s"
     title << "Along the riser at t = " << t << " s";
     tab.title = title.str();
-    tab.add("arc_length", "m", prof.arc_length);
+    tab.add("arc_length", "m", prof.arc_length, riserColumnLabel("arc_length"));
     std::vector<double> x, yv, z, dx;
     for (int k = 0; k < nodes; ++k) {
       x.push_back(prof.position[k].x());
@@ -290,16 +292,16 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
       z.push_back(prof.position[k].z());
       dx.push_back((prof.position[k] - initial_nodes_[k]).norm());
     }
-    tab.add("x", "m", x);
-    tab.add("y", "m", yv);
-    tab.add("z", "m", z);
-    tab.add("displacement", "m", dx);
-    tab.add("tension", "N", prof.tension);
-    tab.add("bending_stress", "Pa", prof.bending_stress);
-    tab.add("stress_xy", "Pa", prof.stress_xy);
-    tab.add("stress_xz", "Pa", prof.stress_xz);
-    tab.add("torsional_stress", "Pa", prof.torsional_stress);
-    tab.add("curvature", "1/m", prof.curvature);
+    tab.add("x", "m", x, riserColumnLabel("x"));
+    tab.add("y", "m", yv, riserColumnLabel("y"));
+    tab.add("z", "m", z, riserColumnLabel("z"));
+    tab.add("displacement", "m", dx, riserColumnLabel("displacement"));
+    tab.add("tension", "N", prof.tension, riserColumnLabel("tension"));
+    tab.add("bending_stress", "Pa", prof.bending_stress, riserColumnLabel("bending_stress"));
+    tab.add("stress_xy", "Pa", prof.stress_xy, riserColumnLabel("stress_xy"));
+    tab.add("stress_xz", "Pa", prof.stress_xz, riserColumnLabel("stress_xz"));
+    tab.add("torsional_stress", "Pa", prof.torsional_stress, riserColumnLabel("torsional_stress"));
+    tab.add("curvature", "1/m", prof.curvature, riserColumnLabel("curvature"));
     if (m_.seabed) seabed_.addProfileColumn(contact, tab);
     r_.tables.push_back(std::move(tab));
   }
@@ -317,9 +319,9 @@ std::shared_ptr<const Results> RiserRecorder::partialResults() const {
   out->view.seabed_z = r_.view.seabed_z;
   out->view.reference = r_.view.reference;
   if (!r_.view.frames.empty()) out->view.frames.push_back(r_.view.frames.back());
-  out->addScalar("time", history_.columns.front().values.back(), "s", "Simulated time reached so far");
+  out->addScalar("time", history_.columns.front().values.back(), "s", "Simulated time reached so far", "Time reached");
   addProbeScalars(*out);
-  out->addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress so far");
+  out->addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress so far", "max σ_b");
   return out;
 }
 
@@ -330,9 +332,9 @@ void RiserRecorder::addModes(const RiserModes& modes) {
   Table shapes;
   shapes.name = "mode_shapes";
   shapes.title = "Mode shapes (node displacements, largest = 1)";
-  for (const char* c : {"mode", "node"}) shapes.add(c, "-");
-  shapes.add("arc_length", "m");
-  for (const char* c : {"dx", "dy", "dz", "twist"}) shapes.add(c, "-");
+  for (const char* c : {"mode", "node"}) shapes.add(c, "-", {}, riserColumnLabel(c));
+  shapes.add("arc_length", "m", {}, riserColumnLabel("arc_length"));
+  for (const char* c : {"dx", "dy", "dz", "twist"}) shapes.add(c, "-", {}, riserColumnLabel(c));
   std::vector<double> index, omega, hertz, period;
   for (std::size_t k = 0; k < modes.frequencies.size(); ++k) {
     const double w = modes.frequencies[k];
@@ -347,16 +349,16 @@ void RiserRecorder::addModes(const RiserModes& modes) {
       for (int c = 0; c < 7; ++c) shapes.columns[c].values.push_back(row[c]);
     }
   }
-  freq.add("mode", "-", index);
-  freq.add("angular_frequency", "rad/s", omega);
-  freq.add("frequency", "Hz", hertz);
-  freq.add("period", "s", period);
-  freq.add("torsion_share", "-", modes.torsion_share);
+  freq.add("mode", "-", index, riserColumnLabel("mode"));
+  freq.add("angular_frequency", "rad/s", omega, riserColumnLabel("angular_frequency"));
+  freq.add("frequency", "Hz", hertz, riserColumnLabel("frequency"));
+  freq.add("period", "s", period, riserColumnLabel("period"));
+  freq.add("torsion_share", "-", modes.torsion_share, riserColumnLabel("torsion_share"));
   if (!omega.empty())
-    r_.addScalar("first_natural_frequency", omega.front(), "rad/s", "Lowest natural frequency about the static state");
+    r_.addScalar("first_natural_frequency", omega.front(), "rad/s", "Lowest natural frequency about the static state", "ω₁");
   if (std::isfinite(modes.divergence_flow_speed))
     r_.addScalar("divergence_flow_speed", modes.divergence_flow_speed, "m/s",
-                 "Internal flow speed |u| at which the lowest natural frequency reaches zero (at the static shape)");
+                 "Internal flow speed |u| at which the lowest natural frequency reaches zero (at the static shape)", "Divergence flow speed");
   r_.tables.push_back(std::move(freq));
   r_.tables.push_back(std::move(shapes));
 }
@@ -378,10 +380,10 @@ Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& st
   probes.name = "probes";
   probes.title = "Probe points: largest displacement and bending stress over the run (stresses interpolated "
                  "between joint_above and the joint below it, weight_below on the lower one)";
-  for (const char* c : {"probe", "joint_above", "weight_below"}) probes.add(c, "-");
-  probes.add("arc_length", "m");
-  probes.add("max_displacement", "m");
-  probes.add("max_bending_stress", "Pa");
+  for (const char* c : {"probe", "joint_above", "weight_below"}) probes.add(c, "-", {}, riserColumnLabel(c));
+  probes.add("arc_length", "m", {}, riserColumnLabel("arc_length"));
+  probes.add("max_displacement", "m", {}, riserColumnLabel("max_displacement"));
+  probes.add("max_bending_stress", "Pa", {}, riserColumnLabel("max_bending_stress"));
   for (std::size_t k = 0; k < probes_.size(); ++k) {
     const double row[6] = {double(k + 1), double(probes_[k].joint_above), probes_[k].weight_below, probes_[k].arc_length,
                            probes_[k].max_displacement, probes_[k].max_bending};
@@ -390,35 +392,36 @@ Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& st
   out.tables.push_back(std::move(probes));
   const auto& h = history_;
   const std::size_t last = h.rows() - 1;
-  out.addScalar("end_x", h.find("end_x")->values[last], "m", "Bottom end position x at the end of the run");
-  out.addScalar("end_y", h.find("end_y")->values[last], "m", "Bottom end position y at the end of the run");
-  out.addScalar("end_z", h.find("end_z")->values[last], "m", "Bottom end position z at the end of the run");
+  out.addScalar("end_x", h.find("end_x")->values[last], "m", "Bottom end position x at the end of the run", "Bottom end x");
+  out.addScalar("end_y", h.find("end_y")->values[last], "m", "Bottom end position y at the end of the run", "Bottom end y");
+  out.addScalar("end_z", h.find("end_z")->values[last], "m", "Bottom end position z at the end of the run", "Bottom end z");
   addProbeScalars(out);
   if (m_.seabed) seabed_.addScalars(out);
-  out.addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress σ_b over joints and samples");
-  out.addScalar("max_torsional_stress", max_torsion_, "Pa", "Largest |σ_t| over joints and samples");
-  out.addScalar("max_tension", max_tension_, "N", "Largest tension over nodes and samples");
+  out.addScalar("max_bending_stress", max_bending_, "Pa", "Largest bending stress σ_b over joints and samples", "max σ_b");
+  out.addScalar("max_torsional_stress", max_torsion_, "Pa", "Largest |σ_t| over joints and samples", "max τ_t");
+  out.addScalar("max_tension", max_tension_, "N", "Largest tension over nodes and samples", "max T");
   const Vec3 end_displacement = pose_end_ - initial_nodes_.back();
-  out.addScalar("tip_deflection", end_displacement.norm(), "m", "Displacement of the bottom end from its start at the end");
+  out.addScalar("tip_deflection", end_displacement.norm(), "m", "Displacement of the bottom end from its start at the end", "Tip deflection");
   for (const char* c : {"top_force_x", "top_force_y", "top_force_z", "bottom_force_x", "bottom_force_y",
                         "bottom_force_z"})
     out.addScalar(std::string(c) + "_final", h.find(c)->values[last], "N",
-                  "Reaction at the end of the run (top: on the riser from the support; bottom: on the support)");
+                  "Reaction at the end of the run (top: on the riser from the support; bottom: on the support)",
+                  riserColumnLabel(c) + " at the end");
   out.addScalar("energy_drift", balance_max_, "J",
-                "max |E(t) - E(0) - W_drag - W_damping - W_boundary - W_flow| over the run");
+                "max |E(t) - E(0) - W_drag - W_damping - W_boundary - W_flow| over the run", "Energy drift");
   out.addScalar("energy_balance_error", balance_max_ / scale, "-",
-                "max |E(t) - E(0) - W_drag - W_damping - W_boundary| relative to the energy scale of the run");
-  out.addScalar("constraint_drift", drift_max_, "m", "Largest constraint violation |Φ| (bottom end; A: all joints)");
-  out.addScalar("statics_iterations", statics.iterations, "-", "Newton iterations of the static solution");
-  out.addScalar("statics_residual", statics.residual, "-", "Final scaled residual of the static solution");
+                "max |E(t) - E(0) - W_drag - W_damping - W_boundary| relative to the energy scale of the run", "Energy balance error");
+  out.addScalar("constraint_drift", drift_max_, "m", "Largest constraint violation |Φ| (bottom end; A: all joints)", "Constraint drift |Φ|");
+  out.addScalar("statics_iterations", statics.iterations, "-", "Newton iterations of the static solution", "Statics iterations");
+  out.addScalar("statics_residual", statics.residual, "-", "Final scaled residual of the static solution", "Statics residual");
   out.addScalar("statics_relaxation_time", statics.relaxation_time, "s",
-                "Damped motion (dynamic relaxation) before the static Newton converged; 0: none needed");
-  out.addScalar("steps", static_cast<double>(stats.steps), "-", "Accepted time steps");
-  out.addScalar("rhs_evaluations", static_cast<double>(stats.rhs_evaluations), "-", "Right-hand side evaluations");
+                "Damped motion (dynamic relaxation) before the static Newton converged; 0: none needed", "Statics relaxation time");
+  out.addScalar("steps", static_cast<double>(stats.steps), "-", "Accepted time steps", "Steps");
+  out.addScalar("rhs_evaluations", static_cast<double>(stats.rhs_evaluations), "-", "Right-hand side evaluations", "Right-hand side evaluations");
   out.addScalar("integrator_error_estimate", stats.error_estimate, "-",
                 "Error estimate: implicit runs under a harmonic top motion, the expected probe error relative to "
                 "the motion, C (h/T)² (docs/riser.md); other runs, the integrator's relative global estimate (sum "
-                "of local estimates, docs/numerics.md)");
+                "of local estimates, docs/numerics.md)", "Integrator error estimate");
   // Plots.
   if (h.rows() > 1) addHistoryPlots(out);
   for (const auto& t : out.tables) {

@@ -228,9 +228,9 @@ SeabedContactState seabedContact(const RiserModel& m, const RiserPose& pose) {
 }
 
 void SeabedRecorder::addColumns(Table& history) const {
-  history.add("touchdown_arc_length", "m");
-  history.add("seabed_contact_length", "m");
-  history.add("seabed_normal_force", "N");
+  history.add("touchdown_arc_length", "m", {}, "Touchdown s_TD");
+  history.add("seabed_contact_length", "m", {}, "Length on the bed");
+  history.add("seabed_normal_force", "N", {}, "Bed normal force");
 }
 
 void SeabedRecorder::sample(const SeabedContactState& state, std::vector<double>& row) {
@@ -243,7 +243,7 @@ void SeabedRecorder::sample(const SeabedContactState& state, std::vector<double>
 }
 
 void SeabedRecorder::addProfileColumn(const SeabedContactState& state, Table& profile) const {
-  profile.add("seabed_line_load", "N/m", state.node_line_load);
+  profile.add("seabed_line_load", "N/m", state.node_line_load, "Bed line load");
 }
 
 void SeabedRecorder::addPlot(Results& out) const {
@@ -254,11 +254,15 @@ void SeabedRecorder::addPlot(Results& out) const {
 void SeabedRecorder::addScalars(Results& out) const {
   out.addScalar("touchdown_arc_length", touchdown_start_, "m",
                 "Arc length from the top of the first contact with the sea bed at the start (the static shape when "
-                "statics ran; L when nothing touches)");
-  out.addScalar("touchdown_arc_length_min", touchdown_min_, "m", "Smallest touchdown arc length over the run");
-  out.addScalar("touchdown_arc_length_max", touchdown_max_, "m", "Largest touchdown arc length over the run");
+                "statics ran; L when nothing touches)",
+                "Touchdown s_TD at the start");
+  out.addScalar("touchdown_arc_length_min", touchdown_min_, "m", "Smallest touchdown arc length over the run",
+                "min s_TD");
+  out.addScalar("touchdown_arc_length_max", touchdown_max_, "m", "Largest touchdown arc length over the run",
+                "max s_TD");
   out.addScalar("max_seabed_line_load", max_line_load_, "N/m",
-                "Largest contact force per unit length (normal and friction) at a node over the samples");
+                "Largest contact force per unit length (normal and friction) at a node over the samples",
+                "max bed line load");
 }
 
 Shape3D seabedSurface(const RiserSeabed& bed, const Eigen::Vector3d& centre, double half) {

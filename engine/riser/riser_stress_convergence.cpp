@@ -1,3 +1,4 @@
+#include "riser/riser_labels.hpp"
 #include "riser/riser_stress_convergence.hpp"
 
 #include <algorithm>
@@ -98,16 +99,16 @@ void addStressConvergence(const RiserParameters& p, Results& results, RunContext
                              "probe error %g of the motion)", probe, p.convergence_tolerance)
                 : formatText("Bending stress at probe 1 (s = %g m) against segment count n (the run's solver "
                              "settings)", probe);
-  t.add("segment_count", "-");
-  t.add("max_bending_stress", "Pa");
+  t.add("segment_count", "-", {}, riserColumnLabel("segment_count"));
+  t.add("max_bending_stress", "Pa", {}, riserColumnLabel("max_bending_stress"));
   std::vector<std::string> stress_columns = {"max_bending_stress"};
   for (double time : times) {
     stress_columns.push_back("bending_stress_t" + formatTime(time));
-    t.add(stress_columns.back(), "Pa");
+    t.add(stress_columns.back(), "Pa", {}, riserColumnLabel(stress_columns.back()));
   }
-  t.add("integrator_error_estimate", "-");
-  t.add("steps", "-");
-  t.add("wall_time", "s");
+  t.add("integrator_error_estimate", "-", {}, riserColumnLabel("integrator_error_estimate"));
+  t.add("steps", "-", {}, riserColumnLabel("steps"));
+  t.add("wall_time", "s", {}, riserColumnLabel("wall_time"));
   for (const ConvergenceRow& r : rows) {
     std::vector<double> values = {double(r.n), r.max_stress};
     values.insert(values.end(), r.at_times.begin(), r.at_times.end());
@@ -126,12 +127,12 @@ void addStressConvergence(const RiserParameters& p, Results& results, RunContext
     Table d;
     d.name = "bending_stress_difference_vs_segments";
     d.title = "Relative difference of the bending stress at probe 1 from n = " + std::to_string(finest.n);
-    d.add("segment_count", "-");
-    d.add("max_bending_stress_difference", "-");
+    d.add("segment_count", "-", {}, riserColumnLabel("segment_count"));
+    d.add("max_bending_stress_difference", "-", {}, riserColumnLabel("max_bending_stress_difference"));
     std::vector<std::string> difference_columns = {"max_bending_stress_difference"};
     for (double time : times) {
       difference_columns.push_back("bending_stress_t" + formatTime(time) + "_difference");
-      d.add(difference_columns.back(), "-");
+      d.add(difference_columns.back(), "-", {}, riserColumnLabel(difference_columns.back()));
     }
     auto relative = [](double value, double reference) {
       return reference != 0 ? std::abs(value / reference - 1) : std::abs(value);

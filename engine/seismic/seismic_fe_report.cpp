@@ -53,30 +53,30 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
                   Results& results) {
   const bool reef = p.model == "reef";
   const double dt = c.time_step;
-  results.addScalar("element_size", c.element_size, "m", "Cell side Δ from Δ ≤ v_min/(10 f_cut)");
-  results.addScalar("cell_count", c.cell_count, "-", "Solid and water cells of the main model");
-  results.addScalar("time_step", dt, "s", "Central-difference step");
-  results.addScalar("stable_step", c.stable_step, "s", "Element (Irons) bound on the stable step");
+  results.addScalar("element_size", c.element_size, "m", "Cell side Δ from Δ ≤ v_min/(10 f_cut)", "Cell side Δ");
+  results.addScalar("cell_count", c.cell_count, "-", "Solid and water cells of the main model", "Cells");
+  results.addScalar("time_step", dt, "s", "Central-difference step", "Time step Δt");
+  results.addScalar("stable_step", c.stable_step, "s", "Element (Irons) bound on the stable step", "Stable step bound");
   results.stats.steps = c.steps;
   results.stats.method = "explicit central difference, lumped mass, dt = " + std::to_string(dt) + " s";
 
   // Amplification along the reef flat (paper eq 29).
   const PeakRatios r = amplificationRatios(c);
   Table amp{"amplification", reef ? "Peak ratios along the reef flat" : "Peak ratios along the seabed", {}};
-  amp.add("x", "m", c.station_x);
+  amp.add("x", "m", c.station_x, "x");
   std::vector<double> x_over_l;
   for (double x : c.station_x) x_over_l.push_back(x / (reef ? p.flat_width : 1.0));
-  amp.add("x_over_L", "-", x_over_l);
-  amp.add("R_ux", "-", r.ux);
-  amp.add("R_uy", "-", r.uy);
-  amp.add("R_vx", "-", r.vx);
-  amp.add("R_vy", "-", r.vy);
-  amp.add("R_ax", "-", r.ax);
-  amp.add("R_ay", "-", r.ay);
-  results.addScalar("max_R_ax", peak(r.ax), "-", "Largest horizontal peak-acceleration ratio along the flat");
-  results.addScalar("max_R_ay", peak(r.ay), "-", "Largest vertical peak-acceleration ratio along the flat");
-  results.addScalar("mean_R_ax", mean(r.ax), "-", "Mean horizontal peak-acceleration ratio along the flat");
-  results.addScalar("mean_R_ay", mean(r.ay), "-", "Mean vertical peak-acceleration ratio along the flat");
+  amp.add("x_over_L", "-", x_over_l, "x/L");
+  amp.add("R_ux", "-", r.ux, "R_ux");
+  amp.add("R_uy", "-", r.uy, "R_uy");
+  amp.add("R_vx", "-", r.vx, "R_vx");
+  amp.add("R_vy", "-", r.vy, "R_vy");
+  amp.add("R_ax", "-", r.ax, "R_ax");
+  amp.add("R_ay", "-", r.ay, "R_ay");
+  results.addScalar("max_R_ax", peak(r.ax), "-", "Largest horizontal peak-acceleration ratio along the flat", "max R_ax");
+  results.addScalar("max_R_ay", peak(r.ay), "-", "Largest vertical peak-acceleration ratio along the flat", "max R_ay");
+  results.addScalar("mean_R_ax", mean(r.ax), "-", "Mean horizontal peak-acceleration ratio along the flat", "mean R_ax");
+  results.addScalar("mean_R_ay", mean(r.ay), "-", "Mean vertical peak-acceleration ratio along the flat", "mean R_ay");
   std::vector<std::string> amp_y{"R_ax", "R_ay", "R_vx", "R_vy"};
   if (dry) {
     // Seawater deviation δ = (R_sloping platform − R_reef–seawater)/R_reef–seawater (paper eq 31).
@@ -86,18 +86,18 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
       dx.push_back((d.ax[s] - r.ax[s]) / r.ax[s]);
       dy.push_back((d.ay[s] - r.ay[s]) / r.ay[s]);
     }
-    amp.add("R_ax_dry", "-", d.ax);
-    amp.add("R_ay_dry", "-", d.ay);
-    amp.add("delta_ax", "-", dx);
-    amp.add("delta_ay", "-", dy);
+    amp.add("R_ax_dry", "-", d.ax, "R_ax without water");
+    amp.add("R_ay_dry", "-", d.ay, "R_ay without water");
+    amp.add("delta_ax", "-", dx, "δ of R_ax");
+    amp.add("delta_ay", "-", dy, "δ of R_ay");
     amp_y.insert(amp_y.end(), {"R_ax_dry", "R_ay_dry"});
     results.addScalar("water_deviation_mean_ax", (mean(d.ax) - mean(r.ax)) / mean(r.ax), "-",
-                      "δ of the mean horizontal R_a: (dry − wet)/wet (paper eq 31)");
+                      "δ of the mean horizontal R_a: (dry − wet)/wet (paper eq 31)", "Water effect on mean R_ax");
     results.addScalar("water_deviation_mean_ay", (mean(d.ay) - mean(r.ay)) / mean(r.ay), "-",
-                      "δ of the mean vertical R_a: (dry − wet)/wet (paper eq 31)");
+                      "δ of the mean vertical R_a: (dry − wet)/wet (paper eq 31)", "Water effect on mean R_ay");
     double worst = 0.0;
     for (std::size_t s = 0; s < dx.size(); ++s) worst = std::max({worst, std::abs(dx[s]), std::abs(dy[s])});
-    results.addScalar("water_deviation_max", worst, "-", "Largest pointwise |δ| of R_a along the flat");
+    results.addScalar("water_deviation_max", worst, "-", "Largest pointwise |δ| of R_a along the flat", "max |δ| water effect");
   }
   results.tables.push_back(std::move(amp));
   results.plots.push_back({"amplification", "Peak ratios R along the flat", "amplification", "x_over_L", amp_y, false,
@@ -111,7 +111,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   const auto a0 = fourierAmplitude(timeRate(timeRate(c.incident, dt), dt), dt, n_fft);
   const double a0_max = *std::max_element(a0.begin(), a0.end());
   Table spec{"spectral_ratio", "Acceleration Fourier spectral ratios H_a", {}};
-  auto& f_col = spec.add("frequency", "Hz").values;
+  auto& f_col = spec.add("frequency", "Hz", {}, "Frequency f").values;
   std::vector<std::vector<double>> h(6);
   std::vector<std::vector<double>> s_ax(3), s_ay(3);
   const std::size_t which[3] = {0, mid, last};
@@ -130,7 +130,9 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
     }
   }
   const char* names[6] = {"Hax_left", "Hax_centre", "Hax_right", "Hay_left", "Hay_centre", "Hay_right"};
-  for (int w = 0; w < 6; ++w) spec.add(names[w], "-", h[w]);
+  const char* labels[6] = {"H_ax, left edge", "H_ax, centre", "H_ax, right edge", "H_ay, left edge", "H_ay, centre",
+                           "H_ay, right edge"};
+  for (int w = 0; w < 6; ++w) spec.add(names[w], "-", h[w], labels[w]);
   results.tables.push_back(std::move(spec));
   results.plots.push_back({"spectral_ratio", "Acceleration spectral ratios", "spectral_ratio", "frequency",
                            {"Hax_left", "Hax_centre", "Hax_right", "Hay_centre"}, false, false, "", {}});
@@ -153,13 +155,13 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
       hy_f.push_back(fy);
     }
     Table along{"spectral_ratio_along_flat", "Largest H_a per station and its frequency", {}};
-    along.add("x_over_L", "-", xl);
-    along.add("Hax_max", "-", hx_max);
-    along.add("Hax_peak_frequency", "Hz", hx_f);
-    along.add("Hay_max", "-", hy_max);
-    along.add("Hay_peak_frequency", "Hz", hy_f);
-    results.addScalar("max_H_ax", peak(hx_max), "-", "Largest horizontal spectral ratio H_a,x along the flat");
-    results.addScalar("max_H_ay", peak(hy_max), "-", "Largest vertical spectral ratio H_a,y along the flat");
+    along.add("x_over_L", "-", xl, "x/L");
+    along.add("Hax_max", "-", hx_max, "max H_ax");
+    along.add("Hax_peak_frequency", "Hz", hx_f, "f at max H_ax");
+    along.add("Hay_max", "-", hy_max, "max H_ay");
+    along.add("Hay_peak_frequency", "Hz", hy_f, "f at max H_ay");
+    results.addScalar("max_H_ax", peak(hx_max), "-", "Largest horizontal spectral ratio H_a,x along the flat", "max H_ax");
+    results.addScalar("max_H_ay", peak(hy_max), "-", "Largest vertical spectral ratio H_a,y along the flat", "max H_ay");
     results.tables.push_back(std::move(along));
     results.plots.push_back({"spectral_ratio_along_flat", "Largest spectral ratio along the flat",
                              "spectral_ratio_along_flat", "x_over_L", {"Hax_max", "Hay_max"}, false, false, "", {}});
@@ -200,13 +202,13 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
       ux.push_back(peak(q.ux));
       uy.push_back(peak(q.uy));
     }
-    s.add("angle", "deg", ang);
-    s.add("max_R_ax", "-", mx);
-    s.add("max_R_ay", "-", my);
-    s.add("mean_R_ax", "-", ax);
-    s.add("mean_R_ay", "-", ay);
-    s.add("max_R_ux", "-", ux);
-    s.add("max_R_uy", "-", uy);
+    s.add("angle", "deg", ang, "Incidence angle");
+    s.add("max_R_ax", "-", mx, "max R_ax");
+    s.add("max_R_ay", "-", my, "max R_ay");
+    s.add("mean_R_ax", "-", ax, "mean R_ax");
+    s.add("mean_R_ay", "-", ay, "mean R_ay");
+    s.add("max_R_ux", "-", ux, "max R_ux");
+    s.add("max_R_uy", "-", uy, "max R_uy");
     results.tables.push_back(std::move(s));
     results.plots.push_back({"angle_sweep", "Amplification vs incidence angle", "angle_sweep", "angle",
                              {"max_R_ax", "max_R_ay", "mean_R_ax", "mean_R_ay"}, false, false, "", {}});
@@ -218,11 +220,11 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
 void addStationHistories(const FeCase& c, Results& results) {
   const std::size_t last = c.ux.size() - 1, mid = last / 2;
   Table hist{"station_histories", "Displacement at the flat's edges and centre", {}};
-  hist.add("time", "s", sampleTimes(c));
-  hist.add("incident", "m", c.incident);
+  hist.add("time", "s", sampleTimes(c), "Time");
+  hist.add("incident", "m", c.incident, "Incident u₀");
   for (auto [name, s] : {std::pair{"left", std::size_t{0}}, std::pair{"centre", mid}, std::pair{"right", last}}) {
-    hist.add(std::string("ux_") + name, "m", c.ux[s]);
-    hist.add(std::string("uy_") + name, "m", c.uy[s]);
+    hist.add(std::string("ux_") + name, "m", c.ux[s], std::string("u_x, ") + name);
+    hist.add(std::string("uy_") + name, "m", c.uy[s], std::string("u_y, ") + name);
   }
   results.tables.push_back(std::move(hist));
   results.plots.push_back({"station_histories", "Displacement histories on the flat", "station_histories", "time",
@@ -232,13 +234,13 @@ void addStationHistories(const FeCase& c, Results& results) {
 void addVerificationHistories(const FeCase& c, Results& results) {
   if (c.probe_fe_uy.empty()) return;
   Table v{"verification", "FE vs analytic free field at B (seabed) and A (water surface)", {}};
-  v.add("time", "s", sampleTimes(c));
-  v.add("fe_B_ux", "m", c.seabed_fe_ux);
-  v.add("free_B_ux", "m", c.seabed_ff_ux);
-  v.add("fe_B_uy", "m", c.seabed_fe_uy);
-  v.add("free_B_uy", "m", c.seabed_ff_uy);
-  v.add("fe_A_uy", "m", c.probe_fe_uy);
-  v.add("free_A_uy", "m", c.probe_ff_uy);
+  v.add("time", "s", sampleTimes(c), "Time");
+  v.add("fe_B_ux", "m", c.seabed_fe_ux, "FE u_x at B");
+  v.add("free_B_ux", "m", c.seabed_ff_ux, "Free field u_x at B");
+  v.add("fe_B_uy", "m", c.seabed_fe_uy, "FE u_y at B");
+  v.add("free_B_uy", "m", c.seabed_ff_uy, "Free field u_y at B");
+  v.add("fe_A_uy", "m", c.probe_fe_uy, "FE u_y at A");
+  v.add("free_A_uy", "m", c.probe_ff_uy, "Free field u_y at A");
   results.tables.push_back(std::move(v));
   results.plots.push_back({"verification", "FE vs free field", "verification", "time",
                            {"fe_B_uy", "free_B_uy", "fe_A_uy", "free_A_uy"}, false, false, "", {}});
@@ -276,11 +278,11 @@ void addDiscretisationEstimate(const FeCase& main, const FeCase& coarse, Results
   const PeakRatios fine = amplificationRatios(main), rough = amplificationRatios(coarse);
   const double change_x = std::abs(peak(rough.ax) / peak(fine.ax) - 1.0);
   const double change_y = std::abs(peak(rough.ay) / peak(fine.ay) - 1.0);
-  results.addScalar("coarse_element_size", coarse.element_size, "m", "Cell side of the error-estimate companion mesh");
+  results.addScalar("coarse_element_size", coarse.element_size, "m", "Cell side of the error-estimate companion mesh", "Coarse cell side");
   results.addScalar("mesh_change_max_R_ax", change_x, "-",
-                    "Relative change of the largest R_a,x on the flat, main vs companion mesh");
+                    "Relative change of the largest R_a,x on the flat, main vs companion mesh", "Mesh change of max R_ax");
   results.addScalar("mesh_change_max_R_ay", change_y, "-",
-                    "Relative change of the largest R_a,y on the flat, main vs companion mesh");
+                    "Relative change of the largest R_a,y on the flat, main vs companion mesh", "Mesh change of max R_ay");
   results.stats.error_estimate = std::max(change_x, change_y);
   results.stats.error_unit = "relative change of the largest R_a on the flat between Δ = " +
                              std::to_string(main.element_size) + " m and " + std::to_string(coarse.element_size) + " m";

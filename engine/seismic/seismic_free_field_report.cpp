@@ -57,9 +57,9 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
   const double deg = 180.0 / std::numbers::pi;
   if (field.type() == WaveType::SV) {
     results.addScalar("sv_critical_angle", FreeField::criticalAngleSv(field.solid()) * deg, "deg",
-                      "SV incidence limit asin(vs/vp) of the seabed");
+                      "SV incidence limit asin(vs/vp) of the seabed", "SV critical angle");
     results.addScalar("reflected_p_evanescent", field.reflectedPEvanescent() ? 1.0 : 0.0, "-",
-                      "1 when SV is beyond the critical angle: the reflected P is evanescent (complex Snell's law)");
+                      "1 when SV is beyond the critical angle: the reflected P is evanescent (complex Snell's law)", "Reflected P evanescent (1 = yes)");
     if (field.reflectedPEvanescent())
       ctx.warn("SV at " + std::to_string(field.angle() * deg) + " deg is beyond the critical angle " +
                std::to_string(FreeField::criticalAngleSv(field.solid()) * deg) +
@@ -69,7 +69,7 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
   if (h > 0.0) {
     const double sin_f = field.horizontalSlowness() * field.water().sound_speed;
     results.addScalar("water_resonance_frequency", field.water().sound_speed / (4.0 * h * std::sqrt(1.0 - sin_f * sin_f)),
-                      "Hz", "First water-column resonance c_f/(4h cos θ_f): the seabed's vertical motion vanishes");
+                      "Hz", "First water-column resonance c_f/(4h cos θ_f): the seabed's vertical motion vanishes", "Water-layer resonance f");
   }
 
   // Transfer functions per unit incident displacement, 0–2 f_cut.
@@ -88,12 +88,12 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
     ay.push_back(h > 0.0 ? std::abs(field.waterAt(a, w, 0.0, h).uy) : std::abs(b.uy));
     worst_energy = std::max(worst_energy, std::abs(field.energyResidual(a)));
   }
-  transfer.add("frequency", "Hz", f_col);
-  transfer.add("seabed_ux", "m/m", bx);
-  transfer.add("seabed_uy", "m/m", by);
-  transfer.add("surface_uy", "m/m", ay);
+  transfer.add("frequency", "Hz", f_col, "Frequency f");
+  transfer.add("seabed_ux", "m/m", bx, "Seabed u_x");
+  transfer.add("seabed_uy", "m/m", by, "Seabed u_y");
+  transfer.add("surface_uy", "m/m", ay, "Surface u_y");
   results.addScalar("free_field_energy_residual", worst_energy, "-",
-                    "Largest |reflected/incident energy flux − 1| over the transfer-function frequencies");
+                    "Largest |reflected/incident energy flux − 1| over the transfer-function frequencies", "Free-field energy residual");
   results.tables.push_back(std::move(transfer));
   results.plots.push_back({"free_field_transfer", "Free-field transfer functions (B seabed, A water surface)",
                            "free_field_transfer", "frequency", {"seabed_ux", "seabed_uy", "surface_uy"}, false, false,
@@ -107,35 +107,35 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
   const FreeFieldSynthesis synthesis(field, u0, 0.0, dt);
   const auto seabed = synthesis.solid(0.0);
   Table hist{"free_field_histories", "Free-field displacement histories", {}};
-  auto& t = hist.add("time", "s").values;
+  auto& t = hist.add("time", "s", {}, "Time").values;
   for (int k = 0; k < n; ++k) t.push_back(k * dt);
-  hist.add("incident", "m", u0);
-  hist.add("seabed_ux", "m", seabed.ux);
-  hist.add("seabed_uy", "m", seabed.uy);
+  hist.add("incident", "m", u0, "Incident u₀");
+  hist.add("seabed_ux", "m", seabed.ux, "Seabed u_x");
+  hist.add("seabed_uy", "m", seabed.uy, "Seabed u_y");
   std::vector<std::string> ys{"incident", "seabed_ux", "seabed_uy"};
   auto peak = [](const std::vector<double>& v) {
     double m = 0.0;
     for (double x : v) m = std::max(m, std::abs(x));
     return m;
   };
-  results.addScalar("free_field_seabed_peak_ux", peak(seabed.ux), "m", "Peak |u_x| of the free field at the seabed (B)");
-  results.addScalar("free_field_seabed_peak_uy", peak(seabed.uy), "m", "Peak |u_y| of the free field at the seabed (B)");
+  results.addScalar("free_field_seabed_peak_ux", peak(seabed.ux), "m", "Peak |u_x| of the free field at the seabed (B)", "Free-field peak u_x at B");
+  results.addScalar("free_field_seabed_peak_uy", peak(seabed.uy), "m", "Peak |u_y| of the free field at the seabed (B)", "Free-field peak u_y at B");
   if (field.reflectedPEvanescent()) {
     // The FE model starts from rest: what the precursor leaves at t = 0 is an initial-state error.
     const double start = std::max(std::abs(seabed.ux.front()), std::abs(seabed.uy.front()));
     const double offset = start / std::max({peak(seabed.ux), peak(seabed.uy), 1e-300});
     results.addScalar("free_field_precursor_at_start", offset, "-",
-                      "Free-field displacement at B at t = 0 over its peak (evanescent case; the FE starts at rest)");
+                      "Free-field displacement at B at t = 0 over its peak (evanescent case; the FE starts at rest)", "Free-field precursor at start");
     if (offset > 0.01)
       ctx.warn("the free-field precursor at t = 0 is " + std::to_string(100.0 * offset) +
                " % of the peak at the seabed: use a zero-mean input (Ricker) or a later arrival");
   }
   if (h > 0.0) {
     const auto surface = synthesis.water(h);
-    hist.add("surface_uy", "m", surface.uy);
+    hist.add("surface_uy", "m", surface.uy, "Surface u_y");
     ys.push_back("surface_uy");
     results.addScalar("free_field_surface_peak_uy", peak(surface.uy), "m",
-                      "Peak |u_y| of the free field at the water surface (A)");
+                      "Peak |u_y| of the free field at the water surface (A)", "Free-field peak u_y at A");
   }
   results.tables.push_back(std::move(hist));
   results.plots.push_back(

@@ -26,7 +26,7 @@ std::shared_ptr<const Results> partialSeismicResults(const SeismicParameters& p,
                                                      const FeCase& so_far) {
   auto out = std::make_shared<Results>(free_field);
   const double reached = so_far.incident.empty() ? 0.0 : (so_far.incident.size() - 1) * so_far.time_step;
-  out->addScalar("time_reached", reached, "s", "Simulated time the main finite-element run has reached so far");
+  out->addScalar("time_reached", reached, "s", "Simulated time the main finite-element run has reached so far", "Time reached");
   addStationHistories(so_far, *out);
   addVerificationHistories(so_far, *out);
   addWaveFieldFrames(p, so_far, *out);

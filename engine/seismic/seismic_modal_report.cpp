@@ -44,15 +44,15 @@ void addModalResults(const SeismicParameters& p, Results& results, RunContext& c
     water.push_back(m.water_share);
     worst = std::max(worst, m.residual);
   }
-  t.add("mode", "-", index);
-  t.add("frequency", "Hz", f);
-  t.add("horizontal_share", "-", horizontal);
-  t.add("reef_share", "-", reef);
-  t.add("top_layer_share", "-", top);
-  t.add("mass_ratio_x", "-", mx);
-  t.add("mass_ratio_y", "-", my);
-  t.add("residual", "-", residual);
-  if (wet) t.add("water_share", "-", water);
+  t.add("mode", "-", index, "Mode");
+  t.add("frequency", "Hz", f, "Frequency f");
+  t.add("horizontal_share", "-", horizontal, "Horizontal share");
+  t.add("reef_share", "-", reef, "Reef share");
+  t.add("top_layer_share", "-", top, "Top-layer share");
+  t.add("mass_ratio_x", "-", mx, "Mass ratio x");
+  t.add("mass_ratio_y", "-", my, "Mass ratio y");
+  t.add("residual", "-", residual, "Residual");
+  if (wet) t.add("water_share", "-", water, "Water share");
   results.tables.push_back(std::move(t));
   results.plots.push_back({"modes", "Modal effective masses", "modes", "frequency", {"mass_ratio_x", "mass_ratio_y"},
                            false, false, "", {}});
@@ -60,12 +60,12 @@ void addModalResults(const SeismicParameters& p, Results& results, RunContext& c
   // Global modes: the largest effective mass in x and in y among the computed modes.
   const auto gx = std::max_element(mx.begin(), mx.end()) - mx.begin();
   const auto gy = std::max_element(my.begin(), my.end()) - my.begin();
-  results.addScalar("mode_1_frequency", f[0], "Hz", "Lowest natural frequency of the solid reef and seabed");
+  results.addScalar("mode_1_frequency", f[0], "Hz", "Lowest natural frequency of the solid reef and seabed", "f₁");
   results.addScalar("global_horizontal_mode_frequency", f[gx], "Hz",
-                    "Computed mode with the largest horizontal effective mass (paper: 0.42 Hz for its reef)");
+                    "Computed mode with the largest horizontal effective mass (paper: 0.42 Hz for its reef)", "f of the global horizontal mode");
   results.addScalar("global_vertical_mode_frequency", f[gy], "Hz",
-                    "Computed mode with the largest vertical effective mass (paper: 0.51 Hz for its reef)");
-  results.addScalar("modal_residual_max", worst, "-", "Largest ‖Kx − ω²Mx‖/‖Kx‖ of the reported modes");
+                    "Computed mode with the largest vertical effective mass (paper: 0.51 Hz for its reef)", "f of the global vertical mode");
+  results.addScalar("modal_residual_max", worst, "-", "Largest ‖Kx − ω²Mx‖/‖Kx‖ of the reported modes", "max modal residual");
 }
 
 }  // namespace maris::seismic

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "core/spectrum.hpp"
+#include "core/text_format.hpp"
 #include "seismic/seismic_solve.hpp"
 
 namespace maris::seismic {
@@ -79,15 +80,15 @@ void addSpectralMap(const SeismicParameters& p, const FeCase& c, Results& result
     }
   Table long_table{"spectral_ratio_map", "Spectral ratio map H_a(x, f) along the flat (one row per station and frequency)",
                    {}};
-  long_table.add("x_over_L", "-", xl);
-  long_table.add("frequency", "Hz", f);
-  long_table.add("H_ax", "-", hx);
-  long_table.add("H_ay", "-", hy);
+  long_table.add("x_over_L", "-", xl, "x/L");
+  long_table.add("frequency", "Hz", f, "Frequency f");
+  long_table.add("H_ax", "-", hx, "H_ax");
+  long_table.add("H_ay", "-", hy, "H_ay");
   results.tables.push_back(std::move(long_table));
 
   // Wide format: H_a(f) at five points of the flat.
   Table lines{"spectral_ratio_lines", "Spectral ratios H_a(f) at x/L = -1/2, -1/4, 0, 1/4, 1/2", {}};
-  lines.add("frequency", "Hz", map.frequency);
+  lines.add("frequency", "Hz", map.frequency, "Frequency f");
   const std::pair<double, const char*> points[] = {
       {-0.5, "m050"}, {-0.25, "m025"}, {0.0, "p000"}, {0.25, "p025"}, {0.5, "p050"}};
   std::vector<std::string> x_names, y_names;
@@ -95,8 +96,9 @@ void addSpectralMap(const SeismicParameters& p, const FeCase& c, Results& result
     std::size_t best = 0;
     for (std::size_t s = 1; s < c.station_x.size(); ++s)
       if (std::abs(c.station_x[s] / length - where) < std::abs(c.station_x[best] / length - where)) best = s;
-    lines.add(std::string("Hax_x") + tag, "-", map.hx[best]);
-    lines.add(std::string("Hay_x") + tag, "-", map.hy[best]);
+    const std::string at = formatText(", x/L = %g", where);
+    lines.add(std::string("Hax_x") + tag, "-", map.hx[best], "H_ax" + at);
+    lines.add(std::string("Hay_x") + tag, "-", map.hy[best], "H_ay" + at);
     x_names.push_back(std::string("Hax_x") + tag);
     y_names.push_back(std::string("Hay_x") + tag);
   }

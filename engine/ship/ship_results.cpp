@@ -19,37 +19,37 @@ std::size_t designIndex(const ResistanceCurves& c, double design_froude) {
 
 void addParticulars(Results& r, const ShipModel& m) {
   const HullParticulars& q = m.particulars;
-  r.addScalar("length_pp", q.length_pp, "m", "Length between perpendiculars Lpp");
-  r.addScalar("length_wl", q.length_wl, "m", "Waterline length");
-  r.addScalar("beam_wl", q.beam_wl, "m", "Waterline beam");
-  r.addScalar("draft", q.draft, "m", "Moulded draft T (deepest keel point in the middle half of Lpp)");
-  r.addScalar("max_depth", q.max_depth, "m", "Deepest point of the hull below the waterline (domes, keels)");
-  r.addScalar("displacement_volume", q.volume, "m^3", "Displacement volume");
-  r.addScalar("displacement_mass", q.volume * m.water.density, "kg", "Displacement mass");
-  r.addScalar("wetted_surface_geometry", q.wetted_surface, "m^2", "Wetted surface computed from the grid");
-  r.addScalar("wetted_surface", m.wetted_surface, "m^2", "Wetted surface used for the coefficients");
-  r.addScalar("waterplane_area", q.waterplane_area, "m^2", "Waterplane area");
-  r.addScalar("block_coefficient", q.block_coefficient, "-", "C_B = volume/(Lpp B T)");
-  r.addScalar("prismatic_coefficient", q.prismatic_coefficient, "-", "C_P = volume/(A_M Lpp)");
-  r.addScalar("midship_coefficient", q.midship_coefficient, "-", "C_M = A_M/(B T), A_M the largest section");
-  r.addScalar("waterplane_coefficient", q.waterplane_coefficient, "-", "C_WP = A_WP/(Lpp B)");
-  r.addScalar("lcb", q.lcb_percent, "%", "LCB forward of midship, % of Lpp");
-  r.addScalar("form_factor", m.form_factor, "-", "Form factor 1+k used for C_T");
+  r.addScalar("length_pp", q.length_pp, "m", "Length between perpendiculars Lpp", "L_pp");
+  r.addScalar("length_wl", q.length_wl, "m", "Waterline length", "L_WL");
+  r.addScalar("beam_wl", q.beam_wl, "m", "Waterline beam", "B_WL");
+  r.addScalar("draft", q.draft, "m", "Moulded draft T (deepest keel point in the middle half of Lpp)", "Draft T");
+  r.addScalar("max_depth", q.max_depth, "m", "Deepest point of the hull below the waterline (domes, keels)", "Maximum depth");
+  r.addScalar("displacement_volume", q.volume, "m^3", "Displacement volume", "Displacement ∇");
+  r.addScalar("displacement_mass", q.volume * m.water.density, "kg", "Displacement mass", "Displacement Δ");
+  r.addScalar("wetted_surface_geometry", q.wetted_surface, "m^2", "Wetted surface computed from the grid", "Wetted surface S (grid)");
+  r.addScalar("wetted_surface", m.wetted_surface, "m^2", "Wetted surface used for the coefficients", "Wetted surface S");
+  r.addScalar("waterplane_area", q.waterplane_area, "m^2", "Waterplane area", "Waterplane area A_WP");
+  r.addScalar("block_coefficient", q.block_coefficient, "-", "C_B = volume/(Lpp B T)", "C_B");
+  r.addScalar("prismatic_coefficient", q.prismatic_coefficient, "-", "C_P = volume/(A_M Lpp)", "C_P");
+  r.addScalar("midship_coefficient", q.midship_coefficient, "-", "C_M = A_M/(B T), A_M the largest section", "C_M");
+  r.addScalar("waterplane_coefficient", q.waterplane_coefficient, "-", "C_WP = A_WP/(Lpp B)", "C_WP");
+  r.addScalar("lcb", q.lcb_percent, "%", "LCB forward of midship, % of Lpp", "LCB");
+  r.addScalar("form_factor", m.form_factor, "-", "Form factor 1+k used for C_T", "Form factor 1+k");
   r.addScalar("holtrop_form_factor", holtropFormFactor(m.holtrop_hull, m.holtrop_edition), "-",
-              "Holtrop's regression 1+k1");
+              "Holtrop's regression 1+k1", "Holtrop 1+k");
   if (m.prohaska) {
-    r.addScalar("prohaska_points", m.prohaska->points, "-", "Measured points in Prohaska's fit");
-    r.addScalar("prohaska_slope", m.prohaska->slope, "-", "Slope c of C_T/C_F = (1+k) + c Fn^4/C_F");
-    r.addScalar("prohaska_rms_residual", m.prohaska->rms_residual, "-", "RMS residual of C_T/C_F about the fit");
+    r.addScalar("prohaska_points", m.prohaska->points, "-", "Measured points in Prohaska's fit", "Prohaska points");
+    r.addScalar("prohaska_slope", m.prohaska->slope, "-", "Slope c of C_T/C_F = (1+k) + c Fn^4/C_F", "Prohaska slope c");
+    r.addScalar("prohaska_rms_residual", m.prohaska->rms_residual, "-", "RMS residual of C_T/C_F about the fit", "Prohaska RMS residual");
   }
-  r.addScalar("water_density", m.water.density, "kg/m^3", "Water density");
-  r.addScalar("kinematic_viscosity", m.water.kinematic_viscosity, "m^2/s", "Kinematic viscosity");
+  r.addScalar("water_density", m.water.density, "kg/m^3", "Water density", "ρ");
+  r.addScalar("kinematic_viscosity", m.water.kinematic_viscosity, "m^2/s", "Kinematic viscosity", "ν");
   if (m.fore_shoulder.distance > 0) {
     r.addScalar("fore_shoulder_ratio", m.fore_shoulder.arc_length / m.fore_shoulder.distance, "-",
-                "s_FS/l_FS: waterline arc over distance from FP to the fore shoulder");
-    r.addScalar("fore_shoulder_distance", m.fore_shoulder.distance, "m", "l_FS: fore shoulder aft of the FP");
+                "s_FS/l_FS: waterline arc over distance from FP to the fore shoulder", "Fore shoulder arc/chord");
+    r.addScalar("fore_shoulder_distance", m.fore_shoulder.distance, "m", "l_FS: fore shoulder aft of the FP", "l_FS");
   }
-  r.addScalar("wave_number_factor", m.wave_number_factor, "-", "k0_hat/k0 applied by the wave-number correction");
+  r.addScalar("wave_number_factor", m.wave_number_factor, "-", "k0_hat/k0 applied by the wave-number correction", "k̂₀/k₀");
 }
 
 // The hull as two Surface shapes (port and starboard), sampled coarser than the Michell grid.
@@ -116,21 +116,21 @@ void addResistanceCurves(Results& r, const ShipParameters& p, const ShipModel& m
     rth.push_back(c.holtrop[i].total);
     cth.push_back(rth.back() / q(i));
   }
-  t.add("froude", "-", c.froude);
-  t.add("speed", "m/s", c.speed);
-  t.add("c_wave", "-", cw);
-  t.add("c_wave_error", "-", cw_err);
-  if (corrected) t.add("c_wave_corrected", "-", cwc);
-  if (exact) t.add("c_wave_exact", "-", cwe);
-  t.add("c_wave_holtrop", "-", cwh);
-  t.add("c_friction", "-", c.c_friction);
-  t.add("c_total", "-", ct);
-  if (corrected) t.add("c_total_corrected", "-", ctc);
-  t.add("c_total_holtrop", "-", cth);
-  t.add("r_wave", "N", rw);
-  t.add("r_total", "N", rt);
-  if (corrected) t.add("r_total_corrected", "N", rtc);
-  t.add("r_total_holtrop", "N", rth);
+  t.add("froude", "-", c.froude, "Fn");
+  t.add("speed", "m/s", c.speed, "Model speed U");
+  t.add("c_wave", "-", cw, "C_W Michell");
+  t.add("c_wave_error", "-", cw_err, "C_W error estimate");
+  if (corrected) t.add("c_wave_corrected", "-", cwc, "C_W corrected");
+  if (exact) t.add("c_wave_exact", "-", cwe, "C_W exact Kochin");
+  t.add("c_wave_holtrop", "-", cwh, "C_W Holtrop-Mennen");
+  t.add("c_friction", "-", c.c_friction, "C_F ITTC-57");
+  t.add("c_total", "-", ct, "C_T Michell");
+  if (corrected) t.add("c_total_corrected", "-", ctc, "C_T corrected");
+  t.add("c_total_holtrop", "-", cth, "C_T Holtrop-Mennen");
+  t.add("r_wave", "N", rw, "R_W Michell");
+  t.add("r_total", "N", rt, "R_T Michell");
+  if (corrected) t.add("r_total_corrected", "N", rtc, "R_T corrected");
+  t.add("r_total_holtrop", "N", rth, "R_T Holtrop-Mennen");
   // Full scale at equal Fn: C_TS = C_W + (1+k) C_F(Re_S) + C_A in sea water, S_S = S (L_S/L)².
   const bool full_scale = p.ship_length > 0;
   if (full_scale) {
@@ -143,10 +143,10 @@ void addResistanceCurves(Results& r, const ShipParameters& p, const ShipModel& m
       cts.push_back(cw[i] + m.form_factor * cfs.back() + p.correlation_allowance);
       rts.push_back(cts.back() * 0.5 * sea.density * us.back() * us.back() * S * ratio * ratio);
     }
-    t.add("ship_speed", "m/s", us);
-    t.add("c_friction_ship", "-", cfs);
-    t.add("c_total_ship", "-", cts);
-    t.add("r_total_ship", "N", rts);
+    t.add("ship_speed", "m/s", us, "Ship speed U_S");
+    t.add("c_friction_ship", "-", cfs, "C_F ship");
+    t.add("c_total_ship", "-", cts, "C_T ship");
+    t.add("r_total_ship", "N", rts, "R_T ship");
   }
   r.tables.push_back(std::move(t));
 
@@ -166,9 +166,9 @@ void addResistanceCurves(Results& r, const ShipParameters& p, const ShipModel& m
     const MeasuredPoints& mp = *measured;
     Table mt;
     mt.name = "measured";
-    mt.title = "Measured points (" + p.measured_file + ")";
-    mt.add("froude", "-", mp.froude);
-    mt.add("c_total", "-", mp.c_total);
+    mt.title = "Measured points";  // the legend's words; the file is named in the scenario
+    mt.add("froude", "-", mp.froude, "Fn");
+    mt.add("c_total", "-", mp.c_total, "C_T measured");
     r.tables.push_back(std::move(mt));
     ct_plot.reference_table = "measured";
     ct_plot.reference_y = {"c_total"};
@@ -199,15 +199,15 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   // Design speed: scalars and the wave-angle spectrum.
   const std::size_t d = designIndex(c, p.design_froude);
   addParticulars(r, m);
-  r.addScalar("design_froude", c.froude[d], "-", "Froude number of the design-speed results");
-  r.addScalar("design_speed", c.speed[d], "m/s", "Speed at the design Froude number");
-  r.addScalar("c_wave", at("c_wave", d), "-", "Michell wave resistance coefficient at the design speed");
-  r.addScalar("c_wave_error", at("c_wave_error", d), "-", "Error estimate of c_wave (quadrature + tail + grid)");
-  if (corrected) r.addScalar("c_wave_corrected", at("c_wave_corrected", d), "-", "Corrected wave resistance coefficient");
-  r.addScalar("c_friction", c.c_friction[d], "-", "ITTC-57 friction coefficient at the design speed");
-  r.addScalar("c_total", at("c_total", d), "-", "C_T = C_W + (1+k) C_F + C_A (uncorrected Michell)");
-  r.addScalar("r_total", at("r_total", d), "N", "Total resistance at the design speed (uncorrected Michell)");
-  r.addScalar("r_total_holtrop", at("r_total_holtrop", d), "N", "Holtrop-Mennen total resistance at the design speed");
+  r.addScalar("design_froude", c.froude[d], "-", "Froude number of the design-speed results", "Design Fn");
+  r.addScalar("design_speed", c.speed[d], "m/s", "Speed at the design Froude number", "Design speed U");
+  r.addScalar("c_wave", at("c_wave", d), "-", "Michell wave resistance coefficient at the design speed", "C_W");
+  r.addScalar("c_wave_error", at("c_wave_error", d), "-", "Error estimate of c_wave (quadrature + tail + grid)", "C_W error estimate");
+  if (corrected) r.addScalar("c_wave_corrected", at("c_wave_corrected", d), "-", "Corrected wave resistance coefficient", "C_W corrected");
+  r.addScalar("c_friction", c.c_friction[d], "-", "ITTC-57 friction coefficient at the design speed", "C_F");
+  r.addScalar("c_total", at("c_total", d), "-", "C_T = C_W + (1+k) C_F + C_A (uncorrected Michell)", "C_T");
+  r.addScalar("r_total", at("r_total", d), "N", "Total resistance at the design speed (uncorrected Michell)", "R_T");
+  r.addScalar("r_total_holtrop", at("r_total_holtrop", d), "N", "Holtrop-Mennen total resistance at the design speed", "R_T Holtrop-Mennen");
   context.progress(0.95, "wave spectrum");
   {
     std::vector<double> theta, theta_deg;
@@ -219,12 +219,14 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     Table s;
     s.name = "wave_spectrum";
     s.title = "Wave-angle spectrum dR_W/dtheta at Fn = " + std::to_string(c.froude[d]);
-    s.add("theta_deg", "deg", theta_deg);
-    s.add("dr_dtheta", "N/rad", waveSpectrum(kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, false), theta));
+    s.add("theta_deg", "deg", theta_deg, "Wave angle θ");
+    s.add("dr_dtheta", "N/rad", waveSpectrum(kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, false), theta),
+          "dR_W/dθ Michell");
     if (corrected) {
       auto corrected_kochin = correctedKochin(m);
       s.add("dr_dtheta_corrected", "N/rad",
-            waveSpectrum(*corrected_kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, true), theta));
+            waveSpectrum(*corrected_kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, true), theta),
+            "dR_W/dθ corrected");
     }
     r.tables.push_back(std::move(s));
   }
@@ -243,10 +245,10 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
       y.push_back(m.grid.half_breadth(i, j));
       ye.push_back(corrected_grid.half_breadth(i, j));
     }
-    b.add("x", "m", x);
-    b.add("half_breadth", "m", y);
-    b.add("displacement_thickness", "m", dstar);
-    b.add("corrected_half_breadth", "m", ye);
+    b.add("x", "m", x, "x");
+    b.add("half_breadth", "m", y, "Half-breadth y");
+    b.add("displacement_thickness", "m", dstar, "Displacement thickness δ*");
+    b.add("corrected_half_breadth", "m", ye, "Half-breadth y + δ*");
     r.tables.push_back(std::move(b));
   }
 

@@ -22,76 +22,82 @@ std::vector<double> column(const SimulationOutput& sim, F f) {
 
 Table featureTable(const TetherParameters& p, const SimulationOutput& sim) {
   Table t{"features", "Features, shape and errors vs time", {}};
-  t.add("time", "s", column(sim, [](const TickRecord& r) { return r.time; }));
-  t.add("a", "-", column(sim, [](const TickRecord& r) { return r.features.a; }));
-  t.add("b", "-", column(sim, [](const TickRecord& r) { return r.features.b; }));
-  t.add("d", "-", column(sim, [](const TickRecord& r) { return r.features.d; }));
-  t.add("b1", "-", column(sim, [](const TickRecord& r) { return r.features.b1; }));
-  t.add("a_target", "-", std::vector<double>(sim.ticks.size(), p.target_a));
-  t.add("b_target", "-", std::vector<double>(sim.ticks.size(), p.target_b));
-  t.add("d_target", "-", std::vector<double>(sim.ticks.size(), p.target_d));
-  t.add("b1_target", "-", std::vector<double>(sim.ticks.size(), p.target_b1));
-  t.add("a_measured", "-", column(sim, [](const TickRecord& r) { return r.measured.a; }));
-  t.add("b_measured", "-", column(sim, [](const TickRecord& r) { return r.measured.b; }));
-  t.add("vision_held", "-", column(sim, [](const TickRecord& r) { return r.vision_held ? 1.0 : 0.0; }));
-  t.add("vision_fit_converged", "-", column(sim, [](const TickRecord& r) { return r.vision_converged ? 1.0 : 0.0; }));
-  t.add("visible_points", "-", column(sim, [](const TickRecord& r) { return double(r.visible_points); }));
-  t.add("error_norm", "-", column(sim, [](const TickRecord& r) { return std::max(r.error.norm(), 1e-16); }));
-  t.add("sag", "m", column(sim, [](const TickRecord& r) { return r.sag; }));
-  t.add("rise", "m", column(sim, [](const TickRecord& r) { return r.rise; }));
-  t.add("span", "m", column(sim, [](const TickRecord& r) { return r.span; }));
-  t.add("catenary_constant", "1/m", column(sim, [](const TickRecord& r) { return r.constant; }));
-  t.add("alpha2_deg", "deg", column(sim, [](const TickRecord& r) { return r.follower_angle * kToDegrees; }));
-  t.add("alpha1_deg", "deg", column(sim, [](const TickRecord& r) { return r.leader_angle * kToDegrees; }));
+  t.add("time", "s", column(sim, [](const TickRecord& r) { return r.time; }), "Time");
+  t.add("a", "-", column(sim, [](const TickRecord& r) { return r.features.a; }), "Feature a");
+  t.add("b", "-", column(sim, [](const TickRecord& r) { return r.features.b; }), "Feature b");
+  t.add("d", "-", column(sim, [](const TickRecord& r) { return r.features.d; }), "Feature d");
+  t.add("b1", "-", column(sim, [](const TickRecord& r) { return r.features.b1; }), "Feature b₁");
+  t.add("a_target", "-", std::vector<double>(sim.ticks.size(), p.target_a), "a*");
+  t.add("b_target", "-", std::vector<double>(sim.ticks.size(), p.target_b), "b*");
+  t.add("d_target", "-", std::vector<double>(sim.ticks.size(), p.target_d), "d*");
+  t.add("b1_target", "-", std::vector<double>(sim.ticks.size(), p.target_b1), "b₁*");
+  t.add("a_measured", "-", column(sim, [](const TickRecord& r) { return r.measured.a; }), "a measured");
+  t.add("b_measured", "-", column(sim, [](const TickRecord& r) { return r.measured.b; }), "b measured");
+  t.add("vision_held", "-", column(sim, [](const TickRecord& r) { return r.vision_held ? 1.0 : 0.0; }), "Vision held (1 = yes)");
+  t.add("vision_fit_converged", "-", column(sim, [](const TickRecord& r) { return r.vision_converged ? 1.0 : 0.0; }), "Vision fit converged (1 = yes)");
+  t.add("visible_points", "-", column(sim, [](const TickRecord& r) { return double(r.visible_points); }), "Visible points");
+  t.add("error_norm", "-", column(sim, [](const TickRecord& r) { return std::max(r.error.norm(), 1e-16); }), "|s − s*|");
+  t.add("sag", "m", column(sim, [](const TickRecord& r) { return r.sag; }), "Sag H");
+  t.add("rise", "m", column(sim, [](const TickRecord& r) { return r.rise; }), "Rise ΔH");
+  t.add("span", "m", column(sim, [](const TickRecord& r) { return r.span; }), "Span");
+  t.add("catenary_constant", "1/m", column(sim, [](const TickRecord& r) { return r.constant; }), "Catenary constant C");
+  t.add("alpha2_deg", "deg", column(sim, [](const TickRecord& r) { return r.follower_angle * kToDegrees; }), "α₂ follower");
+  t.add("alpha1_deg", "deg", column(sim, [](const TickRecord& r) { return r.leader_angle * kToDegrees; }), "α₁ leader");
   t.add("fits_model", "-", column(sim, [](const TickRecord& r) {
-          return r.regime == CatenaryRegime::Regular || r.regime == CatenaryRegime::NearlyTaut ? 1.0 : 0.0; }));
-  t.add("held", "-", column(sim, [](const TickRecord& r) { return r.held ? 1.0 : 0.0; }));
+          return r.regime == CatenaryRegime::Regular || r.regime == CatenaryRegime::NearlyTaut ? 1.0 : 0.0; }), "Fits the model (1 = yes)");
+  t.add("held", "-", column(sim, [](const TickRecord& r) { return r.held ? 1.0 : 0.0; }), "Command held (1 = yes)");
   return t;
 }
 
 Table commandTable(const SimulationOutput& sim) {
   Table t{"commands", "Follower commands, leader twist and poses vs time", {}};
-  t.add("time", "s", column(sim, [](const TickRecord& r) { return r.time; }));
+  t.add("time", "s", column(sim, [](const TickRecord& r) { return r.time; }), "Time");
   const char* names[] = {"nu_x", "nu_y", "nu_z"};
-  for (int i = 0; i < 3; ++i) t.add(names[i], "m/s", column(sim, [i](const TickRecord& r) { return r.command[i]; }));
-  t.add("omega_z_deg", "deg/s", column(sim, [](const TickRecord& r) { return r.command[3] * kToDegrees; }));
+  const char* symbols[] = {"ν_x", "ν_y", "ν_z"};
   for (int i = 0; i < 3; ++i)
-    t.add(std::string("leader_") + names[i], "m/s", column(sim, [i](const TickRecord& r) { return r.leader_twist[i]; }));
-  t.add("leader_omega_z_deg", "deg/s", column(sim, [](const TickRecord& r) { return r.leader_twist[3] * kToDegrees; }));
-  t.add("saturated", "-", column(sim, [](const TickRecord& r) { return r.saturated ? 1.0 : 0.0; }));
-  t.add("smallest_singular_value", "-", column(sim, [](const TickRecord& r) { return r.smallest_singular_value; }));
+    t.add(names[i], "m/s", column(sim, [i](const TickRecord& r) { return r.command[i]; }),
+          std::string("Follower ") + symbols[i]);
+  t.add("omega_z_deg", "deg/s", column(sim, [](const TickRecord& r) { return r.command[3] * kToDegrees; }), "Follower ω_z");
+  for (int i = 0; i < 3; ++i)
+    t.add(std::string("leader_") + names[i], "m/s", column(sim, [i](const TickRecord& r) { return r.leader_twist[i]; }),
+          std::string("Leader ") + symbols[i]);
+  t.add("leader_omega_z_deg", "deg/s", column(sim, [](const TickRecord& r) { return r.leader_twist[3] * kToDegrees; }), "Leader ω_z");
+  t.add("saturated", "-", column(sim, [](const TickRecord& r) { return r.saturated ? 1.0 : 0.0; }), "Saturated (1 = yes)");
+  t.add("smallest_singular_value", "-", column(sim, [](const TickRecord& r) { return r.smallest_singular_value; }), "Smallest singular value");
   const char* axes[] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i)
-    t.add(std::string("follower_") + axes[i], "m", column(sim, [i](const TickRecord& r) { return r.follower.position[i]; }));
-  t.add("follower_yaw_deg", "deg", column(sim, [](const TickRecord& r) { return r.follower.yaw * kToDegrees; }));
+    t.add(std::string("follower_") + axes[i], "m", column(sim, [i](const TickRecord& r) { return r.follower.position[i]; }),
+          std::string("Follower ") + axes[i]);
+  t.add("follower_yaw_deg", "deg", column(sim, [](const TickRecord& r) { return r.follower.yaw * kToDegrees; }), "Follower yaw");
   for (int i = 0; i < 3; ++i)
-    t.add(std::string("leader_") + axes[i], "m", column(sim, [i](const TickRecord& r) { return r.leader.position[i]; }));
-  t.add("leader_yaw_deg", "deg", column(sim, [](const TickRecord& r) { return r.leader.yaw * kToDegrees; }));
+    t.add(std::string("leader_") + axes[i], "m", column(sim, [i](const TickRecord& r) { return r.leader.position[i]; }),
+          std::string("Leader ") + axes[i]);
+  t.add("leader_yaw_deg", "deg", column(sim, [](const TickRecord& r) { return r.leader.yaw * kToDegrees; }), "Leader yaw");
   return t;
 }
 
 Table eigenvalueTable(const TetherParameters& p, const SimulationOutput& sim) {
   Table t{"closed_loop_eigenvalues", "Eigenvalues of L diag(lambda_p) Lhat+ vs time (0 while held)", {}};
-  t.add("time", "s", column(sim, [](const TickRecord& r) { return r.time; }));
+  t.add("time", "s", column(sim, [](const TickRecord& r) { return r.time; }), "Time");
   const int n = p.law == "both_cameras" ? 4 : 3;
   for (int i = 0; i < n; ++i) {
     t.add("real_" + std::to_string(i + 1), "1/s", column(sim, [i](const TickRecord& r) {
-            return r.eigenvalues.size() > i ? r.eigenvalues[i].real() : 0.0; }));
+            return r.eigenvalues.size() > i ? r.eigenvalues[i].real() : 0.0; }), "Re λ" + std::to_string(i + 1));
     t.add("imag_" + std::to_string(i + 1), "1/s", column(sim, [i](const TickRecord& r) {
-            return r.eigenvalues.size() > i ? r.eigenvalues[i].imag() : 0.0; }));
+            return r.eigenvalues.size() > i ? r.eigenvalues[i].imag() : 0.0; }), "Im λ" + std::to_string(i + 1));
   }
   return t;
 }
 
 Table cableTable(const SimulationOutput& sim) {
   Table t{"cable", "Lumped-mass cable against the quasi-static catenary", {}};
-  t.add("time", "s", column(sim, [](const TickRecord& r) { return r.time; }));
-  t.add("max_deviation", "m", column(sim, [](const TickRecord& r) { return std::max(r.cable_deviation, 1e-12); }));
-  t.add("cable_sag", "m", column(sim, [](const TickRecord& r) { return r.cable_sag; }));
+  t.add("time", "s", column(sim, [](const TickRecord& r) { return r.time; }), "Time");
+  t.add("max_deviation", "m", column(sim, [](const TickRecord& r) { return std::max(r.cable_deviation, 1e-12); }), "Cable–catenary distance");
+  t.add("cable_sag", "m", column(sim, [](const TickRecord& r) { return r.cable_sag; }), "Cable sag");
   t.add("catenary_sag", "m", column(sim, [](const TickRecord& r) {
-          return r.regime == CatenaryRegime::VertexOutsideSpan ? 0.0 : r.sag; }));
-  t.add("kinetic_energy", "J", column(sim, [](const TickRecord& r) { return r.cable_kinetic_energy; }));
-  t.add("projection_iterations", "-", column(sim, [](const TickRecord& r) { return double(r.cable_iterations); }));
+          return r.regime == CatenaryRegime::VertexOutsideSpan ? 0.0 : r.sag; }), "Catenary sag");
+  t.add("kinetic_energy", "J", column(sim, [](const TickRecord& r) { return r.cable_kinetic_energy; }), "Cable kinetic energy");
+  t.add("projection_iterations", "-", column(sim, [](const TickRecord& r) { return double(r.cable_iterations); }), "Projection iterations");
   return t;
 }
 
@@ -107,9 +113,9 @@ Table profileTable(const TetherParameters& p, const SimulationOutput& sim) {
     catenary_z.push_back(tetherPointAtArcLength(last.tether, s).z() - last.tether.follower_point.z());
     if (p.cable_enabled) cable_z.push_back(last.cable[i].z() - last.tether.follower_point.z());
   }
-  t.add("arc_length", "m", arc);
-  t.add("catenary_height", "m", catenary_z);
-  if (p.cable_enabled) t.add("cable_height", "m", cable_z);
+  t.add("arc_length", "m", arc, "Arc length s");
+  t.add("catenary_height", "m", catenary_z, "Catenary z");
+  if (p.cable_enabled) t.add("cable_height", "m", cable_z, "Cable z");
   return t;
 }
 
@@ -131,10 +137,10 @@ Table stabilityTable(const TetherParameters& p) {
       min_real.push_back(values.real().minCoeff());
       max_imag.push_back(values.imag().cwiseAbs().maxCoeff());
     }
-  t.add("error_a", "-", ea);
-  t.add("error_b", "-", eb);
-  t.add("min_real_part", "1/s", min_real);
-  t.add("max_imag_part", "1/s", max_imag);
+  t.add("error_a", "-", ea, "Error in a");
+  t.add("error_b", "-", eb, "Error in b");
+  t.add("min_real_part", "1/s", min_real, "min Re λ");
+  t.add("max_imag_part", "1/s", max_imag, "max |Im λ|");
   return t;
 }
 
@@ -199,30 +205,30 @@ Results buildTetherResults(const TetherParameters& p, const SimulationOutput& si
     max_dev = std::max(max_dev, t.cable_deviation);
     held += t.held ? 1 : 0;
   }
-  r.addScalar("initial_error_norm", e0, "-", "Feature error |s - s*| at t = 0");
-  r.addScalar("peak_error_norm", peak, "-", "Largest feature error over the run (after pushes)");
-  r.addScalar("final_error_norm", last.error.norm(), "-", "Feature error at the end");
+  r.addScalar("initial_error_norm", e0, "-", "Feature error |s - s*| at t = 0", "Initial |e|");
+  r.addScalar("peak_error_norm", peak, "-", "Largest feature error over the run (after pushes)", "Peak |e|");
+  r.addScalar("final_error_norm", last.error.norm(), "-", "Feature error at the end", "Final |e|");
   if (settling < 0.0) {
     context.warn("the feature error did not stay below 2 % of its peak; settling_time is the duration");
     settling = last.time;
   }
-  r.addScalar("settling_time", settling, "s", "Time after which |e| stays below 2 % of its peak over the run");
-  r.addScalar("final_sag", last.sag, "m", "Sag H at the follower attachment at the end");
-  r.addScalar("final_rise", last.rise, "m", "Rise dH = z(P1) - z(P2) at the end");
-  r.addScalar("final_span", last.span, "m", "Horizontal span at the end");
-  r.addScalar("final_follower_angle", last.follower_angle * kToDegrees, "deg", "alpha2 at the end");
-  r.addScalar("max_linear_command", max_speed, "m/s", "Largest linear velocity command component");
-  r.addScalar("max_yaw_command", max_yaw * kToDegrees, "deg/s", "Largest yaw-rate command");
+  r.addScalar("settling_time", settling, "s", "Time after which |e| stays below 2 % of its peak over the run", "Settling time");
+  r.addScalar("final_sag", last.sag, "m", "Sag H at the follower attachment at the end", "Final sag H");
+  r.addScalar("final_rise", last.rise, "m", "Rise dH = z(P1) - z(P2) at the end", "Final rise ΔH");
+  r.addScalar("final_span", last.span, "m", "Horizontal span at the end", "Final span");
+  r.addScalar("final_follower_angle", last.follower_angle * kToDegrees, "deg", "alpha2 at the end", "Final α₂");
+  r.addScalar("max_linear_command", max_speed, "m/s", "Largest linear velocity command component", "max |ν|");
+  r.addScalar("max_yaw_command", max_yaw * kToDegrees, "deg/s", "Largest yaw-rate command", "max |ω_z|");
   r.addScalar("min_eigenvalue_real_part", min_real < 1e300 ? min_real : 0.0, "1/s",
-              "Smallest real part of the closed-loop eigenvalues over the run (> 0: locally stable)");
-  r.addScalar("held_ticks", static_cast<double>(held), "-", "Ticks with the command held (singular or invalid shape)");
+              "Smallest real part of the closed-loop eigenvalues over the run (> 0: locally stable)", "min Re λ");
+  r.addScalar("held_ticks", static_cast<double>(held), "-", "Ticks with the command held (singular or invalid shape)", "Held ticks");
   const double w = wetWeightPerLength(p);
-  r.addScalar("wet_weight_per_length", w, "N/m", "Tether weight minus buoyancy per length");
+  r.addScalar("wet_weight_per_length", w, "N/m", "Tether weight minus buoyancy per length", "Wet weight w");
   if (last.constant > 0.0)
-    r.addScalar("final_horizontal_tension", w / last.constant, "N", "w/C at the end (catenary statics)");
+    r.addScalar("final_horizontal_tension", w / last.constant, "N", "w/C at the end (catenary statics)", "Final horizontal tension H");
   if (p.cable_enabled) {
-    r.addScalar("max_cable_deviation", max_dev, "m", "Largest distance of a cable node from the catenary");
-    r.addScalar("final_cable_deviation", last.cable_deviation, "m", "Cable-catenary distance at the end");
+    r.addScalar("max_cable_deviation", max_dev, "m", "Largest distance of a cable node from the catenary", "max cable–catenary distance");
+    r.addScalar("final_cable_deviation", last.cable_deviation, "m", "Cable-catenary distance at the end", "Final cable–catenary distance");
   }
 
   r.stats.steps = static_cast<long>(sim.ticks.size()) - 1;

@@ -11,13 +11,15 @@ namespace maris::wec {
 namespace {
 constexpr double kDeg = 180.0 / std::numbers::pi;
 std::string col(const std::string& name, std::size_t i) { return name + "_" + std::to_string(i + 1); }
+// The label of float i's column: "|θ|/A, float 1".
+std::string lab(const std::string& what, std::size_t i) { return what + ", float " + std::to_string(i + 1); }
 }  // namespace
 
 Table frequencyTable(const std::vector<double>& omega, const std::vector<std::vector<FrequencyResponse>>& response) {
   Table t;
   t.name = "frequency_response";
   t.title = "Frequency-domain response per unit wave amplitude";
-  t.add("omega", "rad/s", omega);
+  t.add("omega", "rad/s", omega, "ω");
   for (std::size_t i = 0; i < response.size(); ++i) {
     std::vector<double> rao, phase, fx, fz, my, power, cw, bound, opt;
     for (const auto& r : response[i]) {
@@ -31,15 +33,15 @@ Table frequencyTable(const std::vector<double>& omega, const std::vector<std::ve
       bound.push_back(r.capture_width_bound);
       opt.push_back(r.optimal_damping);
     }
-    t.add(col("rao", i), "rad/m", rao);
-    t.add(col("rao_phase", i), "deg", phase);
-    t.add(col("hinge_fx", i), "N/m", fx);
-    t.add(col("hinge_fz", i), "N/m", fz);
-    t.add(col("moment_y", i), "N*m/m", my);
-    t.add(col("power", i), "W/m^2", power);
-    t.add(col("capture_width", i), "m", cw);
-    if (i == 0) t.add("capture_width_bound", "m", bound);
-    t.add(col("optimal_pto_damping", i), "N*m*s/rad", opt);
+    t.add(col("rao", i), "rad/m", rao, lab("|θ|/A", i));
+    t.add(col("rao_phase", i), "deg", phase, lab("Phase of θ", i));
+    t.add(col("hinge_fx", i), "N/m", fx, lab("|F_x|/A", i));
+    t.add(col("hinge_fz", i), "N/m", fz, lab("|F_z|/A", i));
+    t.add(col("moment_y", i), "N*m/m", my, lab("|M_y|/A", i));
+    t.add(col("power", i), "W/m^2", power, lab("P/A²", i));
+    t.add(col("capture_width", i), "m", cw, lab("Capture width", i));
+    if (i == 0) t.add("capture_width_bound", "m", bound, "Bound 3λ/2π");
+    t.add(col("optimal_pto_damping", i), "N*m*s/rad", opt, lab("Optimal PTO damping", i));
   }
   return t;
 }
@@ -50,7 +52,7 @@ Table timeDomainRaoTable(const std::vector<SteadyResponse>& points, std::size_t 
   t.title = "Time-domain steady-state response (DFT over the last whole periods)";
   std::vector<double> omega;
   for (const auto& p : points) omega.push_back(p.omega);
-  t.add("omega", "rad/s", omega);
+  t.add("omega", "rad/s", omega, "ω");
   for (std::size_t i = 0; i < float_count; ++i) {
     std::vector<double> rao, phase, fx, fz, power;
     for (const auto& p : points) {
@@ -59,10 +61,10 @@ Table timeDomainRaoTable(const std::vector<SteadyResponse>& points, std::size_t 
       fx.push_back(std::abs(p.hinge_fx[i]));
       fz.push_back(std::abs(p.hinge_fz[i]));
     }
-    t.add(col("rao", i), "rad/m", rao);
-    t.add(col("rao_phase", i), "deg", phase);
-    t.add(col("hinge_fx", i), "N/m", fx);
-    t.add(col("hinge_fz", i), "N/m", fz);
+    t.add(col("rao", i), "rad/m", rao, lab("|θ|/A", i));
+    t.add(col("rao_phase", i), "deg", phase, lab("Phase of θ", i));
+    t.add(col("hinge_fx", i), "N/m", fx, lab("|F_x|/A", i));
+    t.add(col("hinge_fz", i), "N/m", fz, lab("|F_z|/A", i));
   }
   return t;
 }
@@ -70,21 +72,21 @@ Table timeDomainRaoTable(const std::vector<SteadyResponse>& points, std::size_t 
 void appendHistory(Table& table, const TimeDomainResult& td, const std::vector<double>& theta0,
                    const std::string& suffix, bool with_time) {
   if (with_time) {
-    table.add("time", "s", td.time);
-    table.add("wave_elevation", "m", td.wave_at_origin);
+    table.add("time", "s", td.time, "Time");
+    table.add("wave_elevation", "m", td.wave_at_origin, "Wave elevation η");
   }
   for (std::size_t i = 0; i < td.floats.size(); ++i) {
     const auto& h = td.floats[i];
     std::vector<double> dtheta(h.theta.size());
     for (std::size_t k = 0; k < dtheta.size(); ++k) dtheta[k] = (h.theta[k] - theta0[i]) * kDeg;
-    table.add(col("pitch_deg", i) + suffix, "deg", dtheta);
-    table.add(col("theta_dt", i) + suffix, "rad/s", h.theta_dt);
-    table.add(col("theta_dtdt", i) + suffix, "rad/s^2", h.theta_dtdt);
-    table.add(col("hinge_fx", i) + suffix, "N", h.hinge_fx);
-    table.add(col("hinge_fz", i) + suffix, "N", h.hinge_fz);
-    table.add(col("moment_y", i) + suffix, "N*m", h.moment_y);
-    table.add(col("pto_power", i) + suffix, "W", h.pto_power);
-    table.add(col("pto_energy", i) + suffix, "J", h.pto_energy);
+    table.add(col("pitch_deg", i) + suffix, "deg", dtheta, lab("Pitch θ − θ₀", i) + (suffix.empty() ? "" : " (augmented)"));
+    table.add(col("theta_dt", i) + suffix, "rad/s", h.theta_dt, lab("dθ/dt", i) + (suffix.empty() ? "" : " (augmented)"));
+    table.add(col("theta_dtdt", i) + suffix, "rad/s^2", h.theta_dtdt, lab("d²θ/dt²", i) + (suffix.empty() ? "" : " (augmented)"));
+    table.add(col("hinge_fx", i) + suffix, "N", h.hinge_fx, lab("Hinge F_x", i) + (suffix.empty() ? "" : " (augmented)"));
+    table.add(col("hinge_fz", i) + suffix, "N", h.hinge_fz, lab("Hinge F_z", i) + (suffix.empty() ? "" : " (augmented)"));
+    table.add(col("moment_y", i) + suffix, "N*m", h.moment_y, lab("Moment M_y", i) + (suffix.empty() ? "" : " (augmented)"));
+    table.add(col("pto_power", i) + suffix, "W", h.pto_power, lab("PTO power", i) + (suffix.empty() ? "" : " (augmented)"));
+    table.add(col("pto_energy", i) + suffix, "J", h.pto_energy, lab("PTO energy", i) + (suffix.empty() ? "" : " (augmented)"));
   }
 }
 
@@ -115,11 +117,11 @@ Table kernelTable(const FloatModel& f) {
     kh.push_back(k.values[j]);
     khf.push_back(f.heave.fit.at(tj));
   }
-  t.add("time", "s", time);
-  t.add("kernel_surge", "N/m", ks);
-  t.add("kernel_surge_fit", "N/m", ksf);
-  t.add("kernel_heave", "N/m", kh);
-  t.add("kernel_heave_fit", "N/m", khf);
+  t.add("time", "s", time, "Time");
+  t.add("kernel_surge", "N/m", ks, "K₁₁(t) surge");
+  t.add("kernel_surge_fit", "N/m", ksf, "K₁₁ fit");
+  t.add("kernel_heave", "N/m", kh, "K₃₃(t) heave");
+  t.add("kernel_heave_fit", "N/m", khf, "K₃₃ fit");
   return t;
 }
 
@@ -139,15 +141,15 @@ Table hydroTable(const WecModel& model, const std::vector<double>& omega) {
     p1.push_back(std::arg(h.surge.excitation) * kDeg);
     p3.push_back(std::arg(h.heave.excitation) * kDeg);
   }
-  t.add("omega", "rad/s", omega);
-  t.add("added_mass_surge", "kg", a11);
-  t.add("damping_surge", "N*s/m", b11);
-  t.add("added_mass_heave", "kg", a33);
-  t.add("damping_heave", "N*s/m", b33);
-  t.add("excitation_surge", "N/m", x1);
-  t.add("excitation_heave", "N/m", x3);
-  t.add("excitation_phase_surge", "deg", p1);
-  t.add("excitation_phase_heave", "deg", p3);
+  t.add("omega", "rad/s", omega, "ω");
+  t.add("added_mass_surge", "kg", a11, "A₁₁ surge");
+  t.add("damping_surge", "N*s/m", b11, "B₁₁ surge");
+  t.add("added_mass_heave", "kg", a33, "A₃₃ heave");
+  t.add("damping_heave", "N*s/m", b33, "B₃₃ heave");
+  t.add("excitation_surge", "N/m", x1, "|X₁| surge");
+  t.add("excitation_heave", "N/m", x3, "|X₃| heave");
+  t.add("excitation_phase_surge", "deg", p1, "Phase of X₁");
+  t.add("excitation_phase_heave", "deg", p3, "Phase of X₃");
   return t;
 }
 

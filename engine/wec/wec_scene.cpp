@@ -46,7 +46,7 @@ Table sweepTable(const std::vector<double>& omega, const std::vector<std::vector
   Table t = frequencyTable(omega, resp);
   std::vector<double> flag;
   for (double w : omega) flag.push_back(w >= omega_deep ? 1.0 : 0.0);
-  t.add("deep_water", "-", flag);
+  t.add("deep_water", "-", flag, "Deep water (1 = yes)");
   return t;
 }
 
@@ -75,17 +75,17 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
   for (std::size_t f = 0; f < model.floats.size(); ++f) {
     const std::string n = std::to_string(f + 1);
     const double wn = naturalFrequency(model, model.floats[f]);
-    res.addScalar("natural_frequency_" + n, wn, "rad/s", "Undamped pitch natural frequency, root of K = w^2 J(w)");
+    res.addScalar("natural_frequency_" + n, wn, "rad/s", "Undamped pitch natural frequency, root of K = w^2 J(w)", "ω_n, float " + n);
     double cw_ratio = 0.0;
     for (const auto& r : resp[f]) cw_ratio = std::max(cw_ratio, r.capture_width / r.capture_width_bound);
-    res.addScalar("max_capture_width_ratio_" + n, cw_ratio, "-", "max over the sweep of capture width / (3 lambda / 2 pi)");
+    res.addScalar("max_capture_width_ratio_" + n, cw_ratio, "-", "max over the sweep of capture width / (3 lambda / 2 pi)", "max capture width / (3λ/2π), float " + n);
   }
   // Power matrix (total over floats) for irregular seas from the frequency domain.
   if (!p.power_hs.empty()) {
     Table pm;
     pm.name = "power_matrix";
     pm.title = "Mean PTO power of all floats in irregular seas (" + p.spectrum + ")";
-    pm.add("peak_period", "s", p.power_tp);
+    pm.add("peak_period", "s", p.power_tp, "T_p");
     for (double hs : p.power_hs) {
       std::vector<double> row;
       for (double tp : p.power_tp) {
@@ -94,7 +94,7 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
         for (const auto& f : model.floats) total += irregularMeanPower(model, f, p.spectrum, hs, tp, p.peak_enhancement);
         row.push_back(total);
       }
-      pm.add(powerMatrixColumn(hs), "W", row);
+      pm.add(powerMatrixColumn(hs), "W", row, formatText("P at H_s = %g m", hs));
     }
     res.tables.push_back(std::move(pm));
   }
@@ -111,32 +111,32 @@ void addRadiationScalars(const WecModel& model, Results& res, RunContext& ctx) {
       if (!c.mode.fit.stable()) ctx.warn("cross radiation kernel fit has an unstable pole");
     }
     res.addScalar("cross_radiation_channels", static_cast<double>(model.cross.size()), "-",
-                  "Off-diagonal (float-float and surge-heave) radiation entries with their own kernels");
-    res.addScalar("cross_kernel_fit_r2_min", worst_r2, "-", "Lowest R^2 of the cross-kernel modal fits");
+                  "Off-diagonal (float-float and surge-heave) radiation entries with their own kernels", "Cross-radiation channels");
+    res.addScalar("cross_kernel_fit_r2_min", worst_r2, "-", "Lowest R^2 of the cross-kernel modal fits", "min R² of the cross-kernel fits");
     res.addScalar("cross_kernel_fit_damping_error_max", worst_b, "-",
-                  "Largest max|B_fit - B| / max|B| of the cross-kernel fits on 0.3-3 rad/s");
+                  "Largest max|B_fit - B| / max|B| of the cross-kernel fits on 0.3-3 rad/s", "max damping error of the cross-kernel fits");
   }
   for (auto [name, mode] : {std::pair{"surge", &f.surge}, std::pair{"heave", &f.heave}}) {
     const std::string s = name;
-    res.addScalar("kernel_fit_order_" + s, mode->fit.order, "-", "States of the modal (Prony) fit of K(t)");
-    res.addScalar("kernel_fit_r2_" + s, mode->fit.r_squared, "-", "Coefficient of determination of the K(t) fit");
+    res.addScalar("kernel_fit_order_" + s, mode->fit.order, "-", "States of the modal (Prony) fit of K(t)", "K(t) fit order, " + s);
+    res.addScalar("kernel_fit_r2_" + s, mode->fit.r_squared, "-", "Coefficient of determination of the K(t) fit", "K(t) fit R², " + s);
     res.addScalar("kernel_fit_damping_error_" + s, mode->quality.damping_error, "-",
-                  "max |B_fit - B| / max B on 0.3-3 rad/s");
+                  "max |B_fit - B| / max B on 0.3-3 rad/s", "K(t) fit damping error, " + s);
     res.addScalar("kernel_fit_added_mass_error_" + s, mode->quality.added_mass_error, "-",
-                  "max |w (A_fit - A)| / max B on 0.3-3 rad/s");
+                  "max |w (A_fit - A)| / max B on 0.3-3 rad/s", "K(t) fit added-mass error, " + s);
     res.addScalar("kernel_fit_min_real_part_" + s, mode->quality.min_real_part, "-",
-                  "min Re K_fit(iw) / max B on 0.3-3 rad/s (passivity: >= 0)");
+                  "min Re K_fit(iw) / max B on 0.3-3 rad/s (passivity: >= 0)", "K(t) fit min Re pole, " + s);
     if (!mode->fit.stable()) ctx.warn(s + " kernel fit has an unstable pole");
     if (mode->quality.min_real_part < -0.01) ctx.warn(s + " kernel fit is not passive on 0.3-3 rad/s");
     const double w = 1.0;
     const FloatHydro h = f.hydro->at(w);
     const double a = ogilvieAddedMassInfinity(mode->kernel, w, s == "heave" ? h.heave.added_mass : h.surge.added_mass);
     res.addScalar("added_mass_inf_ogilvie_ratio_" + s, a / mode->a_inf, "-",
-                  "A_inf recovered by Ogilvie at 1 rad/s over the database A_inf");
+                  "A_inf recovered by Ogilvie at 1 rad/s over the database A_inf", "A∞ Ogilvie ratio, " + s);
     const double a_err = s == "heave" ? model.a_inf_error_heave : model.a_inf_error_surge;
     if (a_err > 0.0)
       res.addScalar("added_mass_inf_error_" + s, a_err, "kg",
-                    "Error bar of the imported A_inf recovered by Ogilvie (spread over the band + half the tail term)");
+                    "Error bar of the imported A_inf recovered by Ogilvie (spread over the band + half the tail term)", "A∞ error, " + s);
   }
 }
 
@@ -157,8 +157,8 @@ void addTimeDomainChecks(const WecParameters& p, const WecModel& model, const Ti
     if (k + 1 < p.check_frequencies.size() && live.wanted()) live.publish({timeDomainRaoTable(points, model.floats.size())});
   }
   res.tables.push_back(timeDomainRaoTable(points, model.floats.size()));
-  res.addScalar("td_fd_rao_amplitude_error", err_amp, "-", "max relative |RAO| difference, time vs frequency domain");
-  res.addScalar("td_fd_rao_phase_error", err_phase, "deg", "max RAO phase difference, time vs frequency domain");
+  res.addScalar("td_fd_rao_amplitude_error", err_amp, "-", "max relative |RAO| difference, time vs frequency domain", "|RAO| time vs frequency domain");
+  res.addScalar("td_fd_rao_phase_error", err_phase, "deg", "max RAO phase difference, time vs frequency domain", "RAO phase time vs frequency domain");
 }
 
 // Irregular sea: frequency-domain response spectra of pitch, hinge reactions and moment (S_q = |H_q|² S_η), their
@@ -170,7 +170,7 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
   Table t;
   t.name = "response_spectra";
   t.title = "Response spectra in the irregular sea (" + p.spectrum + ", frequency domain)";
-  t.add("omega", "rad/s", omega);
+  t.add("omega", "rad/s", omega, "ω");
   const double settle = p.ramp_duration + settlingTime(model);
   std::size_t k0 = 0;
   while (k0 + 1 < td.time.size() && td.time[k0] < settle) ++k0;
@@ -185,20 +185,20 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
     const std::string n = std::to_string(i + 1);
     const ResponseSpectra s = responseSpectra(model, model.floats[i], p.spectrum, p.significant_height,
                                               p.peak_period, p.peak_enhancement, omega);
-    if (i == 0) t.add("wave_spectrum", "m^2*s/rad", s.wave);
-    t.add("pitch_spectrum_" + n, "rad^2*s/rad", s.pitch);
-    t.add("hinge_fx_spectrum_" + n, "N^2*s/rad", s.hinge_fx);
-    t.add("hinge_fz_spectrum_" + n, "N^2*s/rad", s.hinge_fz);
-    t.add("moment_spectrum_" + n, "N^2*m^2*s/rad", s.moment_y);
-    res.addScalar("sd_pitch_fd_" + n, s.sd_pitch * 180.0 / std::numbers::pi, "deg", "Std of pitch, frequency domain");
-    res.addScalar("sd_hinge_fx_fd_" + n, s.sd_fx, "N", "Std of the horizontal hinge reaction, frequency domain");
-    res.addScalar("sd_hinge_fz_fd_" + n, s.sd_fz, "N", "Std of the vertical hinge reaction, frequency domain");
+    if (i == 0) t.add("wave_spectrum", "m^2*s/rad", s.wave, "S_η");
+    t.add("pitch_spectrum_" + n, "rad^2*s/rad", s.pitch, "S_θ, float " + n);
+    t.add("hinge_fx_spectrum_" + n, "N^2*s/rad", s.hinge_fx, "S_Fx, float " + n);
+    t.add("hinge_fz_spectrum_" + n, "N^2*s/rad", s.hinge_fz, "S_Fz, float " + n);
+    t.add("moment_spectrum_" + n, "N^2*m^2*s/rad", s.moment_y, "S_My, float " + n);
+    res.addScalar("sd_pitch_fd_" + n, s.sd_pitch * 180.0 / std::numbers::pi, "deg", "Std of pitch, frequency domain", "σ pitch (frequency domain), float " + n);
+    res.addScalar("sd_hinge_fx_fd_" + n, s.sd_fx, "N", "Std of the horizontal hinge reaction, frequency domain", "σ F_x (frequency domain), float " + n);
+    res.addScalar("sd_hinge_fz_fd_" + n, s.sd_fz, "N", "Std of the vertical hinge reaction, frequency domain", "σ F_z (frequency domain), float " + n);
     if (td.time.size() - k0 < 100) continue;  // run too short after settling for statistics
     const auto& h = td.floats[i];
     res.addScalar("sd_pitch_td_" + n, deviation(h.theta) * 180.0 / std::numbers::pi, "deg",
-                  "Std of pitch in the time-domain run after ramp and settling (sampling error ~1/sqrt(cycles))");
-    res.addScalar("sd_hinge_fx_td_" + n, deviation(h.hinge_fx), "N", "Std of the horizontal hinge reaction, time domain");
-    res.addScalar("sd_hinge_fz_td_" + n, deviation(h.hinge_fz), "N", "Std of the vertical hinge reaction, time domain");
+                  "Std of pitch in the time-domain run after ramp and settling (sampling error ~1/sqrt(cycles))", "σ pitch (time domain), float " + n);
+    res.addScalar("sd_hinge_fx_td_" + n, deviation(h.hinge_fx), "N", "Std of the horizontal hinge reaction, time domain", "σ F_x (time domain), float " + n);
+    res.addScalar("sd_hinge_fz_td_" + n, deviation(h.hinge_fz), "N", "Std of the vertical hinge reaction, time domain", "σ F_z (time domain), float " + n);
   }
   res.tables.push_back(std::move(t));
 }
@@ -236,7 +236,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   base.initial_offset = p.initial_offset_deg * std::numbers::pi / 180.0;
   base.augmented = p.formulation == "augmented";
   const double h_lim = rk4StabilityStep(model, base);
-  res.addScalar("rk4_stability_step", h_lim, "s", "Estimated RK4 stability limit of the fastest mode");
+  res.addScalar("rk4_stability_step", h_lim, "s", "Estimated RK4 stability limit of the fastest mode", "RK4 stability step");
   if (p.time_step > 0.8 * h_lim)
     ctx.warn(formatText("time step %.3g s is close to or above the RK4 stability limit %.3g s", p.time_step, h_lim));
   addTimeDomainChecks(p, model, base, res, ctx, live);
@@ -270,7 +270,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   res.stats.error_unit = "rad (theta, sum of embedded RK4 local-error estimates)";
   if (!(base.augmented && base.newmark))
     res.addScalar("error_estimate_relative", main.relative_error_estimate, "-",
-                  "Shared RK4's own estimate (core/ode.hpp): sum of embedded local errors over all states / max |state|");
+                  "Shared RK4's own estimate (core/ode.hpp): sum of embedded local errors over all states / max |state|", "Relative error estimate");
   if (both) {
     TimeDomainOptions aug = base;
     aug.augmented = true;
@@ -288,22 +288,22 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
         amp_f = std::max({amp_f, std::abs(main.floats[i].hinge_fz[k]), std::abs(main.floats[i].hinge_fx[k])});
       }
     res.addScalar("classical_augmented_pitch_difference", amp > 0 ? d_theta / amp : d_theta, "-",
-                  "max |theta_classical - theta_augmented| / max |theta - theta0|");
+                  "max |theta_classical - theta_augmented| / max |theta - theta0|", "Pitch: classical vs augmented");
     res.addScalar("classical_augmented_force_difference", amp_f > 0 ? d_f / amp_f : d_f, "-",
-                  "max hinge-force difference / max hinge force");
+                  "max hinge-force difference / max hinge force", "Force: classical vs augmented");
     res.addScalar("constraint_drift_max", second.max_position_drift, "m",
-                  "max |C| of the augmented run (RK4: before projection; Newmark: after the Newton-Raphson loop)");
-    res.addScalar("constraint_velocity_drift_max", second.max_velocity_drift, "m/s", "max |C_q dq/dt| of the augmented run");
+                  "max |C| of the augmented run (RK4: before projection; Newmark: after the Newton-Raphson loop)", "max constraint drift");
+    res.addScalar("constraint_velocity_drift_max", second.max_velocity_drift, "m/s", "max |C_q dq/dt| of the augmented run", "max constraint velocity drift");
     if (base.newmark) {
-      res.addScalar("newmark_stability_step", second.stability_step, "s", "Stability limit 2/omega_max of explicit Newmark");
+      res.addScalar("newmark_stability_step", second.stability_step, "s", "Stability limit 2/omega_max of explicit Newmark", "Newmark stability step");
       res.addScalar("newmark_max_velocity_iterations", second.max_velocity_iterations, "-",
-                    "Most velocity fixed-point iterations in one Newmark step");
+                    "Most velocity fixed-point iterations in one Newmark step", "Newmark max velocity iterations");
     }
     res.stats.method += "; " + second.method;
     res.stats.steps += second.steps;
     res.stats.rhs_evaluations += second.rhs_evaluations;
     res.addScalar("error_estimate_augmented", second.error_estimate, "rad",
-                  "Sum of local-error estimates of theta, augmented run (RK4 embedded pair or Newmark h^2/6 |dtheta_dd|)");
+                  "Sum of local-error estimates of theta, augmented run (RK4 embedded pair or Newmark h^2/6 |dtheta_dd|)", "Error estimate, augmented");
   } else {
     res.tables.push_back(historyTable(main, nullptr, theta0, main.time.size()));
   }
@@ -316,16 +316,16 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
       fx = std::max(fx, std::abs(h.hinge_fx[k]));
       fz = std::max(fz, std::abs(h.hinge_fz[k]));
     }
-    res.addScalar("max_pitch_" + n, amp * 180.0 / std::numbers::pi, "deg", "max |theta - theta0|");
-    res.addScalar("max_hinge_fx_" + n, fx, "N", "max |horizontal hinge reaction|");
-    res.addScalar("max_hinge_fz_" + n, fz, "N", "max |vertical hinge reaction|");
-    res.addScalar("pto_energy_" + n, h.pto_energy.back(), "J", "PTO energy absorbed over the run");
+    res.addScalar("max_pitch_" + n, amp * 180.0 / std::numbers::pi, "deg", "max |theta - theta0|", "max pitch, float " + n);
+    res.addScalar("max_hinge_fx_" + n, fx, "N", "max |horizontal hinge reaction|", "max |F_x|, float " + n);
+    res.addScalar("max_hinge_fz_" + n, fz, "N", "max |vertical hinge reaction|", "max |F_z|, float " + n);
+    res.addScalar("pto_energy_" + n, h.pto_energy.back(), "J", "PTO energy absorbed over the run", "PTO energy, float " + n);
     const double t_mean = std::max(0.0, main.time.back() - p.ramp_duration);
     if (t_mean > 0.0) {
       std::size_t k0 = 0;
       while (main.time[k0] < p.ramp_duration) ++k0;
       res.addScalar("mean_pto_power_" + n, (h.pto_energy.back() - h.pto_energy[k0]) / (main.time.back() - main.time[k0]),
-                    "W", "Mean PTO power after the ramp");
+                    "W", "Mean PTO power after the ramp", "mean PTO power, float " + n);
     }
   }
   if (p.wave_type == "irregular") addIrregularStatistics(p, model, main, res);

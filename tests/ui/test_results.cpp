@@ -14,7 +14,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <qcustomplot.h>
+
 #include "core/scenario.hpp"
+#include "plots/display_units.hpp"
+#include "plots/result_plot.hpp"
 #include "plots/plot_export.hpp"
 #include "run/results_summary.hpp"
 #include "run/run_controller.hpp"
@@ -31,7 +35,7 @@ namespace {
 RunRecord twoScalarRun() {
   auto results = std::make_shared<Results>();
   results->addScalar("tip_deflection", 0.125, "m", "Tip deflection");
-  results->addScalar("period", 2.5, "s", "First period");
+  results->addScalar("period", 2.5, "s", "First period", "T₁");
   RunRecord record;
   record.id = 1;
   record.scenario.name = "Rod";
@@ -65,18 +69,21 @@ class ResultsViewsTest : public QObject {
     QVERIFY(QTest::qWaitForWindowActive(&summary));
     summary.table()->setFocus();
     QApplication::clipboard()->clear();
+    // Labels for people: the declared one ("T₁"), else the name made readable ("Tip deflection").
+    QCOMPARE(summary.table()->item(0, 0)->text(), QStringLiteral("Tip deflection"));
+    QCOMPARE(summary.table()->item(1, 0)->text(), QStringLiteral("T₁"));
     // Nothing selected: Ctrl+C copies every scalar, one row each after the header.
     QTest::keyClick(summary.table(), Qt::Key_C, Qt::ControlModifier);
     QCOMPARE(QApplication::clipboard()->text(),
              QStringLiteral("Quantity\tValue\tUnit\tMeaning\n"
-                            "tip_deflection\t0.125\tm\tTip deflection\n"
-                            "period\t2.5\ts\tFirst period\n"));
+                            "Tip deflection\t0.125\tm\tTip deflection\n"
+                            "T₁\t2.5\ts\tFirst period\n"));
     // One row selected: the context menu's Copy copies that row only.
     summary.table()->selectRow(1);
     QVERIFY(summary.table()->actions().contains(summary.copyAction()));
     summary.copyAction()->trigger();
     QCOMPARE(QApplication::clipboard()->text(),
-             QStringLiteral("Quantity\tValue\tUnit\tMeaning\nperiod\t2.5\ts\tFirst period\n"));
+             QStringLiteral("Quantity\tValue\tUnit\tMeaning\nT₁\t2.5\ts\tFirst period\n"));
   }
 
   void exportWritesNamesUnitsAndValuesAsCsv() {
@@ -106,6 +113,38 @@ class ResultsViewsTest : public QObject {
     QCOMPARE(unescapedPipes(row), unescapedPipes("| quantity | value | unit | meaning |"));
     QCOMPARE(unescapedPipes(row), 5);
     QCOMPARE(markdownTableCell("a\r\nb"), std::string("a<br>b"));
+  }
+
+  void displayUnitsChangeWhatIsShownNotWhatIsWritten() {
+    QCOMPARE(displayUnitChoices("Pa"), (std::vector<std::string>{"Pa", "kPa", "MPa", "GPa"}));
+    QCOMPARE(displayUnitChoices("m"), (std::vector<std::string>{"mm", "m"}));
+    QVERIFY(displayUnitChoices("s").empty());
+    setDisplayUnit("Pa", "furlong");  // not a choice: SI
+    QCOMPARE(displayUnit("Pa").unit, std::string("Pa"));
+    setDisplayUnit("m", "mm");
+    ResultsSummary summary;
+    summary.showRun(twoScalarRun());
+    QCOMPARE(summary.table()->item(0, 1)->text(), QStringLiteral("125"));  // 0.125 m
+    QCOMPARE(summary.table()->item(0, 2)->text(), QStringLiteral("mm"));
+    QCOMPARE(summary.table()->item(1, 2)->text(), QStringLiteral("s"));  // seconds take no prefix here
+    QTemporaryDir dir;
+    const std::filesystem::path file = dir.filePath(QStringLiteral("scalars.csv")).toStdString();
+    summary.exportCsv(file);  // the file stays SI
+    QCOMPARE(QString::fromStdString(readTextFile(file)), QStringLiteral("tip_deflection,period\nm,s\n0.125,2.5\n"));
+    Results results;
+    Table tip;
+    tip.name = "tip";
+    tip.add("time", "s", {0.0, 1.0}, "Time");
+    tip.add("tip_x", "m", {0.5, 0.25}, "Tip x");
+    results.tables.push_back(tip);
+    QCustomPlot plot;
+    QVERIFY(fillPlot(plot, results, makePlot("tip", "Tip", "tip", "time", {"tip_x"})));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atLeft)->label(), QStringLiteral("Tip x [mm]"));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atBottom)->label(), QStringLiteral("Time [s]"));
+    QCOMPARE(plot.graph(0)->data()->at(1)->value, 250.0);
+    setDisplayUnit("m", "m");
+    QVERIFY(fillPlot(plot, results, makePlot("tip", "Tip", "tip", "time", {"tip_x"})));
+    QCOMPARE(plot.graph(0)->data()->at(1)->value, 0.25);
   }
 
   void dialogsStartInAnExistingFolder() {

@@ -163,6 +163,11 @@ class RunTest : public QObject {
     QCOMPARE(history.add(c).label, QStringLiteral("run 3"));
     QCOMPARE(history.runs().size(), std::size_t(2));
     QVERIFY(!history.find(1));
+    // With the scene's schema: the editor's label, 4 significant digits and the unit.
+    RunRecord d = c;
+    d.id = 4;
+    d.scenario.parameters["geometry"]["length"] = 1.5707963267948966;
+    QCOMPARE(history.add(d, false, &scene_.schema).label, QStringLiteral("run 4 (length = 1.571 m)"));
   }
 
   void plotsHoldTheExpectedPoints() {
@@ -175,8 +180,8 @@ class RunTest : public QObject {
     QCOMPARE(panel.view(0)->pointCount(), 50);       // point_count
     QCOMPARE(panel.view(1)->pointCount(), 2 * 100);  // two columns × frame_count × 10 rows
     QCustomPlot* plot = panel.view(0)->plot();
-    QCOMPARE(plot->xAxis->label(), QStringLiteral("arc length [m]"));
-    QCOMPARE(plot->yAxis->label(), QStringLiteral("deflection [m]"));
+    QCOMPARE(plot->xAxis->label(), QStringLiteral("Arc length [m]"));
+    QCOMPARE(plot->yAxis->label(), QStringLiteral("Deflection [m]"));
     QCOMPARE(plot->graphCount(), 2);  // the curve and the reference points
     panel.view(0)->setLogY(true);
     QCOMPARE(plot->yAxis->scaleType(), QCPAxis::stLogarithmic);
@@ -316,7 +321,7 @@ class RunTest : public QObject {
                     static_cast<int>(graph->valueAxis()->coordToPixel(value)));
     QMouseEvent move(QEvent::MouseMove, at, view.plot()->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
     QApplication::sendEvent(view.plot(), &move);
-    QVERIFY2(view.readout().contains(QStringLiteral("arc length [m] = %1").arg(key, 0, 'g', 6)), qPrintable(view.readout()));
+    QVERIFY2(view.readout().contains(QStringLiteral("Arc length [m] = %1").arg(key, 0, 'g', 6)), qPrintable(view.readout()));
   }
 
   void everyExportFormatWritesAValidFile() {

@@ -1,5 +1,6 @@
 #include "editor/table_editor.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include <QHBoxLayout>
@@ -21,7 +22,9 @@ TableEditor::TableEditor(const ParamSpec& spec, QWidget* parent)
   QStringList headers;
   for (int c = 0; c < static_cast<int>(spec_.columns.size()); ++c) {
     const ParamSpec& column = spec_.columns[c];
-    headers << axisLabel(column.path, column.unit);
+    std::string key = column.path;
+    std::replace(key.begin(), key.end(), '_', ' ');
+    headers << axisLabel(key, column.unit);
   }
   grid_->setHorizontalHeaderLabels(headers);
   for (int c = 0; c < static_cast<int>(spec_.columns.size()); ++c)

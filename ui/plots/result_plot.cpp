@@ -9,17 +9,19 @@
 #include <QSvgGenerator>
 #include <qcustomplot.h>
 
+#include "plots/display_units.hpp"
 #include "plots/reference_data.hpp"
 #include "theme.hpp"
 
 namespace maris::ui {
 
-QString axisLabel(const std::string& name, const std::string& unit) {
-  QString label = QString::fromStdString(name);
-  label.replace('_', ' ');
+QString axisLabel(const std::string& text, const std::string& unit) {
+  QString label = QString::fromStdString(text);
   if (!unit.empty() && unit != "-") label += QStringLiteral(" [%1]").arg(QString::fromStdString(unit));
   return label;
 }
+
+QString axisLabel(const Column& column) { return axisLabel(displayLabel(column), displayUnit(column.unit).unit); }
 
 QString wrapAtSpaces(const QString& text, int max_line) {
   QStringList lines;
@@ -37,7 +39,14 @@ QString wrapAtSpaces(const QString& text, int max_line) {
 
 namespace {
 
-QVector<double> toQVector(const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); }
+// A column's values in its display unit (plots/display_units.hpp).
+QVector<double> shownValues(const Column& column) {
+  const double factor = displayUnit(column.unit).factor;
+  QVector<double> out(column.values.begin(), column.values.end());
+  if (factor != 1.0)
+    for (double& v : out) v *= factor;
+  return out;
+}
 
 Qt::PenStyle runPenStyle(int run) {
   static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine,
@@ -55,14 +64,14 @@ void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const 
     const Column* y = table.find(name);
     if (!y) continue;
     QCPGraph* g = plot.addGraph(x_axis, y_axis);
-    QString graph_name = axisLabel(y->name, y->unit);
+    QString graph_name = axisLabel(*y);
     if (several_sources) graph_name = source.label + ": " + graph_name;
     g->setName(graph_name);
     const int color_index = spec.y.size() == 1 ? run : series;
     QPen pen(seriesColor(color_index, plot.palette()), run == 0 ? 1.8 : 1.4);
     pen.setStyle(spec.y.size() == 1 ? Qt::SolidLine : runPenStyle(run));
     g->setPen(pen);
-    g->setData(toQVector(x.values), toQVector(y->values), true);
+    g->setData(shownValues(x), shownValues(*y), true);
     ++series;
   }
 }
@@ -73,7 +82,7 @@ QString severalColumnsLabel(const Table& table, const PlotSpec& spec) {
   QStringList units;
   for (const auto& name : spec.y) {
     const Column* y = table.find(name);
-    const QString unit = y ? QString::fromStdString(y->unit) : QString();
+    const QString unit = y ? QString::fromStdString(displayUnit(y->unit).unit) : QString();
     if (!unit.isEmpty() && unit != QLatin1String("-") && !units.contains(unit)) units << unit;
   }
   QString label = QString::fromStdString(spec.title);
@@ -177,9 +186,9 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   }
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
   QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
-  x_axis->setLabel(axisLabel(x->name, x->unit));
+  x_axis->setLabel(axisLabel(*x));
   if (spec.y.size() == 1)
-    y_axis->setLabel(axisLabel(spec.y.front(), table->find(spec.y.front())->unit));
+    y_axis->setLabel(axisLabel(*table->find(spec.y.front())));
   else
     y_axis->setLabel(severalColumnsLabel(*table, spec));
 
@@ -193,11 +202,11 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   int markers = 0;
   auto add_markers = [&](const Table& ref, const Column* rx, const Column* ry, QCPScatterStyle::ScatterShape shape) {
     QCPGraph* g = plot.addGraph(x_axis, y_axis);
-    g->setName(QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + ": " + axisLabel(ry->name, ""));
+    g->setName(QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + ": " + QString::fromStdString(displayLabel(*ry)));
     g->setLineStyle(QCPGraph::lsNone);
     g->setScatterStyle(QCPScatterStyle(shape, QPen(drawingColors(plot.palette()).foreground, 1.2),
                                        QBrush(seriesColor(3 + markers++, plot.palette())), 7));
-    g->setData(toQVector(rx->values), toQVector(ry->values));
+    g->setData(shownValues(*rx), shownValues(*ry));
   };
   if (const Table* ref = primary.findTable(spec.reference_table)) {
     const Column* rx = ref->find(spec.x);

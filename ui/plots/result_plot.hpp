@@ -15,8 +15,10 @@ class QCPAxisRect;
 
 namespace maris::ui {
 
-// Axis label "name [unit]".
-QString axisLabel(const std::string& name, const std::string& unit);
+// Axis label "text [unit]" (no brackets for "-" or no unit); `text` is shown as given.
+QString axisLabel(const std::string& text, const std::string& unit);
+// A column's axis label and legend entry: its label for people (displayLabel) and unit, "Fn", "R_T [N]".
+QString axisLabel(const Column& column);
 
 // `text` broken at spaces into lines of at most `max_line` characters (a longer word keeps its own
 // line): for titles and notes in places that do not wrap (a VTK colour bar, a QCPTextElement).

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "core/scenario.hpp"
+#include "plots/display_units.hpp"
 #include "start_folder.hpp"
 
 namespace maris::ui {
@@ -84,13 +85,14 @@ void ResultsSummary::showRun(const RunRecord& record) {
   table_->setRowCount(scalars + static_cast<int>(r.warnings.size()));
   for (int i = 0; i < static_cast<int>(r.scalars.size()); ++i) {
     const Scalar& s = r.scalars[i];
-    QString name = QString::fromStdString(s.name);
-    name.replace('_', ' ');
-    auto* value = new QTableWidgetItem(QString::number(s.value, 'g', 6));
+    auto* name = new QTableWidgetItem(QString::fromStdString(displayLabel(s)));
+    name->setToolTip(QString::fromStdString(s.name));  // the key in summary.json and the CSV
+    const DisplayUnit shown = displayUnit(s.unit);
+    auto* value = new QTableWidgetItem(QString::number(s.value * shown.factor, 'g', 6));
     value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    table_->setItem(i, 0, new QTableWidgetItem(name));
+    table_->setItem(i, 0, name);
     table_->setItem(i, 1, value);
-    table_->setItem(i, 2, new QTableWidgetItem(QString::fromStdString(s.unit)));
+    table_->setItem(i, 2, new QTableWidgetItem(QString::fromStdString(shown.unit)));
     table_->setItem(i, 3, new QTableWidgetItem(QString::fromStdString(s.description)));
   }
   table_->resizeColumnsToContents();
@@ -125,7 +127,9 @@ QString ResultsSummary::copyText() const {
   for (int i = 0; i < static_cast<int>(scalars.size()); ++i) {
     if (!selected.isEmpty() && !selected.contains(i)) continue;
     const Scalar& s = scalars[i];
-    lines << QStringList{cell(s.name), QString::number(s.value, 'g', QLocale::FloatingPointShortest), cell(s.unit),
+    const DisplayUnit shown = displayUnit(s.unit);
+    lines << QStringList{cell(displayLabel(s)), QString::number(s.value * shown.factor, 'g', QLocale::FloatingPointShortest),
+                         cell(shown.unit),
                          cell(s.description)}
                  .join('\t');
   }

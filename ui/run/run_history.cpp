@@ -8,24 +8,40 @@ namespace maris::ui {
 
 namespace {
 
-void collectDifferences(const Json& before, const Json& after, const std::string& path, QStringList& out) {
+// A changed value as a run label shows it: a real to 4 significant digits ("1.571", not
+// "1.5707963267948966"), then the unit.
+QString labelValue(const Json& value, const ParamSpec* spec) {
+  if (value.is_array()) return QObject::tr("edited");
+  QString text = value.is_number_float() ? QString::number(value.get<double>(), 'g', 4) : displayValue(value);
+  if (spec && value.is_number() && !spec->unit.empty() && spec->unit != "-")
+    text += QLatin1Char(' ') + QString::fromStdString(spec->unit);
+  return text;
+}
+
+void collectDifferences(const Json& before, const Json& after, const std::string& path, const Schema* schema,
+                        QStringList& out) {
   if (before.is_object() && after.is_object()) {
     for (auto it = after.begin(); it != after.end(); ++it) {
       const std::string child = path.empty() ? it.key() : path + "." + it.key();
-      collectDifferences(before.contains(it.key()) ? before[it.key()] : Json(), it.value(), child, out);
+      collectDifferences(before.contains(it.key()) ? before[it.key()] : Json(), it.value(), child, schema, out);
     }
     return;
   }
   if (before == after) return;
-  QString key = QString::fromStdString(path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1));
-  key.replace('_', ' ');
-  const QString value = after.is_array() ? QObject::tr("edited") : displayValue(after);
-  out << QStringLiteral("%1 = %2").arg(key, value);
+  const ParamSpec* spec = schema ? schema->find(path) : nullptr;
+  QString key;
+  if (spec) {
+    key = fieldLabel(*spec);
+  } else {
+    key = QString::fromStdString(path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1));
+    key.replace('_', ' ');
+  }
+  out << QStringLiteral("%1 = %2").arg(key, labelValue(after, spec));
 }
 
 }  // namespace
 
-const RunRecord& RunHistory::add(RunRecord record, bool keep_label) {
+const RunRecord& RunHistory::add(RunRecord record, bool keep_label, const Schema* schema) {
   const RunRecord* previous = nullptr;
   for (auto it = runs_.rbegin(); it != runs_.rend(); ++it)
     if (sameScenario(it->scenario, record.scenario)) {
@@ -34,7 +50,7 @@ const RunRecord& RunHistory::add(RunRecord record, bool keep_label) {
     }
   QString label = QObject::tr("run %1").arg(record.id);
   if (previous) {
-    const QString diff = parameterDifference(previous->scenario.parameters, record.scenario.parameters);
+    const QString diff = parameterDifference(previous->scenario.parameters, record.scenario.parameters, 3, schema);
     if (!diff.isEmpty()) label += QStringLiteral(" (%1)").arg(diff);
   }
   if (!keep_label) record.label = label;
@@ -51,9 +67,9 @@ const RunRecord* RunHistory::find(quint64 id) const {
   return nullptr;
 }
 
-QString parameterDifference(const Json& before, const Json& after, int max_items) {
+QString parameterDifference(const Json& before, const Json& after, int max_items, const Schema* schema) {
   QStringList items;
-  collectDifferences(before, after, "", items);
+  collectDifferences(before, after, "", schema, items);
   if (items.size() > max_items) {
     items = items.mid(0, max_items);
     items << QStringLiteral("…");

@@ -17,21 +17,15 @@ double niceStep(double raw) {
   return best;
 }
 
-struct Prefix {
-  const char* symbol;
-  int exponent;
-};
+}  // namespace
 
-// Units that take an SI prefix here, and the prefixes an engineer reads them in.
-std::vector<Prefix> prefixesFor(const std::string& unit) {
+std::vector<UnitPrefix> unitPrefixes(const std::string& unit) {
   if (unit == "Pa") return {{"", 0}, {"k", 3}, {"M", 6}, {"G", 9}};
   if (unit == "N" || unit == "N/m" || unit == "N m" || unit == "N·m" || unit == "W" || unit == "J")
     return {{"", 0}, {"k", 3}, {"M", 6}, {"G", 9}};
   if (unit == "m") return {{"m", -3}, {"", 0}};
   return {};
 }
-
-}  // namespace
 
 std::vector<double> niceTicks(double lo, double hi, int target) {
   if (!std::isfinite(lo) || !std::isfinite(hi)) return {};
@@ -72,17 +66,17 @@ ColorBarScale colorBarScale(double lo, double hi, const std::string& si_unit, in
   ColorBarScale scale;
   scale.unit = si_unit;
   const double magnitude = std::max(std::abs(lo), std::abs(hi));
-  const auto prefixes = prefixesFor(si_unit);
+  const auto prefixes = unitPrefixes(si_unit);
   if (!prefixes.empty() && magnitude > 0 && std::isfinite(magnitude)) {
     // The largest prefix that keeps the magnitude at 1 or more (or the smallest one).
-    Prefix chosen = prefixes.front();
-    for (const Prefix& p : prefixes)
+    UnitPrefix chosen = prefixes.front();
+    for (const UnitPrefix& p : prefixes)
       if (magnitude >= std::pow(10.0, p.exponent) * (1 - 1e-12)) chosen = p;
     // Plain SI stays when its numbers read well (1 … 9 999) and a prefix would not make them shorter.
     const bool si_reads_well = magnitude >= 1 && magnitude < 1e4;
     if (!(si_reads_well && chosen.exponent > 0)) {
       scale.factor = std::pow(10.0, -chosen.exponent);
-      scale.unit = std::string(chosen.symbol) + si_unit;
+      scale.unit = chosen.symbol + si_unit;
     }
   }
   scale.ticks = niceTicks(lo * scale.factor, hi * scale.factor, target_ticks);

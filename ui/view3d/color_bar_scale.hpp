@@ -15,6 +15,16 @@ std::vector<double> niceTicks(double lo, double hi, int target = 5);
 // zero prints as "0"); never an exponent for values from 0.001 to 99 999.
 std::string tickLabelFormat(const std::vector<double>& ticks);
 
+// A prefixed unit: symbol + SI unit, worth 10^exponent of the SI unit ("k", 3 for kN).
+struct UnitPrefix {
+  std::string symbol;
+  int exponent = 0;
+};
+
+// The prefixes an engineer reads `si_unit` in, smallest first: Pa, N, N/m, N m, W, J with none, k, M, G; m with m
+// (mm) and none; empty for any other unit. The colour bars choose among them, and so do the display units.
+std::vector<UnitPrefix> unitPrefixes(const std::string& si_unit);
+
 struct ColorBarScale {
   double factor = 1.0;        // display value = SI value × factor
   std::string unit;           // the display unit ("MPa" for "Pa" × 1e-6)

@@ -76,6 +76,24 @@ TEST(Results, SummaryCarriesUnitsAndSolverStatistics) {
   EXPECT_EQ(j["warnings"][0], "note");
 }
 
+TEST(Results, LabelsForPeopleNamesForFiles) {
+  Table t;
+  t.name = "curve";
+  t.add("froude", "-", {0.3}, "Fn");
+  t.add("c_wave", "-", {1e-3});
+  EXPECT_EQ(displayLabel(t.columns[0]), "Fn");
+  EXPECT_EQ(displayLabel(t.columns[1]), "C wave");  // no label declared: the name made readable
+  EXPECT_EQ(t.toCsv().substr(0, t.toCsv().find('\n')), "froude,c_wave");  // the CSV keeps machine names
+  Results r;
+  r.addScalar("max_bending_stress", 2.7e7, "Pa", "Largest bending stress", "max σ_b");
+  r.addScalar("steps", 10, "-", "Steps");
+  EXPECT_EQ(displayLabel(r.scalars[0]), "max σ_b");
+  EXPECT_EQ(displayLabel(r.scalars[1]), "Steps");
+  const Json j = summaryJson(r);
+  EXPECT_EQ(j["results"]["max_bending_stress"]["label"], "max σ_b");
+  EXPECT_FALSE(j["results"]["steps"].contains("label"));  // only declared labels are written
+}
+
 TEST(Results, LookupByName) {
   Results r;
   r.tables.push_back(Table{"a", "A", {}});

@@ -1,0 +1,105 @@
+// What people read names no internal identifier: every built-in scenario of every scene is run, each of its plots
+// drawn as the GUI draws it (fillPlot) and its title, tab title, axis titles and legend entries, and the labels of
+// its scalars in the results dock, scanned for snake_case words ("c_wave_holtrop") and dotted parameter paths
+// ("speed.froude_min"). The test fails listing every offender. Columns and scalars whose scene declared no label
+// (shown under the readable fallback made from the name) are counted and listed, not failed.
+#include <memory>
+#include <regex>
+#include <set>
+
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include "catalog.hpp"
+#include "core/run_context.hpp"
+#include "plots/result_plot.hpp"
+#include "ui_test_support.hpp"
+
+using namespace maris;
+using namespace maris::ui;
+
+namespace {
+
+// A snake_case identifier (two lower-case words of two or more letters joined by '_', so symbols such as C_W,
+// σ_b, F_x pass) or a dotted path (two such words joined by '.').
+bool looksInternal(const std::string& text) {
+  static const std::regex internal(R"((^|[^A-Za-z0-9])[a-z][a-z0-9]+[_.][a-z][a-z0-9_.]+)");
+  return std::regex_search(text, internal);
+}
+
+std::vector<std::string> plotTexts(QCustomPlot& plot) {
+  std::vector<std::string> texts;
+  for (int e = 0; e < plot.plotLayout()->elementCount(); ++e)
+    if (auto* title = qobject_cast<QCPTextElement*>(plot.plotLayout()->elementAt(e)))
+      texts.push_back(title->text().toStdString());
+  for (QCPAxisRect* rect : plot.axisRects())
+    for (QCPAxis* axis : rect->axes()) texts.push_back(axis->label().toStdString());
+  for (int g = 0; g < plot.graphCount(); ++g) texts.push_back(plot.graph(g)->name().toStdString());
+  return texts;
+}
+
+}  // namespace
+
+class LabelsTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() { test::isolateSettings(); }
+
+  void looksInternalFindsIdentifiersNotSymbols() {
+    for (const char* internal : {"c wave holtrop [c_wave_holtrop]", "must exceed speed.froude_min", "A_star_up_h1.11",
+                                 "Envelope: displacement_amplitude"})
+      QVERIFY2(looksInternal(internal), internal);
+    for (const char* human : {"C_W Michell", "σ_b at probe 2 [MPa]", "A*/D, up, h* = 1.11", "Fn", "R_T [N]",
+                              "S_Fx, float 1", "x/L = 0.25", "Along the riser at t = 12.5 s"})
+      QVERIFY2(!looksInternal(human), human);
+  }
+
+  void everyBuiltInScenarioShowsLabelsNotIdentifiers() {
+    QStringList offenders, fallbacks;
+    int texts = 0, declared = 0;
+    std::set<std::string> seen_fallbacks;
+    for (const auto& b : builtinScenarios()) {
+#if defined(__SANITIZE_ADDRESS__)
+      if (b.id != b.scenario.scene + "_default") continue;  // the others cost minutes under the sanitizers
+#endif
+      RunContext context({}, nullptr);
+      const Results results = runScenario(requireScene(b.scenario.scene), b.scenario, context);
+      const QString where = QString::fromStdString(b.id);
+      auto check = [&](const std::string& text, const QString& what) {
+        ++texts;
+        if (looksInternal(text)) offenders << QStringLiteral("%1, %2: \"%3\"").arg(where, what, QString::fromStdString(text));
+      };
+      for (const PlotSpec& spec : results.plots) {
+        const QString plot_name = QString::fromStdString(spec.name);
+        QVERIFY2(!spec.title.empty(), qPrintable(where + ": plot " + plot_name + " has no title (its tab would show "
+                                                                             "the file stem)"));
+        QCustomPlot plot;
+        plot.resize(800, 500);
+        if (!fillPlot(plot, results, spec)) continue;  // a plot of a table this run did not make
+        for (const std::string& text : plotTexts(plot)) check(text, "plot " + plot_name);
+        const Table* table = results.findTable(spec.table);
+        std::vector<std::string> columns = spec.y;
+        columns.push_back(spec.x);
+        for (const std::string& name : columns) {
+          const Column* c = table->find(name);
+          const std::string key = b.scenario.scene + ": " + spec.table + "." + name;
+          if (c->label.empty() && seen_fallbacks.insert(key).second) fallbacks << QString::fromStdString(key);
+          declared += !c->label.empty();
+        }
+      }
+      for (const Scalar& s : results.scalars) {
+        check(displayLabel(s), QStringLiteral("scalar"));
+        const std::string key = b.scenario.scene + ": scalar " + s.name;
+        if (s.label.empty() && seen_fallbacks.insert(key).second) fallbacks << QString::fromStdString(key);
+        declared += !s.label.empty();
+      }
+    }
+    qInfo("%d texts scanned; %d plotted columns and scalars with a declared label; %lld fall back to their name:",
+          texts, declared, static_cast<long long>(fallbacks.size()));
+    for (const QString& f : fallbacks) qInfo("  fallback %s", qPrintable(f));
+    QVERIFY2(offenders.isEmpty(), qPrintable(QStringLiteral("internal names shown to people:\n") + offenders.join('\n')));
+  }
+};
+
+QTEST_MAIN(LabelsTest)
+#include "test_labels.moc"
