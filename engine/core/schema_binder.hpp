@@ -65,8 +65,10 @@ class SchemaBinder {
     const std::string p = spec.path;
     schema_.fields.push_back(std::move(spec));
     readers_.push_back([p, member, row](const Json& root, P& out) {
+      const Json* rows = findAtPath(root, p);
+      if (!rows) return;  // not validated (a field newer than the document): the default rows
       (out.*member).clear();
-      for (const auto& j : *findAtPath(root, p)) (out.*member).push_back(row.read(j));
+      for (const auto& j : *rows) (out.*member).push_back(row.read(j));
     });
     writers_.push_back([p, member, row](const P& in, Json& root) {
       Json arr = Json::array();
@@ -77,7 +79,8 @@ class SchemaBinder {
 
   const Schema& schema() const { return schema_; }
 
-  // Converts validated JSON to the struct (call validateAgainstSchema first).
+  // Converts validated JSON to the struct (call validateAgainstSchema first; a field the JSON lacks keeps its
+  // default, so an older document read without validation cannot crash).
   P read(const Json& parameters) const {
     P out{};
     for (const auto& r : readers_) r(parameters, out);
@@ -106,7 +109,9 @@ class SchemaBinder {
     spec.default_value = Json(defaults.*member);
     const std::string p = spec.path;
     schema_.fields.push_back(std::move(spec));
-    readers_.push_back([p, member](const Json& root, P& out) { out.*member = findAtPath(root, p)->get<T>(); });
+    readers_.push_back([p, member](const Json& root, P& out) {
+      if (const Json* value = findAtPath(root, p)) out.*member = value->get<T>();  // absent: the default
+    });
     writers_.push_back([p, member](const P& in, Json& root) { setAtPath(root, p, Json(in.*member)); });
   }
 
