@@ -245,6 +245,19 @@ Eigen::VectorXd realPart(const Eigen::VectorXcd& x) {
   return (x * std::exp(std::complex<double>(0.0, -0.5 * std::arg(sum)))).real();
 }
 
+// Appends mode (ω, v) to `out`: its node displacements, twists and torsion share about `pose`.
+void appendMode(const RiserModel& m, const RiserPose& pose, const Coordinates& q, double omega,
+                const Eigen::VectorXd& v, RiserModes& out) {
+  std::vector<Vec3> shape;
+  std::vector<double> twist;
+  double share = 0;
+  modeShape(m, pose, q, v, shape, twist, share);
+  out.frequencies.push_back(omega);
+  out.shapes.push_back(std::move(shape));
+  out.twists.push_back(std::move(twist));
+  out.torsion_share.push_back(share);
+}
+
 }  // namespace
 
 double divergenceFlowSpeed(const RiserModel& model, const StaticSolution& statics) {
@@ -303,16 +316,7 @@ RiserModes computeModes(const RiserModel& model, const StaticSolution& statics, 
   RiserPose pose;
   pose.resize(m.segmentCount());
   poseFromState(m, 0.0, restState(m, statics.orientation, statics.top), pose);
-  auto add = [&](double omega, const Eigen::VectorXd& v) {
-    std::vector<Vec3> shape;
-    std::vector<double> twist;
-    double share = 0;
-    modeShape(m, pose, q, v, shape, twist, share);
-    out.frequencies.push_back(omega);
-    out.shapes.push_back(std::move(shape));
-    out.twists.push_back(std::move(twist));
-    out.torsion_share.push_back(share);
-  };
+  auto add = [&](double omega, const Eigen::VectorXd& v) { appendMode(m, pose, q, omega, v, out); };
   if (m.flow_speed == 0.0) {
     // No gyroscopic term: ω² are the positive real eigenvalues of −A.
     Eigen::EigenSolver<Eigen::MatrixXd> eig(-a);
@@ -374,14 +378,7 @@ void appendAbsoluteMode(const RiserModel& m, const StaticSolution& statics, doub
   RiserPose pose;
   pose.resize(m.segmentCount());
   poseFromState(m, 0.0, restState(m, statics.orientation, statics.top), pose);
-  std::vector<Vec3> shape;
-  std::vector<double> twist;
-  double share = 0;
-  modeShape(m, pose, q, v, shape, twist, share);
-  out.frequencies.push_back(omega);
-  out.shapes.push_back(std::move(shape));
-  out.twists.push_back(std::move(twist));
-  out.torsion_share.push_back(share);
+  appendMode(m, pose, q, omega, v, out);
 }
 
 void appendModeFrames(const RiserModel& model, const StaticSolution& statics, const RiserModes& modes,
