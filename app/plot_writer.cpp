@@ -29,6 +29,7 @@ namespace {
 maris::ui::StudyPlotData studyPlotData(const maris::study::CollectedStudy& collected,
                                        const maris::study::StudyManifest& manifest, const maris::study::StudyPlot& plot,
                                        int& x) {
+  const maris::Json& study_document = manifest.json.contains("study") ? manifest.json["study"] : manifest.json;
   maris::ui::StudyPlotData data;
   data.title = plot.title;
   data.result_name = collected.result_names[plot.result];
@@ -37,7 +38,7 @@ maris::ui::StudyPlotData studyPlotData(const maris::study::CollectedStudy& colle
     const auto& parameter = collected.parameters[p];
     if (parameter.kind != maris::ParamKind::Real && parameter.kind != maris::ParamKind::Integer) continue;
     if (p == plot.x) x = static_cast<int>(data.parameters.size());
-    maris::ui::StudyParameterData column{parameter.path, parameter.unit, maris::study::logSpaced(manifest, parameter.path),
+    maris::ui::StudyParameterData column{parameter.path, parameter.unit, maris::study::logSpaced(study_document, parameter.path),
                                          {}};
     for (const auto& c : collected.cases)
       column.values.push_back(c.values[p].is_number() ? c.values[p].get<double>() : std::nan(""));

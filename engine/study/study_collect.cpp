@@ -165,8 +165,7 @@ std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyMa
   return plots;
 }
 
-bool logSpaced(const StudyManifest& manifest, const std::string& path) {
-  const Json& document = manifest.json.contains("study") ? manifest.json["study"] : manifest.json;
+bool logSpaced(const Json& document, const std::string& path) {
   for (const char* design : {"grid", "latin_hypercube"}) {
     const auto d = document.find(design);
     if (d == document.end() || !d->is_object()) continue;

@@ -61,8 +61,9 @@ struct StudyPlot {
 };
 std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyManifest& manifest);
 
-// True when the study varies parameter `path` on a log scale (a grid's or a sample's "spacing": "log").
-bool logSpaced(const StudyManifest& manifest, const std::string& path);
+// True when the study document varies parameter `path` on a log scale (a grid's or a sample's "spacing":
+// "log"): the study file as read (Study::document) or as study.json records it (its "study").
+bool logSpaced(const Json& study_document, const std::string& path);
 
 
 }  // namespace maris::study

@@ -59,14 +59,7 @@ study::SceneSource oneScene(const SceneDefinition& scene) {
 
 std::vector<bool> logParameters(const study::Study& s) {
   std::vector<bool> log;
-  for (std::size_t p = 0; p < s.parameters.size(); ++p) {
-    if (s.kind == study::DesignKind::LatinHypercube)
-      log.push_back(p < s.bounds.size() && s.bounds[p].spacing == study::Spacing::Log);
-    else if (s.kind == study::DesignKind::Grid)
-      log.push_back(logSpacing(s.document.at("grid").value(s.parameters[p].path, Json())));
-    else
-      log.push_back(false);
-  }
+  for (const auto& parameter : s.parameters) log.push_back(study::logSpaced(s.document, parameter.path));
   return log;
 }
 
