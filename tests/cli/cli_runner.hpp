@@ -6,6 +6,11 @@
 
 namespace maris::test {
 
+// The built-in scenario tests run when what they check is the run folder, the summary or the command
+// line rather than the physics: a cantilever under a tip load, statics only (milliseconds in Release,
+// under a second under the sanitizers, where the default scenario's dynamics take half a minute).
+inline constexpr const char* kQuickBuiltin = "riser_cantilever_tip_load";
+
 struct CliResult {
   int exit_code = -1;
   std::string out;

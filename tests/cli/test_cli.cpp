@@ -29,6 +29,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::runCli;
+using test::kQuickBuiltin;
 
 fs::path freshDir(const std::string& name) {
   const auto dir = fs::temp_directory_path() / ("maris_cli_" + name + "_" + std::to_string(::getpid()));
@@ -119,12 +120,14 @@ std::optional<std::chrono::system_clock::time_point> parseIsoUtc(const std::stri
 TEST_F(Cli, RunWritesScenarioSummaryAndCsvTables) {
   const auto dir = freshDir("run");
   const auto before = std::chrono::system_clock::now();
-  const auto r = runCli({"run", defaultBuiltin().id, "--out", (dir / "out").string()});
+  const auto* quick = findBuiltin(kQuickBuiltin);
+  ASSERT_NE(quick, nullptr);
+  const auto r = runCli({"run", quick->id, "--out", (dir / "out").string()});
   const auto after = std::chrono::system_clock::now();
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("results written to"), std::string::npos);
   const Scenario ran = loadScenarioFile(dir / "out" / "scenario.json");
-  EXPECT_EQ(scenarioToJson(ran), scenarioToJson(defaultBuiltin().scenario));
+  EXPECT_EQ(scenarioToJson(ran), scenarioToJson(quick->scenario));
   const Json summary = Json::parse(readTextFile(dir / "out" / "summary.json"));
   ASSERT_TRUE(summary.contains("results"));
   ASSERT_TRUE(summary["solver"].contains("wall_time"));
@@ -155,7 +158,7 @@ TEST_F(Cli, OverrideIsAppliedAndRecordedInTheScenarioThatRan) {
   ASSERT_NE(f, nullptr);
   const auto dir = freshDir("override");
   const double value = f->default_value.get<double>();
-  const auto r = runCli({"run", defaultBuiltin().id, "--no-plots", "--out", (dir / "o").string(), "--set",
+  const auto r = runCli({"run", kQuickBuiltin, "--no-plots", "--out", (dir / "o").string(), "--set",
                          f->path + "=" + Json(value).dump()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Scenario ran = loadScenarioFile(dir / "o" / "scenario.json");

@@ -21,6 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::runCli;
+using test::kQuickBuiltin;
 
 // A run long enough to be interrupted (about 2e7 RK4 steps; within the work limits).
 const std::vector<std::string> kLongRun = {"run", "riser_default", "--set", "solver.integrator=\"rk4\"",
@@ -48,7 +49,7 @@ class CliRunFolder : public ::testing::Test {
     return names;
   }
   test::CliResult quickRun(const fs::path& out, std::vector<std::string> extra = {}, const std::string& prefix = "") {
-    std::vector<std::string> args = {"run", defaultBuiltin().id, "--no-plots", "--out", out.string()};
+    std::vector<std::string> args = {"run", kQuickBuiltin, "--no-plots", "--out", out.string()};
     args.insert(args.end(), extra.begin(), extra.end());
     return runCli(args, ".", 0.0, SIGINT, prefix);
   }
