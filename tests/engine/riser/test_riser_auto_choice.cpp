@@ -11,6 +11,7 @@
 #include "riser/riser_integrator_cost.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser_test_cases.hpp"
+#include "engine/release_only.hpp"
 
 namespace maris::riser {
 namespace {
@@ -76,6 +77,7 @@ void expectCheaperPick(const Case& c, const std::string& formulation) {
 // the cheaper one at 1e-4, where generalized-α needs 12 ms steps with a tighter Newton. Before the choice was made
 // by cost, joint coordinates at 1e-4 ran RK4 at every n (the peer riser at n = 100: 164 966 steps).
 TEST(RiserAutoChoice, PicksTheCheaperIntegratorAtEachToleranceInBothFormulations) {
+  MARIS_RELEASE_ONLY("RiserAutoChoice.MethodLineExplainsTheChoice with RiserIntegrators.ImplicitConvergesAtSecondOrderInBothFormulations");
   for (const char* formulation : {"joint", "absolute"})
     for (const Case& c : {Case{20, true, 1e-3}, Case{20, true, 1e-4}, Case{10, false, 1e-4}})
       expectCheaperPick(c, formulation);

@@ -16,6 +16,7 @@
 #include "riser/riser_parameters.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
+#include "engine/release_only.hpp"
 
 namespace maris::riser {
 namespace {
@@ -213,11 +214,18 @@ TEST(RiserAxialSpring, DynamicTopTensionSwingMatchesALumpedMassModelWithAxialSpr
   p.time_step = 0.025;  // T/400: expected probe error 43 (h/T)² = 2.7e-4 of the motion
   p.frame_count = 36;
   p.stress_times.clear();
+  // Under the sanitizers the segment method's dynamic path with the axial spring runs for 2 s; the comparison
+  // with the lumped-mass model (190 000 RK4 steps of test code) is checked in the Release build.
+  if (::maris::test::kSanitizedBuild) p.end_time = 2.0;
   RunContext context;
   const Results r = solveRiser(p, context);
   const Table* history = r.findTable("history");
   const auto& time = history->find("time")->values;
   const auto& force = history->find("top_force_z")->values;
+  if (::maris::test::kSanitizedBuild) {
+    for (double f : force) EXPECT_TRUE(std::isfinite(f));
+    return;
+  }
   Swing maris;
   for (std::size_t k = 0; k < time.size(); ++k)
     if (time[k] >= 20.0) maris.low = std::min(maris.low, force[k]), maris.high = std::max(maris.high, force[k]);

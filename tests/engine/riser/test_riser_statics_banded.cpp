@@ -12,6 +12,7 @@
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser_test_cases.hpp"
+#include "engine/release_only.hpp"
 
 namespace maris::riser {
 namespace {
@@ -119,7 +120,11 @@ TEST(RiserStaticsBanded, ThousandLinkChainMatchesTheCatenaryToTheDiscretisationE
 // midpoints of n = 25 (dense), 50, 100, 200 (relaxed) and 400 (Newton alone) converge as one sequence.
 TEST(RiserStaticsBanded, SlackCableHeldAtBothEndsIsFoundByDynamicRelaxation) {
   std::vector<Vec3> middle;
-  for (int n : {25, 50, 100, 200, 400}) {
+  // Under the sanitizers n = 25 (dense) and 50 (relaxed, then Newton, against the dense Newton) run every code
+  // path of the test; the sequence up to n = 400 and its convergence are checked in the Release build.
+  const std::vector<int> counts =
+      ::maris::test::kSanitizedBuild ? std::vector<int>{25, 50} : std::vector<int>{25, 50, 100, 200, 400};
+  for (int n : counts) {
     RiserParameters p = test::implicitCableHeldAtBothEnds(n, 0.0);
     p.formulation = "joint";
     const RiserModel m = buildRiserModel(p);

@@ -13,6 +13,7 @@
 #include "riser/riser_scene.hpp"
 #include "riser/riser_stress_convergence.hpp"
 #include "riser_test_cases.hpp"
+#include "engine/release_only.hpp"
 
 namespace maris {
 SceneDefinition makeRiserScene();
@@ -49,6 +50,7 @@ const std::vector<double>& column(const Results& r, const char* table, const cha
 // that it is above ten times 1e-4 of the stress (a relative displacement error is not a stress error, but the two
 // are of one order here: J2 against A2 differ by 3e-6–8e-5 of the stress, below).
 TEST(RiserStressConvergence, BendingStressAtMidLengthConvergesAtSecondOrderInN) {
+  MARIS_RELEASE_ONLY("RiserStressConvergence.CancellationStopsTheStudy");
   const Results r = caseFiveStudy("j2", {12, 24, 48, 96});
   ASSERT_NE(r.findTable("bending_stress_vs_segments"), nullptr);
   EXPECT_EQ(column(r, "bending_stress_vs_segments", "segment_count"), (std::vector<double>{12, 24, 48, 96}));
@@ -70,6 +72,7 @@ TEST(RiserStressConvergence, BendingStressAtMidLengthConvergesAtSecondOrderInN) 
 // error (each row an expected 6.4e-5 of the motion; measured here 3e-6–8e-5 relative, and 1.5e-4 at n = 100 and 200
 // on case 5 J3 against A3 over 36 s). Accepted 1e-3, a tenth of the n = 24 → 48 difference.
 TEST(RiserStressConvergence, JointAndAbsoluteCoordinatesAgreeAtEveryN) {
+  MARIS_RELEASE_ONLY("RiserStressConvergence.CancellationStopsTheStudy");
   const Results joint = caseFiveStudy("j2", {24, 48});
   const Results absolute = caseFiveStudy("a2", {24, 48});
   for (const char* name : {"bending_stress_t24", "max_bending_stress"}) {
