@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "core/spectrum.hpp"
+#include "seismic/seismic_outline.hpp"
 #include "seismic/seismic_solve.hpp"
 
 namespace maris::seismic {
@@ -248,7 +249,8 @@ void addVerificationHistories(const FeCase& c, Results& results) {
 
 FrameStride frameStride(int nx, int ny) { return {std::max(1, (nx + 159) / 160), std::max(1, (ny + 79) / 80)}; }
 
-// Wave-field frames: the x–y section drawn in the x–z plane, coloured by |u|, decimated to ≤ 160 × 80.
+// Wave-field frames: the x–y section drawn in the x–z plane, coloured by |u|, decimated to ≤ 160 × 80, with the
+// reef's outline and layer interfaces over it.
 void addWaveFieldFrames(const SeismicParameters& p, const FeCase& c, Results& results) {
   if (c.snapshot_magnitude.empty()) return;
   const auto [step_i, step_j] = frameStride(c.nx, c.ny);
@@ -266,7 +268,9 @@ void addWaveFieldFrames(const SeismicParameters& p, const FeCase& c, Results& re
         surf.points.emplace_back(c.x0 + i * delta, 0.0, c.y0 + j * delta);
         surf.scalars.push_back(c.snapshot_magnitude[f][j * (c.nx + 1) + i]);
       }
-    results.view.frames.push_back({c.snapshot_time[f], {std::move(surf)}, {}});
+    std::vector<Shape3D> shapes{std::move(surf)};
+    for (Shape3D& line : reefLayerOutlines(p)) shapes.push_back(std::move(line));
+    results.view.frames.push_back({c.snapshot_time[f], std::move(shapes), {}});
   }
   results.view.scalar_name = "displacement magnitude";
   results.view.scalar_unit = "m";

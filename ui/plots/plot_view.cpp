@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
+#include "plots/plot_axes.hpp"
 #include "plots/plot_export.hpp"
 #include "plots/result_plot.hpp"
 
@@ -136,7 +137,8 @@ void PlotView::applyAxisScales() {
   };
   apply(rect->axis(QCPAxis::atBottom), log_x_);
   apply(rect->axis(QCPAxis::atLeft), log_y_);
-  plot_->rescaleAxes();
+  apply(rect->axis(QCPAxis::atRight), log_y_);
+  fitAxesToData(*plot_);
   moveLegendToEmptiestCorner(*plot_);
 }
 

@@ -10,6 +10,7 @@
 #include <qcustomplot.h>
 
 #include "plots/display_units.hpp"
+#include "plots/plot_axes.hpp"
 #include "plots/reference_data.hpp"
 #include "theme.hpp"
 
@@ -54,17 +55,31 @@ Qt::PenStyle runPenStyle(int run) {
   return styles[run % 5];
 }
 
+// The y axis each column is drawn on: the left one, or the right one for columns much smaller than the
+// largest (plots/plot_axes.hpp). Reference points go on their column's axis.
+struct YAxes {
+  QCPAxis* left = nullptr;
+  QCPAxis* right = nullptr;
+  std::vector<std::string> right_columns;
+  bool onRight(const std::string& name) const {
+    return std::find(right_columns.begin(), right_columns.end(), name) != right_columns.end();
+  }
+  QCPAxis* of(const std::string& name) const { return onRight(name) ? right : left; }
+  QString note(const std::string& name) const { return onRight(name) ? QStringLiteral(" (right axis)") : QString(); }
+};
+
 
 // Graphs of one source's y columns. With one y column the runs differ by colour, with several by
 // line style (colour then names the column).
-void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const PlotSource& source, int run,
+// Each column on its axis of `axes` (a legend entry of the right axis says so).
+void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, const YAxes& axes, const PlotSource& source, int run,
                      bool several_sources, const Table& table, const Column& x, const PlotSpec& spec) {
   int series = 0;
   for (const auto& name : spec.y) {
     const Column* y = table.find(name);
     if (!y) continue;
-    QCPGraph* g = plot.addGraph(x_axis, y_axis);
-    QString graph_name = axisLabel(*y);
+    QCPGraph* g = plot.addGraph(x_axis, axes.of(name));
+    QString graph_name = axisLabel(*y) + axes.note(name);
     if (several_sources) graph_name = source.label + ": " + graph_name;
     g->setName(graph_name);
     const int color_index = spec.y.size() == 1 ? run : series;
@@ -77,24 +92,32 @@ void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, QCPAxis* y_axis, const 
 }
 
 
-// The y label of a plot of several columns: the plot's title and the columns' unit(s).
-QString severalColumnsLabel(const Table& table, const PlotSpec& spec) {
-  QStringList units;
-  for (const auto& name : spec.y) {
+// The y label of an axis with several columns: `title` (the plot's title; when empty, the columns' own
+// labels) and the columns' unit(s).
+QString severalColumnsLabel(const Table& table, const std::vector<std::string>& columns, const std::string& title) {
+  QStringList units, labels;
+  for (const auto& name : columns) {
     const Column* y = table.find(name);
     const QString unit = y ? QString::fromStdString(displayUnit(y->unit).unit) : QString();
     if (!unit.isEmpty() && unit != QLatin1String("-") && !units.contains(unit)) units << unit;
+    if (y) labels << QString::fromStdString(displayLabel(*y));
   }
-  QString label = QString::fromStdString(spec.title);
+  QString label = title.empty() ? labels.join(QStringLiteral(", ")) : QString::fromStdString(title);
   if (!units.isEmpty()) label += QStringLiteral("%1[%2]").arg(label.isEmpty() ? "" : " ", units.join(", "));
   return label;
+}
+
+// The label of a y axis that shows `columns`: the column's own label and unit when it is one.
+QString yAxisLabel(const Table& table, const std::vector<std::string>& columns, const std::string& title) {
+  if (columns.size() == 1)
+    if (const Column* y = table.find(columns.front())) return axisLabel(*y);
+  return severalColumnsLabel(table, columns, title);
 }
 
 // Where a legend of `entries` lines hides the fewest data points: the share of all points inside
 // each corner box of the axis rect (in axis fractions, log axes in log space).
 Qt::Alignment emptiestCorner(const QCustomPlot& plot, const QCPAxisRect& rect, int entries) {
   const QCPAxis* xa = rect.axis(QCPAxis::atBottom);
-  const QCPAxis* ya = rect.axis(QCPAxis::atLeft);
   auto fraction = [](const QCPAxis* axis, double v) {
     const QCPRange r = axis->range();
     if (axis->scaleType() == QCPAxis::stLogarithmic) {
@@ -112,7 +135,7 @@ Qt::Alignment emptiestCorner(const QCustomPlot& plot, const QCPAxisRect& rect, i
     const int n = data->size();
     const int stride = std::max(1, n / 2000);  // a sample is enough to find the emptiest corner
     for (int i = 0; i < n; i += stride) {
-      const double fx = fraction(xa, data->at(i)->key), fy = fraction(ya, data->at(i)->value);
+      const double fx = fraction(xa, data->at(i)->key), fy = fraction(plot.graph(g)->valueAxis(), data->at(i)->value);
       const bool right = fx > 1.0 - box_w, left = fx < box_w, top = fy > 1.0 - box_h, bottom = fy < box_h;
       counts[0] += right && top;
       counts[1] += left && top;
@@ -187,22 +210,31 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
   QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
   x_axis->setLabel(axisLabel(*x));
-  if (spec.y.size() == 1)
-    y_axis->setLabel(axisLabel(*table->find(spec.y.front())));
-  else
-    y_axis->setLabel(severalColumnsLabel(*table, spec));
+  // On a log axis every size is readable; on a linear one a much smaller quantity gets the right axis.
+  const AxisSplit split = spec.log_y ? AxisSplit{spec.y, {}} : splitByMagnitude(*table, spec.y);
+  const YAxes axes{y_axis, rect->axis(QCPAxis::atRight), split.right};
+  if (split.right.empty()) {
+    y_axis->setLabel(yAxisLabel(*table, spec.y, spec.title));
+  } else {
+    y_axis->setLabel(yAxisLabel(*table, split.left, {}));
+    axes.right->setLabel(yAxisLabel(*table, split.right, {}));
+    axes.right->setVisible(true);
+    axes.right->setTickLabels(true);
+    axes.right->grid()->setVisible(false);  // the left axis's grid only: two sets of lines would not read
+  }
 
   const bool several = sources.size() > 1;
   for (int run = 0; run < static_cast<int>(sources.size()); ++run) {
     const Results* results = sources[run].results;
     const Table* t = results ? results->findTable(spec.table) : nullptr;
     const Column* tx = t ? t->find(spec.x) : nullptr;
-    if (tx) addSourceGraphs(plot, x_axis, y_axis, sources[run], run, several, *t, *tx, spec);
+    if (tx) addSourceGraphs(plot, x_axis, axes, sources[run], run, several, *t, *tx, spec);
   }
   int markers = 0;
   auto add_markers = [&](const Table& ref, const Column* rx, const Column* ry, QCPScatterStyle::ScatterShape shape) {
-    QCPGraph* g = plot.addGraph(x_axis, y_axis);
-    g->setName(QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + ": " + QString::fromStdString(displayLabel(*ry)));
+    QCPGraph* g = plot.addGraph(x_axis, axes.of(ry->name));
+    g->setName(QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + ": " +
+               QString::fromStdString(displayLabel(*ry)) + axes.note(ry->name));
     g->setLineStyle(QCPGraph::lsNone);
     g->setScatterStyle(QCPScatterStyle(shape, QPen(drawingColors(plot.palette()).foreground, 1.2),
                                        QBrush(seriesColor(3 + markers++, plot.palette())), 7));
@@ -219,7 +251,7 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   }
   if (spec.log_x) setLogScale(x_axis);
   if (spec.log_y) setLogScale(y_axis);
-  plot.rescaleAxes();
+  fitAxesToData(plot);
   if (plot.graphCount() > 1) addPlotLegend(plot, *rect);
   applyPlotColors(plot);
   return true;

@@ -79,6 +79,7 @@ quint64 RunController::start(const SceneDefinition& scene, const Scenario& scena
   current_scenario_ = scenario;
   cancel_flag_ = job.cancel;
   clock_.start();
+  time_left_.restart();
   started_at_ = std::chrono::system_clock::now();
   setRunning(true);
   emit started(job.id);
@@ -95,9 +96,7 @@ void RunController::cancel() {
 void RunController::onProgress(quint64 run, double fraction, const QString& stage) {
   if (run != current_ || !running_) return;
   const double elapsed = clock_.elapsed() / 1000.0;
-  // A linear estimate once a few per cent are done; solvers' progress is close to linear in time.
-  const double remaining = fraction > 0.02 && fraction < 1.0 ? elapsed * (1.0 - fraction) / fraction : -1.0;
-  emit progressed(fraction, stage, elapsed, remaining);
+  emit progressed(fraction, stage, elapsed, time_left_.update(elapsed, fraction, stage));
 }
 
 void RunController::onPartial(quint64 run, ResultsPtr results) {

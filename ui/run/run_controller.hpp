@@ -15,6 +15,7 @@
 #include <QThread>
 
 #include "core/scene.hpp"
+#include "run/time_left.hpp"
 
 namespace maris::ui {
 
@@ -86,7 +87,7 @@ class RunController : public QObject {
 
  signals:
   void started(quint64 run);
-  // remaining_s < 0 when no estimate is possible yet.
+  // remaining_s < 0 when no estimate is possible yet (TimeLeftEstimate: from the solver's recent pace in its stage).
   void progressed(double fraction, const QString& stage, double elapsed_s, double remaining_s);
   void partialResults(maris::ui::ResultsPtr results);
   void finished(const maris::ui::RunRecord& record);
@@ -110,6 +111,7 @@ class RunController : public QObject {
   Scenario current_scenario_;
   std::shared_ptr<std::atomic<bool>> cancel_flag_;
   QElapsedTimer clock_;
+  TimeLeftEstimate time_left_;
   std::chrono::system_clock::time_point started_at_;
   qint64 cancel_requested_ns_ = 0;
   double last_cancel_latency_s_ = -1.0;

@@ -31,6 +31,8 @@ bool StudyRunner::start(const SceneDefinition& scene, std::vector<Scenario> case
   ended_ = succeeded_ = failed_ = active_ = 0;
   last_stop_ns_ = 0;
   clock_.start();
+  time_left_.restart();
+  fraction_reached_ = 0.0;
   running_ = true;
   emit runningChanged(true);
   emit started(static_cast<int>(cases.size()));
@@ -125,7 +127,8 @@ void StudyRunner::emitProgress(const QString& stage) {
   const double sum = std::accumulate(fraction_.begin(), fraction_.end(), 0.0);
   const double fraction = total ? sum / total : 0.0;
   const double elapsed = clock_.elapsed() / 1000.0;
-  const double remaining = fraction > 0.02 && fraction < 1.0 ? elapsed * (1.0 - fraction) / fraction : -1.0;
+  fraction_reached_ = std::max(fraction_reached_, fraction);
+  const double remaining = time_left_.update(elapsed, fraction_reached_, QStringLiteral("cases"));
   QString text = tr("%1 of %2 cases done, %3 running").arg(ended_).arg(total).arg(active_);
   if (failed_ > 0) text += tr(", %n failed", nullptr, failed_);
   if (!stage.isEmpty()) text += QStringLiteral(" — ") + stage;

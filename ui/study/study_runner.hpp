@@ -58,6 +58,10 @@ class StudyRunner : public QObject {
   std::vector<bool> started_case_, ended_case_;
   int ended_ = 0, succeeded_ = 0, failed_ = 0, active_ = 0;
   QElapsedTimer clock_;
+  // The study's pace over recent cases. Fed the highest fraction reached so far: a case's own fraction counts
+  // from zero again at each of its stages, which must not read as the whole study starting over.
+  TimeLeftEstimate time_left_;
+  double fraction_reached_ = 0.0;
   qint64 cancel_requested_ns_ = 0, last_stop_ns_ = 0;
   double last_cancel_latency_s_ = -1.0;
 };

@@ -33,6 +33,7 @@
 #include "themed_icon.hpp"
 #include "view3d/color_bar_scale.hpp"
 #include "view3d/color_map_control.hpp"
+#include "view3d/section_view.hpp"
 #include "view3d/shape_actors.hpp"
 #include "view3d/vtk_gl_widget.hpp"
 
@@ -286,6 +287,18 @@ void SceneView::rebuildStatic() {
   color_control_->setEnabled(have_scalars_);
   renderer->RemoveViewProp(scalar_bar_);
   if (have_scalars_) renderer->AddViewProp(scalar_bar_);
+  // A 2-D section: seen square-on, its water, sea bed and boundary outlined in its plane (horizontal planes
+  // would be seen edge-on, through the model).
+  section_axis_ = sectionNormalAxis(bounds);
+  if (section_axis_ >= 0) {
+    auto near = [&](const std::optional<double>& z) { return z && nearModel(*z, bounds) ? z : std::nullopt; };
+    for (const auto& actor :
+         makeSectionOutlines(bounds, section_axis_, near(view.water_level_z), near(view.seabed_z)).actors()) {
+      renderer->AddActor(actor);
+      static_actors_.push_back(actor);
+    }
+    return;
+  }
   Bounds3D ground = bounds;
   if (view.water_level_z && nearModel(*view.water_level_z, bounds)) {
     auto water = makeHorizontalPlane(ground, *view.water_level_z, 0.25, {0.25, 0.55, 0.85}, 0.22);
@@ -385,6 +398,7 @@ QString SceneView::drawingNotes() const {
     notes << (magnification_ == 1.0 ? tr("grey ghost: static shape")
                                     : tr("displacement × %1 from the static shape (grey ghost)").arg(magnification_));
   // Thin members are drawn thicker than they are; say so once it is more than a rounding.
+  if (section_axis_ >= 0) notes << tr("2-D model: seen square-on to its plane, without perspective");
   if (drawn_thickness_ratio_ > 1.5) notes << tr("tubes drawn up to %1 × their diameter").arg(std::round(drawn_thickness_ratio_));
   return notes.join('\n');
 }
@@ -459,9 +473,11 @@ void SceneView::resetCamera() {
   gl_->matchWindowSize();
   const Bounds3D bounds = framingBounds();
   const Eigen::Vector3d c = bounds.centre();
-  // An oblique view from the front-right and slightly above, z up.
-  const Eigen::Vector3d from = Eigen::Vector3d(0.55, -1.0, 0.35).normalized();
+  // An oblique view from the front-right and slightly above, z up; a 2-D section square-on, without perspective.
+  const Eigen::Vector3d from =
+      section_axis_ >= 0 ? sectionViewDirection(section_axis_) : Eigen::Vector3d(0.55, -1.0, 0.35).normalized();
   vtkCamera* camera = gl_->renderer()->GetActiveCamera();
+  camera->SetParallelProjection(section_axis_ >= 0);
   camera->SetFocalPoint(c.x(), c.y(), c.z());
   const Eigen::Vector3d eye = c + from * bounds.diagonal() * 2.0;
   camera->SetPosition(eye.x(), eye.y(), eye.z());

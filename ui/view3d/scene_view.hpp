@@ -125,6 +125,7 @@ class SceneView : public QWidget {
   double frame_lo_ = 0.0, frame_hi_ = 1.0;  // scalar range of the frame shown
   double magnification_ = 1.0;
   double drawn_thickness_ratio_ = 1.0;  // drawn tube radius / real radius of the thinnest tube (≥ 1)
+  int section_axis_ = -1;  // a 2-D section's normal (0 = x, 1 = y; view3d/section_view.hpp), −1 for a 3-D model
   std::string colored_quantity_;          // View3D::scalar_name of the shown results
   ColorSettings color_settings_;
   std::map<std::string, ColorSettings> color_memory_;  // by quantity; also saved with QSettings

@@ -1,0 +1,175 @@
+// A plot's axes as fillPlot draws them: reference points (the scene's own and a user's) lie inside the fitted
+// ranges with room for their markers, and quantities whose sizes differ by more than 100× get their own y axis.
+// Values are built here, so every expected range and axis follows from them.
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <vector>
+
+#include "plots/plot_axes.hpp"
+#include "plots/result_plot.hpp"
+
+using namespace maris;
+using namespace maris::ui;
+
+namespace {
+
+// A table "curve" of x = 0 … 1 [m] (21 points) and one column per (name, unit, size): size · (1 + x) / 2, labelled
+// by its name.
+Results curves(const std::vector<std::tuple<std::string, std::string, double>>& columns) {
+  Results r;
+  Table& t = r.tables.emplace_back();
+  t.name = "curve";
+  std::vector<double> x;
+  for (int i = 0; i <= 20; ++i) x.push_back(i / 20.0);
+  t.add("x", "m", x, "x");
+  for (const auto& [name, unit, size] : columns) {
+    std::vector<double> y;
+    for (double v : x) y.push_back(size * (1.0 + v) / 2.0);
+    t.add(name, unit, y, name);
+  }
+  return r;
+}
+
+Table points(const std::string& name, const std::string& y_name, std::vector<double> x, std::vector<double> y) {
+  Table t;
+  t.name = name;
+  t.title = "Measured points";
+  t.add("x", "m", std::move(x));
+  t.add(y_name, "m", std::move(y));
+  return t;
+}
+
+// Where `v` sits in `axis`'s range, 0 at the lower end and 1 at the upper (in decades on a log axis).
+double place(const QCPAxis* axis, double v) {
+  const QCPRange r = axis->range();
+  if (axis->scaleType() == QCPAxis::stLogarithmic) return std::log(v / r.lower) / std::log(r.upper / r.lower);
+  return (v - r.lower) / r.size();
+}
+
+// Every point of every marker graph lies at least `room` of the range inside both axes' ends.
+void requireMarkersInside(const QCustomPlot& plot, double room, int expected_markers) {
+  int markers = 0;
+  for (int i = 0; i < plot.graphCount(); ++i) {
+    const QCPGraph* g = plot.graph(i);
+    if (g->lineStyle() != QCPGraph::lsNone) continue;
+    for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it, ++markers) {
+      for (const double p : {place(g->keyAxis(), it->key), place(g->valueAxis(), it->value)})
+        QVERIFY2(p >= room && p <= 1.0 - room,
+                 qPrintable(QStringLiteral("%1 at (%2, %3): %4 of the range").arg(g->name()).arg(it->key).arg(it->value).arg(p)));
+    }
+  }
+  QCOMPARE(markers, expected_markers);
+}
+
+}  // namespace
+
+class TestPlotAxes : public QObject {
+  Q_OBJECT
+
+ private slots:
+  // Measured points below the curve's minimum and beyond its x range (as the towing-tank points of a
+  // resistance curve): the fitted ranges hold them with at least 3 % of the range to spare (the margin is 4 % of
+  // the range before widening, 4/108 = 3.7 % after).
+  void referencePointsAreInsideTheAxes() {
+    Results r = curves({{"y", "m", 2.0}});  // y from 1 to 2
+    r.tables.push_back(points("measured", "y", {0.0, 0.5, 1.2}, {0.8, 1.0, 2.5}));
+    PlotSpec spec = makePlot("p", "Curve", "curve", "x", {"y"});
+    spec.reference_table = "measured";
+    spec.reference_y = {"y"};
+    QCustomPlot plot;
+    plot.resize(600, 400);
+    QVERIFY(fillPlot(plot, r, spec));
+    requireMarkersInside(plot, 0.03, 3);
+
+    // A user's imported points (drawn as diamonds) likewise, beside the scene's own.
+    const Table user = points("paper", "y", {-0.3, 0.7}, {1.5, 3.0});
+    QVERIFY(fillPlot(plot, {{QStringLiteral("run 1"), &r}}, spec, {user}));
+    requireMarkersInside(plot, 0.03, 5);
+  }
+
+  // On a log y axis the room is counted in decades: points at 0.01 and 100 beside a curve from 1 to 2.
+  void referencePointsOnALogAxis() {
+    Results r = curves({{"y", "m", 2.0}});
+    r.tables.push_back(points("measured", "y", {0.2, 0.8}, {0.01, 100.0}));
+    PlotSpec spec = makePlot("p", "Curve", "curve", "x", {"y"}, true);
+    spec.reference_table = "measured";
+    spec.reference_y = {"y"};
+    QCustomPlot plot;
+    QVERIFY(fillPlot(plot, r, spec));
+    requireMarkersInside(plot, 0.03, 2);
+  }
+
+  // A curve alone keeps the tight fit: no marker, no margin (the x range is exactly the data's 0 … 1).
+  void curvesAloneAreFittedTightly() {
+    const Results r = curves({{"y", "m", 2.0}});
+    QCustomPlot plot;
+    QVERIFY(fillPlot(plot, r, makePlot("p", "Curve", "curve", "x", {"y"})));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atBottom)->range().lower, 0.0);
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atBottom)->range().upper, 1.0);
+  }
+
+  // A bending stress of 27 MPa and a torsional stress of 4 Pa (ratio 6.8e6): the torsional stress gets the right
+  // axis, with its own label, a legend entry that says so, and a range that holds its values (2 … 4 Pa); the left
+  // axis is labelled by the bending stress alone.
+  void veryDifferentSizesGetTwoAxes() {
+    const Results r = curves({{"bending", "Pa", 2.7e7}, {"torsion", "Pa", 4.0}});
+    QCustomPlot plot;
+    QVERIFY(fillPlot(plot, r, makePlot("p", "Stresses", "curve", "x", {"bending", "torsion"})));
+    QCPAxis* left = plot.axisRect()->axis(QCPAxis::atLeft);
+    QCPAxis* right = plot.axisRect()->axis(QCPAxis::atRight);
+    QCOMPARE(plot.graphCount(), 2);
+    QCOMPARE(plot.graph(0)->valueAxis(), left);
+    QCOMPARE(plot.graph(1)->valueAxis(), right);
+    QVERIFY(right->visible());
+    QVERIFY(right->tickLabels());
+    QVERIFY(right->range().lower <= 2.0 && right->range().upper >= 4.0);
+    QVERIFY(right->range().size() < 10.0);  // its own scale, not the left's 1e7
+    QVERIFY(left->range().upper >= 2.7e7);
+    QCOMPARE(right->label(), QStringLiteral("torsion [Pa]"));
+    QCOMPARE(left->label(), QStringLiteral("bending [Pa]"));
+    QCOMPARE(plot.graph(1)->name(), QStringLiteral("torsion [Pa] (right axis)"));
+    QVERIFY(!plot.graph(0)->name().contains(QStringLiteral("right axis")));
+  }
+
+  // The threshold is a factor 100 of the largest |value|: a top tension of 2 MN with a horizontal force of 10 kN
+  // (200×) is split, with 50 kN (40×) it is not.
+  void splitAtAFactorOfHundred() {
+    AxisSplit split = splitByMagnitude(curves({{"t", "N", 2e6}, {"h", "N", 1e4}}).tables[0], {"t", "h"});
+    QCOMPARE(split.left, std::vector<std::string>{"t"});
+    QCOMPARE(split.right, std::vector<std::string>{"h"});
+    split = splitByMagnitude(curves({{"t", "N", 2e6}, {"h", "N", 5e4}}).tables[0], {"t", "h"});
+    QCOMPARE(split.left, (std::vector<std::string>{"t", "h"}));
+    QVERIFY(split.right.empty());
+    // An all-zero column has no size to compare: it stays with the left axis.
+    split = splitByMagnitude(curves({{"t", "N", 2e6}, {"z", "N", 0.0}}).tables[0], {"t", "z"});
+    QVERIFY(split.right.empty());
+
+    const Results similar = curves({{"t", "N", 2e6}, {"h", "N", 5e4}});
+    QCustomPlot plot;
+    QVERIFY(fillPlot(plot, similar, makePlot("p", "Top forces", "curve", "x", {"t", "h"})));
+    QVERIFY(!plot.axisRect()->axis(QCPAxis::atRight)->visible());
+    QCOMPARE(plot.graph(1)->valueAxis(), plot.axisRect()->axis(QCPAxis::atLeft));
+  }
+
+  // On a log y axis every size reads: one axis. Reference points of a right-axis column go on the right axis.
+  void logAxisAndReferencePointsOfTheSmallColumn() {
+    const Results r = curves({{"big", "m", 1e6}, {"small", "m", 1.0}});
+    QCustomPlot plot;
+    QVERIFY(fillPlot(plot, r, makePlot("p", "Sizes", "curve", "x", {"big", "small"}, true)));
+    QVERIFY(!plot.axisRect()->axis(QCPAxis::atRight)->visible());
+
+    Results with_points = r;
+    with_points.tables.push_back(points("measured", "small", {0.5}, {3.0}));
+    PlotSpec spec = makePlot("p", "Sizes", "curve", "x", {"big", "small"});
+    spec.reference_table = "measured";
+    spec.reference_y = {"small"};
+    QVERIFY(fillPlot(plot, with_points, spec));
+    QCOMPARE(plot.graphCount(), 3);
+    QCOMPARE(plot.graph(2)->valueAxis(), plot.axisRect()->axis(QCPAxis::atRight));
+    requireMarkersInside(plot, 0.03, 1);  // 3.0 lies above the curve's 0.5 … 1: the right axis grew to hold it
+  }
+};
+
+QTEST_MAIN(TestPlotAxes)
+#include "test_plot_axes.moc"
