@@ -19,8 +19,8 @@
 namespace maris::riser {
 namespace {
 
-// The peer riser at n = 8, every joint damped, in a pose bent up to ≈ 80° between neighbours (the rate matrix is
-// far from the identity there) with every segment turning and moving.
+// The peer riser at n = 8, every joint damped, in a pose bent by more than 57° between some neighbours (the rate
+// matrix is far from the identity there) with every segment turning and moving.
 struct BentPose {
   RiserModel model;
   RiserPose pose;
@@ -51,7 +51,7 @@ BentPose bentPose() {
 double largestAngleBetweenNeighbours(const BentPose& b) {
   double largest = 0.0;
   for (int i = 1; i <= b.model.n; ++i)
-    largest = std::max(largest, std::acos(std::clamp(b.pose.rotation[i - 1].col(0).dot(b.pose.rotation[i].col(0)), -1.0, 1.0)));
+    largest = std::max(largest, std::acos(std::clamp(b.pose.tangent(i - 1).dot(b.pose.tangent(i)), -1.0, 1.0)));
   return largest;
 }
 
