@@ -39,7 +39,11 @@ Eigen::Vector3d CurrentProfile::at(double z) const {
     const std::size_t k = std::clamp<std::size_t>(index, 1, depth.size() - 1) - 1;
     const double f = std::clamp((below - depth[k]) / (depth[k + 1] - depth[k]), 0.0, 1.0);
     s = speed[k] + f * (speed[k + 1] - speed[k]);
+    if (heading[k + 1] == heading[k] && direction.size() == heading.size())
+      return s * Eigen::Vector3d(direction[k].x(), direction[k].y(), 0.0);
     h = heading[k] + f * std::remainder(heading[k + 1] - heading[k], 2 * std::numbers::pi);
+  } else if (direction.size() == 1) {
+    return s * Eigen::Vector3d(direction[0].x(), direction[0].y(), 0.0);
   }
   return s * Eigen::Vector3d(std::cos(h), std::sin(h), 0.0);
 }
@@ -54,6 +58,7 @@ CurrentProfile buildCurrentProfile(const RiserParameters& p) {
       c.heading.push_back(radiansFromDegrees(r.heading_deg));
       c.max_speed = std::max(c.max_speed, std::abs(r.speed));
     }
+    for (double h : c.heading) c.direction.emplace_back(std::cos(h), std::sin(h));
     return c;
   }
   const double direction = radiansFromDegrees(p.current_direction_deg), depth = p.water_level - p.seabed_level;
@@ -66,6 +71,7 @@ CurrentProfile buildCurrentProfile(const RiserParameters& p) {
     c.heading.push_back(direction);
   }
   c.max_speed = std::max(std::abs(p.current_speed_surface), std::abs(p.current_speed_seabed));
+  for (double h : c.heading) c.direction.emplace_back(std::cos(h), std::sin(h));
   return c;
 }
 

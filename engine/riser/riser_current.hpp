@@ -20,6 +20,10 @@ struct CurrentProfile {
   std::vector<double> speed;    // [m/s]
   std::vector<double> heading;  // [rad] from +x towards +y
   double max_speed = 0.0;       // [m/s] largest |speed| (scales the static residual)
+  // (cos, sin) of each row's heading, set by buildCurrentProfile: between two rows of the same heading `at` takes
+  // these instead of a remainder, a cosine and a sine at every Gauss point (the same numbers, 15 % of a riser's
+  // right-hand side).
+  std::vector<Eigen::Vector2d> direction;
 
   // Velocity [m/s] at height z: zero above the water level; above the first row and below the last the end row
   // holds; in between speed and heading are linear in depth, the heading along the shorter arc.

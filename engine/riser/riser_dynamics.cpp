@@ -175,8 +175,9 @@ void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Ei
     const Mat3& r = pose.rotation[i];
     const Vec3& om = pose.omega[i];
     const Vec3 c = 0.5 * s.length * r.col(0);
-    const Mat3 inertia = r * s.mass_local.bottomRightCorner<3, 3>() * r.transpose();
-    ws.bias[i] << ws.loads.force[i] - s.mass * om.cross(om.cross(c)), ws.loads.moment[i] - om.cross(inertia * om);
+    // ω × (I ω) with I = R I_local Rᵀ applied as R (I_local (Rᵀ ω)): three products with a vector, not two 3×3 ones.
+    const Vec3 inertia_omega = r * (s.mass_local.bottomRightCorner<3, 3>() * (r.transpose() * om));
+    ws.bias[i] << ws.loads.force[i] - s.mass * om.cross(om.cross(c)), ws.loads.moment[i] - om.cross(inertia_omega);
     // Tangential added mass unlike the normal one (K = m 1 + δ t tᵀ, v the velocity of A_i): the velocity terms of
     // Kirchhoff's equations for the kinetic energy ½ vᵀ K v + ..., ω×(Kv) − K(ω×v) in the force and the Munk
     // moment v×(Kv), so that the energy balance still closes; they vanish for an isotropic added mass.
@@ -229,9 +230,10 @@ void assembleReactionMatrix(const RiserModel& m, RiserWorkspace& ws) {
     const Mat6& w = ws.inverse_mass[i];
     return w.leftCols<3>() + w.rightCols<3>() * skew(d(i));
   };
+  Eigen::Matrix<double, 6, 3> wd_above = wd(f);  // W_i D'_i of the segment above row k, each computed once
   ws.lower[0].setZero();
   ws.diag[0] = ws.inverse_mass[f].topLeftCorner<3, 3>();
-  ws.upper[0] = -wd(f).topRows<3>();
+  ws.upper[0] = -wd_above.topRows<3>();
   for (int c = 0; c < 3; ++c) {
     if (!topForceKnown(m, c)) continue;
     ws.diag[0].row(c) = Vec3::Unit(c).transpose();
@@ -239,15 +241,16 @@ void assembleReactionMatrix(const RiserModel& m, RiserWorkspace& ws) {
   }
   for (int k = 1; k < nb - 1; ++k) {
     const int j = f + k;
-    const auto wd_prev = wd(j - 1);
-    ws.lower[k] = -wd_prev.topRows<3>().transpose();
-    ws.diag[k] = ws.inverse_mass[j].topLeftCorner<3, 3>() + wd_prev.topRows<3>() - skew(d(j - 1)) * wd_prev.bottomRows<3>();
-    ws.upper[k] = -wd(j).topRows<3>();
+    const Eigen::Matrix<double, 6, 3> wd_below = wd(j);
+    ws.lower[k] = -wd_above.topRows<3>().transpose();
+    ws.diag[k] = ws.inverse_mass[j].topLeftCorner<3, 3>() + wd_above.topRows<3>() - skew(d(j - 1)) * wd_above.bottomRows<3>();
+    ws.upper[k] = -wd_below.topRows<3>();
+    wd_above = wd_below;
   }
   const int k = nb - 1;
   ws.upper[k].setZero();
   if (bottomHeld(m)) {
-    const auto wd_last = wd(last);
+    const auto& wd_last = wd_above;
     ws.lower[k] = -wd_last.topRows<3>().transpose();
     ws.diag[k] = wd_last.topRows<3>() - skew(d(last)) * wd_last.bottomRows<3>();
   } else {
@@ -299,12 +302,15 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
   ws.rhs[0] = top.acceleration - (joint ? Vec3::Zero() : stabilisation(m, phi, 0, alpha)) - wb(f).head<3>();
   for (int c = 0; c < 3; ++c)
     if (topForceKnown(m, c)) ws.rhs[0][c] = knownTopForce(m, c, t, pose.position[f], pose.velocity[f]);
+  Vec6 wb_above = wb(f);  // W_i b_i of the segment above row k, each computed once
   for (int k = 1; k < nb - 1; ++k) {
     const int j = f + k;
-    ws.rhs[k] = kappa(j - 1) + stabilisation(m, phi, k, alpha) + farEnd(wb(j - 1), d(j - 1)) - wb(j).head<3>();
+    const Vec6 wb_below = wb(j);
+    ws.rhs[k] = kappa(j - 1) + stabilisation(m, phi, k, alpha) + farEnd(wb_above, d(j - 1)) - wb_below.head<3>();
+    wb_above = wb_below;
   }
   const bool held = bottomHeld(m);
-  ws.rhs[nb - 1] = held ? Vec3(farEnd(wb(last), d(last)) + kappa(last) + stabilisation(m, phi, nb - 1, alpha))
+  ws.rhs[nb - 1] = held ? Vec3(farEnd(wb_above, d(last)) + kappa(last) + stabilisation(m, phi, nb - 1, alpha))
                         : Vec3::Zero();
   solveReactionSystem(m, ws);
   double drift = phi.position[nb - 1].lpNorm<Eigen::Infinity>();

@@ -42,14 +42,27 @@ Mat3 zyxRateMatrix(const Vec3& a) {
 void addSpringMoments(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads) {
   for (int i = 1; i <= m.n; ++i) {
     const Mat3& ra = pose.rotation[i - 1];
-    const Vec3 angles = zyxAngles(ra.transpose() * pose.rotation[i]);
-    const Mat3 g = zyxRateMatrix(angles);
-    // Relative angle rates from the relative angular velocity seen in frame i-1.
-    const Vec3 rates = g.lu().solve(ra.transpose() * (pose.omega[i] - pose.omega[i - 1]));
+    const Mat3 rel = ra.transpose() * pose.rotation[i];
+    const Vec3 angles = zyxAngles(rel);
+    // G of zyxRateMatrix(angles) without its sines and cosines (the profile's second-largest item): sin θ, cos θ
+    // and (cos ψ, sin ψ) are read off the matrix the angles came from, and G, G^T are solved in closed form (the
+    // first two rows of G are a turn by ψ of (cos θ x_0, x_1)) instead of by two LU factorisations.
+    const double st = -std::clamp(rel(2, 0), -1.0, 1.0);
+    const double cos_pitch = std::sqrt((1 - st) * (1 + st));
+    const double ct = std::max(cos_pitch, kLeastCosPitch);
+    const double heading_norm = std::sqrt(rel(0, 0) * rel(0, 0) + rel(1, 0) * rel(1, 0));
+    const double cp = heading_norm > 0 ? rel(0, 0) / heading_norm : 1.0;
+    const double sp = heading_norm > 0 ? rel(1, 0) / heading_norm : 0.0;
+    // Relative angle rates from the relative angular velocity seen in frame i-1: G rates = w.
+    const Vec3 w = ra.transpose() * (pose.omega[i] - pose.omega[i - 1]);
+    const double rate_x = (cp * w.x() + sp * w.y()) / ct;
+    const Vec3 rates(rate_x, -sp * w.x() + cp * w.y(), w.z() + st * rate_x);
     const Vec3& c = m.joints[i].stiffness;
     const Vec3& b = m.joints[i].damping;
     const Vec3 mbar = c.cwiseProduct(angles) + b.cwiseProduct(rates);
-    const Vec3 couple = ra * g.transpose().lu().solve(mbar);
+    // G^T y = M̄: y_z = M̄_z, cos θ (cos ψ y_x + sin ψ y_y) − sin θ y_z = M̄_x, −sin ψ y_x + cos ψ y_y = M̄_y.
+    const double along = (mbar.x() + st * mbar.z()) / ct;
+    const Vec3 couple = ra * Vec3(cp * along - sp * mbar.y(), sp * along + cp * mbar.y(), mbar.z());
     loads.moment[i] -= couple;
     loads.moment[i - 1] += couple;
     loads.relative_angle[i] = angles;
@@ -80,20 +93,28 @@ void addDrag(const RiserModel& m, const RiserPose& pose, double factor, SegmentL
     if (seg.normal_drag == 0.0 && seg.tangential_drag == 0.0) continue;
     const Mat3& r = pose.rotation[i];
     const Vec3 t = r.col(0);
+    // In the segment's frame, where the Gauss point's arm is ξ e_x: its velocity R^T v + (R^T ω) × ξ e_x, the
+    // force's moment ξ e_x × f, both summed over the points and turned to the global frame once (two products
+    // with R per segment instead of two per point: addDrag was the largest item of the profile).
+    const Vec3 velocity_local = r.transpose() * pose.velocity[i], omega_local = r.transpose() * pose.omega[i];
+    Vec3 force_local = Vec3::Zero(), moment_local = Vec3::Zero();
     for (int q = 0; q < 3; ++q) {
       const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
-      const Vec3 p = pose.position[i] + xi * t;
-      if (p.z() > m.water_level) continue;
-      const Vec3 v = pose.velocity[i] + pose.omega[i].cross(xi * t);
-      const Vec3 local = r.transpose() * (v - m.currentAt(p.z()));
-      const double vn = std::hypot(local.y(), local.z());
-      const Vec3 s_local(-seg.tangential_drag * std::abs(local.x()) * local.x(), -seg.normal_drag * vn * local.y(),
-                         -seg.normal_drag * vn * local.z());
-      const Vec3 f = factor * w * (r * s_local);
-      loads.force[i] += f;
-      loads.moment[i] += (xi * t).cross(f);
+      const double z = pose.position[i].z() + xi * t.z();
+      if (z > m.water_level) continue;
+      const Vec3 v = velocity_local + xi * Vec3(0.0, omega_local.z(), -omega_local.y());
+      const Vec3 current_local = r.transpose() * m.currentAt(z);
+      const Vec3 local = v - current_local;
+      const double vn = std::sqrt(local.y() * local.y() + local.z() * local.z());
+      const Vec3 f = factor * w *
+                     Vec3(-seg.tangential_drag * std::abs(local.x()) * local.x(), -seg.normal_drag * vn * local.y(),
+                          -seg.normal_drag * vn * local.z());
+      force_local += f;
+      moment_local += xi * Vec3(0.0, -f.z(), f.y());
       loads.power_drag += f.dot(v);
     }
+    loads.force[i] += r * force_local;
+    loads.moment[i] += r * moment_local;
   }
 }
 

@@ -110,6 +110,9 @@ std::vector<double> denseFrequencies(const DensePencil& pencil, int count) {
 // The pencil's condition (highest over lowest ω², 2e6 at n = 50, 1.5e8 at n = 150) bounds what either can resolve.
 // Measured on the ten lowest: ≤ 6e-12 at n = 50 (tolerance 1e-10); at n = 150 ≤ 9e-11 from the third mode on and
 // 1.3e-10, 5.7e-10 on the first pair (split by 1e-5 only, so each member is sensitive): tolerance 2e-9 there.
+// The pencil is differenced from the right-hand side, so its rounding moves these figures: after the right-hand
+// side was made cheaper (same equations, other rounding) the third mode at n = 150 differed by 1.9e-10, the others
+// from the third on by ≤ 1e-10: tolerance 5e-10 from the third mode on at n = 150.
 TEST(RiserModesKrylov, MatchesADenseSolveOfTheSamePencil) {
   for (int n : {50, 150}) {
     const Solved s = solved(defaultRiser(n));
@@ -119,7 +122,7 @@ TEST(RiserModesKrylov, MatchesADenseSolveOfTheSamePencil) {
     ASSERT_EQ(krylov.frequencies.size(), 10u);
     ASSERT_EQ(dense.size(), 10u);
     for (std::size_t k = 0; k < 10; ++k) {
-      const double tolerance = n == 50 || k >= 2 ? 1e-10 : 2e-9;
+      const double tolerance = n == 50 ? 1e-10 : k >= 2 ? 5e-10 : 2e-9;
       EXPECT_NEAR(krylov.frequencies[k], dense[k], tolerance * dense[k]) << "n = " << n << " mode " << k + 1;
     }
   }
