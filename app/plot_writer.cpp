@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 
 #ifdef MARIS_PLOT_RENDERER_FILE
 // Next to the executable (the build tree), then the installed module folder relative to it
-// (MARIS_PLOT_RENDERER_RELDIR, e.g. ../lib/maris from bin/).
+// (MARIS_PLOT_RENDERER_RELDIR, e.g. ../lib/maris/modules from bin/).
 std::vector<fs::path> rendererCandidates() {
   std::error_code error;
   const fs::path exe_dir = fs::read_symlink("/proc/self/exe", error).parent_path();
