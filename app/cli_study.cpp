@@ -66,6 +66,7 @@ std::string defaultOut(const std::string& study_file) {
 
 int cmdRun(const StudyOptions& options, int argc, char** argv) {
   const std::string out = options.out_dir.empty() ? defaultOut(options.study_file) : options.out_dir;
+  if (!options.no_plots || options.case_plots) requirePlotRenderer();  // before any case runs
   PreparedStudy prepared = prepareStudy(options, out, "maris-cli study run");
   const StudyFolder& folder = prepared.folder;
   StudyManifest manifest = readManifest(folder);
@@ -121,6 +122,7 @@ int cmdRunCases(const StudyOptions& options) {
 
 int cmdCollect(const StudyOptions& options, int argc, char** argv) {
   const StudyFolder folder{std::filesystem::absolute(options.out_dir).lexically_normal()};
+  if (!options.no_plots) requirePlotRenderer();
   FolderLock lock(folder.root, "maris-cli study collect");
   StudyManifest manifest = readManifest(folder);
   return collectAndReport(folder, manifest, options.no_plots, argc, argv);

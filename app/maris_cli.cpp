@@ -169,6 +169,7 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
   // Everything that can refuse the run does so before the solve: work limits, then the output folder.
   const WorkEstimate estimate = estimateWork(scene, scenario.parameters);
   if (auto errors = workLimitErrors(estimate); !options.allow_large && !errors.empty()) throw InputError(errors);
+  if (!options.no_plots) requirePlotRenderer();  // a missing renderer refuses before the solve
   installSignalHandlers();
   RunFolder folder(out_dir, {options.force, static_cast<std::uintmax_t>(estimate.output_bytes)});
   RunContext context(makeProgressPrinter(), &g_cancel);

@@ -147,6 +147,8 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
     if (outcome.status != CaseStatus::Ok) tally.failed_ids.push_back(outcome.id);
     study::writeCaseOutcome(folder, outcome);
   };
+  // A case that ended: its outcome, recorded after the next cases have started (writing it waits for the disk).
+  std::vector<CaseOutcome> ended;
   auto finish = [&](pid_t pid, int status) {
     const auto it = running.find(pid);
     if (it == running.end()) return;
@@ -175,7 +177,7 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
         outcome.message = WIFSIGNALED(status) ? "ended by signal " + std::to_string(WTERMSIG(status))
                                               : "exit code " + std::to_string(outcome.exit_code) + " without results";
     }
-    record(std::move(outcome));
+    ended.push_back(std::move(outcome));
   };
 
   for (;;) {
@@ -189,6 +191,8 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
       }
       running[pid] = {id, Clock::now(), std::chrono::system_clock::now(), false, {}};
     }
+    for (auto& outcome : ended) record(std::move(outcome));
+    ended.clear();
     progress.show(tally, running.size(), false);
     if (running.empty()) break;
 

@@ -2,7 +2,8 @@
 # Builds the Debian packages (maris-cli, maris) from an existing Release build and checks them:
 #   lintian reports no error and no warning; the files a desktop reads validate (desktop entry, AppStream);
 #   both packages unpacked into an empty root, maris-cli from there answers --help, list and scenes and
-#   runs one built-in scenario of every scene (its PNG plots included), maris answers --help;
+#   runs one built-in scenario of every scene (its PNG plots included, drawn by the plot renderer module that
+#   maris-cli loads: maris-cli itself links no Qt), maris answers --help;
 #   `apt-get install --simulate` of the .deb files resolves on this system, and maris-cli pulls no VTK.
 # Usage: scripts/ci_package_check.sh [BUILD_DIR]     (default build/release, configured with the release preset)
 # Prints one summary line; exits non-zero on any problem.
@@ -86,6 +87,15 @@ step "maris-cli from the unpacked root"
 echo "maris-cli Depends: $(dpkg-deb --field "${cli_deb[0]}" Depends)"
 if dpkg-deb --field "${cli_deb[0]}" Depends | grep -qi vtk || readelf -d "$cli" | grep -qi 'NEEDED.*vtk'; then
   problem "maris-cli depends on VTK"
+fi
+# maris-cli itself links no Qt; its plot renderer is a module it loads only to write PNGs.
+if readelf -d "$cli" | grep -qi 'NEEDED.*\(qt\|qcustomplot\)'; then
+  problem "maris-cli links Qt (its plots belong in the renderer module)"
+fi
+if [ "$gui" = ON ]; then
+  renderer=$(find "$root/usr/lib" -name maris_plot_renderer.so 2>/dev/null | head -n 1)
+  [ -n "$renderer" ] || problem "the maris-cli package has no maris_plot_renderer.so"
+  [ -z "$renderer" ] || echo "plot renderer: ${renderer#"$root"}"
 fi
 "$cli" --help >/dev/null || problem "maris-cli --help failed"
 "$cli" list >"$work/list.txt" || problem "maris-cli list failed"

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 #include <system_error>
 
 #include <fcntl.h>
@@ -10,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/scenario.hpp"
 #include "core/text_format.hpp"
 
 namespace maris {
@@ -46,12 +48,11 @@ void syncDirectory(const fs::path& dir) {
 // syncfs(2) of its file system: one flush of the device instead of one per file (each fsync of a freshly
 // written file costs a journal commit and a device flush, ~4 ms here; a small run writes ten files).
 void syncTree(const fs::path& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) fail("cannot read back " + quoted(dir) + ": " + std::strerror(errno));
-  const bool synced = ::syncfs(fd) == 0;
-  const int err = errno;
-  ::close(fd);
-  if (!synced) fail("cannot write the files of " + quoted(dir) + ": " + std::strerror(err));
+  try {
+    syncFileSystem(dir);
+  } catch (const std::runtime_error& e) {
+    fail(e.what());
+  }
 }
 
 }  // namespace

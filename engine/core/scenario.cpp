@@ -98,12 +98,12 @@ bool writeAll(int fd, const std::string& content) {
 
 }  // namespace
 
-void writeFileAtomic(const std::filesystem::path& file, const std::string& content) {
+void writeFileAtomic(const std::filesystem::path& file, const std::string& content, FileSync sync) {
   const auto dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
   std::string tmpl = (dir / ("." + file.filename().string() + ".XXXXXX")).string();
   const int fd = ::mkstemp(tmpl.data());
   if (fd < 0) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
-  const bool written = writeAll(fd, content) && ::fsync(fd) == 0;
+  const bool written = writeAll(fd, content) && (sync == FileSync::Later || ::fsync(fd) == 0);
   const int write_error = errno;
   if (::close(fd) != 0 || !written) {
     const int err = written ? errno : write_error;
@@ -117,6 +117,15 @@ void writeFileAtomic(const std::filesystem::path& file, const std::string& conte
     ::unlink(tmpl.c_str());
     throw std::runtime_error("cannot write " + file.string() + ": " + ec.message());
   }
+}
+
+void syncFileSystem(const std::filesystem::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("cannot read back " + dir.string() + ": " + std::strerror(errno));
+  const bool synced = ::syncfs(fd) == 0;
+  const int err = errno;
+  ::close(fd);
+  if (!synced) throw std::runtime_error("cannot write the files of " + dir.string() + ": " + std::strerror(err));
 }
 
 void writeStagedFile(const std::filesystem::path& file, const std::string& content) {

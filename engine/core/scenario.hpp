@@ -31,9 +31,15 @@ Scenario scenarioFromText(const std::string& text, const std::string& origin = "
 Scenario loadScenarioFile(const std::filesystem::path& file);
 void saveScenarioFile(const Scenario& scenario, const std::filesystem::path& file);
 
+// When a file written by writeFileAtomic is durable: at once (fsync before the rename), or later, by one
+// syncFileSystem after many files (each fsync costs a journal commit and a device flush).
+enum class FileSync { Now, Later };
 // Writes `content` to `file` atomically: a temp file in the same folder, flushed, then renamed.
 // Throws std::runtime_error naming the file and the OS error.
-void writeFileAtomic(const std::filesystem::path& file, const std::string& content);
+void writeFileAtomic(const std::filesystem::path& file, const std::string& content, FileSync sync = FileSync::Now);
+// syncfs(2) of the file system that holds `dir`: every file written there is durable after one flush.
+// Throws std::runtime_error naming `dir` and the OS error.
+void syncFileSystem(const std::filesystem::path& dir);
 // Writes `content` to `file` in place, without syncing it: for a file in a private staging folder that
 // is synced and moved into place as a whole (RunFolder::commit). Throws std::runtime_error.
 void writeStagedFile(const std::filesystem::path& file, const std::string& content);

@@ -11,30 +11,12 @@
 #include <QPointF>
 #include <QString>
 
+#include "plots/study_plot_data.hpp"
+
 class QCustomPlot;
 
 namespace maris::ui {
 
-// One varied parameter and its value in each case.
-struct StudyParameterData {
-  std::string name;  // the parameter path, "geometry.length"
-  std::string unit;
-  bool log = false;  // varied on a log scale: the x axis is logarithmic
-  std::vector<double> values;
-};
-
-// A study's numbers for one result scalar: every varied parameter and the result, per case. A
-// case without the result (failed, cancelled, not run) holds NaN and is left out of the plot.
-struct StudyPlotData {
-  std::string title;  // above the plot (empty: none)
-  std::vector<StudyParameterData> parameters;
-  std::string result_name;
-  std::string result_unit;
-  std::vector<double> result;
-  std::size_t caseCount() const { return result.size(); }
-};
-
-enum class StudyPlotKind { Lines, HeatMap };
 
 // Where each drawn point came from, for clicks: per graph the case of each data point (in the
 // graph's key order); for a heat map the case of each cell (x fastest) and the grid's values.

@@ -106,6 +106,11 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
                               tr("CSV: one column per parameter path, one row per case (*.csv)"));
     if (!f.isEmpty()) openCaseTable(f);
   });
+  file_menu->addAction(tr("New Latin hypercube study…"), this, [this] {
+    if (runner_->isRunning() || !document_->scene()) return;
+    LatinHypercubeDialog dialog(*document_->scene(), document_->scenario(), this);
+    if (dialog.exec() == QDialog::Accepted) defineLatinHypercube(dialog.design());
+  });
   auto* file_button = new QPushButton(tr("Study"), this);
   file_button->setMenu(file_menu);
 
@@ -388,6 +393,31 @@ bool StudyPanel::openCaseTable(const QString& file) {
   plot_view_->refresh();
   rebuildTable();
   emit message(tr("Load-case table %1: run the study to run its cases").arg(file));
+  return true;
+}
+
+bool StudyPanel::defineLatinHypercube(const LatinHypercubeDesign& design) {
+  if (runner_->isRunning()) return false;
+  if (!document_->isValid()) {
+    fail(tr("Open a valid scenario first: the samples vary it."));
+    return false;
+  }
+  StudySession sample;
+  try {
+    sample.defineLatinHypercube(*document_->scene(), document_->scenario(), design);
+  } catch (const InputError& e) {
+    fail(tr("The Latin hypercube cannot be built:\n%1").arg(QString::fromStdString(describeErrors(e.errors()))));
+    return false;
+  } catch (const std::exception& e) {
+    fail(tr("The Latin hypercube cannot be built: %1").arg(QString::fromUtf8(e.what())));
+    return false;
+  }
+  session_ = std::move(sample);
+  grid_.clear();
+  from_file_ = true;
+  plot_view_->refresh();
+  rebuildTable();
+  emit message(tr("Latin hypercube of %n case(s): run the study to run them", nullptr, design.samples));
   return true;
 }
 

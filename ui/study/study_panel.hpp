@@ -57,6 +57,9 @@ class StudyPanel : public QWidget {
   // reason logged, when the table or a case is bad.
   bool openCaseTable(const QString& file);
   bool openStudy(const QString& file);
+  // "New Latin hypercube study…": a sample over the open scenario (the engine draws the cases); false, with
+  // the reason logged, when the design is bad.
+  bool defineLatinHypercube(const LatinHypercubeDesign& design);
 
   // A finished case as a run record for the results view ("study case 0003 (length = 120 m)").
   // Its id is `id`; nullopt if the case has no results.

@@ -13,6 +13,7 @@
 
 #include "plots/study_plot.hpp"
 #include "run/run_controller.hpp"
+#include "study/latin_hypercube_dialog.hpp"
 #include "study/sweep_dialog.hpp"
 
 namespace maris::ui {
@@ -34,6 +35,9 @@ class StudySession {
   // A load-case table study over `base`: one case per data row of `csv_file` (a column per parameter
   // path; a units row may follow the names). Throws InputError naming every problem of the table.
   void defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file);
+  // A Latin-hypercube study over `base`: the engine draws `design.samples` cases from `design.seed`, one per
+  // stratum of every parameter's interval. Throws InputError naming every problem of the design.
+  void defineLatinHypercube(const SceneDefinition& scene, const Scenario& base, const LatinHypercubeDesign& design);
   // Reads a study file (grid, table or Latin hypercube); its base scenario's scene must be in
   // `library`. Throws InputError (every problem) or std::runtime_error.
   void load(const QString& file, const SceneLibrary& library);

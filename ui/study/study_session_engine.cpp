@@ -103,6 +103,25 @@ void StudySession::defineTable(const SceneDefinition& scene, const Scenario& bas
   outcomes_.clear();
 }
 
+void StudySession::defineLatinHypercube(const SceneDefinition& scene, const Scenario& base,
+                                        const LatinHypercubeDesign& design) {
+  Json bounds = Json::object();
+  for (const SweepRange& r : design.ranges) bounds[r.path] = Json::array({r.from, r.to});
+  const Json document = {{"format", study::kStudyFormat},
+                         {"name", base.name + " Latin hypercube"},
+                         {"base", scenarioToJson(base)},
+                         {"latin_hypercube", {{"count", design.samples}, {"seed", design.seed}, {"bounds", bounds}}}};
+  auto owned = std::make_shared<const SceneDefinition>(scene);
+  auto impl = std::make_shared<Impl>();
+  impl->study = study::studyFromJson(document, std::filesystem::current_path(), oneScene(*owned));
+  impl->log = logParameters(impl->study);
+  scene_ = std::move(owned);
+  base_ = base;
+  grid_.clear();
+  impl_ = std::move(impl);
+  outcomes_.clear();
+}
+
 std::vector<std::string> StudySession::parameterPaths() const {
   std::vector<std::string> paths;
   if (impl_)

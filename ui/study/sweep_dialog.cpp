@@ -48,6 +48,19 @@ SweepRange proposedSweep(const ParamSpec& spec, const Json& current) {
   return r;
 }
 
+SweepRange proposedSampleRange(const ParamSpec& spec, const Json& current) {
+  if (!std::isfinite(spec.range.min) || !std::isfinite(spec.range.max)) return proposedSweep(spec, current);
+  SweepRange r;
+  r.path = spec.path;
+  r.from = clipToRange(spec.range.min, spec.range);
+  r.to = clipToRange(spec.range.max, spec.range);
+  if (spec.kind == ParamKind::Integer) {
+    r.from = std::ceil(r.from);
+    r.to = std::floor(r.to);
+  }
+  return r;
+}
+
 QString sweepProblem(const ParamSpec& spec, const SweepRange& r) {
   const QString unit = spec.unit == "-" ? QString() : QStringLiteral(" ") + QString::fromStdString(spec.unit);
   const QString allowed = QString::fromStdString(spec.range.str());

@@ -31,6 +31,10 @@ struct SweepRange {
 // (0 … 1 for a zero), clipped to the field's range, 5 values, linear.
 SweepRange proposedSweep(const ParamSpec& spec, const Json& current);
 
+// The interval proposed for sampling `spec` (value `current`) in a Latin hypercube: its allowed range
+// when both ends are finite (an open end moved in by a hundredth of the span), else proposedSweep's.
+SweepRange proposedSampleRange(const ParamSpec& spec, const Json& current);
+
 // Why `range` cannot be swept over `spec` ("from: must be > 0 for a logarithmic spacing"), or empty.
 QString sweepProblem(const ParamSpec& spec, const SweepRange& range);
 
