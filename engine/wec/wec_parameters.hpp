@@ -44,8 +44,9 @@ struct WecParameters {
   double significant_height = 2.0;       // [m] H_s
   double peak_period = 6.0;              // [s] T_p
   double peak_enhancement = 3.3;         // [-] JONSWAP γ
-  int seed = 1;                          // [-] random phases of the irregular components
+  int seed = 1;                          // [-] phases (and random_frequency's frequencies) of the irregular sea
   int component_count = 200;             // [-] irregular wave components
+  std::string discretisation = "random_frequency";  // random_frequency | equal_energy (core's ocean::irregularSea)
   // time domain
   std::string formulation = "both";      // classical | augmented | both
   std::string radiation = "state_space"; // state_space | direct
