@@ -76,6 +76,18 @@ SchemaBinder<WecParameters> wecBinder() {
   return b;
 }
 
+std::vector<std::string> upgradeWecParameters(Json& parameters) {
+  std::vector<std::string> notes;
+  if (!parameters.is_object()) return notes;
+  auto waves = parameters.find("waves");
+  if (waves != parameters.end() && waves->is_object() && !waves->contains("discretisation")) {
+    (*waves)["discretisation"] = "random_frequency";
+    notes.push_back("waves.discretisation = random_frequency added (new in the wec schema: the irregular sea is "
+                    "core's synthesis, so a seed gives another sea than before; save the scenario to keep it)");
+  }
+  return notes;
+}
+
 std::vector<FieldError> checkWecParameters(const WecParameters& p) {
   std::vector<FieldError> errors;
   auto num = [](double v) {

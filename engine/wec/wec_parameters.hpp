@@ -72,5 +72,7 @@ SchemaBinder<WecParameters> wecBinder();
 // Cross-field checks: hinge above the water for the chosen angle, time step vs. duration, frequency
 // band, restoring present, WAMIT stem given when needed.
 std::vector<FieldError> checkWecParameters(const WecParameters& p);
+// Scenario files from before waves.discretisation: the field is added as random_frequency, with a note.
+std::vector<std::string> upgradeWecParameters(Json& parameters);
 
 }  // namespace maris::wec

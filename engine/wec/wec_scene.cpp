@@ -354,6 +354,7 @@ SceneDefinition makeWecScene() {
       "augmented (Lagrange-multiplier) time-domain formulations, frequency-domain RAOs, hinge reactions, "
       "PTO power and capture width.",
       wecBinder(), checkWecParameters, solveWec);
+  scene.upgrade = upgradeWecParameters;
   setWorkEstimate<WecParameters>(scene, wecBinder(), estimateWecWork);
   setPlausibility<WecParameters>(scene, wecBinder(), wecPlausibility);
   return scene;

@@ -143,6 +143,19 @@ TEST(WecHardCases, PhaseConventionRoundTripGivesIdenticalResponse) {
   EXPECT_GT(diff, 1e-3);
 }
 
+// An irregular sea of Hs = 0 has no spectrum: validation names the field (a regular wave of height 0 stays calm).
+TEST(WecHardCases, IrregularSeaWithoutHeightIsRefusedNamingTheField) {
+  auto p = wec_test::defaults();
+  p.wave_type = "irregular";
+  p.significant_height = 0.0;
+  const auto errors = checkWecParameters(p);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].path, "waves.significant_height");
+  p.wave_type = "regular";
+  p.wave_height = 0.0;
+  EXPECT_TRUE(checkWecParameters(p).empty());
+}
+
 // Irregular sea: the scene's sea is core's ocean::irregularSea for the same spectrum, count, discretisation and seed
 // (bitwise: one synthesis, phases from the portable mt19937_64 draw, so the seed reproduces the sea on every
 // platform); another seed gives other phases. In a linear sea state (Hs = 0.2 m) on multiples of one Δω, the TD mean
