@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
   csv += "fd_sweep_500," + std::to_string(0.0) + "," + std::to_string(sweep) + ",,,\n";
 
   // 2. Time domain.
-  const WaveField waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, p.gravity);
+  const IncidentWaves waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, p.gravity);
   TimeDomainOptions ref;
   ref.duration = 600.0;
   ref.time_step = 0.005;

@@ -226,6 +226,17 @@ WaveField irregularSea(const WaveSpectrum& spectrum, int component_count, Discre
   return WaveField(std::move(components), direction_rad, depth, gravity, stretching);
 }
 
+double startRamp(double t, double ramp_time) {
+  if (t >= ramp_time) return 1.0;
+  if (t <= 0.0) return 0.0;
+  return 0.5 * (1.0 - std::cos(kPi * t / ramp_time));
+}
+
+double startRampRate(double t, double ramp_time) {
+  if (t <= 0.0 || t >= ramp_time) return 0.0;
+  return 0.5 * kPi / ramp_time * std::sin(kPi * t / ramp_time);
+}
+
 double smallestSpacing(const WaveField& field) {
   std::vector<double> omega;
   for (const auto& c : field.components()) omega.push_back(c.omega);

@@ -104,6 +104,11 @@ WaveField irregularSea(const WaveSpectrum& spectrum, int component_count, Discre
 // specified bit-for-bit across library versions).
 double uniform01(std::uint64_t draw);
 
+// Half-cosine start-up ramp of a sea: r(t) = ½(1 − cos(π t/T_r)) for 0 < t < T_r, 0 for t ≤ 0, 1 from T_r on
+// (T_r = 0: the sea is on from t = 0); its rate dr/dt [1/s] (0 outside (0, T_r)).
+double startRamp(double t, double ramp_time);
+double startRampRate(double t, double ramp_time);
+
 // Smallest |ω_{j+1} − ω_j| of a field's components sorted by frequency [rad/s] (∞ for fewer than 2).
 double smallestSpacing(const WaveField& field);
 

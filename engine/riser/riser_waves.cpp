@@ -95,16 +95,9 @@ void checkWaveParameters(const RiserParameters& p, std::vector<FieldError>& e) {
     e.push_back({"waves.spectrum_table", "all densities 0", "the spectrum has no energy"});
 }
 
-double RiserSea::ramp(double t) const {
-  if (t <= 0.0) return 0.0;
-  if (t >= ramp_time) return 1.0;
-  return 0.5 * (1.0 - std::cos(kPi * t / ramp_time));
-}
+double RiserSea::ramp(double t) const { return ocean::startRamp(t, ramp_time); }
 
-double RiserSea::rampRate(double t) const {
-  if (t <= 0.0 || t >= ramp_time) return 0.0;
-  return 0.5 * kPi / ramp_time * std::sin(kPi * t / ramp_time);
-}
+double RiserSea::rampRate(double t) const { return ocean::startRampRate(t, ramp_time); }
 
 double RiserSea::elevation(double x, double y, double t) const { return ramp(t) * field.elevation(x, y, t); }
 

@@ -35,7 +35,7 @@ void MemoryChannel::derivative(const Eigen::VectorXd& y, double v, Eigen::Vector
   }
 }
 
-WecDynamics::WecDynamics(const WecModel& model, const WaveField& waves, const TimeDomainOptions& o)
+WecDynamics::WecDynamics(const WecModel& model, const IncidentWaves& waves, const TimeDomainOptions& o)
     : model_(model), waves_(waves), o_(o) {
   const int nf = static_cast<int>(model.floats.size());
   int n = 0;

@@ -52,7 +52,7 @@ struct FloatSystem {
 
 class WecDynamics {
  public:
-  WecDynamics(const WecModel& model, const WaveField& waves, const TimeDomainOptions& options);
+  WecDynamics(const WecModel& model, const IncidentWaves& waves, const TimeDomainOptions& options);
 
   int size() const { return size_; }
   Eigen::VectorXd initialState() const;
@@ -76,7 +76,7 @@ class WecDynamics {
   void augmented(double t, double ramp, const Eigen::VectorXd& y, Eigen::VectorXd& dy, std::vector<FloatLoads>* loads);
 
   const WecModel& model_;
-  const WaveField& waves_;
+  const IncidentWaves& waves_;
   TimeDomainOptions o_;
   std::vector<FloatSystem> systems_;
   std::vector<MemoryChannel> channels_;
@@ -108,7 +108,7 @@ class HistoryRecorder {
 // Augmented formulation integrated with the paper's two-loop scheme (wec_newmark.cpp): explicit Newmark
 // (β = 0, γ = ½) on θ, Newton–Raphson on the position constraints for (x, z), velocities from C_q q̇ = 0,
 // accelerations and multipliers from the KKT system; the implicit velocity update is iterated to convergence.
-TimeDomainResult simulateNewmark(const WecModel& model, const WaveField& waves, const TimeDomainOptions& options,
+TimeDomainResult simulateNewmark(const WecModel& model, const IncidentWaves& waves, const TimeDomainOptions& options,
                                  RunContext* context, const TimeDomainObserver& observe = {});
 // Stability limit of the explicit Newmark (central-difference) scheme: h ω_max ≤ 2, ω_max the highest undamped
 // pitch frequency [s].

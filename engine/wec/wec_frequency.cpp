@@ -139,9 +139,19 @@ ResponseSpectra responseSpectra(const WecModel& model, const FloatModel& f, cons
   return r;
 }
 
-ResponseDeviations discreteResponseDeviations(const WecModel& model, const FloatModel& f, const WaveField& waves) {
+double deviationSamplingError(const std::vector<double>& omega, const std::vector<double>& s, double duration) {
+  double m0 = 0.0, square = 0.0;
+  for (std::size_t k = 1; k < omega.size(); ++k) {
+    const double h = 0.5 * (omega[k] - omega[k - 1]);
+    m0 += h * (s[k] + s[k - 1]);
+    square += h * (s[k] * s[k] + s[k - 1] * s[k - 1]);
+  }
+  return m0 > 0.0 && duration > 0.0 ? std::sqrt(std::numbers::pi * square / (2.0 * duration)) / m0 : 0.0;
+}
+
+ResponseDeviations discreteResponseDeviations(const WecModel& model, const FloatModel& f, const IncidentWaves& waves) {
   ResponseDeviations d;
-  for (const auto& c : waves.components) {
+  for (const auto& c : waves.field.components()) {
     const FrequencyResponse h = solveFrequency(model, f, c.omega);
     const double a2 = 0.5 * c.amplitude * c.amplitude;
     d.pitch += a2 * std::norm(h.pitch);

@@ -65,12 +65,21 @@ struct ResponseSpectra {
 ResponseSpectra responseSpectra(const WecModel& model, const FloatModel& f, const std::string& spectrum, double hs,
                                 double tp, double gamma, const std::vector<double>& omega);
 
-// Standard deviations of the same quantities for a discrete sea of components a_j at ω_j: σ² = Σ ½|H(ω_j)|² a_j²
-// (exact for the time-domain wave field over a whole repeat period 2π/Δω, in the linear limit).
+// Relative standard error of a standard deviation measured over a record of `duration` [s] of a stationary Gaussian
+// response with one-sided spectrum s(ω) on the grid `omega` (trapezoid): ε = √(π ∫s² dω / (2T)) / ∫s dω. It is half
+// the normalised error 1/√(B_s T) of the mean square, B_s = (∫G df)²/∫G² df the statistical bandwidth in Hz
+// (J. S. Bendat, A. G. Piersol, Random Data, 4th ed., Wiley 2010, §8.2), for a Gaussian process. A sum of
+// components with random amplitudes behaves so when their spacing is below 2π/T; one with fixed amplitudes (the
+// scene's seas) scatters less.
+double deviationSamplingError(const std::vector<double>& omega, const std::vector<double>& s, double duration);
+
+// Standard deviations of the same quantities for a discrete sea of components a_j at ω_j: σ² = Σ ½|H(ω_j)|² a_j²,
+// whatever the phases: the mean over a long record of the linear response's variance (exact over a whole repeat
+// period when the frequencies are multiples of one Δω; core's seas have no common period, see ocean::irregularSea).
 struct ResponseDeviations {
   double pitch = 0.0, fx = 0.0, fz = 0.0, moment = 0.0;  // [rad], [N], [N], [N·m]
 };
-ResponseDeviations discreteResponseDeviations(const WecModel& model, const FloatModel& f, const WaveField& waves);
+ResponseDeviations discreteResponseDeviations(const WecModel& model, const FloatModel& f, const IncidentWaves& waves);
 
 // Mean PTO power in an irregular sea [W]: ∫ B_PTO ω² |Θ(ω)|² S(ω) dω on [0.2, 6]·ω_p (2000 points).
 double irregularMeanPower(const WecModel& model, const FloatModel& f, const std::string& spectrum, double hs,

@@ -14,7 +14,9 @@ namespace maris::wec {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-}
+// β of the scene's direction of travel s = ±1 (cos β = s exactly: cos π rounds to −1).
+double heading(double direction) { return direction < 0.0 ? kPi : 0.0; }
+}  // namespace
 
 WecModel buildWecModel(const WecParameters& p) {
   WecModel m;
@@ -106,66 +108,46 @@ FloatExcitation excitationAt(const WecModel& model, const FloatModel& f, double 
 double waveNumber(double omega, double gravity) { return ocean::waveNumber(omega, ocean::kDeepWater, gravity); }
 
 // ---------------------------------------------------------------------------------------------
-double WaveField::ramp(double t) const {
-  if (t >= ramp_duration) return 1.0;
-  if (t <= 0.0) return 0.0;
-  return 0.5 * (1.0 - std::cos(kPi * t / ramp_duration));
-}
+double IncidentWaves::ramp(double t) const { return ocean::startRamp(t, ramp_duration); }
 
-double WaveField::elevation(double x, double t) const {
-  double eta = 0.0;
-  for (const auto& c : components)
-    eta += c.amplitude * std::cos(c.omega * t - direction * waveNumber(c.omega, gravity) * x + c.phase);
-  return ramp(t) * eta;
-}
+double IncidentWaves::elevation(double x, double t) const { return ramp(t) * field.elevation(x, 0.0, t); }
 
-WaveField makeRegularWave(double height, double omega, double ramp, double direction, double gravity) {
-  WaveField w;
-  w.components.push_back({omega, 0.5 * height, 0.0});
+IncidentWaves makeRegularWave(double height, double omega, double ramp, double direction, double gravity) {
+  IncidentWaves w;
+  w.field = ocean::WaveField({{omega, 0.5 * height, 0.0}}, heading(direction), ocean::kDeepWater, gravity,
+                             ocean::Stretching::None);
   w.ramp_duration = ramp;
-  w.direction = direction;
-  w.gravity = gravity;
   return w;
+}
+
+ocean::WaveSpectrum seaSpectrum(const std::string& kind, double hs, double tp, double gamma) {
+  return kind == "jonswap" ? ocean::jonswap(hs, tp, gamma) : ocean::piersonMoskowitz(hs, tp);
 }
 
 std::vector<double> spectrumDensity(const std::string& kind, double hs, double tp, double gamma,
                                     const std::vector<double>& omega) {
-  const ocean::WaveSpectrum spectrum = kind == "jonswap" ? ocean::jonswap(hs, tp, gamma) : ocean::piersonMoskowitz(hs, tp);
+  const ocean::WaveSpectrum spectrum = seaSpectrum(kind, hs, tp, gamma);
   std::vector<double> s(omega.size());
   for (std::size_t i = 0; i < omega.size(); ++i) s[i] = spectrum.density(omega[i]);
   return s;
 }
 
-WaveField makeIrregularWave(const WecParameters& p, double direction) {
-  WaveField w;
+IncidentWaves makeIrregularWave(const WecParameters& p, double direction) {
+  const auto method = p.discretisation == "equal_energy" ? ocean::Discretisation::EqualEnergy
+                                                         : ocean::Discretisation::RandomFrequency;
+  IncidentWaves w;
+  w.field = ocean::irregularSea(seaSpectrum(p.spectrum, p.significant_height, p.peak_period, p.peak_enhancement),
+                                p.component_count, method, static_cast<std::uint64_t>(p.seed), heading(direction),
+                                ocean::kDeepWater, p.gravity, ocean::Stretching::None);
   w.ramp_duration = p.ramp_duration;
-  w.direction = direction;
-  w.gravity = p.gravity;
-  const double wp = 2.0 * kPi / p.peak_period;
-  const int n = p.component_count;
-  const double lo = 0.3 * wp, hi = 3.5 * wp, dw = (hi - lo) / n;
-  std::vector<double> omega(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) omega[static_cast<std::size_t>(i)] = lo + dw * (i + 0.5);
-  const auto s = spectrumDensity(p.spectrum, p.significant_height, p.peak_period, p.peak_enhancement, omega);
-  std::mt19937_64 rng(static_cast<std::uint64_t>(p.seed));
-  std::uniform_real_distribution<double> phase(0.0, 2.0 * kPi);
-  double m0 = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    w.components.push_back({omega[k], std::sqrt(2.0 * s[k] * dw), phase(rng)});
-    m0 += s[k] * dw;
-  }
-  // The band holds 99.7 % of m0; rescale so that the generated sea has exactly 4√m0 = Hs.
-  const double scale = m0 > 0.0 ? p.significant_height / (4.0 * std::sqrt(m0)) : 0.0;
-  for (auto& c : w.components) c.amplitude *= scale;
   return w;
 }
 
-ExcitationSeries makeExcitation(const WecModel& model, const FloatModel& f, const WaveField& waves) {
+ExcitationSeries makeExcitation(const WecModel& model, const FloatModel& f, const IncidentWaves& waves) {
   ExcitationSeries e;
-  for (const auto& c : waves.components) {
+  for (const auto& c : waves.field.components()) {
     const FloatExcitation x = excitationAt(model, f, c.omega);
-    const Complex a = std::polar(c.amplitude, c.phase);
+    const Complex a = std::polar(c.amplitude, -c.phase);  // â = a e^{−iφ} (IncidentWaves)
     e.omega.push_back(c.omega);
     e.surge.push_back(x.surge * a);
     e.heave.push_back(x.heave * a);

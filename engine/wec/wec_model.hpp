@@ -17,10 +17,10 @@
 #pragma once
 
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "core/ocean_waves.hpp"
 #include "wec/wec_coupled.hpp"
 #include "wec/wec_hydro.hpp"
 #include "wec/wec_parameters.hpp"
@@ -88,35 +88,34 @@ struct FloatExcitation {
 };
 FloatExcitation excitationAt(const WecModel& model, const FloatModel& f, double omega);
 
-// Incident wave field: a sum of components with a half-cosine ramp r(t) = ½(1 − cos(π t/T_r)) for t < T_r.
-struct WaveComponent {
-  double omega = 0.0;      // [rad/s]
-  double amplitude = 0.0;  // [m]
-  double phase = 0.0;      // [rad] phase at x = 0, t = 0
-};
-struct WaveField {
-  std::vector<WaveComponent> components;
-  double ramp_duration = 0.0;  // [s]
-  double direction = 1.0;
-  double gravity = 9.81;
+// Incident waves: core's linear wave field (ocean::WaveField in deep water, travelling along +x, β = 0, or −x,
+// β = π) started by the half-cosine ramp ocean::startRamp. Core writes a component as a cos(k x cos β − ωt + φ);
+// in the scene's e^{+iωt} convention that is η = Re{â e^{i(ωt − s k x)}} with â = a e^{−iφ} (s = ±1).
+struct IncidentWaves {
+  ocean::WaveField field;      // no components: calm water
+  double ramp_duration = 0.0;  // [s] T_r
   double ramp(double t) const;
   double elevation(double x, double t) const;  // [m] η(x, t), ramped
 };
-WaveField makeRegularWave(double height, double omega, double ramp, double direction, double gravity);
-// Irregular sea: equally spaced components on [0.3, 3.5]·ω_p (99.7 % of the variance), amplitudes √(2 S Δω)
-// rescaled so that the components' 4√m0 = Hs exactly, phases uniform from std::mt19937_64(seed).
-WaveField makeIrregularWave(const WecParameters& p, double direction);
-// One-sided spectrum S(ω) [m²·s/rad]: core/wave_spectrum's JONSWAP (σ = 0.07/0.09) or Pierson–Moskowitz, with
-// m0 = Hs²/16 over the whole frequency axis.
+// A regular wave of height H [m] at ω [rad/s], crest at x = 0 at t = 0.
+IncidentWaves makeRegularWave(double height, double omega, double ramp, double direction, double gravity);
+// Irregular sea from ocean::irregularSea: waves.spectrum over its band [0.5, 6]·ω_p, waves.component_count
+// components placed by waves.discretisation, phases (and random_frequency's frequencies) from mt19937_64(waves.seed)
+// through core's portable uniform draw, so a seed gives the bitwise same sea on every platform.
+IncidentWaves makeIrregularWave(const WecParameters& p, double direction);
+// The scene's sea spectrum (waves.spectrum, Hs, Tp, γ): core/wave_spectrum's JONSWAP (σ = 0.07/0.09) or
+// Pierson–Moskowitz, m0 = Hs²/16 over the whole frequency axis. Requires Hs > 0.
+ocean::WaveSpectrum seaSpectrum(const std::string& kind, double hs, double tp, double gamma);
+// One-sided spectrum S(ω) [m²·s/rad] of seaSpectrum on a grid.
 std::vector<double> spectrumDensity(const std::string& kind, double hs, double tp, double gamma,
                                     const std::vector<double>& omega);
 
 // Excitation force time history on one float for a wave field: precomputed complex coefficients.
 struct ExcitationSeries {
   std::vector<double> omega;
-  std::vector<Complex> surge, heave;  // [N] per component, X̂·a·e^{iφ}
+  std::vector<Complex> surge, heave;  // [N] per component, X̂·â, â = a e^{−iφ}
   void evaluate(double t, double ramp, double& f_surge, double& f_heave) const;
 };
-ExcitationSeries makeExcitation(const WecModel& model, const FloatModel& f, const WaveField& waves);
+ExcitationSeries makeExcitation(const WecModel& model, const FloatModel& f, const IncidentWaves& waves);
 
 }  // namespace maris::wec

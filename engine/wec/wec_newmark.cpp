@@ -57,7 +57,7 @@ double newmarkStabilityStep(const WecModel& model) {
   return fastest > 0.0 ? 2.0 / fastest : 1.0;
 }
 
-TimeDomainResult simulateNewmark(const WecModel& model, const WaveField& waves, const TimeDomainOptions& options,
+TimeDomainResult simulateNewmark(const WecModel& model, const IncidentWaves& waves, const TimeDomainOptions& options,
                                  RunContext* context, const TimeDomainObserver& observe) {
   TimeDomainOptions o = options;
   o.augmented = true;

@@ -46,8 +46,12 @@ SchemaBinder<WecParameters> wecBinder() {
   b.real("waves.significant_height", &P::significant_height, "m", Range::nonNegative(30.0), "Significant wave height Hs");
   b.real("waves.peak_period", &P::peak_period, "s", Range::closed(1.0, 30.0), "Peak period Tp");
   b.real("waves.peak_enhancement", &P::peak_enhancement, "-", Range::closed(1.0, 10.0), "JONSWAP gamma");
-  b.integer("waves.seed", &P::seed, "-", Range::closed(0, 2147483647), "Seed of the random component phases");
+  b.integer("waves.seed", &P::seed, "-", Range::closed(0, 2147483647),
+            "Seed of the irregular sea's phases (mt19937_64; the same seed gives the bitwise same sea on every platform)");
   b.integer("waves.component_count", &P::component_count, "-", Range::closed(1, 5000), "Irregular wave components");
+  b.choice("waves.discretisation", &P::discretisation, {"random_frequency", "equal_energy"},
+           "Irregular sea frequencies: random within equal-width bins, or at the centroids of equal-energy bins "
+           "(neither repeats with a common period)");
   b.choice("time.formulation", &P::formulation, {"classical", "augmented", "both"},
            "Classical (one ODE per float) and/or augmented (x, z, theta with hinge multipliers)");
   b.choice("time.radiation", &P::radiation, {"state_space", "direct"}, "Radiation memory evaluation");
@@ -70,6 +74,18 @@ SchemaBinder<WecParameters> wecBinder() {
   b.realList("power_matrix.hs", &P::power_hs, "m", Range::positive(30.0), 0, 50, "Significant heights");
   b.realList("power_matrix.tp", &P::power_tp, "s", Range::closed(1.0, 30.0), 0, 50, "Peak periods");
   return b;
+}
+
+std::vector<std::string> upgradeWecParameters(Json& parameters) {
+  std::vector<std::string> notes;
+  if (!parameters.is_object()) return notes;
+  auto waves = parameters.find("waves");
+  if (waves != parameters.end() && waves->is_object() && !waves->contains("discretisation")) {
+    (*waves)["discretisation"] = "random_frequency";
+    notes.push_back("waves.discretisation = random_frequency added (new in the wec schema: the irregular sea is "
+                    "core's synthesis, so a seed gives another sea than before; save the scenario to keep it)");
+  }
+  return notes;
 }
 
 std::vector<FieldError> checkWecParameters(const WecParameters& p) {
@@ -96,6 +112,9 @@ std::vector<FieldError> checkWecParameters(const WecParameters& p) {
                    f.hinge_x - f.arm_length * std::cos(theta)) < p.floats[j].radius + f.radius)
         errors.push_back({row + "hinge_x", num(f.hinge_x), "float overlaps float " + std::to_string(j)});
   }
+  if (p.wave_type == "irregular" && !(p.significant_height > 0.0))
+    errors.push_back({"waves.significant_height", num(p.significant_height),
+                      "must be > 0 for waves.type = irregular (waves.type = none gives calm water)"});
   if (p.time_step * 10.0 > p.duration)
     errors.push_back({"time.time_step", num(p.time_step), "must be at most duration/10 = " + num(p.duration / 10)});
   if (p.omega_max <= p.omega_min)

@@ -44,8 +44,9 @@ struct WecParameters {
   double significant_height = 2.0;       // [m] H_s
   double peak_period = 6.0;              // [s] T_p
   double peak_enhancement = 3.3;         // [-] JONSWAP γ
-  int seed = 1;                          // [-] random phases of the irregular components
+  int seed = 1;                          // [-] phases (and random_frequency's frequencies) of the irregular sea
   int component_count = 200;             // [-] irregular wave components
+  std::string discretisation = "random_frequency";  // random_frequency | equal_energy (core's ocean::irregularSea)
   // time domain
   std::string formulation = "both";      // classical | augmented | both
   std::string radiation = "state_space"; // state_space | direct
@@ -71,5 +72,7 @@ SchemaBinder<WecParameters> wecBinder();
 // Cross-field checks: hinge above the water for the chosen angle, time step vs. duration, frequency
 // band, restoring present, WAMIT stem given when needed.
 std::vector<FieldError> checkWecParameters(const WecParameters& p);
+// Scenario files from before waves.discretisation: the field is added as random_frequency, with a note.
+std::vector<std::string> upgradeWecParameters(Json& parameters);
 
 }  // namespace maris::wec

@@ -29,7 +29,7 @@ SteadyResponse steadyResponse(const WecModel& model, double omega, double height
   o.duration = (std::ceil(settle / period) + periods) * period;
   o.output_stride = 1;
   o.initial_offset = 0.0;
-  const WaveField waves = makeRegularWave(height, omega, ramp, model.direction, model.gravity);
+  const IncidentWaves waves = makeRegularWave(height, omega, ramp, model.direction, model.gravity);
   const TimeDomainResult td = simulateTimeDomain(model, waves, o, context);
 
   SteadyResponse s;

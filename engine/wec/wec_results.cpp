@@ -225,7 +225,7 @@ PlotSpec responseSpectraPlot(std::size_t float_count) {
   return plot;
 }
 
-View3D wecView(const WecModel& model, const WaveField& waves, const TimeDomainResult& td, int frames) {
+View3D wecView(const WecModel& model, const IncidentWaves& waves, const TimeDomainResult& td, int frames) {
   View3D v;
   v.scalar_name = "wave elevation";
   v.scalar_unit = "m";

@@ -37,6 +37,6 @@ PlotSpec powerMatrixPlot(const std::vector<double>& hs, const std::string& spect
 PlotSpec responseSpectraPlot(std::size_t float_count);
 
 // Jacket legs (boxes), hinges (spheres), arms (tubes), hemispheres moving with θ(t), wave surface.
-View3D wecView(const WecModel& model, const WaveField& waves, const TimeDomainResult& td, int frames);
+View3D wecView(const WecModel& model, const IncidentWaves& waves, const TimeDomainResult& td, int frames);
 
 }  // namespace maris::wec

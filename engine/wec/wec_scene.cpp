@@ -195,10 +195,16 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
     res.addScalar("sd_hinge_fz_fd_" + n, s.sd_fz, "N", "Std of the vertical hinge reaction, frequency domain", "σ F_z (frequency domain), float " + n);
     if (td.time.size() - k0 < 100) continue;  // run too short after settling for statistics
     const auto& h = td.floats[i];
+    const double record = td.time.back() - td.time[k0];
     res.addScalar("sd_pitch_td_" + n, deviation(h.theta) * 180.0 / std::numbers::pi, "deg",
-                  "Std of pitch in the time-domain run after ramp and settling (sampling error ~1/sqrt(cycles))", "σ pitch (time domain), float " + n);
+                  "Std of pitch in the time-domain run after ramp and settling (see sd_pitch_sampling_error)", "σ pitch (time domain), float " + n);
     res.addScalar("sd_hinge_fx_td_" + n, deviation(h.hinge_fx), "N", "Std of the horizontal hinge reaction, time domain", "σ F_x (time domain), float " + n);
     res.addScalar("sd_hinge_fz_td_" + n, deviation(h.hinge_fz), "N", "Std of the vertical hinge reaction, time domain", "σ F_z (time domain), float " + n);
+    for (auto [name, spectrum] : {std::pair{"pitch", &s.pitch}, std::pair{"hinge_fx", &s.hinge_fx}, std::pair{"hinge_fz", &s.hinge_fz}})
+      res.addScalar(std::string("sd_") + name + "_sampling_error_" + n, deviationSamplingError(omega, *spectrum, record), "-",
+                    "Relative standard error of the time-domain std from the record length, for a Gaussian sea of this spectrum "
+                    "(the scene's fixed-amplitude sea scatters less)",
+                    std::string("σ ") + name + " sampling error, float " + n);
   }
   res.tables.push_back(std::move(t));
 }
@@ -242,7 +248,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
   addTimeDomainChecks(p, model, base, res, ctx, live);
 
   // Main run(s).
-  WaveField waves;
+  IncidentWaves waves;
   if (p.wave_type == "regular")
     waves = makeRegularWave(p.wave_height, p.wave_frequency, p.ramp_duration, model.direction, p.gravity);
   else if (p.wave_type == "irregular")
@@ -348,6 +354,7 @@ SceneDefinition makeWecScene() {
       "augmented (Lagrange-multiplier) time-domain formulations, frequency-domain RAOs, hinge reactions, "
       "PTO power and capture width.",
       wecBinder(), checkWecParameters, solveWec);
+  scene.upgrade = upgradeWecParameters;
   setWorkEstimate<WecParameters>(scene, wecBinder(), estimateWecWork);
   setPlausibility<WecParameters>(scene, wecBinder(), wecPlausibility);
   return scene;

@@ -61,7 +61,7 @@ double rk4StabilityStep(const WecModel& model, const TimeDomainOptions& options)
   return fastest > 0.0 ? 1.0 / fastest : 1.0;
 }
 
-TimeDomainResult simulateTimeDomain(const WecModel& model, const WaveField& waves, const TimeDomainOptions& o,
+TimeDomainResult simulateTimeDomain(const WecModel& model, const IncidentWaves& waves, const TimeDomainOptions& o,
                                     RunContext* context, const TimeDomainObserver& observe) {
   if (o.augmented && o.newmark) return simulateNewmark(model, waves, o, context, observe);
   WecDynamics sim(model, waves, o);

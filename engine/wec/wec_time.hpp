@@ -82,7 +82,7 @@ using TimeDomainObserver = std::function<void(const TimeDomainResult& so_far)>;
 // Runs the simulation. Throws SolverError naming float, quantity, time and step if the state becomes
 // non-finite, and RunCancelled when the context asks (context may be null). `observe` (optional) is called
 // after a recorded step whenever context->wantsPartialResults(); it only reads, so the result does not depend on it.
-TimeDomainResult simulateTimeDomain(const WecModel& model, const WaveField& waves, const TimeDomainOptions& options,
+TimeDomainResult simulateTimeDomain(const WecModel& model, const IncidentWaves& waves, const TimeDomainOptions& options,
                                     RunContext* context, const TimeDomainObserver& observe = {});
 
 // Estimated RK4 stability limit of the linearised system [s]: 2.78/|λ| over the radiation poles,

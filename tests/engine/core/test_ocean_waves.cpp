@@ -225,5 +225,23 @@ TEST(OceanWaves, IrregularSeaDoesNotRepeatAtTheBinPeriod) {
   }
 }
 
+// The start ramp: 0 up to t = 0, ½ at T_r/2, 1 from T_r on, T_r = 0 switches on at t = 0 (closed form), and its
+// rate is the derivative of the ramp (central difference, 1e-8 relative to the peak rate π/(2T_r)).
+TEST(OceanWaves, StartRampAndItsRate) {
+  const double tr = 20.0;
+  EXPECT_EQ(startRamp(-1.0, tr), 0.0);
+  EXPECT_EQ(startRamp(0.0, tr), 0.0);
+  EXPECT_NEAR(startRamp(10.0, tr), 0.5, 1e-15);
+  EXPECT_EQ(startRamp(tr, tr), 1.0);
+  EXPECT_EQ(startRamp(0.0, 0.0), 1.0);
+  EXPECT_EQ(startRampRate(-1.0, tr), 0.0);
+  EXPECT_EQ(startRampRate(tr + 1.0, tr), 0.0);
+  for (double t : {1.0, 7.3, 10.0, 19.0}) {
+    const double h = 1e-4;
+    EXPECT_NEAR(startRampRate(t, tr), (startRamp(t + h, tr) - startRamp(t - h, tr)) / (2.0 * h),
+                1e-8 * kPi / (2.0 * tr)) << t;
+  }
+}
+
 }  // namespace
 }  // namespace maris::ocean

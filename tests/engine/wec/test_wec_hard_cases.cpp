@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "core/errors.hpp"
+#include "core/ocean_waves.hpp"
 #include "wec/wec_frequency.hpp"
 #include "wec/wec_response.hpp"
 #include "wec/wec_time.hpp"
@@ -60,7 +62,7 @@ TEST(WecHardCases, HorizontalAndVerticalArms) {
     TimeDomainOptions o;
     o.duration = 100.0;
     o.augmented = true;
-    WaveField calm;
+    IncidentWaves calm;
     const TimeDomainResult r = simulateTimeDomain(m, calm, o, nullptr);
     for (double th : r.floats[0].theta) EXPECT_NEAR(th, m.floats[0].theta0, 1e-12) << "angle " << angle;
   }
@@ -84,7 +86,7 @@ TEST(WecHardCases, TimeStepAtTheStabilityLimit) {
   expectTdMatchesFd(m, 0.8, 0.05, 5.0, o);
   o.time_step = 1.3 * h_lim;
   o.duration = 600.0;
-  const WaveField waves = makeRegularWave(1.0, 0.8, 30.0, 1.0, m.gravity);
+  const IncidentWaves waves = makeRegularWave(1.0, 0.8, 30.0, 1.0, m.gravity);
   try {
     simulateTimeDomain(m, waves, o, nullptr);
     FAIL() << "expected a SolverError above the stability limit " << h_lim;
@@ -127,7 +129,7 @@ TEST(WecHardCases, PhaseConventionRoundTripGivesIdenticalResponse) {
   b.floats[0].hydro = std::make_shared<TabulatedHydro>(capytaine, ax, az, "round trip");
   TimeDomainOptions o;
   o.duration = 60.0;
-  const WaveField waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
+  const IncidentWaves waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
   const auto ra = simulateTimeDomain(a, waves, o, nullptr), rb = simulateTimeDomain(b, waves, o, nullptr);
   for (std::size_t k = 0; k < ra.time.size(); ++k) EXPECT_NEAR(ra.floats[0].theta[k], rb.floats[0].theta[k], 1e-9);
   // Without the conversion the response differs (the test can fail).
@@ -141,28 +143,57 @@ TEST(WecHardCases, PhaseConventionRoundTripGivesIdenticalResponse) {
   EXPECT_GT(diff, 1e-3);
 }
 
-// Irregular sea: 4√m0 of the generated components equals Hs, the seed reproduces the sea, and in a linear
-// sea state (Hs = 0.2 m) the TD mean PTO power over one repeat period 2π/Δω equals the FD sum
-// Σ ½B ω²|Θ_j|² a_j² within 2 % (difference-frequency cross terms average out over the repeat period; at
-// Hs = 2 m the geometric nonlinearity of the arm already moves the TD power by 2–3 %).
+// An irregular sea of Hs = 0 has no spectrum: validation names the field (a regular wave of height 0 stays calm).
+TEST(WecHardCases, IrregularSeaWithoutHeightIsRefusedNamingTheField) {
+  auto p = wec_test::defaults();
+  p.wave_type = "irregular";
+  p.significant_height = 0.0;
+  const auto errors = checkWecParameters(p);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].path, "waves.significant_height");
+  p.wave_type = "regular";
+  p.wave_height = 0.0;
+  EXPECT_TRUE(checkWecParameters(p).empty());
+}
+
+// Irregular sea: the scene's sea is core's ocean::irregularSea for the same spectrum, count, discretisation and seed
+// (bitwise: one synthesis, phases from the portable mt19937_64 draw, so the seed reproduces the sea on every
+// platform); another seed gives other phases. In a linear sea state (Hs = 0.2 m) on multiples of one Δω, the TD mean
+// PTO power over one repeat period 2π/Δω equals the FD sum Σ ½B ω²|Θ_j|² a_j² within 2 % whatever the phases
+// (difference-frequency cross terms average out over the repeat period; at Hs = 2 m the geometric nonlinearity of
+// the arm already moves the TD power by 2–3 %).
 TEST(WecHardCases, IrregularSeaPowerMatchesSpectralSum) {
   auto p = wec_test::defaults();
   p.wave_type = "irregular";
   p.component_count = 100;
   p.significant_height = 0.2;
   const WecModel m = wec_test::model(p);
-  const WaveField w = makeIrregularWave(p, 1.0);
-  double m0 = 0.0, fd = 0.0;
-  for (const auto& c : w.components) {
-    m0 += 0.5 * c.amplitude * c.amplitude;
-    fd += solveFrequency(m, m.floats[0], c.omega).power * c.amplitude * c.amplitude;
+  for (const char* method : {"random_frequency", "equal_energy"}) {
+    p.discretisation = method;
+    const IncidentWaves sea = makeIrregularWave(p, 1.0);
+    const auto& scene = sea.field.components();
+    const auto core = maris::ocean::irregularSea(seaSpectrum(p.spectrum, p.significant_height, p.peak_period,
+                                                             p.peak_enhancement),
+                                                 100, std::string(method) == "equal_energy"
+                                                          ? maris::ocean::Discretisation::EqualEnergy
+                                                          : maris::ocean::Discretisation::RandomFrequency,
+                                                 1, 0.0, maris::ocean::kDeepWater, p.gravity,
+                                                 maris::ocean::Stretching::None);
+    ASSERT_EQ(scene.size(), core.size());
+    for (std::size_t j = 0; j < scene.size(); ++j) {
+      EXPECT_EQ(scene[j].omega, core.components()[j].omega) << method << " " << j;
+      EXPECT_EQ(scene[j].amplitude, core.components()[j].amplitude) << method << " " << j;
+      EXPECT_EQ(scene[j].phase, core.components()[j].phase) << method << " " << j;
+    }
+    p.seed = 2;
+    EXPECT_NE(makeIrregularWave(p, 1.0).field.components()[7].phase, scene[7].phase) << method;
+    p.seed = 1;
   }
-  EXPECT_NEAR(4.0 * std::sqrt(m0), p.significant_height, 1e-12);
-  EXPECT_EQ(makeIrregularWave(p, 1.0).components[7].phase, w.components[7].phase);
-  p.seed = 2;
-  EXPECT_NE(makeIrregularWave(p, 1.0).components[7].phase, w.components[7].phase);
-  const double d_omega = w.components[1].omega - w.components[0].omega;
-  const double repeat = 2.0 * std::numbers::pi / d_omega, settle = 30.0 + settlingTime(m);
+  const IncidentWaves w = wec_test::commensurateSea(p, 100);
+  double fd = 0.0;
+  for (const auto& c : w.field.components())
+    fd += solveFrequency(m, m.floats[0], c.omega).power * c.amplitude * c.amplitude;
+  const double repeat = wec_test::repeatPeriod(w), settle = 30.0 + settlingTime(m);
   TimeDomainOptions o;
   o.duration = settle + repeat;
   const TimeDomainResult r = simulateTimeDomain(m, w, o, nullptr);

@@ -38,7 +38,7 @@ double maxAbs(const std::vector<double>& a, const std::vector<double>& b, double
 // Newton tolerance (|C| ≤ 1e-10 m) and at velocity level to round-off (|C_q q̇| ≤ 1e-9 m/s) at every step (T12).
 TEST(WecNewmark, AgreesWithClassicalRk4AndHasNoDrift) {
   const WecModel& m = defaultModel();
-  const WaveField waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
+  const IncidentWaves waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
   TimeDomainOptions rk4;
   rk4.duration = 200.0;
   const TimeDomainResult cl = simulateTimeDomain(m, waves, rk4, nullptr);
@@ -91,7 +91,7 @@ TEST(WecNewmark, RaoMatchesFrequencyDomain) {
 // θ error by 4 (observed order in [1.7, 2.3]: explicit Newmark with γ = ½ is second order).
 TEST(WecNewmark, ConvergesAtSecondOrder) {
   const WecModel m = wec_test::model(wec_test::defaults(), 0.005);
-  const WaveField waves = makeRegularWave(1.0, 1.2, 20.0, 1.0, m.gravity);
+  const IncidentWaves waves = makeRegularWave(1.0, 1.2, 20.0, 1.0, m.gravity);
   TimeDomainOptions ref;
   ref.time_step = 0.005;
   ref.duration = 60.0;
@@ -113,7 +113,7 @@ TEST(WecNewmark, ConvergesAtSecondOrder) {
 
 // Static equilibrium for 600 s to 1e-12 rad.
 TEST(WecNewmark, StaticEquilibriumHolds) {
-  WaveField calm;
+  IncidentWaves calm;
   calm.ramp_duration = 30.0;
   TimeDomainOptions o = newmark(0.05, 600.0);
   o.output_stride = 100;
@@ -128,7 +128,7 @@ TEST(WecNewmark, StabilityLimitIsWhereItIsPredicted) {
   const double limit = newmarkStabilityStep(m);
   RecordProperty("limit", std::to_string(limit));
   EXPECT_GT(limit, 0.5);  // ω_max ≈ 1.5–2 rad/s for this float
-  WaveField calm;
+  IncidentWaves calm;
   calm.ramp_duration = 30.0;
   TimeDomainOptions o = newmark(0.9 * limit, 300.0 * limit);
   o.initial_offset = 2.0 * kDeg;

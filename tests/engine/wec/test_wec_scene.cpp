@@ -29,6 +29,19 @@ TEST(WecScene, BuiltinScenariosAreValid) {
   EXPECT_GE(count, 3);
 }
 
+// A file from before waves.discretisation loads as random_frequency, with a note; a second upgrade does nothing.
+TEST(WecScene, FilesWithoutTheDiscretisationLoadAsRandomFrequency) {
+  Json old = builtin("wec_irregular").parameters;
+  old["waves"].erase("discretisation");
+  Json upgraded = old;
+  const std::vector<std::string> notes = upgradeParameters(scene(), upgraded);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("waves.discretisation = random_frequency added"), std::string::npos);
+  EXPECT_EQ(upgraded["waves"]["discretisation"], "random_frequency");
+  EXPECT_TRUE(validateParameters(scene(), old).empty()) << describeErrors(validateParameters(scene(), old));
+  EXPECT_TRUE(upgradeParameters(scene(), upgraded).empty()) << "a second upgrade has nothing to do";
+}
+
 // The default scenario runs; every plotted column exists in its table, the time-domain RAO points agree with the
 // frequency domain (1.5 %, 2°) and the classical and augmented runs agree (0.5 %).
 TEST(WecScene, DefaultScenarioRunsAndIsConsistent) {

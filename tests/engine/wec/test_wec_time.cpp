@@ -15,8 +15,8 @@ using namespace maris::wec;
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 using wec_test::defaultModel;
-WaveField calm() {
-  WaveField w;
+IncidentWaves calm() {
+  IncidentWaves w;
   w.ramp_duration = 30.0;
   return w;
 }
@@ -30,7 +30,7 @@ TEST(WecTime, StaticEquilibriumHoldsFor600Seconds) {
     o.augmented = augmented;
     o.duration = 600.0;
     o.output_stride = 100;
-    const WaveField waves = calm();
+    const IncidentWaves waves = calm();
     const TimeDomainResult r = simulateTimeDomain(defaultModel(), waves, o, nullptr);
     for (double th : r.floats[0].theta) EXPECT_NEAR(th, defaultModel().floats[0].theta0, 1e-12) << augmented;
   }
@@ -48,7 +48,7 @@ TEST(WecTime, FreeDecayMatchesFrequencyDomainRootAndLosesEnergy) {
   o.time_step = 0.02;
   o.duration = 60.0;
   o.initial_offset = 3.0 * kDeg;
-  const WaveField waves = calm();
+  const IncidentWaves waves = calm();
   const TimeDomainResult r = simulateTimeDomain(m, waves, o, nullptr);
   const auto& h = r.floats[0];
   std::vector<double> crossings;  // upward zero crossings of θ − θ0, linearly interpolated
@@ -90,7 +90,7 @@ TEST(WecTime, TimeDomainRaoMatchesFrequencyDomain) {
 // the hinge equals I θ̈ (paper eq 8) in both to 1e-9 of its range: the paper's 15.2 % vs 15.5 % gap cannot come from here.
 TEST(WecTime, ClassicalAndAugmentedFormulationsAgree) {
   const WecModel& m = defaultModel();
-  const WaveField waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
+  const IncidentWaves waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
   TimeDomainOptions o;
   o.duration = 200.0;
   const TimeDomainResult cl = simulateTimeDomain(m, waves, o, nullptr);
@@ -123,7 +123,7 @@ TEST(WecTime, ClassicalAndAugmentedFormulationsAgree) {
 // 1000 s of H = 2 m waves.
 TEST(WecTime, ConstraintDriftStaysBounded) {
   const WecModel& m = defaultModel();
-  const WaveField waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
+  const IncidentWaves waves = makeRegularWave(2.0, 1.0, 30.0, 1.0, m.gravity);
   TimeDomainOptions o;
   o.augmented = true;
   o.duration = 1000.0;

@@ -1,6 +1,9 @@
 // Models shared by the wec tests, built from the scene's own parameter defaults (one source of truth).
 #pragma once
 
+#include <cmath>
+#include <numbers>
+
 #include "wec/wec_model.hpp"
 #include "wec/wec_parameters.hpp"
 
@@ -18,6 +21,36 @@ inline maris::wec::WecParameters defaults() { return maris::wec::WecParameters{}
 inline const maris::wec::WecModel& defaultModel() {
   static const maris::wec::WecModel m = model(defaults());
   return m;
+}
+
+// A sea whose frequencies are all multiples of one Δω, so that it repeats with the period 2π/Δω: over one whole
+// period the variance of a linear response is exactly Σ ½|H(ω_j)|² a_j² whatever the phases (the cross terms of
+// distinct multiples of Δω integrate to zero), which lets a test hold the time domain to 1 % in a record of a few
+// minutes. The scene's seas (ocean::irregularSea) have no common period. `count` components ω_j = (j0 + j) Δω over
+// [0.3, 3.5]·ω_p, Δω = 3.2 ω_p / count, a_j = √(2 S(ω_j) Δω); phases those of the scene's sea for p (any would do).
+inline maris::wec::IncidentWaves commensurateSea(const maris::wec::WecParameters& p, int count) {
+  const double wp = 2.0 * std::numbers::pi / p.peak_period, d_omega = 3.2 * wp / count;
+  const double first = std::round(0.3 * wp / d_omega);
+  maris::wec::WecParameters same = p;
+  same.component_count = count;
+  const auto phases = maris::wec::makeIrregularWave(same, 1.0).field.components();
+  std::vector<double> omega;
+  for (int j = 0; j < count; ++j) omega.push_back((first + j) * d_omega);
+  const auto s = maris::wec::spectrumDensity(p.spectrum, p.significant_height, p.peak_period, p.peak_enhancement, omega);
+  std::vector<maris::ocean::WaveComponent> components;
+  for (std::size_t j = 0; j < omega.size(); ++j)
+    components.push_back({omega[j], std::sqrt(2.0 * s[j] * d_omega), phases[j].phase});
+  maris::wec::IncidentWaves sea;
+  sea.field = maris::ocean::WaveField(std::move(components), 0.0, maris::ocean::kDeepWater, p.gravity,
+                                      maris::ocean::Stretching::None);
+  sea.ramp_duration = p.ramp_duration;
+  return sea;
+}
+
+// The repeat period 2π/Δω of a commensurateSea [s].
+inline double repeatPeriod(const maris::wec::IncidentWaves& sea) {
+  const auto& c = sea.field.components();
+  return 2.0 * std::numbers::pi / (c[1].omega - c[0].omega);
 }
 
 }  // namespace wec_test
