@@ -200,11 +200,17 @@ void addIrregularStatistics(const WecParameters& p, const WecModel& model, const
                   "Std of pitch in the time-domain run after ramp and settling (see sd_pitch_sampling_error)", "σ pitch (time domain), float " + n);
     res.addScalar("sd_hinge_fx_td_" + n, deviation(h.hinge_fx), "N", "Std of the horizontal hinge reaction, time domain", "σ F_x (time domain), float " + n);
     res.addScalar("sd_hinge_fz_td_" + n, deviation(h.hinge_fz), "N", "Std of the vertical hinge reaction, time domain", "σ F_z (time domain), float " + n);
-    for (auto [name, spectrum] : {std::pair{"pitch", &s.pitch}, std::pair{"hinge_fx", &s.hinge_fx}, std::pair{"hinge_fz", &s.hinge_fz}})
-      res.addScalar(std::string("sd_") + name + "_sampling_error_" + n, deviationSamplingError(omega, *spectrum, record), "-",
+    struct Quantity {
+      const char* name;
+      const char* symbol;  // the label people read
+      const std::vector<double>* spectrum;
+    };
+    for (const Quantity& q : {Quantity{"pitch", "pitch", &s.pitch}, Quantity{"hinge_fx", "F_x", &s.hinge_fx},
+                              Quantity{"hinge_fz", "F_z", &s.hinge_fz}})
+      res.addScalar(std::string("sd_") + q.name + "_sampling_error_" + n, deviationSamplingError(omega, *q.spectrum, record), "-",
                     "Relative standard error of the time-domain std from the record length, for a Gaussian sea of this spectrum "
                     "(the scene's fixed-amplitude sea scatters less)",
-                    std::string("σ ") + name + " sampling error, float " + n);
+                    std::string("σ ") + q.symbol + " sampling error, float " + n);
   }
   res.tables.push_back(std::move(t));
 }
