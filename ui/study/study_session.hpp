@@ -5,6 +5,7 @@
 // turns them into plot data. No physics and no second expansion here.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -78,6 +79,9 @@ class StudySession {
 
  private:
   struct Impl;
+  // Builds the engine's study from `document` (relative paths against `folder`) and makes it this session's.
+  void adopt(const SceneDefinition& scene, const Scenario& base, const Json& document,
+             const std::filesystem::path& folder, std::vector<SweepRange> grid);
   std::shared_ptr<const SceneDefinition> scene_;
   Scenario base_;
   std::vector<SweepRange> grid_;

@@ -75,15 +75,7 @@ void StudySession::define(const SceneDefinition& scene, const Scenario& base, st
                          {"name", base.name + " study"},
                          {"base", scenarioToJson(base)},
                          {"grid", ranges}};
-  auto owned = std::make_shared<const SceneDefinition>(scene);
-  auto impl = std::make_shared<Impl>();
-  impl->study = study::studyFromJson(document, std::filesystem::current_path(), oneScene(*owned));
-  impl->log = logParameters(impl->study);
-  scene_ = std::move(owned);
-  base_ = base;
-  grid_ = std::move(grid);
-  impl_ = std::move(impl);
-  outcomes_.clear();
+  adopt(scene, base, document, std::filesystem::current_path(), std::move(grid));
 }
 
 void StudySession::defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file) {
@@ -92,15 +84,7 @@ void StudySession::defineTable(const SceneDefinition& scene, const Scenario& bas
                          {"name", base.name + " load cases"},
                          {"base", scenarioToJson(base)},
                          {"table", table.string()}};
-  auto owned = std::make_shared<const SceneDefinition>(scene);
-  auto impl = std::make_shared<Impl>();
-  impl->study = study::studyFromJson(document, table.parent_path(), oneScene(*owned));
-  impl->log = logParameters(impl->study);
-  scene_ = std::move(owned);
-  base_ = base;
-  grid_.clear();
-  impl_ = std::move(impl);
-  outcomes_.clear();
+  adopt(scene, base, document, table.parent_path(), {});
 }
 
 void StudySession::defineLatinHypercube(const SceneDefinition& scene, const Scenario& base,
@@ -111,13 +95,18 @@ void StudySession::defineLatinHypercube(const SceneDefinition& scene, const Scen
                          {"name", base.name + " Latin hypercube"},
                          {"base", scenarioToJson(base)},
                          {"latin_hypercube", {{"count", design.samples}, {"seed", design.seed}, {"bounds", bounds}}}};
+  adopt(scene, base, document, std::filesystem::current_path(), {});
+}
+
+void StudySession::adopt(const SceneDefinition& scene, const Scenario& base, const Json& document,
+                         const std::filesystem::path& folder, std::vector<SweepRange> grid) {
   auto owned = std::make_shared<const SceneDefinition>(scene);
   auto impl = std::make_shared<Impl>();
-  impl->study = study::studyFromJson(document, std::filesystem::current_path(), oneScene(*owned));
+  impl->study = study::studyFromJson(document, folder, oneScene(*owned));  // throws before anything changes
   impl->log = logParameters(impl->study);
   scene_ = std::move(owned);
   base_ = base;
-  grid_.clear();
+  grid_ = std::move(grid);
   impl_ = std::move(impl);
   outcomes_.clear();
 }
