@@ -1,5 +1,6 @@
 // Linear wave kinematics and sea synthesis (contract in core/ocean_waves.hpp).
 #include "core/ocean_waves.hpp"
+#include "core/portable_random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -90,8 +91,6 @@ double groupVelocity(double omega, double depth, double gravity) {
   const double kh2 = 2.0 * k * depth;
   return 0.5 * omega / k * (1.0 + (kh2 > 700.0 ? 0.0 : kh2 / std::sinh(kh2)));
 }
-
-double uniform01(std::uint64_t draw) { return static_cast<double>(draw >> 11) * 0x1.0p-53; }
 
 WaveField::WaveField(std::vector<WaveComponent> components, double direction_rad, double depth, double gravity,
                      Stretching stretching)

@@ -93,16 +93,12 @@ WaveField airyWave(double height, double period, double direction_rad, double ph
                    Stretching stretching);
 
 // An irregular sea of `component_count` components drawn from `spectrum` over its band (bandLow–bandHigh).
-// Phases (and RandomFrequency's in-bin positions) come from std::mt19937_64(seed) through uniform01() below, so
+// Phases (and RandomFrequency's in-bin positions) come from std::mt19937_64(seed) through core's portable uniform01(), so
 // the same seed gives the bitwise same sea on every standard library. Frequencies: EqualEnergy bins have
 // unequal widths and RandomFrequency's are jittered, so no common period 2π/Δω exists and the record does not
 // repeat; the smallest spacing of neighbouring frequencies is reported by smallestSpacing().
 WaveField irregularSea(const WaveSpectrum& spectrum, int component_count, Discretisation discretisation,
                        std::uint64_t seed, double direction_rad, double depth, double gravity, Stretching stretching);
-
-// The 53 high bits of one mt19937_64 draw, scaled to [0, 1): portable (std::uniform_real_distribution is not
-// specified bit-for-bit across library versions).
-double uniform01(std::uint64_t draw);
 
 // Half-cosine start-up ramp of a sea: r(t) = ½(1 − cos(π t/T_r)) for 0 < t < T_r, 0 for t ≤ 0, 1 from T_r on
 // (T_r = 0: the sea is on from t = 0); its rate dr/dt [1/s] (0 outside (0, T_r)).

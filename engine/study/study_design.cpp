@@ -9,7 +9,7 @@
 #include <set>
 
 #include "core/input_limits.hpp"
-#include "core/ocean_waves.hpp"
+#include "core/portable_random.hpp"
 #include "core/text_format.hpp"
 
 namespace maris::study::detail {
@@ -142,7 +142,7 @@ void sortByPath(Study& study, std::vector<T>& per_parameter) {
 
 // Uniform in [0, 1) by core's portable draw (the one the seas' phases use): the same numbers on every platform
 // (std::mt19937_64's sequence is fixed by the standard; std::uniform_real_distribution's mapping is not).
-double uniform01(std::mt19937_64& engine) { return ocean::uniform01(engine()); }
+double uniform01(std::mt19937_64& engine) { return maris::uniform01(engine()); }
 
 // Uniform in [0, n) without modulo bias (rejection of the incomplete last block).
 std::uint64_t uniformBelow(std::mt19937_64& engine, std::uint64_t n) {

@@ -87,7 +87,7 @@ SimulationOutput simulateTether(const TetherParameters& p, RunContext& context) 
 
   // Vision: a fixed seed keeps runs reproducible; the first estimate starts from the initial shape's guess.
   const CameraModel camera = cameraOf(p);
-  std::mt19937 rng(20200107u);
+  std::mt19937_64 rng(20200107u);
   ShapeEstimate estimate;
   estimate.a = 0.5;
   estimate.b = 0.0;

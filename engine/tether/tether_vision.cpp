@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "core/least_squares.hpp"
+#include "core/portable_random.hpp"
 #include "tether/tether_cable.hpp"
 
 namespace maris::tether {
@@ -125,10 +126,9 @@ Eigen::Vector3d attachmentInCamera(const TetherRig& rig, const CameraModel& came
 }
 
 std::vector<ImagePoint> projectTether(const CameraModel& camera, const RobotPose& follower,
-                                      const std::vector<Eigen::Vector3d>& world_points, std::mt19937* noise) {
+                                      const std::vector<Eigen::Vector3d>& world_points, std::mt19937_64* noise) {
   const Eigen::Matrix3d world_to_body = Eigen::AngleAxisd(-follower.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const double limit = std::tan(camera.half_field_of_view);
-  std::normal_distribution<double> gauss(0.0, camera.noise);
   std::vector<ImagePoint> image;
   for (const auto& w : world_points) {
     const Eigen::Vector3d c = bodyToCamera(world_to_body * (w - follower.position) - camera.position_in_body);
@@ -136,8 +136,8 @@ std::vector<ImagePoint> projectTether(const CameraModel& camera, const RobotPose
     ImagePoint p{c.x() / c.z(), c.y() / c.z()};
     if (std::abs(p.x) > limit || std::abs(p.y) > limit) continue;
     if (noise && camera.noise > 0.0) {
-      p.x += gauss(*noise);
-      p.y += gauss(*noise);
+      p.x += camera.noise * standardNormal(*noise);
+      p.y += camera.noise * standardNormal(*noise);
     }
     image.push_back(p);
   }

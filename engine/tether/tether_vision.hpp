@@ -34,9 +34,9 @@ struct ImagePoint {
 };
 
 // Projects world points (the tether, catenary or cable) into the follower camera; keeps those in front of the
-// camera and inside the field of view; adds Gaussian noise of std dev camera.noise.
+// camera and inside the field of view; adds Gaussian noise of std dev camera.noise (core's portable standardNormal).
 std::vector<ImagePoint> projectTether(const CameraModel& camera, const RobotPose& follower,
-                                      const std::vector<Eigen::Vector3d>& world_points, std::mt19937* noise);
+                                      const std::vector<Eigen::Vector3d>& world_points, std::mt19937_64* noise);
 
 // Image of the model tether for features (a, b): y at abscissa x, or false when x back-projects outside the tether.
 // p2_camera: the follower attachment point in the camera frame; rise: dH from the depth sensors.

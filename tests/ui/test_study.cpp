@@ -322,13 +322,18 @@ class StudyTest : public QObject {
     LatinHypercubeDialog dialog(*document->scene(), document->scenario());
     QVERIFY(!dialog.createButton()->isEnabled());  // nothing ticked yet
     // geometry.length is allowed in (0, 1000] m: proposed 10 (the open end moved in by 1 % of the span) to 1000.
-    const auto rows = dialog.table()->findItems(QStringLiteral("geometry.length [m]"), Qt::MatchExactly);
+    // Rows show the parameter's label (the path is in the tooltip), never the raw path.
+    const ParamSpec* length = nullptr;
+    for (const ParamSpec& spec : document->scene()->schema.fields)
+      if (spec.path == "geometry.length") length = &spec;
+    QVERIFY(length);
+    const auto rows = dialog.table()->findItems(fieldLabel(*length) + QStringLiteral(" [m]"), Qt::MatchExactly);
     QCOMPARE(rows.size(), 1);
     QCOMPARE(dialog.table()->item(rows.first()->row(), 1)->text(), QStringLiteral("10"));
     QCOMPARE(dialog.table()->item(rows.first()->row(), 2)->text(), QStringLiteral("1000"));
     QVERIFY(dialog.choose("geometry.length", -5.0, 150.0));
     QVERIFY(!dialog.createButton()->isEnabled());
-    QVERIFY2(dialog.problem().startsWith(QStringLiteral("geometry.length: from")), qPrintable(dialog.problem()));
+    QVERIFY2(dialog.problem().startsWith(fieldLabel(*length) + QStringLiteral(": from")), qPrintable(dialog.problem()));
     const double bounds[2][2] = {{50.0, 150.0}, {0.2, 0.6}};  // length, radius (the design's path order)
     QVERIFY(dialog.choose("geometry.length", bounds[0][0], bounds[0][1]));
     QVERIFY(dialog.choose("geometry.radius", bounds[1][0], bounds[1][1]));

@@ -352,21 +352,9 @@ bool StudyPanel::saveStudy(const QString& file) {
 
 bool StudyPanel::openStudy(const QString& file) {
   if (runner_->isRunning()) return false;
-  StudySession loaded;
-  try {
-    loaded.load(file, *library_);
-  } catch (const InputError& e) {
-    fail(tr("Could not open the study %1:\n%2").arg(file, QString::fromStdString(describeErrors(e.errors()))));
+  if (!replaceSession(tr("Could not open the study %1").arg(file),
+                      [&](StudySession& next) { next.load(file, *library_); }))
     return false;
-  } catch (const std::exception& e) {
-    fail(tr("Could not open the study %1: %2").arg(file, QString::fromUtf8(e.what())));
-    return false;
-  }
-  session_ = std::move(loaded);
-  grid_ = session_.grid();
-  from_file_ = true;
-  plot_view_->refresh();
-  rebuildTable();
   emit message(tr("Opened study %1").arg(file));
   return true;
 }
@@ -377,21 +365,10 @@ bool StudyPanel::openCaseTable(const QString& file) {
     fail(tr("Open a valid scenario first: the load cases vary it."));
     return false;
   }
-  StudySession table;
-  try {
-    table.defineTable(*document_->scene(), document_->scenario(), file);
-  } catch (const InputError& e) {
-    fail(tr("Could not read the case table %1:\n%2").arg(file, QString::fromStdString(describeErrors(e.errors()))));
+  if (!replaceSession(tr("Could not read the case table %1").arg(file), [&](StudySession& next) {
+        next.defineTable(*document_->scene(), document_->scenario(), file);
+      }))
     return false;
-  } catch (const std::exception& e) {
-    fail(tr("Could not read the case table %1: %2").arg(file, QString::fromUtf8(e.what())));
-    return false;
-  }
-  session_ = std::move(table);
-  grid_.clear();
-  from_file_ = true;
-  plot_view_->refresh();
-  rebuildTable();
   emit message(tr("Load-case table %1: run the study to run its cases").arg(file));
   return true;
 }
@@ -402,22 +379,31 @@ bool StudyPanel::defineLatinHypercube(const LatinHypercubeDesign& design) {
     fail(tr("Open a valid scenario first: the samples vary it."));
     return false;
   }
-  StudySession sample;
+  if (!replaceSession(tr("The Latin hypercube cannot be built"), [&](StudySession& next) {
+        next.defineLatinHypercube(*document_->scene(), document_->scenario(), design);
+      }))
+    return false;
+  emit message(tr("Latin hypercube of %n case(s): run the study to run them", nullptr, design.samples));
+  return true;
+}
+
+// A bad file or design leaves the current study as it was: the new session is built aside and only then adopted.
+bool StudyPanel::replaceSession(const QString& failure, const std::function<void(StudySession&)>& build) {
+  StudySession next;
   try {
-    sample.defineLatinHypercube(*document_->scene(), document_->scenario(), design);
+    build(next);
   } catch (const InputError& e) {
-    fail(tr("The Latin hypercube cannot be built:\n%1").arg(QString::fromStdString(describeErrors(e.errors()))));
+    fail(failure + ":\n" + QString::fromStdString(describeErrors(e.errors())));
     return false;
   } catch (const std::exception& e) {
-    fail(tr("The Latin hypercube cannot be built: %1").arg(QString::fromUtf8(e.what())));
+    fail(failure + ": " + QString::fromUtf8(e.what()));
     return false;
   }
-  session_ = std::move(sample);
-  grid_.clear();
+  session_ = std::move(next);
+  grid_ = session_.grid();  // empty for a table or a sample
   from_file_ = true;
   plot_view_->refresh();
   rebuildTable();
-  emit message(tr("Latin hypercube of %n case(s): run the study to run them", nullptr, design.samples));
   return true;
 }
 

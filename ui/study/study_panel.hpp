@@ -90,6 +90,7 @@ class StudyPanel : public QWidget {
   void onCaseFailed(int index, const QString& message);
   void addParameterDialog();
   void fail(const QString& text);
+  bool replaceSession(const QString& failure, const std::function<void(StudySession&)>& build);
 
   ScenarioDocument* document_;
   std::shared_ptr<const SceneLibrary> library_;

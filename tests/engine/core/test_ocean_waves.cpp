@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
-#include <random>
 
 #include <gtest/gtest.h>
 
@@ -144,16 +143,6 @@ TEST(OceanWaves, WheelerStretchingMapsTheSurfaceToZeroAndTheSeabedToItself) {
       EXPECT_LT((vertical.kinematics(deep_point, t).velocity - linear.kinematics(deep_point, t).velocity).norm(), 1e-14);
     }
   }
-}
-
-TEST(OceanWaves, Mt19937_64AndUniform01AreThePortableStream) {
-  // C++ standard [rand.predef]: the 10000th draw of a default-constructed mt19937_64 is 9981545732273789042.
-  std::mt19937_64 rng;
-  rng.discard(9999);
-  EXPECT_EQ(rng(), 9981545732273789042ULL);
-  EXPECT_EQ(uniform01(0), 0.0);
-  EXPECT_EQ(uniform01(~0ULL), 1.0 - 0x1.0p-53);
-  EXPECT_EQ(uniform01(1ULL << 63), 0.5);
 }
 
 TEST(OceanWaves, SameSeedGivesTheBitwiseSameSeaAndAnotherSeedAnother) {

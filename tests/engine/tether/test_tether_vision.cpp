@@ -17,7 +17,7 @@ struct VisionRig {
   RobotPose leader{{2.0, 0.0, -0.5}, 0.0};
   VisionRig() { camera.position_in_body = rig.follower_attachment + Eigen::Vector3d(-0.2, 0.0, 0.1); }
 
-  std::vector<ImagePoint> image(double a, double b, std::mt19937* noise = nullptr) const {
+  std::vector<ImagePoint> image(double a, double b, std::mt19937_64* noise = nullptr) const {
     const RobotPose follower = followerPoseFromFeatures(rig, leader, Features{a, b, 0.5, 0.0});
     const TetherState state = tetherState(rig, follower, leader);
     std::vector<Eigen::Vector3d> points;
@@ -53,7 +53,7 @@ TEST(TetherVision, NoisyProjectionsAreFittedWithinTheNoise) {
   // D2: sigma = 1e-3 normalised units: |a_hat - a|, |b_hat - b| <= 5e-3 (an independent implementation measured <= 1e-4).
   VisionRig s;
   s.camera.noise = 1e-3;
-  std::mt19937 rng(7);
+  std::mt19937_64 rng(7);
   const auto image = s.image(0.5, 0.5, &rng);
   ShapeEstimate start;
   start.a = 0.5;

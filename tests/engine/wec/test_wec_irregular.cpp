@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "core/ocean_waves.hpp"
+#include "core/portable_random.hpp"
 #include "wec/wec_frequency.hpp"
 #include "wec/wec_response.hpp"
 #include "wec/wec_time.hpp"
@@ -133,7 +134,7 @@ TEST(WecIrregular, SamplingErrorOfTheDeviationMatchesTheSpreadOverSeeds) {
     const IncidentWaves sea = makeIrregularWave(p, 1.0);
     fixed.push_back(measure(sea));
     std::vector<maris::ocean::WaveComponent> components = sea.field.components();
-    for (auto& c : components) c.amplitude *= std::sqrt(-std::log1p(-maris::ocean::uniform01(rayleigh())));
+    for (auto& c : components) c.amplitude *= std::sqrt(-std::log1p(-maris::uniform01(rayleigh())));
     IncidentWaves random_amplitudes = sea;
     random_amplitudes.field = maris::ocean::WaveField(std::move(components), 0.0, maris::ocean::kDeepWater, p.gravity,
                                                       maris::ocean::Stretching::None);
