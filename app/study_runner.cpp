@@ -57,8 +57,8 @@ pid_t spawnCase(const study::StudyFolder& folder, const std::string& id, const C
   std::vector<std::string> args = {"maris-cli", "run", scenario, "--out", out, "--no-sync"};
   // A folder of a case that is not complete was torn by a crash (a power loss before its batch was synced):
   // the run replaces it.
-  std::error_code error;
-  if (std::filesystem::exists(folder.caseRun(id), error)) args.push_back("--force");
+  std::error_code exists_error;
+  if (std::filesystem::exists(folder.caseRun(id), exists_error)) args.push_back("--force");
   if (!options.case_plots) args.push_back("--no-plots");
   if (options.allow_large) args.push_back("--allow-large");
   std::vector<char*> argv;
@@ -200,7 +200,7 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
       }
       running[pid] = {id, Clock::now(), std::chrono::system_clock::now(), false, {}};
     }
-    count(durability.poll());  // after the next cases have started: syncing waits for the disk
+    count(durability.poll());  // after the next cases have started (the sync itself runs in its own thread)
     progress.show(tally, running.size(), false);
     if (running.empty()) break;
 
