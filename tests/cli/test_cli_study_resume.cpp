@@ -89,8 +89,11 @@ TEST_F(CliStudyResume, ACaseWhoseSummaryIsEmptyTornOrMissingRunsAgainAndNoOther)
   ASSERT_EQ(after.size(), 12u);
   for (const auto& [id, identity] : before) {
     const bool was_torn = std::find(torn.begin(), torn.end(), id) != torn.end();
-    if (was_torn) EXPECT_NE(after.at(id).first, identity.first) << "case " << id << " did not run again";
-    else EXPECT_EQ(after.at(id), identity) << "case " << id << " ran again";
+    if (was_torn) {
+      EXPECT_NE(after.at(id).first, identity.first) << "case " << id << " did not run again";
+    } else {
+      EXPECT_EQ(after.at(id), identity) << "case " << id << " ran again";
+    }
   }
   const Json manifest = Json::parse(slurp(dir_ / "out" / "study.json"));
   ASSERT_EQ(manifest["runs"].size(), 2u);
