@@ -4,7 +4,7 @@
 // collect study.csv. Wall times of a shared machine: run it on a quiet one.
 //   bench_study_throughput [--cases 200] [--medium 40] [--trivial 10000] [--no-trivial-run] [--maris PATH]
 //                          [--dir DIR]
-// small: riser cantilever statics (ms of solve); medium: the same with 1 s of dynamics (about 0.3 s of solve).
+// small: riser cantilever statics (ms of solve); medium: the same with 1 s of dynamics (about 0.1 s of solve).
 // A count of 0 leaves that part out. --dir on a tmpfs (/dev/shm/x) takes the device's flushes out of the
 // times. Prints one line per measurement (name, value, unit).
 #include <chrono>
@@ -64,7 +64,7 @@ Json readJson(const fs::path& file) {
 }
 
 // A riser cantilever under a tip load at `count` lengths: statics only (a few ms of solve), or with
-// `end_time` seconds of dynamics after it (about 0.3 s of solve per simulated second).
+// `end_time` seconds of dynamics after it (about 0.1 s of solve per simulated second).
 std::string cantileverStudy(std::size_t count, double end_time = 0.0) {
   // A {from, to, count} range needs two values or more: one case is a list of one.
   const std::string lengths = count == 1 ? "[10]" : R"({"from": 10, "to": 30, "count": )" + std::to_string(count) + "}";
