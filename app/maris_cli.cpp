@@ -1,6 +1,6 @@
 // maris-cli: the headless runner over the same engine as the GUI.
 //   maris-cli list | show NAME | schema SCENE|study [--json] | scenes | default
-//           | run FILE|NAME [--set path=value ...] [--out DIR] [--force] [--allow-large] [--no-plots]
+//           | run FILE|NAME [--set path=value ...] [--out DIR] [--force] [--allow-large] [--no-plots] [--no-sync]
 //           | validate FILE... | study run|run-cases|collect|submit ...   (cli_study.hpp)
 // Options are parsed with CLI11 under the conventions shared with `maris` (cli_conventions.hpp):
 // --help, --version, usage errors with exit code 1; the other exit codes are listed there.
@@ -68,6 +68,7 @@ struct RunOptions {
   bool no_plots = false;               // --no-plots
   bool force = false;                  // --force: replace an earlier run in DIR
   bool allow_large = false;            // --allow-large: run beyond the work limits
+  bool no_sync = false;                // --no-sync: do not wait for the device (a study syncs its cases in batches)
 };
 
 int cmdList() {
@@ -171,7 +172,9 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
   if (auto errors = workLimitErrors(estimate); !options.allow_large && !errors.empty()) throw InputError(errors);
   if (!options.no_plots) requirePlotRenderer();  // a missing renderer refuses before the solve
   installSignalHandlers();
-  RunFolder folder(out_dir, {options.force, static_cast<std::uintmax_t>(estimate.output_bytes)});
+  RunFolder folder(out_dir, {.replace = options.force,
+                             .expected_bytes = static_cast<std::uintmax_t>(estimate.output_bytes),
+                             .sync = !options.no_sync});
   RunContext context(makeProgressPrinter(), &g_cancel);
   std::fprintf(stderr, "running %s (%s)\n", id.c_str(), scene.title.c_str());
   const auto started_at = std::chrono::system_clock::now();
@@ -232,6 +235,9 @@ struct Commands {
     run->add_flag("--no-plots", run_options.no_plots, "write no PNG plots");
     run->add_flag("--force", run_options.force, "replace an earlier run's results in DIR (as a whole)");
     run->add_flag("--allow-large", run_options.allow_large, "run beyond the work and memory limits");
+    run->add_flag("--no-sync", run_options.no_sync,
+                  "do not wait until the results are on the disk (faster; a power loss soon after can leave "
+                  "them empty): for a caller that syncs many runs at once, as `study run` does");
     study.add(app);
   }
 };

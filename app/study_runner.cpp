@@ -5,7 +5,9 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <map>
+#include <system_error>
 
 #include <fcntl.h>
 #include <sched.h>
@@ -13,6 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "case_durability.hpp"
 #include "core/input_limits.hpp"
 #include "core/run_output.hpp"
 
@@ -46,11 +49,16 @@ std::string durationText(double seconds) {
   return text;
 }
 
-// Starts `maris-cli run CASE.json --out CASE/` with its messages going to CASE.log; 0 when it cannot start.
+// Starts `maris-cli run CASE.json --out CASE/ --no-sync` with its messages going to CASE.log; 0 when it
+// cannot start. The case does not wait for the disk: CaseDurability syncs the ended cases in batches.
 pid_t spawnCase(const study::StudyFolder& folder, const std::string& id, const CaseRunOptions& options) {
   const std::string scenario = folder.caseScenario(id).string(), out = folder.caseRun(id).string();
   const std::string log = folder.caseLog(id).string();
-  std::vector<std::string> args = {"maris-cli", "run", scenario, "--out", out};
+  std::vector<std::string> args = {"maris-cli", "run", scenario, "--out", out, "--no-sync"};
+  // A folder of a case that is not complete was torn by a crash (a power loss before its batch was synced):
+  // the run replaces it.
+  std::error_code exists_error;
+  if (std::filesystem::exists(folder.caseRun(id), exists_error)) args.push_back("--force");
   if (!options.case_plots) args.push_back("--no-plots");
   if (options.allow_large) args.push_back("--allow-large");
   std::vector<char*> argv;
@@ -140,15 +148,16 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
   std::map<pid_t, RunningCase> running;
   std::size_t next = 0;
   const unsigned jobs = std::max(1u, options.jobs);
-  auto record = [&](CaseOutcome outcome) {
-    if (outcome.status == CaseStatus::Ok) ++tally.ok;
-    if (outcome.status == CaseStatus::Failed) ++tally.failed;
-    if (outcome.status == CaseStatus::Timeout) ++tally.timeout;
-    if (outcome.status != CaseStatus::Ok) tally.failed_ids.push_back(outcome.id);
-    study::writeCaseOutcome(folder, outcome);
+  // Ended cases are counted once their folders are durable and their outcomes recorded (CaseDurability).
+  CaseDurability durability(folder);
+  auto count = [&](const std::vector<CaseOutcome>& recorded) {
+    for (const auto& outcome : recorded) {
+      if (outcome.status == CaseStatus::Ok) ++tally.ok;
+      if (outcome.status == CaseStatus::Failed) ++tally.failed;
+      if (outcome.status == CaseStatus::Timeout) ++tally.timeout;
+      if (outcome.status != CaseStatus::Ok) tally.failed_ids.push_back(outcome.id);
+    }
   };
-  // A case that ended: its outcome, recorded after the next cases have started (writing it waits for the disk).
-  std::vector<CaseOutcome> ended;
   auto finish = [&](pid_t pid, int status) {
     const auto it = running.find(pid);
     if (it == running.end()) return;
@@ -177,7 +186,7 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
         outcome.message = WIFSIGNALED(status) ? "ended by signal " + std::to_string(WTERMSIG(status))
                                               : "exit code " + std::to_string(outcome.exit_code) + " without results";
     }
-    ended.push_back(std::move(outcome));
+    durability.add(std::move(outcome));
   };
 
   for (;;) {
@@ -185,19 +194,19 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
       const std::string& id = queue[next++];
       const pid_t pid = spawnCase(folder, id, options);
       if (pid == 0) {
-        record({id, CaseStatus::Failed, 127, "could not start maris-cli for the case", 0.0,
-                isoUtc(std::chrono::system_clock::now())});
+        durability.add({id, CaseStatus::Failed, 127, "could not start maris-cli for the case", 0.0,
+                        isoUtc(std::chrono::system_clock::now())});
         continue;
       }
       running[pid] = {id, Clock::now(), std::chrono::system_clock::now(), false, {}};
     }
-    for (auto& outcome : ended) record(std::move(outcome));
-    ended.clear();
+    count(durability.poll());  // after the next cases have started (the sync itself runs in its own thread)
     progress.show(tally, running.size(), false);
     if (running.empty()) break;
 
-    // Sleep until a case ends, a signal arrives, a timeout falls due or the progress line is due.
-    double wait_s = 1.0;
+    // Sleep until a case ends, a signal arrives, a timeout falls due, a batch of cases is to be synced or
+    // the progress line is due.
+    double wait_s = std::min(1.0, durability.secondsToNextPoll());
     for (const auto& [pid, c] : running) {
       if (options.timeout_s > 0 && !c.timed_out) wait_s = std::min(wait_s, options.timeout_s - secondsSince(c.started));
       if (c.timed_out) wait_s = std::min(wait_s, -std::chrono::duration<double>(Clock::now() - c.kill_at).count());
@@ -226,6 +235,7 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
       }
     }
   }
+  count(durability.finish());
   progress.show(tally, 0, true);
   progress.finish();
   // A signal that arrived after the last case ended still cancels the study (it is pending, not lost).

@@ -2,7 +2,9 @@
 // crashes, runs out of memory or hangs ends alone and the study goes on. Up to `jobs` at once; a case
 // past its timeout is stopped (SIGTERM, then SIGKILL); SIGINT/SIGTERM to the study are forwarded to the
 // running cases, which then write nothing (their run folder transaction is not committed), so every case
-// folder is complete or absent and `--resume` finishes the study.
+// folder is complete or absent and `--resume` finishes the study. The cases do not wait for the disk
+// themselves (`run --no-sync`); the study makes them durable in batches before recording them
+// (case_durability.hpp).
 #pragma once
 
 #include <string>

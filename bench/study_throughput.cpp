@@ -4,8 +4,9 @@
 // collect study.csv. Wall times of a shared machine: run it on a quiet one.
 //   bench_study_throughput [--cases 200] [--medium 40] [--trivial 10000] [--no-trivial-run] [--maris PATH]
 //                          [--dir DIR]
-// small: riser cantilever statics (ms of solve); medium: the same with 1 s of dynamics (about 0.3 s of solve).
-// Prints one line per measurement (name, value, unit).
+// small: riser cantilever statics (ms of solve); medium: the same with 1 s of dynamics (about 0.1 s of solve).
+// A count of 0 leaves that part out. --dir on a tmpfs (/dev/shm/x) takes the device's flushes out of the
+// times. Prints one line per measurement (name, value, unit).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <spawn.h>
@@ -62,11 +64,13 @@ Json readJson(const fs::path& file) {
 }
 
 // A riser cantilever under a tip load at `count` lengths: statics only (a few ms of solve), or with
-// `end_time` seconds of dynamics after it (about 0.3 s of solve per simulated second).
+// `end_time` seconds of dynamics after it (about 0.1 s of solve per simulated second).
 std::string cantileverStudy(std::size_t count, double end_time = 0.0) {
+  // A {from, to, count} range needs two values or more: one case is a list of one.
+  const std::string lengths = count == 1 ? "[10]" : R"({"from": 10, "to": 30, "count": )" + std::to_string(count) + "}";
   return R"({"format": "maris-study/1", "name": "throughput", "base": "riser_cantilever_tip_load",
     "set": {"solver.end_time": )" + std::to_string(end_time) + R"(},
-    "grid": {"geometry.length": {"from": 10, "to": 30, "count": )" + std::to_string(count) + "}}}";
+    "grid": {"geometry.length": )" + lengths + "}}";
 }
 
 // Per-case costs from a run study: the case processes' wall time and the solves' own wall time.
@@ -110,9 +114,44 @@ bool measureJobs(const std::string& maris, const fs::path& dir, const std::strin
   return true;
 }
 
-}  // namespace
+// 10 000 trivial cases: the same cantilever, so each case is one short process. Returns false on a failure.
+bool measureTrivial(const std::string& maris, const fs::path& dir, std::size_t trivial, bool trivial_run) {
+  { std::ofstream(dir / "trivial.json") << cantileverStudy(trivial); }
+  auto t0 = Clock::now();
+  const maris::study::Study study = maris::study::loadStudyFile(dir / "trivial.json");
+  const auto expanded = maris::study::expandStudy(study);
+  report("trivial: read and expand", since(t0), "s");
+  t0 = Clock::now();
+  const auto errors = maris::study::caseErrors(study, expanded, false);
+  report("trivial: check every case", since(t0), "s");
+  if (!errors.empty()) {
+    std::fprintf(stderr, "%s\n", maris::describeErrors(errors).c_str());
+    return false;
+  }
+  const maris::study::StudyFolder folder{dir / "trivial"};
+  t0 = Clock::now();
+  maris::study::prepareStudyFolder(folder, study, expanded, dir / "trivial.json", false);
+  report("trivial: write case files and study.json", since(t0), "s");
+  if (!trivial_run) return true;
+  t0 = Clock::now();
+  const int code = runMaris(maris, {"study", "run", (dir / "trivial.json").string(), "--out", folder.root.string(),
+                                    "--jobs", "2", "--no-plots", "--resume"});
+  const double run_wall = since(t0);
+  report("trivial: study run --jobs 2 (all cases)", run_wall, "s");
+  report("trivial: throughput", static_cast<double>(trivial) / run_wall, "cases/s");
+  if (code != 0) std::fprintf(stderr, "trivial study run: exit code %d\n", code);
+  t0 = Clock::now();
+  maris::study::StudyManifest manifest = maris::study::readManifest(folder);
+  const auto collected = maris::study::collectStudy(folder, manifest);
+  report("trivial: collect (read every summary.json)", since(t0), "s");
+  t0 = Clock::now();
+  maris::study::writeCollected(folder, manifest, collected);
+  report("trivial: write study.csv and study.json", since(t0), "s");
+  report("trivial: study.csv size", static_cast<double>(fs::file_size(folder.csv())) / 1e6, "MB");
+  return code == 0;
+}
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   std::size_t cases = 200, medium = 40, trivial = 10000;
   bool trivial_run = true;
   std::string maris = MARIS_CLI_PATH;
@@ -130,45 +169,27 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  if (!measureJobs(maris, dir, "small", cantileverStudy(cases), cases)) return 1;
-  if (medium > 0 && !measureJobs(maris, dir, "medium", cantileverStudy(medium, 1.0), medium)) return 1;
-
-  // 10 000 trivial cases: the same cantilever, so each case is one short process.
-  { std::ofstream(dir / "trivial.json") << cantileverStudy(trivial); }
-  auto t0 = Clock::now();
-  const maris::study::Study study = maris::study::loadStudyFile(dir / "trivial.json");
-  const auto expanded = maris::study::expandStudy(study);
-  report("trivial: read and expand", since(t0), "s");
-  t0 = Clock::now();
-  const auto errors = maris::study::caseErrors(study, expanded, false);
-  report("trivial: check every case", since(t0), "s");
-  if (!errors.empty()) {
-    std::fprintf(stderr, "%s\n", maris::describeErrors(errors).c_str());
+  std::error_code error;
+  if (fs::exists(dir, error) && !fs::is_empty(dir, error)) {  // it is removed at the end: never someone's files
+    std::fprintf(stderr, "--dir %s is not empty: name a new or empty folder\n", dir.c_str());
     return 1;
   }
-  const maris::study::StudyFolder folder{dir / "trivial"};
-  t0 = Clock::now();
-  maris::study::prepareStudyFolder(folder, study, expanded, dir / "trivial.json", false);
-  report("trivial: write case files and study.json", since(t0), "s");
-  if (trivial_run) {
-    t0 = Clock::now();
-    const int code = runMaris(maris, {"study", "run", (dir / "trivial.json").string(), "--out", folder.root.string(),
-                                      "--jobs", "2", "--no-plots", "--resume"});
-    const double run_wall = since(t0);
-    report("trivial: study run --jobs 2 (all cases)", run_wall, "s");
-    report("trivial: throughput", static_cast<double>(trivial) / run_wall, "cases/s");
-    if (code != 0) std::fprintf(stderr, "trivial study run: exit code %d\n", code);
-    t0 = Clock::now();
-    maris::study::StudyManifest manifest = maris::study::readManifest(folder);
-    const auto collected = maris::study::collectStudy(folder, manifest);
-    report("trivial: collect (read every summary.json)", since(t0), "s");
-    t0 = Clock::now();
-    maris::study::writeCollected(folder, manifest, collected);
-    report("trivial: write study.csv and study.json", since(t0), "s");
-    report("trivial: study.csv size", static_cast<double>(fs::file_size(folder.csv())) / 1e6, "MB");
-  }
+  fs::create_directories(dir);
+  bool ok = cases == 0 || measureJobs(maris, dir, "small", cantileverStudy(cases), cases);
+  ok = ok && (medium == 0 || measureJobs(maris, dir, "medium", cantileverStudy(medium, 1.0), medium));
+  ok = ok && (trivial == 0 || measureTrivial(maris, dir, trivial, trivial_run));
   fs::remove_all(dir);
-  return 0;
+  return ok ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each measurement shows at once, also into a pipe
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_study_throughput: %s\n", e.what());
+    return 1;
+  }
 }

@@ -133,7 +133,7 @@ void RunFolder::release() {
 
 void RunFolder::commit() {
   if (committed_ || staging_.empty()) fail("run folder " + quoted(target_) + " was already committed");
-  syncTree(staging_);
+  if (options_.sync) syncTree(staging_);
   std::error_code ec;
   const bool exists = fs::exists(fs::symlink_status(target_, ec));
   if (!exists || fs::is_empty(target_, ec)) {
@@ -163,7 +163,7 @@ void RunFolder::commit() {
     }
   }
   staging_.clear();
-  syncDirectory(target_.parent_path());
+  if (options_.sync) syncDirectory(target_.parent_path());
 }
 
 }  // namespace maris

@@ -30,6 +30,10 @@ class RunFolderError : public std::runtime_error {
 struct RunFolderOptions {
   bool replace = false;             // replace a folder that holds another run's results (maris-cli --force)
   std::uintmax_t expected_bytes = 0;  // free space the run's files need [bytes]
+  // commit() waits until the files are on the device. Off (maris-cli run --no-sync) for a caller that makes
+  // many folders durable at once (a study: one syncfs per batch of cases); until then a power loss can leave
+  // the committed folder absent or with empty files (see docs/studies.md, "Crash safety").
+  bool sync = true;
 };
 
 class RunFolder {
@@ -43,7 +47,8 @@ class RunFolder {
   const std::filesystem::path& target() const { return target_; }    // absolute, normalised
   const std::filesystem::path& staging() const { return staging_; }  // write the run's files here
 
-  // Moves the staged folder into place as a whole. Throws RunFolderError (the target is then untouched).
+  // Makes the staged files durable (unless options.sync is off) and moves the folder into place as a whole.
+  // Throws RunFolderError (the target is then untouched).
   void commit();
 
  private:

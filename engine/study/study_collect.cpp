@@ -25,9 +25,7 @@ bool isNumber(ParamKind kind) { return kind == ParamKind::Real || kind == ParamK
 std::string plainUnit(const std::string& unit) { return unit.empty() ? "-" : unit; }
 
 // The scalars of a complete case's summary.json.
-CaseScalars readScalars(const std::filesystem::path& summary) {
-  const Json j = parseJsonLimited(readInputFile(summary, summary.string(), InputLimits::kScenarioFileBytes),
-                                  summary.string());
+CaseScalars summaryScalars(const Json& j) {
   CaseScalars scalars;
   for (const auto& [name, s] : j.at("results").items())
     if (s.is_object() && s.contains("value") && s["value"].is_number())
@@ -51,9 +49,9 @@ CollectedStudy collectStudy(const StudyFolder& folder, const StudyManifest& mani
     c.values = manifest.values[i];
     c.outcome.id = c.id;
     if (auto outcome = readCaseOutcome(folder, c.id)) c.outcome = *outcome;
-    if (folder.caseComplete(c.id)) {
+    if (const auto summary = folder.caseSummary(c.id)) {
       try {
-        scalars[i] = readScalars(folder.caseRun(c.id) / "summary.json");
+        scalars[i] = summaryScalars(*summary);
         c.status = CaseStatus::Ok;
         c.outcome.status = CaseStatus::Ok;
       } catch (const std::exception& e) {

@@ -37,9 +37,17 @@ bool caseFileEmpty(const std::filesystem::path& file) {
 
 }  // namespace
 
-bool StudyFolder::caseComplete(const std::string& id) const {
+std::optional<Json> StudyFolder::caseSummary(const std::string& id) const {
+  const auto summary = caseRun(id) / "summary.json";
   std::error_code error;
-  return std::filesystem::is_regular_file(caseRun(id) / "summary.json", error);
+  if (!std::filesystem::is_regular_file(summary, error)) return std::nullopt;  // the usual case: not run yet
+  try {
+    Json j = parseJsonLimited(readInputFile(summary, summary.string(), InputLimits::kScenarioFileBytes),
+                              summary.string());
+    if (j.is_object()) return j;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
 }
 
 const char* toString(CaseStatus status) {
@@ -52,11 +60,11 @@ const char* toString(CaseStatus status) {
   return "missing";
 }
 
-void writeCaseOutcome(const StudyFolder& folder, const CaseOutcome& outcome) {
+void writeCaseOutcome(const StudyFolder& folder, const CaseOutcome& outcome, FileSync sync) {
   const Json j = {{"case", outcome.id},          {"status", toString(outcome.status)},
                   {"exit_code", outcome.exit_code}, {"message", outcome.message},
                   {"wall_s", outcome.wall_s},    {"started_at", outcome.started_at}};
-  writeFileAtomic(folder.caseOutcome(outcome.id), j.dump(2) + "\n");
+  writeFileAtomic(folder.caseOutcome(outcome.id), j.dump(2) + "\n", sync);
 }
 
 std::optional<CaseOutcome> readCaseOutcome(const StudyFolder& folder, const std::string& id) {

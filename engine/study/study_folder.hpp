@@ -5,7 +5,8 @@
 //   DIR/study.csv                one row per case (study_collect.hpp)
 //   DIR/cases/0001.json          the case's scenario (written before anything runs)
 //   DIR/cases/0001/              the case's run folder, exactly what `maris-cli run` writes; complete when it
-//                                holds summary.json (a run folder appears whole or not at all)
+//                                holds a summary.json that parses as a JSON object (a run folder appears whole
+//                                or not at all; a power loss before the study synced it can leave it empty)
 //   DIR/cases/0001.log           the case run's messages (stderr)
 //   DIR/cases/0001.outcome.json  how the case's last attempt ended (status, exit code, message, wall time)
 //   DIR/plots/*.png              each collected result against each varied parameter
@@ -40,7 +41,10 @@ struct StudyFolder {
   std::filesystem::path caseRun(const std::string& id) const { return cases() / id; }
   std::filesystem::path caseLog(const std::string& id) const { return cases() / (id + ".log"); }
   std::filesystem::path caseOutcome(const std::string& id) const { return cases() / (id + ".outcome.json"); }
-  bool caseComplete(const std::string& id) const;
+  // The case's summary.json when the case is complete, else nullopt (no folder, no summary.json, or one
+  // that does not parse as a JSON object: torn by a crash before its data reached the disk).
+  std::optional<Json> caseSummary(const std::string& id) const;
+  bool caseComplete(const std::string& id) const { return caseSummary(id).has_value(); }
 };
 
 enum class CaseStatus { Ok, Failed, Timeout, Missing };
@@ -55,7 +59,8 @@ struct CaseOutcome {
   double wall_s = 0.0;      // [s] from start to end of the case's process
   std::string started_at;   // UTC, ISO 8601
 };
-void writeCaseOutcome(const StudyFolder& folder, const CaseOutcome& outcome);
+// `sync` Later: the study runner makes a batch of outcomes durable with one syncfs (study_runner.hpp).
+void writeCaseOutcome(const StudyFolder& folder, const CaseOutcome& outcome, FileSync sync = FileSync::Now);
 std::optional<CaseOutcome> readCaseOutcome(const StudyFolder& folder, const std::string& id);
 
 // What study.json records of the study; read back by `study collect` and the array tasks.

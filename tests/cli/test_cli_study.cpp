@@ -22,25 +22,18 @@
 
 #include "catalog.hpp"
 #include "cli_runner.hpp"
-
-extern char** environ;
+#include "study_cli_helpers.hpp"
 
 namespace maris {
 namespace {
 
 namespace fs = std::filesystem;
+using test::completeCases;
+using test::contains;
 using test::runCli;
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void writeText(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
-
-bool contains(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
+using test::slurp;
+using test::startCli;
+using test::writeText;
 
 std::vector<std::vector<std::string>> csvRows(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
@@ -135,35 +128,6 @@ TEST_F(CliStudy, OneAndTwoJobsWriteTheSameStudyCsvWithTheValuesOfSingleRuns) {
   // Plots: each result against each varied number parameter (a 2-D grid: a heat map per result).
   EXPECT_TRUE(fs::exists(dir_ / "ship2" / "plots" / "c_total_vs_hull.length.png"));
   EXPECT_TRUE(fs::exists(dir_ / "riser2" / "plots" / "tip_deflection_map.png"));
-}
-
-// Starts maris-cli in the background (stdout and stderr to files in `dir`).
-pid_t startCli(const std::vector<std::string>& args, const fs::path& dir) {
-  std::vector<std::string> all = {MARIS_CLI_PATH};
-  all.insert(all.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : all) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t files;
-  posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, 1, (dir / "out.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&files, 2, (dir / "err.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  ::posix_spawn(&pid, MARIS_CLI_PATH, &files, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&files);
-  return pid;
-}
-
-std::map<std::string, std::pair<ino_t, std::string>> completeCases(const fs::path& cases) {
-  std::map<std::string, std::pair<ino_t, std::string>> complete;
-  if (!fs::exists(cases)) return complete;
-  for (const auto& e : fs::directory_iterator(cases)) {
-    struct stat st {};
-    if (e.path().filename().string().front() == '.') continue;  // a run's staging folder, not a case folder
-    if (e.is_directory() && ::stat((e.path() / "summary.json").c_str(), &st) == 0)
-      complete[e.path().filename().string()] = {st.st_ino, Json::parse(slurp(e.path() / "summary.json"))["started_at"]};
-  }
-  return complete;
 }
 
 TEST_F(CliStudy, AStudyKilledMidwayIsFinishedByResumeWithNoCaseRunTwice) {
