@@ -23,6 +23,7 @@
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
 #include "main_window.hpp"
+#include "plots/display_units.hpp"
 #include "plots/study_plot.hpp"
 #include "run/run_controller.hpp"
 #include "run/run_history.hpp"
@@ -231,6 +232,43 @@ class StudyTest : public QObject {
     test::keepScreenshot(window_->grab().toImage(), QStringLiteral("study_heat_map"));
     const QPointF cell = studyCasePixel(*view->plot(), view->drawn(), 5);
     QCOMPARE(studyCaseAt(*view->plot(), view->drawn(), cell), 5);
+  }
+
+  // View ▸ Units reaches the study plot: lengths chosen in mm and stresses in MPa scale the drawn values (SI × 1000
+  // and × 1e-6, exactly) and name the unit on the axes, the legend and the colour scale; the data stay SI.
+  void displayUnitsReachTheStudyPlot() {
+    StudyPlotData data;
+    data.result_name = "bending_stress_max";
+    data.result_label = "σ_b max";
+    data.result_unit = "Pa";
+    data.parameters = {{"geometry.length", "m", false, {10.0, 20.0, 10.0, 20.0}},
+                       {"geometry.radius", "m", false, {0.5, 0.5, 0.25, 0.25}}};
+    data.result = {2.0e7, 4.0e7, 1.0e7, 3.0e7};
+    setDisplayUnit("m", "mm");
+    setDisplayUnit("Pa", "MPa");
+    QCustomPlot plot;
+    plot.resize(600, 400);
+    QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
+    QCOMPARE(plot.xAxis->label(), QStringLiteral("length [mm]"));
+    QCOMPARE(plot.yAxis->label(), QStringLiteral("σ_b max [MPa]"));
+    QCOMPARE(plot.graphCount(), 2);  // a line per radius, named in mm
+    QCOMPARE(plot.graph(0)->name(), QStringLiteral("radius = 250 mm"));
+    QCOMPARE(plot.graph(0)->data()->at(1)->key, 20000.0);
+    QCOMPARE(plot.graph(0)->data()->at(1)->value, 30.0);
+    QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::HeatMap));
+    auto* map = qobject_cast<QCPColorMap*>(plot.plottable(0));
+    QVERIFY(map);
+    QCOMPARE(map->data()->cell(1, 1), 40.0);  // length 20 m, radius 0.5 m
+    QCOMPARE(map->colorScale()->axis()->label(), QStringLiteral("σ_b max [MPa]"));
+    auto ticker = plot.xAxis->ticker().dynamicCast<QCPAxisTickerText>();
+    QVERIFY(ticker);
+    QCOMPARE(ticker->ticks().value(1), QStringLiteral("20000"));  // 20 m in mm
+    QCOMPARE(data.result.front(), 2.0e7);                         // the numbers themselves stay SI
+    setDisplayUnit("m", "m");
+    setDisplayUnit("Pa", "Pa");
+    QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
+    QCOMPARE(plot.yAxis->label(), QStringLiteral("σ_b max [Pa]"));
+    QCOMPARE(plot.graph(0)->data()->at(1)->value, 3.0e7);
   }
 
   void cancelStopsThePoolQuickly() {

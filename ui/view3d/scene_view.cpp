@@ -28,6 +28,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include "plots/display_units.hpp"
 #include "plots/result_plot.hpp"
 #include "theme.hpp"
 #include "themed_icon.hpp"
@@ -320,7 +321,11 @@ void SceneView::applyColorSettings() {
   // The bar reads in an engineering unit with ticks on a 1–2–5 grid; the title wraps to the bar's strip
   // (~15 % of the view): a long quantity name ("modal amplitude (displacement, or twist for torsion modes)")
   // would run off the right edge.
-  const ColorBarScale scale = colorBarScale(lo, hi, results_->view.scalar_unit);
+  // A unit chosen in View ▸ Units is kept; otherwise the prefix that reads best for the range.
+  const std::string& si_unit = results_->view.scalar_unit;
+  const DisplayUnit chosen = displayUnit(si_unit);
+  const ColorBarScale scale = displayUnitChosen(si_unit) ? colorBarScaleIn(lo, hi, chosen.factor, chosen.unit)
+                                                         : colorBarScale(lo, hi, si_unit);
   fillColorMap(bar_colors_, color_settings_.map, lo * scale.factor, hi * scale.factor);
   auto ticks = vtkSmartPointer<vtkDoubleArray>::New();
   for (double t : scale.ticks) ticks->InsertNextValue(t);
