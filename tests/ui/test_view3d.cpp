@@ -360,16 +360,36 @@ class View3dTest : public QObject {
     view.showResults(tube);
     auto [title, range] = colourBarTitle(view);
     QVERIFY2(title.startsWith(QStringLiteral("bending stress [MPa]")), qPrintable(title));
-    QCOMPARE(range, std::make_pair(0.0, 20.0));
+    QCOMPARE(range.first, 0.0);
+    QCOMPARE(range.second, 20.0);  // fuzzy: 2e7 × 1e-6
     setDisplayUnit("Pa", "kPa");
     view.showResults(tube);
     std::tie(title, range) = colourBarTitle(view);
     QVERIFY2(title.startsWith(QStringLiteral("bending stress [kPa]")), qPrintable(title));
-    QCOMPARE(range, std::make_pair(0.0, 20000.0));
+    QCOMPARE(range.first, 0.0);
+    QCOMPARE(range.second, 20000.0);
     QCOMPARE(view.colorRange(), std::make_pair(0.0, 2e7));  // the colours' range stays SI
     setDisplayUnit("Pa", "Pa");
     view.showResults(tube);
     QVERIFY(colourBarTitle(view).first.startsWith(QStringLiteral("bending stress [Pa]")));
+  }
+
+  // A static result (one frame) shows no time, but a label of its own it shows in the caption: what a ship's
+  // wave pattern belongs to (Froude number, speed) and how much its elevation is exaggerated.
+  void aStaticFramesLabelIsInTheCaption() {
+    SceneView view;
+    view.resize(500, 500);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
+    view.showResults(tube);
+    QVERIFY2(!view.captionText().contains(QStringLiteral("t = ")), qPrintable(view.captionText()));
+    auto labelled = std::make_shared<Results>(*tube);
+    labelled->view.frames.front().label = "Kelvin wave pattern at Fn = 0.35, U = 2.192 m/s\nwave elevation drawn × 10";
+    view.showResults(labelled);
+    QVERIFY2(view.captionText().startsWith(QStringLiteral("Kelvin wave pattern at Fn = 0.35, U = 2.192 m/s\n"
+                                                          "wave elevation drawn × 10")),
+             qPrintable(view.captionText()));
   }
 
   // Translucent surfaces are composited in depth order: seen from above, the nearer red square

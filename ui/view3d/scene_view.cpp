@@ -387,14 +387,19 @@ void SceneView::updateTimeLabel() {
   const Frame3D& frame = results_->view.frames[frame_];
   const QString text = frame.label.empty() ? QStringLiteral("t = %1 s").arg(frame.time, 0, 'g', 6)
                                            : QString::fromStdString(frame.label);
-  // A static result (one frame) has no time worth showing.
+  // A static result (one frame) has no time worth showing, but its own label (what the picture is) it shows.
   const bool animated = frameCount() > 1;
   time_->setText(animated ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : QString());
   QStringList lines;
-  if (animated) lines << text;
+  if (animated || !frame.label.empty()) lines << text;
   const QString notes = drawingNotes();
   if (!notes.isEmpty()) lines << notes;
   caption_->SetInput(lines.join('\n').toStdString().c_str());
+}
+
+QString SceneView::captionText() const {
+  const char* text = caption_->GetInput();
+  return text ? QString::fromUtf8(text) : QString();
 }
 
 QString SceneView::drawingNotes() const {
