@@ -180,6 +180,10 @@ class TestPlotAxes : public QObject {
     QCOMPARE(magnitudeTiers(curves({{"b", "Pa", 2.7e7}, {"s", "Pa", 4.0e4}, {"t", "Pa", 4.0e3}}).tables[0],
                             {"b", "s", "t"}),
              (std::vector<std::vector<std::string>>{{"b"}, {"s", "t"}}));
+    // Four sizes each 1000× apart make three axes at most: the smallest two share the third.
+    QCOMPARE(magnitudeTiers(curves({{"a", "N", 1e9}, {"b", "N", 1e6}, {"c", "N", 1e3}, {"d", "N", 1.0}}).tables[0],
+                            {"a", "b", "c", "d"}),
+             (std::vector<std::vector<std::string>>{{"a"}, {"b"}, {"c", "d"}}));
     // An all-zero column stays on the left; one size alone is one tier.
     QCOMPARE(magnitudeTiers(curves({{"z", "N", 0.0}, {"t", "N", 2e6}}).tables[0], {"z", "t"}),
              (std::vector<std::vector<std::string>>{{"z", "t"}}));

@@ -46,7 +46,7 @@ std::vector<std::vector<std::string>> magnitudeTiers(const Table& table, const s
     if (size <= 0.0) continue;  // all zero: with the first tier
     if (tier_largest == 0.0) {
       tier_largest = size;
-    } else if (size * ratio < tier_largest) {
+    } else if (size * ratio < tier_largest && tier + 1 < kMaxValueAxes) {
       ++tier;
       tier_largest = size;
     }
