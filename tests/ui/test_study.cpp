@@ -249,8 +249,8 @@ class StudyTest : public QObject {
     QCustomPlot plot;
     plot.resize(600, 400);
     QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
-    QCOMPARE(plot.xAxis->label(), QStringLiteral("length [mm]"));
-    QCOMPARE(plot.yAxis->label(), QStringLiteral("σ_b max [MPa]"));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atBottom)->label(), QStringLiteral("length [mm]"));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atLeft)->label(), QStringLiteral("σ_b max [MPa]"));
     QCOMPARE(plot.graphCount(), 2);  // a line per radius, named in mm
     QCOMPARE(plot.graph(0)->name(), QStringLiteral("radius = 250 mm"));
     QCOMPARE(plot.graph(0)->data()->at(1)->key, 20000.0);
@@ -260,14 +260,14 @@ class StudyTest : public QObject {
     QVERIFY(map);
     QCOMPARE(map->data()->cell(1, 1), 40.0);  // length 20 m, radius 0.5 m
     QCOMPARE(map->colorScale()->axis()->label(), QStringLiteral("σ_b max [MPa]"));
-    auto ticker = plot.xAxis->ticker().dynamicCast<QCPAxisTickerText>();
+    auto ticker = plot.axisRect()->axis(QCPAxis::atBottom)->ticker().dynamicCast<QCPAxisTickerText>();
     QVERIFY(ticker);
     QCOMPARE(ticker->ticks().value(1), QStringLiteral("20000"));  // 20 m in mm
     QCOMPARE(data.result.front(), 2.0e7);                         // the numbers themselves stay SI
     setDisplayUnit("m", "m");
     setDisplayUnit("Pa", "Pa");
     QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
-    QCOMPARE(plot.yAxis->label(), QStringLiteral("σ_b max [Pa]"));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atLeft)->label(), QStringLiteral("σ_b max [Pa]"));
     QCOMPARE(plot.graph(0)->data()->at(1)->value, 3.0e7);
   }
 
