@@ -1,5 +1,5 @@
 // Many plots in one run (a riser run has about 14, from several tables): in the main window at 1366 × 768 they
-// are grouped by table behind a chooser left of the tab bar; each group's tabs fit the bar with no scroll arrows,
+// are grouped by table behind a chooser above the tab bar; each group's tabs fit the bar with no scroll arrows,
 // every plot is reachable through its group, a group's shared title prefix ("Envelope: ") leaves its tabs but stays
 // in their tooltips, a tab chosen from outside brings its group, and six plots or fewer stay plain tabs.
 // The results are made here (riser-like names and titles), so the expected groups follow from them.

@@ -22,7 +22,7 @@
 namespace maris::ui {
 
 PlotPanel::PlotPanel(QWidget* parent)
-    : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new QTabWidget(this)), group_box_(new QComboBox(tabs_)),
+    : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new QTabWidget(this)), group_box_(new QComboBox(this)),
       overlay_menu_(new QMenu(tr("Overlay runs"), this)) {
   toolbar_->setIconSize(QSize(16, 16));
   toolbar_->setToolButtonStyle(Qt::ToolButtonTextOnly);
@@ -70,10 +70,8 @@ PlotPanel::PlotPanel(QWidget* parent)
   group_box_->setObjectName(QStringLiteral("plotGroup"));
   group_box_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   group_box_->setMinimumContentsLength(16);
-  group_box_->setMaximumWidth(280);
   group_box_->setToolTip(tr("Plots of this group are shown as tabs"));
   group_box_->hide();
-  tabs_->setCornerWidget(group_box_, Qt::TopLeftCorner);
   connect(group_box_, &QComboBox::currentIndexChanged, this, [this](int g) {
     if (!grouping_) showGroup(g);
   });
@@ -82,6 +80,8 @@ PlotPanel::PlotPanel(QWidget* parent)
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
   layout->addWidget(toolbar_);
+  // Above the tabs, not beside them: the tab bar keeps the panel's whole width.
+  layout->addWidget(group_box_);
   layout->addWidget(tabs_, 1);
 
   connect(log_x_, &QAction::toggled, this, [this](bool on) {

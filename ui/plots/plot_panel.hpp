@@ -2,7 +2,7 @@
 // (log axes, fit, reference data from a CSV, export as PNG/PDF/SVG/CSV of the shown run or of all
 // kept runs) and an "Overlay runs" menu listing earlier runs of the same scene, whose curves are
 // drawn dashed or in other colours on every tab. A run with many plots from several tables shows them in groups
-// (plots/plot_groups.hpp): a group chooser left of the tab bar, and the chosen group's tabs.
+// (plots/plot_groups.hpp): a group chooser above the tab bar, and the chosen group's tabs.
 #pragma once
 
 #include <map>
