@@ -189,7 +189,8 @@ QString applyViewOptions(MainWindow& window, const CommandLine& options) {
     for (int i = 0; i < plots->count(); ++i) {
       const PlotSpec& spec = plots->view(i)->spec();
       names << QString::fromStdString(spec.name);
-      if (options.tab == names.back() || options.tab == plots->tabs()->tabText(i)) {
+      if (options.tab == names.back() || options.tab == plots->tabs()->tabText(i) ||
+          options.tab == plots->tabs()->tabToolTip(i)) {
         plots->tabs()->setCurrentIndex(i);
         return {};
       }

@@ -29,6 +29,7 @@
 #include "run/run_panel.hpp"
 #include "scene_library.hpp"
 #include "study/study_panel.hpp"
+#include "study/study_plot_view.hpp"
 #include "study/study_runner.hpp"
 #include "themed_icon.hpp"
 #include "view3d/scene_view.hpp"
@@ -204,7 +205,7 @@ void MainWindow::createDocks() {
     a->setChecked(theme == theme_);
     themes->addAction(a);
   }
-  // Display units of plots and the results dock, per kind of quantity (files stay SI).
+  // Display units of plots, study plots, colour bars and the results dock, per kind of quantity (files stay SI).
   loadDisplayUnits();
   QMenu* units = view->addMenu(tr("&Units"));
   const std::pair<const char*, QString> kinds[] = {{"N", tr("&Force")}, {"Pa", tr("&Stress")}, {"m", tr("&Length")}};
@@ -215,6 +216,7 @@ void MainWindow::createDocks() {
       QAction* a = kind->addAction(QString::fromStdString(choice), this, [this, si = std::string(si_unit), choice] {
         setDisplayUnit(si, choice);
         restoreShownRun();
+        study_->plotView()->refresh();
       });
       a->setCheckable(true);
       a->setChecked(displayUnit(si_unit).unit == choice);

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/text_format.hpp"
 #include "ship/kelvin_pattern.hpp"
 #include "ship/ship_study.hpp"
 
@@ -255,23 +256,28 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   // 3-D view: the hull, both sides, with the still waterline.
   Frame3D frame = hullFrame(m.hull);
   {
-    // Far-field Kelvin pattern behind the stern at the design speed (elevation exaggerated ×10 for display).
+    // Far-field Kelvin pattern behind the stern at the design speed, its elevation drawn exaggerated (a 5 cm wave
+    // beside a 100 m hull would be flat); the view's caption names the speed and the exaggeration.
+    constexpr double kElevationScale = 10.0;
     context.progress(0.97, "wave pattern");
     GridKochin kochin(m.grid, false);
     const double L = m.hull.length_pp;
     const WavePattern w = kelvinWavePattern(kochin, c.speed[d], p.gravity, m.grid.x_aft, 2.0 * L, 0.8 * L, 81, 41);
     Shape3D s;
     s.kind = Shape3D::Kind::Surface;
-    s.name = "Kelvin wave pattern (far field, elevation x10)";
+    s.name = formatText("Kelvin wave pattern (far field, elevation x%g)", kElevationScale);
     s.grid_u = static_cast<int>(w.y.size());
     s.grid_v = static_cast<int>(w.x.size());
     for (Eigen::Index i = 0; i < w.x.size(); ++i)
       for (Eigen::Index j = 0; j < w.y.size(); ++j) {
-        s.points.emplace_back(w.x[i], w.y[j], 10.0 * w.elevation(i, j));
+        s.points.emplace_back(w.x[i], w.y[j], kElevationScale * w.elevation(i, j));
         s.scalars.push_back(w.elevation(i, j));
       }
     s.color = {0.2, 0.4, 0.8};
     frame.shapes.push_back(std::move(s));
+    frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s (far field behind the stern)\n"
+                             "wave elevation drawn × %g; hull at its real proportions",
+                             c.froude[d], c.speed[d], kElevationScale);
     r.view.scalar_name = "wave elevation";
     r.view.scalar_unit = "m";
   }

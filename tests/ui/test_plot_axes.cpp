@@ -1,5 +1,6 @@
 // A plot's axes as fillPlot draws them: reference points (the scene's own and a user's) lie inside the fitted
-// ranges with room for their markers, and quantities whose sizes differ by more than 100× get their own y axis.
+// ranges with room for their markers, quantities whose sizes differ by more than 100× get their own y axis (a third
+// one when the smaller ones differ by 100× again), and legend entries too wide for a narrow plot are shortened.
 // Values are built here, so every expected range and axis follows from them.
 #include <QtTest>
 #include <qcustomplot.h>
@@ -150,6 +151,69 @@ class TestPlotAxes : public QObject {
     QVERIFY(fillPlot(plot, similar, makePlot("p", "Top forces", "curve", "x", {"t", "h"})));
     QVERIFY(!plot.axisRect()->axis(QCPAxis::atRight)->visible());
     QCOMPARE(plot.graph(1)->valueAxis(), plot.axisRect()->axis(QCPAxis::atLeft));
+  }
+
+  // Right-axis columns that still differ by more than 100× among themselves get a second right axis: 27 MPa on the
+  // left, 40 kPa on the right (675× smaller), 4 Pa (10 000× smaller again) on a further right axis outside it; each
+  // axis holds its own column's range, and the legend says which axis a curve is on.
+  void aThirdSizeGetsAThirdAxis() {
+    const Results r = curves({{"bending", "Pa", 2.7e7}, {"shear", "Pa", 4.0e4}, {"torsion", "Pa", 4.0}});
+    const auto tiers = magnitudeTiers(r.tables[0], {"bending", "shear", "torsion"});
+    QCOMPARE(tiers, (std::vector<std::vector<std::string>>{{"bending"}, {"shear"}, {"torsion"}}));
+    QCustomPlot plot;
+    plot.resize(700, 400);
+    QVERIFY(fillPlot(plot, r, makePlot("p", "Stresses", "curve", "x", {"bending", "shear", "torsion"})));
+    const QList<QCPAxis*> right = plot.axisRect()->axes(QCPAxis::atRight);
+    QCOMPARE(right.size(), 2);
+    QCOMPARE(plot.graph(0)->valueAxis(), plot.axisRect()->axis(QCPAxis::atLeft));
+    QCOMPARE(plot.graph(1)->valueAxis(), right[0]);
+    QCOMPARE(plot.graph(2)->valueAxis(), right[1]);
+    QVERIFY(right[1]->visible() && right[1]->tickLabels());
+    QCOMPARE(right[0]->label(), QStringLiteral("shear [Pa]"));
+    QCOMPARE(right[1]->label(), QStringLiteral("torsion [Pa]"));
+    QVERIFY(right[0]->range().lower <= 2.0e4 && right[0]->range().upper >= 4.0e4 && right[0]->range().size() < 1e5);
+    QVERIFY(right[1]->range().lower <= 2.0 && right[1]->range().upper >= 4.0 && right[1]->range().size() < 10.0);
+    QCOMPARE(plot.graph(1)->name(), QStringLiteral("shear [Pa] (right axis)"));
+    QCOMPARE(plot.graph(2)->name(), QStringLiteral("torsion [Pa] (right axis 2)"));
+
+    // Within 100× of each other the right-axis columns share it: 40 kPa and 4 kPa (10×) with 27 MPa.
+    QCOMPARE(magnitudeTiers(curves({{"b", "Pa", 2.7e7}, {"s", "Pa", 4.0e4}, {"t", "Pa", 4.0e3}}).tables[0],
+                            {"b", "s", "t"}),
+             (std::vector<std::vector<std::string>>{{"b"}, {"s", "t"}}));
+    // Four sizes each 1000× apart make three axes at most: the smallest two share the third.
+    QCOMPARE(magnitudeTiers(curves({{"a", "N", 1e9}, {"b", "N", 1e6}, {"c", "N", 1e3}, {"d", "N", 1.0}}).tables[0],
+                            {"a", "b", "c", "d"}),
+             (std::vector<std::vector<std::string>>{{"a"}, {"b"}, {"c", "d"}}));
+    // An all-zero column stays on the left; one size alone is one tier.
+    QCOMPARE(magnitudeTiers(curves({{"z", "N", 0.0}, {"t", "N", 2e6}}).tables[0], {"z", "t"}),
+             (std::vector<std::vector<std::string>>{{"z", "t"}}));
+  }
+
+  // In a narrow plot, legend entries wider than the plot are shortened with "…"; the whole text stays as the
+  // graph's full name (the legend entry's tooltip and the hover read-out show it).
+  void longLegendEntriesAreElidedInANarrowPlot() {
+    const std::string long_name = "horizontal component of the top reaction force in the global frame";
+    const Results r = curves({{long_name, "N", 2.0e4}, {"vertical component of the top reaction force", "N", 1.0e4}});
+    QCustomPlot plot;
+    plot.resize(260, 300);
+    QVERIFY(fillPlot(plot, r, makePlot("p", "Top reaction", "curve", "x",
+                                       {long_name, "vertical component of the top reaction force"})));
+    const QString full = QString::fromStdString(long_name) + QStringLiteral(" [N]");
+    // Qt ends it with "…" (or "..." where the font lacks the ellipsis).
+    QVERIFY2(plot.graph(0)->name().endsWith(QChar(0x2026)) || plot.graph(0)->name().endsWith(QStringLiteral("...")),
+             qPrintable(plot.graph(0)->name()));
+    QVERIFY(plot.graph(0)->name().size() < full.size());
+    QCOMPARE(fullGraphName(*plot.graph(0)), full);
+    // Every legend entry fits the plot's width.
+    const QFontMetrics metrics(plot.font());
+    for (int i = 0; i < plot.graphCount(); ++i) QVERIFY(metrics.horizontalAdvance(plot.graph(i)->name()) < 260);
+    // In a wide plot nothing is shortened.
+    QCustomPlot wide;
+    wide.resize(1600, 600);
+    QVERIFY(fillPlot(wide, r, makePlot("p", "Top reaction", "curve", "x",
+                                       {long_name, "vertical component of the top reaction force"})));
+    QCOMPARE(wide.graph(0)->name(), full);
+    QCOMPARE(fullGraphName(*wide.graph(0)), full);
   }
 
   // On a log y axis every size reads: one axis. Reference points of a right-axis column go on the right axis.

@@ -23,6 +23,7 @@
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
 #include "main_window.hpp"
+#include "plots/display_units.hpp"
 #include "plots/study_plot.hpp"
 #include "run/run_controller.hpp"
 #include "run/run_history.hpp"
@@ -113,7 +114,7 @@ class StudyTest : public QObject {
     QCOMPARE(view->drawn().points, 5);
     QCOMPARE(view->plot()->graphCount(), 1);
     QCOMPARE(view->plot()->xAxis->label(), QStringLiteral("length [m]"));
-    QCOMPARE(view->plot()->yAxis->label(), QStringLiteral("rod volume [m^3]"));
+    QCOMPARE(view->plot()->yAxis->label(), QStringLiteral("Rod volume [m^3]"));
 
     // Each point equals the same case run alone through the single-run controller (bitwise), and
     // the closed form pi r^2 L (r = 0.5 m) to 1e-12 relative.
@@ -231,6 +232,43 @@ class StudyTest : public QObject {
     test::keepScreenshot(window_->grab().toImage(), QStringLiteral("study_heat_map"));
     const QPointF cell = studyCasePixel(*view->plot(), view->drawn(), 5);
     QCOMPARE(studyCaseAt(*view->plot(), view->drawn(), cell), 5);
+  }
+
+  // View ▸ Units reaches the study plot: lengths chosen in mm and stresses in MPa scale the drawn values (SI × 1000
+  // and × 1e-6, exactly) and name the unit on the axes, the legend and the colour scale; the data stay SI.
+  void displayUnitsReachTheStudyPlot() {
+    StudyPlotData data;
+    data.result_name = "bending_stress_max";
+    data.result_label = "σ_b max";
+    data.result_unit = "Pa";
+    data.parameters = {{"geometry.length", "m", false, {10.0, 20.0, 10.0, 20.0}},
+                       {"geometry.radius", "m", false, {0.5, 0.5, 0.25, 0.25}}};
+    data.result = {2.0e7, 4.0e7, 1.0e7, 3.0e7};
+    setDisplayUnit("m", "mm");
+    setDisplayUnit("Pa", "MPa");
+    QCustomPlot plot;
+    plot.resize(600, 400);
+    QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atBottom)->label(), QStringLiteral("length [mm]"));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atLeft)->label(), QStringLiteral("σ_b max [MPa]"));
+    QCOMPARE(plot.graphCount(), 2);  // a line per radius, named in mm
+    QCOMPARE(plot.graph(0)->name(), QStringLiteral("radius = 250 mm"));
+    QCOMPARE(plot.graph(0)->data()->at(1)->key, 20000.0);
+    QCOMPARE(plot.graph(0)->data()->at(1)->value, 30.0);
+    QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::HeatMap));
+    auto* map = qobject_cast<QCPColorMap*>(plot.plottable(0));
+    QVERIFY(map);
+    QCOMPARE(map->data()->cell(1, 1), 40.0);  // length 20 m, radius 0.5 m
+    QCOMPARE(map->colorScale()->axis()->label(), QStringLiteral("σ_b max [MPa]"));
+    auto ticker = plot.axisRect()->axis(QCPAxis::atBottom)->ticker().dynamicCast<QCPAxisTickerText>();
+    QVERIFY(ticker);
+    QCOMPARE(ticker->ticks().value(1), QStringLiteral("20000"));  // 20 m in mm
+    QCOMPARE(data.result.front(), 2.0e7);                         // the numbers themselves stay SI
+    setDisplayUnit("m", "m");
+    setDisplayUnit("Pa", "Pa");
+    QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atLeft)->label(), QStringLiteral("σ_b max [Pa]"));
+    QCOMPARE(plot.graph(0)->data()->at(1)->value, 3.0e7);
   }
 
   void cancelStopsThePoolQuickly() {

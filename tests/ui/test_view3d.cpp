@@ -17,6 +17,7 @@
 #include <vtkScalarBarActor.h>
 #include <vtkScalarsToColors.h>
 
+#include "plots/display_units.hpp"
 #include "test_scene.hpp"
 #include "theme.hpp"
 #include "view3d/color_map_control.hpp"
@@ -119,6 +120,18 @@ std::pair<double, double> colourBarRange(SceneView& view) {
       return {range[0], range[1]};
     }
   return {0.0, 0.0};
+}
+
+// The colour bar's title and its lookup table's range (the labels' numbers, in the bar's unit).
+std::pair<QString, std::pair<double, double>> colourBarTitle(SceneView& view) {
+  vtkPropCollection* props = view.glWidget()->renderer()->GetViewProps();
+  props->InitTraversal();
+  while (vtkProp* prop = props->GetNextProp())
+    if (auto* bar = vtkScalarBarActor::SafeDownCast(prop)) {
+      const double* range = bar->GetLookupTable()->GetRange();
+      return {QString::fromUtf8(bar->GetTitle()), {range[0], range[1]}};
+    }
+  return {};
 }
 
 // Two translucent horizontal squares, red at z = 0 and blue at z = −5 (opacity 0.5 each), seen from
@@ -329,6 +342,54 @@ class View3dTest : public QObject {
     // Back to the automatic range.
     control->automaticBox()->setChecked(true);
     QCOMPARE(view.colorRange(), std::make_pair(0.0, 20.0));
+  }
+
+  // A stress of 0 … 20 MPa: by default the bar picks MPa; a unit chosen in View ▸ Units (kPa here) is kept, the
+  // labels' numbers scale with it (0 … 20 000), and the model's colours do not change.
+  void colourBarFollowsTheChosenDisplayUnit() {
+    SceneView view;
+    view.resize(500, 500);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
+    for (auto& frame : tube->view.frames)
+      for (auto& shape : frame.shapes)
+        for (double& v : shape.scalars) v *= 1e6;  // 0 … 20 MPa
+    tube->view.scalar_name = "bending stress";
+    tube->view.scalar_unit = "Pa";
+    view.showResults(tube);
+    auto [title, range] = colourBarTitle(view);
+    QVERIFY2(title.startsWith(QStringLiteral("bending stress [MPa]")), qPrintable(title));
+    QCOMPARE(range.first, 0.0);
+    QCOMPARE(range.second, 20.0);  // fuzzy: 2e7 × 1e-6
+    setDisplayUnit("Pa", "kPa");
+    view.showResults(tube);
+    std::tie(title, range) = colourBarTitle(view);
+    QVERIFY2(title.startsWith(QStringLiteral("bending stress [kPa]")), qPrintable(title));
+    QCOMPARE(range.first, 0.0);
+    QCOMPARE(range.second, 20000.0);
+    QCOMPARE(view.colorRange(), std::make_pair(0.0, 2e7));  // the colours' range stays SI
+    setDisplayUnit("Pa", "Pa");
+    view.showResults(tube);
+    QVERIFY(colourBarTitle(view).first.startsWith(QStringLiteral("bending stress [Pa]")));
+  }
+
+  // A static result (one frame) shows no time, but a label of its own it shows in the caption: what a ship's
+  // wave pattern belongs to (Froude number, speed) and how much its elevation is exaggerated.
+  void aStaticFramesLabelIsInTheCaption() {
+    SceneView view;
+    view.resize(500, 500);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
+    view.showResults(tube);
+    QVERIFY2(!view.captionText().contains(QStringLiteral("t = ")), qPrintable(view.captionText()));
+    auto labelled = std::make_shared<Results>(*tube);
+    labelled->view.frames.front().label = "Kelvin wave pattern at Fn = 0.35, U = 2.192 m/s\nwave elevation drawn × 10";
+    view.showResults(labelled);
+    QVERIFY2(view.captionText().startsWith(QStringLiteral("Kelvin wave pattern at Fn = 0.35, U = 2.192 m/s\n"
+                                                          "wave elevation drawn × 10")),
+             qPrintable(view.captionText()));
   }
 
   // Translucent surfaces are composited in depth order: seen from above, the nearer red square

@@ -1,5 +1,6 @@
 #include "plots/display_units.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -27,6 +28,13 @@ DisplayUnit displayUnit(const std::string& si_unit) {
     for (const UnitPrefix& p : unitPrefixes(si_unit))
       if (p.symbol + si_unit == it->second) return {std::pow(10.0, -p.exponent), it->second};
   return {1.0, si_unit};
+}
+
+bool displayUnitChosen(const std::string& si_unit) {
+  const auto it = chosenUnits().find(si_unit);
+  if (it == chosenUnits().end()) return false;
+  const auto choices = displayUnitChoices(si_unit);
+  return std::find(choices.begin(), choices.end(), it->second) != choices.end();
 }
 
 std::vector<std::string> displayUnitChoices(const std::string& si_unit) {

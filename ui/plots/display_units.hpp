@@ -1,6 +1,7 @@
-// The unit plots and the results dock show a quantity in, per SI unit: kN for N, MPa for Pa, mm for m, as chosen in
-// View ▸ Units (kept with QSettings). The prefixes are the colour bars' (view3d/color_bar_scale.hpp). Only what
-// people read changes: CSV files, summary.json and the data exports stay SI.
+// The unit plots, study plots, the results dock and the 3D view's colour bar show a quantity in, per SI unit: kN for
+// N, MPa for Pa, mm for m, as chosen in View ▸ Units (kept with QSettings). The prefixes are the colour bars'
+// (view3d/color_bar_scale.hpp). Where nothing was chosen, plots show SI and a colour bar picks the prefix that
+// reads best for its range. Only what people read changes: CSV files, summary.json and the data exports stay SI.
 #pragma once
 
 #include <string>
@@ -15,6 +16,9 @@ struct DisplayUnit {
 
 // How values of `si_unit` are shown now: the chosen prefixed unit, or the SI unit itself.
 DisplayUnit displayUnit(const std::string& si_unit);
+
+// True when the user chose how `si_unit` is shown (one of its choices, SI included); false by default.
+bool displayUnitChosen(const std::string& si_unit);
 
 // The units `si_unit` can be shown in, smallest first ("N": N, kN, MN, GN; "m": mm, m); empty when it takes no prefix.
 std::vector<std::string> displayUnitChoices(const std::string& si_unit);

@@ -31,6 +31,32 @@ AxisSplit splitByMagnitude(const Table& table, const std::vector<std::string>& y
   return split;
 }
 
+std::vector<std::vector<std::string>> magnitudeTiers(const Table& table, const std::vector<std::string>& y,
+                                                     double ratio) {
+  std::vector<std::pair<double, std::size_t>> sized;  // (size, position in y), largest first
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    const Column* c = table.find(y[i]);
+    sized.emplace_back(c ? displayMagnitude(*c) : 0.0, i);
+  }
+  std::stable_sort(sized.begin(), sized.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<std::size_t> tier_of(y.size(), 0);
+  double tier_largest = 0.0;  // the size of the current tier's largest column
+  std::size_t tier = 0;
+  for (const auto& [size, i] : sized) {
+    if (size <= 0.0) continue;  // all zero: with the first tier
+    if (tier_largest == 0.0) {
+      tier_largest = size;
+    } else if (size * ratio < tier_largest && tier + 1 < kMaxValueAxes) {
+      ++tier;
+      tier_largest = size;
+    }
+    tier_of[i] = tier;
+  }
+  std::vector<std::vector<std::string>> tiers(tier + 1);
+  for (std::size_t i = 0; i < y.size(); ++i) tiers[tier_of[i]].push_back(y[i]);
+  return tiers;
+}
+
 namespace {
 
 // Widens `axis` so that [lo, hi] lies at least `margin` of its range inside both ends.

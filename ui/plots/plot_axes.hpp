@@ -3,6 +3,7 @@
 // and the axes' ranges hold every reference point whole (a marker at the edge of the range is cut in half).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,15 @@ struct AxisSplit {
   std::vector<std::string> left, right;
 };
 AxisSplit splitByMagnitude(const Table& table, const std::vector<std::string>& y, double ratio = kSeparateAxisRatio);
+
+// The y axes `y` needs: tiers of columns, each within `ratio` of its own largest column, largest tier first (the
+// left axis), then one right axis per further tier. A bending stress of 27 MPa, a shear force of 40 kN and a
+// torsional stress of 4 Pa make three tiers, so the 40 kN curve is not a line on zero beside the 4 Pa one.
+// Columns that are all zero (or missing) go with the first tier. One tier when all sizes are within `ratio`. At most
+// kMaxValueAxes tiers: a fourth axis would leave no room for the curves, so anything smaller shares the third.
+inline constexpr std::size_t kMaxValueAxes = 3;
+std::vector<std::vector<std::string>> magnitudeTiers(const Table& table, const std::vector<std::string>& y,
+                                                     double ratio = kSeparateAxisRatio);
 
 // The largest |value| of `column` in its display unit (0 for an empty column; non-finite values skipped).
 double displayMagnitude(const Column& column);

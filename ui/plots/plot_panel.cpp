@@ -1,6 +1,7 @@
 #include "plots/plot_panel.hpp"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -21,7 +22,7 @@
 namespace maris::ui {
 
 PlotPanel::PlotPanel(QWidget* parent)
-    : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new QTabWidget(this)),
+    : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new QTabWidget(this)), group_box_(new QComboBox(this)),
       overlay_menu_(new QMenu(tr("Overlay runs"), this)) {
   toolbar_->setIconSize(QSize(16, 16));
   toolbar_->setToolButtonStyle(Qt::ToolButtonTextOnly);
@@ -64,11 +65,23 @@ PlotPanel::PlotPanel(QWidget* parent)
   export_button->setPopupMode(QToolButton::InstantPopup);
   toolbar_->addWidget(export_button);
   tabs_->setDocumentMode(true);
+  // Titles that do not fit are shortened (the tooltip has the whole), before the bar needs scroll arrows.
+  tabs_->setElideMode(Qt::ElideRight);
+  group_box_->setObjectName(QStringLiteral("plotGroup"));
+  group_box_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  group_box_->setMinimumContentsLength(16);
+  group_box_->setToolTip(tr("Plots of this group are shown as tabs"));
+  group_box_->hide();
+  connect(group_box_, &QComboBox::currentIndexChanged, this, [this](int g) {
+    if (!grouping_) showGroup(g);
+  });
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
   layout->addWidget(toolbar_);
+  // Above the tabs, not beside them: the tab bar keeps the panel's whole width.
+  layout->addWidget(group_box_);
   layout->addWidget(tabs_, 1);
 
   connect(log_x_, &QAction::toggled, this, [this](bool on) {
@@ -77,7 +90,12 @@ PlotPanel::PlotPanel(QWidget* parent)
   connect(log_y_, &QAction::toggled, this, [this](bool on) {
     if (auto* v = currentView()) v->setLogY(on);
   });
-  connect(tabs_, &QTabWidget::currentChanged, this, &PlotPanel::syncToolbar);
+  connect(tabs_, &QTabWidget::currentChanged, this, [this](int tab) {
+    // A tab chosen from outside (a test, --tab) brings its group.
+    if (!grouping_ && !groups_.empty() && groupOfTab(tab) >= 0 && groupOfTab(tab) != group_box_->currentIndex())
+      group_box_->setCurrentIndex(groupOfTab(tab));
+    syncToolbar();
+  });
   syncToolbar();
 }
 
@@ -97,6 +115,9 @@ void PlotPanel::clear() {
   overlaid_.clear();
   overlay_menu_->clear();
   tabs_->clear();
+  groups_.clear();
+  group_box_->clear();
+  group_box_->hide();
   qDeleteAll(views_);
   views_.clear();
   for (auto& [name, view] : spare_views_) delete view;
@@ -142,8 +163,54 @@ void PlotPanel::rebuildTabs(const Results& results) {
       }
     if (!view) view = takeSpareView(spec);
     views_.insert(views_.begin() + i, view);
-    tabs_->insertTab(i, view, QString::fromStdString(spec.title.empty() ? spec.name : spec.title));
+    tabs_->insertTab(i, view, plotTabText(spec));
   }
+  regroup(results);
+  syncToolbar();
+}
+
+void PlotPanel::regroup(const Results& results) {
+  const QString shown_group =
+      group_box_->currentIndex() >= 0 ? group_box_->currentText() : QString();
+  groups_ = groupPlots(results);
+  for (int i = 0; i < count(); ++i) {
+    const int g = groupOfTab(i);
+    tabs_->setTabText(i, plotTabText(views_[i]->spec(), g >= 0 ? &groups_[g] : nullptr));
+    tabs_->setTabToolTip(i, plotTabText(views_[i]->spec()));
+  }
+  grouping_ = true;
+  group_box_->clear();
+  for (const PlotGroup& g : groups_) {
+    group_box_->addItem(g.title);
+    group_box_->setItemData(group_box_->count() - 1, g.title, Qt::ToolTipRole);
+  }
+  group_box_->setVisible(!groups_.empty());
+  // The group of the current tab stays chosen (else the group of the same title, else the first).
+  int g = groupOfTab(tabs_->currentIndex());
+  if (g < 0) g = std::max(0, group_box_->findText(shown_group));
+  group_box_->setCurrentIndex(groups_.empty() ? -1 : g);
+  grouping_ = false;
+  showGroup(groups_.empty() ? -1 : g);
+}
+
+int PlotPanel::groupOfTab(int tab) const {
+  for (int g = 0; g < static_cast<int>(groups_.size()); ++g)
+    if (std::find(groups_[g].plots.begin(), groups_[g].plots.end(), tab) != groups_[g].plots.end()) return g;
+  return -1;
+}
+
+void PlotPanel::showGroup(int g) {
+  grouping_ = true;
+  const bool grouped = g >= 0 && g < static_cast<int>(groups_.size());
+  // The group's tabs are shown and one of them made current before the others hide, so the current tab never
+  // falls into a hidden one.
+  for (int i = 0; i < count(); ++i)
+    if (!grouped || groupOfTab(i) == g) tabs_->setTabVisible(i, true);
+  if (grouped && groupOfTab(tabs_->currentIndex()) != g) tabs_->setCurrentIndex(groups_[g].plots.front());
+  if (grouped)
+    for (int i = 0; i < count(); ++i)
+      if (groupOfTab(i) != g) tabs_->setTabVisible(i, false);
+  grouping_ = false;
   syncToolbar();
 }
 

@@ -1,7 +1,8 @@
 // The plot tabs: one PlotView per PlotSpec of the shown run, a toolbar acting on the current tab
 // (log axes, fit, reference data from a CSV, export as PNG/PDF/SVG/CSV of the shown run or of all
 // kept runs) and an "Overlay runs" menu listing earlier runs of the same scene, whose curves are
-// drawn dashed or in other colours on every tab.
+// drawn dashed or in other colours on every tab. A run with many plots from several tables shows them in groups
+// (plots/plot_groups.hpp): a group chooser above the tab bar, and the chosen group's tabs.
 #pragma once
 
 #include <map>
@@ -11,10 +12,12 @@
 
 #include <QWidget>
 
+#include "plots/plot_groups.hpp"
 #include "plots/plot_view.hpp"
 #include "run/run_controller.hpp"
 
 class QAction;
+class QComboBox;
 class QMenu;
 class QTabWidget;
 class QToolBar;
@@ -41,6 +44,9 @@ class PlotPanel : public QWidget {
   PlotView* view(int i) const { return views_.at(i); }
   PlotView* currentView() const;
   QTabWidget* tabs() const { return tabs_; }
+  // The group chooser (hidden when the plots are not grouped) and the groups of the shown run (empty: none).
+  QComboBox* groupBox() const { return group_box_; }
+  const std::vector<PlotGroup>& groups() const { return groups_; }
 
   // Reads a CSV (see plots/reference_data.hpp) and draws it as markers on the current plot, for this
   // and later runs. Returns false and says why (message()) if the file cannot be read.
@@ -66,11 +72,19 @@ class PlotPanel : public QWidget {
   // The kept view of `spec` (if its spec is the same) or a new one.
   PlotView* takeSpareView(const PlotSpec& spec);
   void redrawAll();
+  // Tab texts, tooltips and the group chooser for the shown results' plots (views_ in their order).
+  void regroup(const Results& results);
+  // Shows the tabs of group `g` only (every tab when the plots are not grouped).
+  void showGroup(int g);
+  int groupOfTab(int tab) const;
   void syncToolbar();
   void exportCurrent(const QString& suffix);
 
   QToolBar* toolbar_;
   QTabWidget* tabs_;
+  QComboBox* group_box_;
+  std::vector<PlotGroup> groups_;
+  bool grouping_ = false;  // inside showGroup: tab changes are its own
   QAction* log_x_;
   QAction* log_y_;
   QMenu* overlay_menu_;

@@ -7,6 +7,7 @@
 #include <QEvent>
 #include <QFileInfo>
 #include <QLabel>
+#include <QToolTip>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
@@ -177,6 +178,12 @@ QString PlotView::readout() const { return readout_->text(); }
 
 void PlotView::onMouseMove(QMouseEvent* event) {
   if (!has_data_ || !tracer_) return;
+  // A shortened legend entry shows its whole text as a tooltip.
+  auto* entry = qobject_cast<QCPPlottableLegendItem*>(plot_->layoutElementAt(event->position()));
+  if (entry && fullGraphName(*entry->plottable()) != entry->plottable()->name())
+    QToolTip::showText(event->globalPosition().toPoint(), fullGraphName(*entry->plottable()), plot_);
+  else
+    QToolTip::hideText();
   // The nearest data point on screen over all graphs.
   QCPGraph* best = nullptr;
   double best_key = 0.0, best_value = 0.0, best_distance = std::numeric_limits<double>::infinity();
@@ -206,7 +213,7 @@ void PlotView::onMouseMove(QMouseEvent* event) {
     readout_->setText(QStringLiteral("%1 = %2    %3 = %4")
                           .arg(best->keyAxis()->label())
                           .arg(best_key, 0, 'g', 6)
-                          .arg(best->name())
+                          .arg(fullGraphName(*best))
                           .arg(best_value, 0, 'g', 6));
   }
   plot_->replot(QCustomPlot::rpQueuedReplot);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include <QDir>
 #include <QFileInfo>
@@ -23,6 +24,11 @@ QString axisLabel(const std::string& text, const std::string& unit) {
 }
 
 QString axisLabel(const Column& column) { return axisLabel(displayLabel(column), displayUnit(column.unit).unit); }
+
+QString fullGraphName(const QCPAbstractPlottable& graph) {
+  const QVariant full = graph.property(kFullNameProperty);
+  return full.isValid() ? full.toString() : graph.name();
+}
 
 QString wrapAtSpaces(const QString& text, int max_line) {
   QStringList lines;
@@ -55,17 +61,22 @@ Qt::PenStyle runPenStyle(int run) {
   return styles[run % 5];
 }
 
-// The y axis each column is drawn on: the left one, or the right one for columns much smaller than the
-// largest (plots/plot_axes.hpp). Reference points go on their column's axis.
+// The y axis each column is drawn on: the left one, or a right one for columns much smaller than the largest
+// (plots/plot_axes.hpp: the right axis, then further right axes outside it). Reference points go on their column's
+// axis.
 struct YAxes {
-  QCPAxis* left = nullptr;
-  QCPAxis* right = nullptr;
-  std::vector<std::string> right_columns;
-  bool onRight(const std::string& name) const {
-    return std::find(right_columns.begin(), right_columns.end(), name) != right_columns.end();
+  std::vector<QCPAxis*> axes;                 // per tier: left, right, right 2, …
+  std::map<std::string, std::size_t> tier_of;  // column name -> tier
+  std::size_t tierOf(const std::string& name) const {
+    const auto it = tier_of.find(name);
+    return it == tier_of.end() ? 0 : it->second;
   }
-  QCPAxis* of(const std::string& name) const { return onRight(name) ? right : left; }
-  QString note(const std::string& name) const { return onRight(name) ? QStringLiteral(" (right axis)") : QString(); }
+  QCPAxis* of(const std::string& name) const { return axes[tierOf(name)]; }
+  QString note(const std::string& name) const {
+    const std::size_t tier = tierOf(name);
+    if (tier == 0) return {};
+    return tier == 1 ? QStringLiteral(" (right axis)") : QStringLiteral(" (right axis %1)").arg(tier);
+  }
 };
 
 
@@ -168,10 +179,14 @@ void addPlotLegend(QCustomPlot& plot, QCPAxisRect& rect) {
     plot.plotLayout()->addElement(row, 0, legend);
     plot.plotLayout()->setRowStretchFactor(row, 0.001);
     legend->setMargins(QMargins(6, 2, 6, 2));
-    // Entries wider than the plot are shortened (the hover read-out names the curve too).
+    // Entries wider than the plot are shortened; the whole name stays as the graph's "full_name" (the hover
+    // read-out and the legend entry's tooltip show it).
     const int room = plot_width - legend->iconSize().width() - 40;
-    for (int i = 0; i < plot.graphCount(); ++i)
-      plot.graph(i)->setName(metrics.elidedText(plot.graph(i)->name(), Qt::ElideRight, room));
+    for (int i = 0; i < plot.graphCount(); ++i) {
+      QCPGraph* g = plot.graph(i);
+      g->setProperty(kFullNameProperty, g->name());
+      g->setName(metrics.elidedText(g->name(), Qt::ElideRight, room));
+    }
   } else {
     rect.insetLayout()->addElement(legend, emptiestCorner(plot, rect, plot.graphCount()));
   }
@@ -210,17 +225,21 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
   QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
   x_axis->setLabel(axisLabel(*x));
-  // On a log axis every size is readable; on a linear one a much smaller quantity gets the right axis.
-  const AxisSplit split = spec.log_y ? AxisSplit{spec.y, {}} : splitByMagnitude(*table, spec.y);
-  const YAxes axes{y_axis, rect->axis(QCPAxis::atRight), split.right};
-  if (split.right.empty()) {
-    y_axis->setLabel(yAxisLabel(*table, spec.y, spec.title));
-  } else {
-    y_axis->setLabel(yAxisLabel(*table, split.left, {}));
-    axes.right->setLabel(yAxisLabel(*table, split.right, {}));
-    axes.right->setVisible(true);
-    axes.right->setTickLabels(true);
-    axes.right->grid()->setVisible(false);  // the left axis's grid only: two sets of lines would not read
+  // On a log axis every size is readable; on a linear one a much smaller quantity gets a right axis (and a still
+  // much smaller one another right axis outside it).
+  const auto tiers = spec.log_y ? std::vector<std::vector<std::string>>{spec.y} : magnitudeTiers(*table, spec.y);
+  YAxes axes;
+  for (std::size_t tier = 0; tier < tiers.size(); ++tier) {
+    QCPAxis* axis = tier == 0   ? y_axis
+                    : tier == 1 ? rect->axis(QCPAxis::atRight)
+                                : rect->addAxis(QCPAxis::atRight);
+    axes.axes.push_back(axis);
+    for (const auto& name : tiers[tier]) axes.tier_of[name] = tier;
+    axis->setLabel(tiers.size() == 1 ? yAxisLabel(*table, spec.y, spec.title) : yAxisLabel(*table, tiers[tier], {}));
+    if (tier == 0) continue;
+    axis->setVisible(true);
+    axis->setTickLabels(true);
+    axis->grid()->setVisible(false);  // the left axis's grid only: two sets of lines would not read
   }
 
   const bool several = sources.size() > 1;

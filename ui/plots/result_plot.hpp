@@ -10,6 +10,7 @@
 #include "core/results.hpp"
 
 class QCustomPlot;
+class QCPAbstractPlottable;
 class QCPAxis;
 class QCPAxisRect;
 
@@ -19,6 +20,12 @@ namespace maris::ui {
 QString axisLabel(const std::string& text, const std::string& unit);
 // A column's axis label and legend entry: its label for people (displayLabel) and unit, "Fn", "R_T [N]".
 QString axisLabel(const Column& column);
+
+// A legend entry too wide for a narrow plot is shortened with "…"; the graph keeps its whole name in this
+// property, for the hover read-out and the entry's tooltip.
+inline constexpr const char* kFullNameProperty = "full_name";
+// The whole name of a graph (its name where it was not shortened).
+QString fullGraphName(const QCPAbstractPlottable& graph);
 
 // `text` broken at spaces into lines of at most `max_line` characters (a longer word keeps its own
 // line): for titles and notes in places that do not wrap (a VTK colour bar, a QCPTextElement).

@@ -7,6 +7,7 @@
 
 #include <qcustomplot.h>
 
+#include "plots/display_units.hpp"
 #include "plots/result_plot.hpp"
 #include "plots/viridis.hpp"
 #include "theme.hpp"
@@ -28,6 +29,20 @@ std::vector<double> distinctValues(const std::vector<double>& values) {
   return out;
 }
 
+// `values` in the display unit of `unit` (View ▸ Units; SI where nothing was chosen, as in maris-cli).
+std::vector<double> shownValues(std::vector<double> values, const std::string& unit) {
+  const double factor = displayUnit(unit).factor;
+  if (factor != 1.0)
+    for (double& v : values) v *= factor;
+  return values;
+}
+
+// The result's axis label: its label for people (or its name made readable) and its display unit.
+QString resultAxisLabel(const StudyPlotData& data) {
+  if (data.result_label.empty()) return studyAxisLabel(data.result_name, data.result_unit);
+  return axisLabel(data.result_label, displayUnit(data.result_unit).unit);
+}
+
 int indexOf(const std::vector<double>& sorted, double v) {
   return static_cast<int>(std::lower_bound(sorted.begin(), sorted.end(), v) - sorted.begin());
 }
@@ -38,8 +53,9 @@ QString groupLabel(const StudyPlotData& data, int x, std::size_t c) {
   for (int p = 0; p < static_cast<int>(data.parameters.size()); ++p) {
     if (p == x) continue;
     const auto& param = data.parameters[p];
-    QString value = QString::number(param.values[c], 'g', 6);
-    if (!param.unit.empty() && param.unit != "-") value += QStringLiteral(" ") + QString::fromStdString(param.unit);
+    const DisplayUnit shown = displayUnit(param.unit);
+    QString value = QString::number(param.values[c] * shown.factor, 'g', 6);
+    if (!shown.unit.empty() && shown.unit != "-") value += QStringLiteral(" ") + QString::fromStdString(shown.unit);
     parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(shortName(param.name)), value);
   }
   return parts.join(QStringLiteral(", "));
@@ -66,13 +82,15 @@ void addTitle(QCustomPlot& plot, const std::string& title) {
 void cellTicks(QCPAxis* axis, const std::vector<double>& values) {
   QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
   const int step = std::max<int>(1, static_cast<int>(values.size()) / 10);
-  for (int i = 0; i < static_cast<int>(values.size()); i += step) ticker->addTick(i, QString::number(values[i], 'g', 4));
+  for (int i = 0; i < static_cast<int>(values.size()); i += step) ticker->addTick(i, QString::number(values[i], 'g', 6));
   axis->setTicker(ticker);
   axis->setRange(-0.5, values.size() - 0.5);
 }
 
 bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPlot& drawn) {
   const StudyParameterData& px = data.parameters[x];
+  const std::vector<double> shown_x = shownValues(px.values, px.unit);
+  const std::vector<double> shown_result = shownValues(data.result, data.result_unit);
   // Cases grouped by the values of every other parameter, in order of those values.
   std::map<std::vector<double>, std::vector<int>> groups;
   for (std::size_t c = 0; c < data.caseCount(); ++c) {
@@ -87,7 +105,7 @@ bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPl
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
   QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
   x_axis->setLabel(studyAxisLabel(px.name, px.unit));
-  y_axis->setLabel(studyAxisLabel(data.result_name, data.result_unit));
+  y_axis->setLabel(resultAxisLabel(data));
   // A sample (table, Latin hypercube) shares no combination between cases: its points stand alone.
   const bool scatter = std::all_of(groups.begin(), groups.end(), [](const auto& g) { return g.second.size() == 1; });
   if (scatter) {
@@ -100,12 +118,12 @@ bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPl
     std::stable_sort(cases.begin(), cases.end(), [&](int a, int b) { return px.values[a] < px.values[b]; });
     QVector<double> keys, values;
     for (int c : cases) {
-      keys << px.values[c];
-      values << data.result[c];
+      keys << shown_x[c];
+      values << shown_result[c];
     }
     QCPGraph* g = plot.addGraph(x_axis, y_axis);
     const QColor color = seriesColor(series, plot.palette());
-    g->setName(scatter || groups.size() == 1 ? studyAxisLabel(data.result_name, data.result_unit)
+    g->setName(scatter || groups.size() == 1 ? resultAxisLabel(data)
                                             : groupLabel(data, x, cases.front()));
     g->setPen(QPen(color, 1.6));
     g->setLineStyle(scatter ? QCPGraph::lsNone : QCPGraph::lsLine);
@@ -133,6 +151,7 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
   drawn.cell_x = distinctValues(data.parameters[x].values);
   drawn.cell_y = distinctValues(data.parameters[y].values);
   const int nx = static_cast<int>(drawn.cell_x.size()), ny = static_cast<int>(drawn.cell_y.size());
+  const std::vector<double> shown_result = shownValues(data.result, data.result_unit);
   drawn.cell_case.assign(static_cast<std::size_t>(nx) * ny, -1);
   QCPAxisRect* rect = freshAxisRect(plot);
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
@@ -143,7 +162,7 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
   for (std::size_t c = 0; c < data.caseCount(); ++c) {
     const int i = indexOf(drawn.cell_x, data.parameters[x].values[c]);
     const int j = indexOf(drawn.cell_y, data.parameters[y].values[c]);
-    const double v = data.result[c];
+    const double v = shown_result[c];
     drawn.cell_case[static_cast<std::size_t>(j) * nx + i] = static_cast<int>(c);
     if (std::isfinite(v)) {
       map->data()->setCell(i, j, v);
@@ -158,7 +177,7 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
   auto* scale = new QCPColorScale(&plot);
   plot.plotLayout()->addElement(0, 1, scale);
   scale->setType(QCPAxis::atRight);
-  scale->axis()->setLabel(studyAxisLabel(data.result_name, data.result_unit));
+  scale->axis()->setLabel(resultAxisLabel(data));
   map->setColorScale(scale);
   // Viridis: uniform in lightness, readable in grey print, and no end colour vanishes into a light or
   // dark background.
@@ -173,8 +192,8 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
   auto* margins = new QCPMarginGroup(&plot);
   rect->setMarginGroup(QCP::msBottom | QCP::msTop, margins);
   scale->setMarginGroup(QCP::msBottom | QCP::msTop, margins);
-  cellTicks(x_axis, drawn.cell_x);
-  cellTicks(y_axis, drawn.cell_y);
+  cellTicks(x_axis, shownValues(drawn.cell_x, data.parameters[x].unit));
+  cellTicks(y_axis, shownValues(drawn.cell_y, data.parameters[y].unit));
   addTitle(plot, data.title);
   applyPlotColors(plot);
   const DrawingColors colors = drawingColors(plot.palette());
@@ -192,7 +211,7 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
 }  // namespace
 
 QString studyAxisLabel(const std::string& name, const std::string& unit) {
-  return axisLabel(shortName(name), unit);
+  return axisLabel(shortName(name), displayUnit(unit).unit);
 }
 
 bool isFullGrid(const StudyPlotData& data, int a, int b) {

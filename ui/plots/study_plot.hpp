@@ -28,7 +28,8 @@ struct DrawnStudyPlot {
   int points = 0;                      // points (or filled cells) drawn
 };
 
-// The label of a parameter or result for people: "length [m]" from "geometry.length".
+// The label of a parameter or result for people, in its display unit (plots/display_units.hpp): "length [m]" from
+// "geometry.length".
 QString studyAxisLabel(const std::string& name, const std::string& unit);
 
 // True when parameters `a` and `b` form a full grid (every pair of their distinct values occurs in

@@ -23,6 +23,7 @@ struct StudyPlotData {
   std::string title;  // above the plot (empty: none)
   std::vector<StudyParameterData> parameters;
   std::string result_name;
+  std::string result_label;  // for people ("σ_b max"); empty: the name made readable
   std::string result_unit;
   std::vector<double> result;
   std::size_t caseCount() const { return result.size(); }

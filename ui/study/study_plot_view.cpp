@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
+#include "plots/display_units.hpp"
 #include "plots/result_plot.hpp"
 #include "study/study_session.hpp"
 
@@ -69,8 +70,7 @@ void StudyPlotView::refresh() {
   against_->clear();
   if (session_ && session_->isDefined() && session_->caseCount() > 0) {
     for (const std::string& name : session_->resultNames()) {
-      const QString n = QString::fromStdString(name);
-      result_->addItem(n, n);
+      result_->addItem(QString::fromStdString(session_->resultLabel(name)), QString::fromStdString(name));
     }
     const StudyPlotData sample = session_->plotData({});
     for (const auto& p : sample.parameters)
@@ -116,9 +116,13 @@ void StudyPlotView::onMouseMove(const QPointF& pixel) {
     readout_->setText(tr("Click a point (or a cell) to open its case."));
     return;
   }
-  readout_->setText(tr("case %1 (%2): %3 = %4 — click to open")
-                        .arg(session_->caseId(c), session_->caseLabel(c), QString::fromStdString(data_.result_name))
-                        .arg(data_.result[c], 0, 'g', 8));
+  const DisplayUnit shown = displayUnit(data_.result_unit);
+  const QString unit = shown.unit.empty() || shown.unit == "-" ? QString() : QStringLiteral(" ") + QString::fromStdString(shown.unit);
+  const std::string& label = data_.result_label.empty() ? data_.result_name : data_.result_label;
+  readout_->setText(tr("case %1 (%2): %3 = %4%5 — click to open")
+                        .arg(session_->caseId(c), session_->caseLabel(c), QString::fromStdString(label))
+                        .arg(data_.result[c] * shown.factor, 0, 'g', 8)
+                        .arg(unit));
 }
 
 void StudyPlotView::onMousePress(const QPointF& pixel) {

@@ -63,6 +63,12 @@ std::vector<std::string> StudySession::resultNames() const {
   return names;
 }
 
+std::string StudySession::resultLabel(const std::string& name) const {
+  for (const CaseOutcome& o : outcomes_)
+    if (const Scalar* s = o.results ? o.results->findScalar(name) : nullptr) return displayLabel(*s);
+  return name;
+}
+
 StudyPlotData StudySession::plotData(const std::string& result) const {
   StudyPlotData data;
   if (!impl_) return data;
@@ -83,6 +89,7 @@ StudyPlotData StudySession::plotData(const std::string& result) const {
     const Scalar* s = o.results ? o.results->findScalar(result) : nullptr;
     data.result.push_back(s ? s->value : std::numeric_limits<double>::quiet_NaN());
     if (s && data.result_unit.empty()) data.result_unit = s->unit;
+    if (s && data.result_label.empty()) data.result_label = displayLabel(*s);
   }
   return data;
 }

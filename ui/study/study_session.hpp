@@ -72,6 +72,8 @@ class StudySession {
 
   // The scalar results the finished cases have, in the order of the first case that has them.
   std::vector<std::string> resultNames() const;
+  // The label for people of result scalar `name` ("σ_b max"), from the first case that has it; else `name`.
+  std::string resultLabel(const std::string& name) const;
   // The varied parameters (names, units, per-case values) and `result` per case (NaN where missing).
   StudyPlotData plotData(const std::string& result) const;
   // study.csv of the cases so far (the engine's writer), atomically. Throws std::runtime_error.

@@ -79,7 +79,14 @@ ColorBarScale colorBarScale(double lo, double hi, const std::string& si_unit, in
       scale.unit = chosen.symbol + si_unit;
     }
   }
-  scale.ticks = niceTicks(lo * scale.factor, hi * scale.factor, target_ticks);
+  return colorBarScaleIn(lo, hi, scale.factor, scale.unit, target_ticks);
+}
+
+ColorBarScale colorBarScaleIn(double lo, double hi, double factor, const std::string& unit, int target_ticks) {
+  ColorBarScale scale;
+  scale.factor = factor;
+  scale.unit = unit;
+  scale.ticks = niceTicks(lo * factor, hi * factor, target_ticks);
   scale.label_format = tickLabelFormat(scale.ticks);
   return scale;
 }

@@ -37,4 +37,7 @@ struct ColorBarScale {
 // prefixes; then the ticks and their format in that unit.
 ColorBarScale colorBarScale(double lo, double hi, const std::string& si_unit, int target_ticks = 5);
 
+// The same in a unit the user chose (View ▸ Units): display value = SI value × `factor`, written as `unit`.
+ColorBarScale colorBarScaleIn(double lo, double hi, double factor, const std::string& unit, int target_ticks = 5);
+
 }  // namespace maris::ui

@@ -28,6 +28,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include "plots/display_units.hpp"
 #include "plots/result_plot.hpp"
 #include "theme.hpp"
 #include "themed_icon.hpp"
@@ -320,7 +321,11 @@ void SceneView::applyColorSettings() {
   // The bar reads in an engineering unit with ticks on a 1–2–5 grid; the title wraps to the bar's strip
   // (~15 % of the view): a long quantity name ("modal amplitude (displacement, or twist for torsion modes)")
   // would run off the right edge.
-  const ColorBarScale scale = colorBarScale(lo, hi, results_->view.scalar_unit);
+  // A unit chosen in View ▸ Units is kept; otherwise the prefix that reads best for the range.
+  const std::string& si_unit = results_->view.scalar_unit;
+  const DisplayUnit chosen = displayUnit(si_unit);
+  const ColorBarScale scale = displayUnitChosen(si_unit) ? colorBarScaleIn(lo, hi, chosen.factor, chosen.unit)
+                                                         : colorBarScale(lo, hi, si_unit);
   fillColorMap(bar_colors_, color_settings_.map, lo * scale.factor, hi * scale.factor);
   auto ticks = vtkSmartPointer<vtkDoubleArray>::New();
   for (double t : scale.ticks) ticks->InsertNextValue(t);
@@ -382,14 +387,19 @@ void SceneView::updateTimeLabel() {
   const Frame3D& frame = results_->view.frames[frame_];
   const QString text = frame.label.empty() ? QStringLiteral("t = %1 s").arg(frame.time, 0, 'g', 6)
                                            : QString::fromStdString(frame.label);
-  // A static result (one frame) has no time worth showing.
+  // A static result (one frame) has no time worth showing, but its own label (what the picture is) it shows.
   const bool animated = frameCount() > 1;
   time_->setText(animated ? QStringLiteral("%1 (%2/%3)").arg(text).arg(frame_ + 1).arg(frameCount()) : QString());
   QStringList lines;
-  if (animated) lines << text;
+  if (animated || !frame.label.empty()) lines << text;
   const QString notes = drawingNotes();
   if (!notes.isEmpty()) lines << notes;
   caption_->SetInput(lines.join('\n').toStdString().c_str());
+}
+
+QString SceneView::captionText() const {
+  const char* text = caption_->GetInput();
+  return text ? QString::fromUtf8(text) : QString();
 }
 
 QString SceneView::drawingNotes() const {

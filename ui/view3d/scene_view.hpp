@@ -75,6 +75,8 @@ class SceneView : public QWidget {
   QComboBox* magnificationBox() const { return magnify_; }
   // What the view states about its drawing (magnification, drawn thickness), shown in its caption.
   QString drawingNotes() const;
+  // The caption at the view's top left: the frame's time or label, then the drawing notes.
+  QString captionText() const;
 
   VtkGlWidget* glWidget() const { return gl_; }
   // Where the model's bounding box (and the water and sea-bed levels drawn with it) falls in the view:

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include "catalog.hpp"
@@ -40,6 +41,42 @@ TEST(ShipScene, BuiltinScenariosRunAndReportFiniteResults) {
     EXPECT_GT(r.stats.error_estimate, 0.0) << id;
     EXPECT_FALSE(r.view.empty());
   }
+}
+
+// The 3-D view of the Wigley model (L = 4 m, B = 0.4 m, T = 0.25 m, design Fn = 0.35): the hull as two surfaces,
+// port and starboard, at its real size (extents equal L, B and T to 1e-9 m: the offsets are the hull's own), and a
+// caption naming the pattern's Froude number, its speed U = Fn √(g L) = 0.35 √(9.81 · 4) = 2.1925 m/s and the
+// exaggeration of the elevation drawn.
+TEST(ShipScene, ViewShowsTheHullAtItsSizeAndLabelsThePattern) {
+  // Sweep points 0.25, 0.35, 0.45: the design point is one of them.
+  const Results r = runBuiltin("ship_default", {"speed.froude_min=0.25", "speed.froude_max=0.45", "speed.count=3",
+                                                "numerics.stations=129", "numerics.waterlines=25"});
+  ASSERT_EQ(r.view.frames.size(), 1u);
+  const Frame3D& frame = r.view.frames.front();
+  double x_lo = 1e9, x_hi = -1e9, y_lo = 1e9, y_hi = -1e9, z_lo = 1e9, z_hi = -1e9;
+  int hull_sides = 0;
+  for (const Shape3D& shape : frame.shapes) {
+    if (shape.name.rfind("hull", 0) != 0) continue;
+    EXPECT_EQ(shape.kind, Shape3D::Kind::Surface);
+    ++hull_sides;
+    for (const auto& p : shape.points) {
+      x_lo = std::min(x_lo, p.x()), x_hi = std::max(x_hi, p.x());
+      y_lo = std::min(y_lo, p.y()), y_hi = std::max(y_hi, p.y());
+      z_lo = std::min(z_lo, p.z()), z_hi = std::max(z_hi, p.z());
+    }
+  }
+  EXPECT_EQ(hull_sides, 2);
+  EXPECT_NEAR(x_hi - x_lo, 4.0, 1e-9);
+  EXPECT_NEAR(y_hi - y_lo, 0.4, 1e-9);
+  EXPECT_NEAR(y_hi + y_lo, 0.0, 1e-9);  // both sides
+  EXPECT_NEAR(z_hi - z_lo, 0.25, 1e-9);
+  const double speed = 0.35 * std::sqrt(9.81 * 4.0);
+  EXPECT_NE(frame.label.find("Fn = 0.35,"), std::string::npos) << frame.label;
+  char u[32];
+  std::snprintf(u, sizeof u, "U = %.4g m/s", speed);
+  EXPECT_NE(frame.label.find(u), std::string::npos) << frame.label;
+  EXPECT_NE(frame.label.find("elevation drawn × 10"), std::string::npos) << frame.label;
+  EXPECT_EQ(r.view.scalar_name, "wave elevation");
 }
 
 TEST(ShipScene, SweepDoesNotDependOnThreadCount) {
