@@ -129,11 +129,40 @@ std::shared_ptr<const RiserSea> buildRiserSea(const RiserParameters& p) {
   sea->ramp_time = p.wave_ramp_time;
   sea->elevation_x = p.wave_elevation_x;
   sea->elevation_y = p.wave_elevation_y;
+  sea->batch = ocean::WaveKinematicsBatch(sea->field);
   return sea;
 }
 
-void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+namespace {
+
+// The kinematics at the Gauss points of pose at its time into scratch.fluid (calm water before the ramp starts).
+void waveKinematicsAtGaussPoints(const RiserModel& m, const RiserPose& pose, WaveLoadScratch& scratch) {
   const RiserSea& sea = *m.sea;
+  const std::size_t count = 3 * static_cast<std::size_t>(m.n + 1);
+  if (scratch.freeze_per_time && scratch.time == pose.time && scratch.fluid.size() == count) return;
+  scratch.points.resize(count);
+  scratch.fluid.resize(count);
+  for (int i = 0; i <= m.n; ++i) {
+    const Vec3 t = pose.rotation[i].col(0);
+    for (int q = 0; q < 3; ++q) scratch.points[3 * i + q] = pose.position[i] + kGaussX[q] * m.segments[i].length * t;
+  }
+  const double t = pose.time, r = sea.ramp(t);
+  const Eigen::Vector3d level(0.0, 0.0, sea.water_level);
+  if (r == 0.0 || sea.batch.field().size() != sea.field.size()) {
+    for (std::size_t k = 0; k < count; ++k) scratch.fluid[k] = sea.at(scratch.points[k], t);
+  } else {
+    for (auto& p : scratch.points) p -= level;  // the field's z = 0 is the still-water level
+    sea.batch.evaluate(scratch.points.data(), count, t, r, sea.rampRate(t), scratch.batch, scratch.fluid.data());
+    for (auto& p : scratch.points) p += level;
+  }
+  scratch.time = t;
+}
+
+}  // namespace
+
+void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+  WaveLoadScratch& scratch = loads.waves;
+  waveKinematicsAtGaussPoints(m, pose, scratch);
   for (int i = 0; i <= m.n; ++i) {
     const Segment& seg = m.segments[i];
     const Mat3& r = pose.rotation[i];
@@ -141,7 +170,7 @@ void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor
     for (int q = 0; q < 3; ++q) {
       const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
       const Vec3 p = pose.position[i] + xi * t;
-      const ocean::FluidKinematics fluid = sea.at(p, pose.time);
+      const ocean::FluidKinematics& fluid = scratch.fluid[3 * static_cast<std::size_t>(i) + q];
       if (!fluid.wet) continue;
       const Vec3 v = pose.velocity[i] + pose.omega[i].cross(xi * t);
       const Vec3 local = r.transpose() * (v - m.currentAt(p.z()) - fluid.velocity);
