@@ -4,14 +4,12 @@
 //   L = 100 m in 100 m of water, n = 100, torsion on, JONSWAP Hs 6 m, Tp 10 s, γ 3.3, 200 components,
 //   current rows at 0/20/50/100 m depth (0.8/0.6/0.3/0.1 m/s towards 0/10/30/45°), sea-bed contact off,
 //   one probe at L/2, 10 frames.
-//   bench_riser_long_sea [duration = 600] [steps = 0.2,0.1,0.05] [reference step = 0.0125] [per_iteration]
+//   bench_riser_long_sea [duration = 600] [steps = 0.2,0.1,0.05] [reference step = 0.0125]
 //       implicit generalized-α at each step STEP over DURATION s; prints steps, residuals, Newton-matrix
 //       refreshes, thread CPU seconds, the CPU extrapolated linearly to 3 hours, and the probe error at L/2:
 //       max over the ≈ 2000 history samples of |r − r_ref| over the range of the reference's motion (the largest
-//       distance between two of its samples). Reference: the same integrator at the reference step with the
-//       wave kinematics evaluated at every Newton iterate (not once per step) and Newton at 1e-10, cached in
-//       /tmp/riser_long_sea_<duration>_<step>.csv. `per_iteration` also runs each step with the kinematics at
-//       every iterate (what freezing them per step costs in accuracy).
+//       distance between two of its samples). Reference: the same integrator at the reference step with Newton
+//       at 1e-10, cached in /tmp/riser_long_sea_<duration>_<step>.csv.
 //   bench_riser_long_sea kinematics [repeats = 2000]
 //       µs per call at the static shape (t from 30 s on, a new time each call): the wave kinematics at the 3(n + 1)
 //       Gauss points point by point (WaveField::kinematics, what the loads called before the batch) and batched
@@ -25,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,6 +34,7 @@
 #include "riser/riser_integration.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
+#include "core/ocean_kinematics_batch.hpp"
 #include "riser/riser_waves.hpp"
 #include "bench_clock.hpp"
 
@@ -74,9 +74,8 @@ struct Outcome {
   double cpu = 0.0;
 };
 
-Outcome run(const RiserParameters& p, bool once_per_step) {
-  RiserModel m = buildRiserModel(p);
-  m.waves_once_per_step = once_per_step;
+Outcome run(const RiserParameters& p) {
+  const RiserModel m = buildRiserModel(p);
   RunContext ctx;
   const StaticSolution s = solveStatics(m, ctx);
   Eigen::VectorXd y = restState(m, s.orientation, s.top);
@@ -110,9 +109,9 @@ History reference(double duration, double step) {
   RiserParameters p = targetCase(duration);
   p.time_step = step;
   p.tolerance = 1e-7;  // Newton at 1e-10 (1e-3 of the tolerance, within [1e-10, 1e-6])
-  std::fprintf(stderr, "computing the reference (generalized-α, h = %g s, kinematics at every iterate) into %s\n",
+  std::fprintf(stderr, "computing the reference (generalized-α, h = %g s, Newton at 1e-10) into %s\n",
                step, name.str().c_str());
-  const Outcome o = run(p, false);
+  const Outcome o = run(p);
   std::fprintf(stderr, "reference: %ld steps, %.1f s CPU\n", o.stats.steps, o.cpu);
   h = o.history;
   std::ofstream out(name.str());
@@ -169,9 +168,13 @@ void timeKinematics(int repeats) {
   const Eigen::VectorXd y = restState(m, s.orientation, s.top);
   RiserWorkspace ws = makeWorkspace(m, 0.0);
   Eigen::VectorXd dy(y.size());
-  evaluateRhs(m, ws, 30.0, y, dy);
-  std::vector<Eigen::Vector3d> points = ws.loads.waves.points;
-  for (auto& q : points) q.z() -= m.sea->water_level;
+  poseFromState(m, 30.0, y, ws.pose);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i <= m.n; ++i)
+    for (int q = 0; q < 3; ++q)
+      points.push_back(ws.pose.position[i] + kGaussX[q] * m.segments[i].length * ws.pose.rotation[i].col(0) -
+                       Eigen::Vector3d(0.0, 0.0, m.sea->water_level));
+  const ocean::WaveKinematicsBatch batch(m.sea->field, p.wave_direction_deg * std::numbers::pi / 180.0, p.gravity);
   std::vector<ocean::FluidKinematics> out(points.size());
   ocean::WaveKinematicsBatch::Scratch scratch;
   double direct = 1e300, batched = 1e300, rhs = 1e300, sink = 0;
@@ -182,7 +185,7 @@ void timeKinematics(int repeats) {
     direct = std::min(direct, (bench::threadCpuSeconds() - t0) / (repeats / 10) * 1e6);
     t0 = bench::threadCpuSeconds();
     for (int k = 0; k < repeats; ++k) {
-      m.sea->batch.evaluate(points.data(), points.size(), 30.0 + 0.01 * k, 1.0, 0.0, scratch, out.data());
+      batch.evaluate(points.data(), points.size(), 30.0 + 0.01 * k, 1.0, 0.0, scratch, out.data());
       sink += out[0].velocity.x();
     }
     batched = std::min(batched, (bench::threadCpuSeconds() - t0) / repeats * 1e6);
@@ -210,14 +213,13 @@ int main(int argc, char** argv) {
     RiserParameters p = targetCase(duration);
     p.integrator = "rk4";
     p.time_step = step;
-    const Outcome o = run(p, false);
+    const Outcome o = run(p);
     printRow("RK4", step, o, duration, probeError(o.history, ref));
     return 0;
   }
   const double duration = argc > 1 ? std::atof(argv[1]) : 600.0;
   const std::vector<double> steps = parseList(argc > 2 ? argv[2] : "0.2,0.1,0.05");
   const double reference_step = argc > 3 ? std::atof(argv[3]) : 0.0125;
-  const bool per_iteration = argc > 4 && std::string(argv[4]) == "per_iteration";
   const History ref = reference(duration, reference_step);
   std::printf("duration %g s, reference generalized-α at h = %g s\n", duration, reference_step);
   std::printf("| kinematics | h [s] | Tp/h | steps | rejected | residuals | matrix refreshes | CPU [s] | CPU for 3 h "
@@ -225,12 +227,8 @@ int main(int argc, char** argv) {
   for (double h : steps) {
     RiserParameters p = targetCase(duration);
     p.time_step = h;
-    const Outcome o = run(p, true);
-    printRow("once per step", h, o, duration, probeError(o.history, ref));
-    if (per_iteration) {
-      const Outcome e = run(p, false);
-      printRow("every iterate", h, e, duration, probeError(e.history, ref));
-    }
+    const Outcome o = run(p);
+    printRow("batched", h, o, duration, probeError(o.history, ref));
   }
   return 0;
 }

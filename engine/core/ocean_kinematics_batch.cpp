@@ -65,7 +65,8 @@ constexpr double inverseFactorial(int k) {
 }
 
 [[gnu::always_inline]] inline double expKernel(double x) {
-  x = std::clamp(x, -kLargestExpArgument, kLargestExpArgument);
+  x = x < -kLargestExpArgument ? -kLargestExpArgument : x;
+  x = x > kLargestExpArgument ? kLargestExpArgument : x;
   const double shifted = x * kLog2E + kShifter;
   const double n = shifted - kShifter;
   const std::int64_t power = std::bit_cast<std::int64_t>(shifted) - std::bit_cast<std::int64_t>(kShifter);
@@ -117,7 +118,7 @@ MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restri
   for (std::size_t j = 0; j < n; ++j) {
     const double e1 = expKernel(k[j] * z);
     // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300).
-    const double e2 = mirror[j] / std::max(e1, 1e-300);
+    const double e2 = mirror[j] / (e1 > 1e-300 ? e1 : 1e-300);
     const double ch = (e1 + e2) * depth_scale[j], sh = (e1 - e2) * depth_scale[j];
     u += a_omega[j] * ch * cos_psi[j];
     w += a_omega[j] * sh * sin_psi[j];
@@ -133,16 +134,13 @@ void fastSinCos(double x, double& sine, double& cosine) { sinCosKernel(x, sine, 
 
 double fastExp(double x) { return expKernel(x); }
 
-WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field)
-    : field_(field),
-      cos_dir_(field.directionCos()),
-      sin_dir_(field.directionSin()),
-      depth_(field.depth()) {
+WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity)
+    : field_(field), cos_dir_(std::cos(direction_rad)), sin_dir_(std::sin(direction_rad)), depth_(field.depth()) {
   const std::size_t n = field.size();
   const bool deep = std::isinf(depth_);
   for (std::size_t j = 0; j < n; ++j) {
     const WaveComponent& c = field.components()[j];
-    const double k = field.waveNumbers()[j];
+    const double k = waveNumber(c.omega, depth_, gravity);
     k_.push_back(k);
     amplitude_.push_back(c.amplitude);
     a_omega_.push_back(c.amplitude * c.omega);

@@ -36,7 +36,9 @@ class WaveKinematicsBatch {
   };
 
   WaveKinematicsBatch() = default;
-  explicit WaveKinematicsBatch(const WaveField& field);
+  // `direction_rad` and `gravity`: the ones the field was made with (its wave numbers are recomputed from them by
+  // waveNumber, bit for bit the field's own).
+  WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity);
 
   // out[i] = field.kinematics(points[i], t, ramp, ramp_rate) to the accuracy stated above.
   void evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp, double ramp_rate,

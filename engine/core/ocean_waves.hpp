@@ -77,9 +77,6 @@ class WaveField {
   double depth() const { return depth_; }
   double variance() const;  // [m²] Σ a_j²/2: the variance of η over a long record
   Stretching stretching() const { return stretching_; }
-  double directionCos() const { return cos_dir_; }  // cos β
-  double directionSin() const { return sin_dir_; }  // sin β
-  const std::vector<double>& waveNumbers() const { return k_; }  // [1/m] k_j
 
  private:
   std::vector<WaveComponent> components_;

@@ -29,9 +29,6 @@ OrientationChart::OrientationChart(const RiserModel& m, double stabilisation_rat
   work_ = 3 + static_cast<Eigen::Index>(segments) * per_segment_;
   size_ = work_ + kWorkIntegrals;
   reference_.assign(segments, Mat3::Identity());
-  // Newton's iterations (and the Newton matrix's differences) of one step share the time: the wave kinematics of
-  // the first iterate serve them all (riser_waves.hpp, WaveLoadScratch).
-  ws_.loads.waves.freeze_per_time = m.waves_once_per_step;
   y_.resize(stateSize(m));
   dy_.resize(stateSize(m));
 }

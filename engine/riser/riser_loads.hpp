@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "riser/riser_model.hpp"
-#include "riser/riser_waves.hpp"
 
 namespace maris::riser {
 
@@ -38,7 +37,6 @@ struct SegmentLoads {
   double power_damping = 0.0;        // [W] power of spring dampers and the anchor damper (<= 0)
   double power_point = 0.0;          // [W] power of the point loads
   double power_flow = 0.0;           // [W] power of the internal-flow forces (eq 46)
-  WaveLoadScratch waves;             // fluid kinematics at the Gauss points (riser_waves; with a sea only)
 
   void resize(int segment_count);
 };

@@ -127,7 +127,6 @@ struct RiserModel {
   std::shared_ptr<const RiserSea> sea;                  // waves (riser_waves.hpp); null: none
   std::shared_ptr<const RiserSeabed> seabed;            // sea-bed contact (riser_seabed.hpp); null: none
   std::shared_ptr<const VesselMotion> vessel;           // top.motion = vessel (riser_vessel.hpp); null: none
-  bool waves_once_per_step = true;  // implicit integrator: wave kinematics once per time (riser_waves.hpp)
   std::vector<Eigen::Quaterniond> initial_orientation;  // n+1 segment orientations R_GS of the initial shape
   Vec3 initial_top = Vec3::Zero();                      // [m] top position of the initial shape
 

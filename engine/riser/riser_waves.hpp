@@ -7,12 +7,10 @@
 // where ( )_n is the component normal to the segment. Buoyancy stays at the still-water level.
 #pragma once
 
-#include <limits>
 #include <memory>
 #include <vector>
 
 #include "core/errors.hpp"
-#include "core/ocean_kinematics_batch.hpp"
 #include "core/ocean_waves.hpp"
 #include "core/schema_binder.hpp"
 #include "riser/riser_parameters.hpp"
@@ -29,25 +27,12 @@ struct RiserSea {
   double water_level = 0.0;  // [m] global z of the field's z = 0
   double ramp_time = 0.0;    // [s] r(t) = ½(1 − cos(π t/T_r)) for 0 ≤ t < T_r, 0 before, 1 after
   double elevation_x = 0.0, elevation_y = 0.0;  // [m] the recorded elevation's point
-  ocean::WaveKinematicsBatch batch;  // the field's vectorised kinematics (built by buildRiserSea)
 
   double ramp(double t) const;
   double rampRate(double t) const;  // [1/s] dr/dt
   double elevation(double x, double y, double t) const;  // [m] ramped η above the still-water level
   // Ramped kinematics at a global point (its z relative to water_level inside).
   ocean::FluidKinematics at(const Eigen::Vector3d& point, double t) const;
-};
-
-// Fluid kinematics at the Gauss points of every segment, the scratch of addMorisonInWaves (one per workspace).
-// With `freeze_per_time` (the implicit integrator) they are evaluated once per time and kept for every later call
-// at that time: at the first Newton iterate's positions, for all iterations and the Newton matrix of that step
-// (docs/riser.md, "Speed in a long irregular sea", says what this costs in accuracy).
-struct WaveLoadScratch {
-  bool freeze_per_time = false;
-  double time = std::numeric_limits<double>::quiet_NaN();  // of `fluid`, when frozen
-  std::vector<Eigen::Vector3d> points;                     // 3 per segment, in segment order
-  std::vector<ocean::FluidKinematics> fluid;
-  ocean::WaveKinematicsBatch::Scratch batch;
 };
 
 // The sea of the parameters; nullptr for waves.type = none. Call on validated parameters.
@@ -59,7 +44,6 @@ void checkWaveParameters(const RiserParameters& p, std::vector<FieldError>& erro
 
 // Drag with the relative velocity and inertia of the fluid acceleration, at the 3 Gauss points of each segment
 // (computeLoads calls it instead of addDrag when m.sea is set). Its power on the structure goes to power_drag.
-// The kinematics come from loads.waves (WaveLoadScratch).
 void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads);
 
 }  // namespace maris::riser
