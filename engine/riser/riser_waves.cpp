@@ -2,9 +2,13 @@
 #include "riser/riser_waves.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <mutex>
 #include <numbers>
 #include <sstream>
 
+#include "core/ocean_kinematics_batch.hpp"
 #include "riser/riser_loads.hpp"
 #include "riser/riser_model.hpp"
 
@@ -26,6 +30,31 @@ std::string num(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
+}
+
+// Batched kinematics of the live seas, by sea (registered by buildRiserSea, removed when the sea is deleted).
+struct RegisteredBatch {
+  std::shared_ptr<const ocean::WaveKinematicsBatch> batch;
+  std::uint64_t id = 0;
+};
+std::mutex registry_mutex;
+std::map<const RiserSea*, RegisteredBatch> registry;
+std::uint64_t last_id = 0;
+
+void registerBatch(const RiserSea* sea, std::shared_ptr<const ocean::WaveKinematicsBatch> batch) {
+  const std::lock_guard<std::mutex> lock(registry_mutex);
+  registry[sea] = {std::move(batch), ++last_id};
+}
+
+void unregisterBatch(const RiserSea* sea) {
+  const std::lock_guard<std::mutex> lock(registry_mutex);
+  registry.erase(sea);
+}
+
+RegisteredBatch registeredBatch(const RiserSea* sea) {
+  const std::lock_guard<std::mutex> lock(registry_mutex);
+  const auto it = registry.find(sea);
+  return it == registry.end() ? RegisteredBatch{} : it->second;
 }
 
 ocean::WaveSpectrum spectrumOf(const RiserParameters& p) {
@@ -113,7 +142,12 @@ ocean::FluidKinematics RiserSea::at(const Eigen::Vector3d& point, double t) cons
 
 std::shared_ptr<const RiserSea> buildRiserSea(const RiserParameters& p) {
   if (p.wave_type == "none") return nullptr;
-  auto sea = std::make_shared<RiserSea>();
+  // The sea's batched kinematics are registered for its lifetime (riser_waves.hpp is included everywhere, so
+  // RiserSea keeps its layout; the registry is the batch's home).
+  std::shared_ptr<RiserSea> sea(new RiserSea, [](RiserSea* s) {
+    unregisterBatch(s);
+    delete s;
+  });
   const double depth = p.water_level - p.seabed_level, direction = p.wave_direction_deg * kDegree;
   const auto stretching = p.wave_stretching == "vertical" ? ocean::Stretching::Vertical : ocean::Stretching::Wheeler;
   if (p.wave_type == "airy") {
@@ -129,11 +163,50 @@ std::shared_ptr<const RiserSea> buildRiserSea(const RiserParameters& p) {
   sea->ramp_time = p.wave_ramp_time;
   sea->elevation_x = p.wave_elevation_x;
   sea->elevation_y = p.wave_elevation_y;
+  registerBatch(sea.get(), std::make_shared<const ocean::WaveKinematicsBatch>(sea->field, direction, p.gravity));
   return sea;
 }
 
-void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+namespace {
+
+// Per thread: the Gauss points, their kinematics and the batch's scratch (time phases of the last time, for the
+// batch `owner`: a unique number per registered batch, so another sea never reuses them).
+struct WaveLoadScratch {
+  std::uint64_t owner = 0;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<ocean::FluidKinematics> fluid;
+  ocean::WaveKinematicsBatch::Scratch batch;
+};
+
+// The kinematics at the Gauss points of pose at its time into scratch.fluid (calm water before the ramp starts;
+// point by point for a sea without a registered batch).
+void waveKinematicsAtGaussPoints(const RiserModel& m, const RiserPose& pose, WaveLoadScratch& scratch) {
   const RiserSea& sea = *m.sea;
+  const std::size_t count = 3 * static_cast<std::size_t>(m.n + 1);
+  scratch.points.resize(count);
+  scratch.fluid.resize(count);
+  for (int i = 0; i <= m.n; ++i) {
+    const Vec3 t = pose.rotation[i].col(0);
+    for (int q = 0; q < 3; ++q) scratch.points[3 * i + q] = pose.position[i] + kGaussX[q] * m.segments[i].length * t;
+  }
+  const double t = pose.time, r = sea.ramp(t);
+  const RegisteredBatch batch = registeredBatch(&sea);
+  if (r == 0.0 || !batch.batch) {
+    for (std::size_t k = 0; k < count; ++k) scratch.fluid[k] = sea.at(scratch.points[k], t);
+    return;
+  }
+  if (scratch.owner != batch.id) scratch.batch = {}, scratch.owner = batch.id;
+  const Eigen::Vector3d level(0.0, 0.0, sea.water_level);
+  for (auto& p : scratch.points) p -= level;  // the field's z = 0 is the still-water level
+  batch.batch->evaluate(scratch.points.data(), count, t, r, sea.rampRate(t), scratch.batch, scratch.fluid.data());
+  for (auto& p : scratch.points) p += level;
+}
+
+}  // namespace
+
+void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
+  thread_local WaveLoadScratch scratch;
+  waveKinematicsAtGaussPoints(m, pose, scratch);
   for (int i = 0; i <= m.n; ++i) {
     const Segment& seg = m.segments[i];
     const Mat3& r = pose.rotation[i];
@@ -141,7 +214,7 @@ void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor
     for (int q = 0; q < 3; ++q) {
       const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
       const Vec3 p = pose.position[i] + xi * t;
-      const ocean::FluidKinematics fluid = sea.at(p, pose.time);
+      const ocean::FluidKinematics& fluid = scratch.fluid[3 * static_cast<std::size_t>(i) + q];
       if (!fluid.wet) continue;
       const Vec3 v = pose.velocity[i] + pose.omega[i].cross(xi * t);
       const Vec3 local = r.transpose() * (v - m.currentAt(p.z()) - fluid.velocity);

@@ -1,0 +1,212 @@
+// Batched wave kinematics (contract in core/ocean_kinematics_batch.hpp).
+//
+// The kernels are branch-free so that `#pragma omp simd` (this file is compiled with -fopenmp-simd: no OpenMP
+// runtime, only the SIMD directives) turns the loops over the components into vector code:
+//   sin/cos: x = q π/2 + r with q = nearest integer of 2x/π, π/2 split into a 33-bit head (q·head exact for
+//            |q| < 2^20) and its remainder (Cody & Waite 1980, Software Manual for the Elementary Functions);
+//            |r| ≤ π/4 + tiny, Taylor series of sin to r^17 and cos to r^16 (next terms < 1e-19 and 2e-18);
+//            the quadrant q mod 4 swaps and signs the pair.
+//   exp:     x = n ln 2 + r, |r| ≤ ½ ln 2 (ln 2 split likewise), Taylor to r^13 (next term < 4e-18), times 2^n
+//            assembled in the exponent bits.
+// The nearest integer uses the 1.5·2^52 shifter: after t = y + 1.5·2^52 the low bits of t hold round(y).
+#include "core/ocean_kinematics_batch.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+namespace maris::ocean {
+namespace {
+
+constexpr double kShifter = 0x1.8p52;
+constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
+constexpr double kHalfPiHead = 0x1.921fb544p+0, kHalfPiTail = 0x1.0b4611a626331p-34;
+constexpr double kInverseTwoPi = 0x1.45f306dc9c883p-3;
+constexpr double kTwoPiHead = 0x1.921fb544p+2, kTwoPiTail = 0x1.0b4611a626331p-32;
+constexpr double kLog2E = 0x1.71547652b82fep+0;
+constexpr double kLn2Head = 0x1.62e42fefp-1, kLn2Tail = 0x1.473de6af278edp-34;
+constexpr double kLargestExpArgument = 708.0;  // e^±708 is a normal double
+constexpr double kLargestSinArgument = 1e5;    // |q| < 2^17: q·(π/2 head) exact with room
+constexpr double kLargestTimePhase = 6e6;      // |n| < 2^20 turns: n·(2π head) exact
+
+// Taylor coefficients 1/k!, k = 0…17.
+constexpr double inverseFactorial(int k) {
+  double f = 1.0;
+  for (int i = 2; i <= k; ++i) f *= i;
+  return 1.0 / f;
+}
+
+[[gnu::always_inline]] inline void sinCosKernel(double x, double& sine, double& cosine) {
+  const double shifted = x * kTwoOverPi + kShifter;
+  const double q = shifted - kShifter;
+  const std::int64_t quadrant = std::bit_cast<std::int64_t>(shifted) - std::bit_cast<std::int64_t>(kShifter);
+  const double r = (x - q * kHalfPiHead) - q * kHalfPiTail;
+  const double r2 = r * r;
+  // sin r = r (1 − r²/3! + r⁴/5! − …), cos r = 1 − r²/2! + r⁴/4! − …
+  constexpr double s3 = -inverseFactorial(3), s5 = inverseFactorial(5), s7 = -inverseFactorial(7),
+                   s9 = inverseFactorial(9), s11 = -inverseFactorial(11), s13 = inverseFactorial(13),
+                   s15 = -inverseFactorial(15), s17 = inverseFactorial(17);
+  constexpr double c2 = -inverseFactorial(2), c4 = inverseFactorial(4), c6 = -inverseFactorial(6),
+                   c8 = inverseFactorial(8), c10 = -inverseFactorial(10), c12 = inverseFactorial(12),
+                   c14 = -inverseFactorial(14), c16 = inverseFactorial(16);
+  const double ps =
+      r + r * r2 * (s3 + r2 * (s5 + r2 * (s7 + r2 * (s9 + r2 * (s11 + r2 * (s13 + r2 * (s15 + r2 * s17)))))));
+  const double pc =
+      1.0 + r2 * (c2 + r2 * (c4 + r2 * (c6 + r2 * (c8 + r2 * (c10 + r2 * (c12 + r2 * (c14 + r2 * c16)))))));
+  // Quadrant 0: (s, c); 1: (c, −s); 2: (−s, −c); 3: (−c, s).
+  const bool swap = (quadrant & 1) != 0;
+  const double sine_base = swap ? pc : ps, cosine_base = swap ? ps : pc;
+  const auto sine_sign = static_cast<std::uint64_t>(quadrant & 2) << 62;
+  const auto cosine_sign = static_cast<std::uint64_t>((quadrant + 1) & 2) << 62;
+  sine = std::bit_cast<double>(std::bit_cast<std::uint64_t>(sine_base) ^ sine_sign);
+  cosine = std::bit_cast<double>(std::bit_cast<std::uint64_t>(cosine_base) ^ cosine_sign);
+}
+
+[[gnu::always_inline]] inline double expKernel(double x) {
+  x = x < -kLargestExpArgument ? -kLargestExpArgument : x;
+  x = x > kLargestExpArgument ? kLargestExpArgument : x;
+  const double shifted = x * kLog2E + kShifter;
+  const double n = shifted - kShifter;
+  const std::int64_t power = std::bit_cast<std::int64_t>(shifted) - std::bit_cast<std::int64_t>(kShifter);
+  const double r = (x - n * kLn2Head) - n * kLn2Tail;
+  constexpr double e2 = inverseFactorial(2), e3 = inverseFactorial(3), e4 = inverseFactorial(4),
+                   e5 = inverseFactorial(5), e6 = inverseFactorial(6), e7 = inverseFactorial(7),
+                   e8 = inverseFactorial(8), e9 = inverseFactorial(9), e10 = inverseFactorial(10),
+                   e11 = inverseFactorial(11), e12 = inverseFactorial(12), e13 = inverseFactorial(13);
+  const double p =
+      1.0 + r * (1.0 + r * (e2 + r * (e3 + r * (e4 + r * (e5 + r * (e6 + r * (e7 + r * (e8 + r * (e9 + r * (e10 +
+                                                                                   r * (e11 + r * (e12 + r * e13))))))))))));
+  return p * std::bit_cast<double>(static_cast<std::uint64_t>(power + 1023) << 52);
+}
+
+// The per-point sums, vectorised over the components (AVX2 + FMA clone on processors that have them).
+struct PointSums {
+  double eta = 0.0, u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
+};
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define MARIS_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define MARIS_SIMD_CLONES
+#endif
+
+// cos ψ_j, sin ψ_j for ψ_j = k_j s + θ_j, and η = Σ a_j cos ψ_j (unramped).
+MARIS_SIMD_CLONES double phasesAndElevation(std::size_t n, double s, const double* __restrict k,
+                                            const double* __restrict theta, const double* __restrict amplitude,
+                                            double* __restrict cos_psi, double* __restrict sin_psi) {
+  double eta = 0.0;
+#pragma omp simd reduction(+ : eta)
+  for (std::size_t j = 0; j < n; ++j) {
+    double sn, cs;
+    sinCosKernel(k[j] * s + theta[j], sn, cs);
+    cos_psi[j] = cs;
+    sin_psi[j] = sn;
+    eta += amplitude[j] * cs;
+  }
+  return eta;
+}
+
+// The linear kinematics sums at the stretched height z'.
+MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restrict k, const double* __restrict a_omega,
+                                 const double* __restrict a_omega2, const double* __restrict depth_scale,
+                                 const double* __restrict mirror, const double* __restrict cos_psi,
+                                 const double* __restrict sin_psi, PointSums& out) {
+  double u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
+#pragma omp simd reduction(+ : u, w, du, dw)
+  for (std::size_t j = 0; j < n; ++j) {
+    const double e1 = expKernel(k[j] * z);
+    // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300).
+    const double e2 = mirror[j] / (e1 > 1e-300 ? e1 : 1e-300);
+    const double ch = (e1 + e2) * depth_scale[j], sh = (e1 - e2) * depth_scale[j];
+    u += a_omega[j] * ch * cos_psi[j];
+    w += a_omega[j] * sh * sin_psi[j];
+    du += a_omega2[j] * ch * sin_psi[j];
+    dw -= a_omega2[j] * sh * cos_psi[j];
+  }
+  out.u = u, out.w = w, out.du = du, out.dw = dw;
+}
+
+}  // namespace
+
+void fastSinCos(double x, double& sine, double& cosine) { sinCosKernel(x, sine, cosine); }
+
+double fastExp(double x) { return expKernel(x); }
+
+WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity)
+    : field_(field), cos_dir_(std::cos(direction_rad)), sin_dir_(std::sin(direction_rad)), depth_(field.depth()) {
+  const std::size_t n = field.size();
+  const bool deep = std::isinf(depth_);
+  for (std::size_t j = 0; j < n; ++j) {
+    const WaveComponent& c = field.components()[j];
+    const double k = waveNumber(c.omega, depth_, gravity);
+    k_.push_back(k);
+    amplitude_.push_back(c.amplitude);
+    a_omega_.push_back(c.amplitude * c.omega);
+    a_omega2_.push_back(c.amplitude * c.omega * c.omega);
+    depth_scale_.push_back(deep ? 1.0 : 1.0 / -std::expm1(-2.0 * k * depth_));
+    // Beyond kh = 300 the mirror term e^{−k(z+2h)} ≤ e^{−kh} < 1e-130 of the component's surface value: dropped.
+    mirror_.push_back(deep || k * depth_ > 300.0 ? 0.0 : std::exp(-2.0 * k * depth_));
+    omega_.push_back(c.omega);
+    phase_.push_back(c.phase);
+    largest_k_ = std::max(largest_k_, k);
+  }
+}
+
+void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp,
+                                   double ramp_rate, Scratch& scratch, FluidKinematics* out) const {
+  const std::size_t n = k_.size();
+  if (scratch.theta.size() != n || !(scratch.time == t)) {
+    scratch.theta.resize(n);
+    scratch.cos_psi.resize(n);
+    scratch.sin_psi.resize(n);
+    scratch.time_reduced = true;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double theta = phase_[j] - omega_[j] * t;
+      scratch.time_reduced = scratch.time_reduced && std::abs(theta) < kLargestTimePhase;
+      // θ − 2π·turns with 2π in two parts: the reduction adds no error beyond θ's own rounding.
+      const double turns = std::nearbyint(theta * kInverseTwoPi);
+      scratch.theta[j] = (theta - turns * kTwoPiHead) - turns * kTwoPiTail;
+    }
+    scratch.time = t;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const Eigen::Vector3d& p = points[i];
+    const double s = p.x() * cos_dir_ + p.y() * sin_dir_;
+    if (!scratch.time_reduced || !(std::abs(s) * largest_k_ < kLargestSinArgument)) {
+      out[i] = field_.kinematics(p, t, ramp, ramp_rate);
+      continue;
+    }
+    FluidKinematics& f = out[i];
+    const double eta =
+        ramp * phasesAndElevation(n, s, k_.data(), scratch.theta.data(), amplitude_.data(), scratch.cos_psi.data(),
+                                  scratch.sin_psi.data());
+    f.elevation = eta;
+    f.wet = p.z() <= eta;
+    f.velocity.setZero();
+    f.acceleration.setZero();
+    if (!f.wet) continue;
+    double z = p.z();
+    switch (field_.stretching()) {
+      case Stretching::Wheeler:
+        z = std::isinf(depth_) ? z - eta : depth_ * (z - eta) / (depth_ + eta);
+        break;
+      case Stretching::Vertical:
+        z = std::min(z, 0.0);
+        break;
+      case Stretching::None:
+        break;
+    }
+    if (!std::isinf(depth_)) z = std::max(z, -depth_);
+    PointSums sums;
+    depthSums(n, z, k_.data(), a_omega_.data(), a_omega2_.data(), depth_scale_.data(), mirror_.data(),
+              scratch.cos_psi.data(), scratch.sin_psi.data(), sums);
+    const Eigen::Vector3d velocity(sums.u * cos_dir_, sums.u * sin_dir_, sums.w);
+    const Eigen::Vector3d acceleration(sums.du * cos_dir_, sums.du * sin_dir_, sums.dw);
+    f.velocity = ramp * velocity;
+    f.acceleration = ramp * acceleration + ramp_rate * velocity;
+  }
+}
+
+}  // namespace maris::ocean

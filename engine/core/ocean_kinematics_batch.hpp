@@ -1,0 +1,61 @@
+// The kinematics of a WaveField at many points at one time, for structures with many load points (a riser's
+// Gauss points): the same formulas as WaveField::kinematics (core/ocean_waves.hpp), evaluated so that the compiler
+// can run the loop over the components in SIMD lanes.
+//
+// Per time: the components' time phases θ_j = φ_j − ω_j t, reduced to [−π, π] (once per time, not per point).
+// Per point, with s = x cos β + y sin β the distance along the waves' direction (a one-directional sea):
+//   ψ_j = k_j s + θ_j,  η = r Σ a_j cos ψ_j,  z' by the field's stretching,
+//   e_j = e^{k_j z'},   e'_j = e^{−k_j (z' + 2h)} = e^{−2 k_j h} / e_j  (one exponential per component),
+//   C_j = (e_j + e'_j)/(1 − e^{−2 k_j h}),  S_j = (e_j − e'_j)/(1 − e^{−2 k_j h}).
+// Sine, cosine and exponential are polynomial kernels without branches (Cody–Waite reduction, Taylor series to
+// below the double's rounding; ocean_kinematics_batch.cpp) instead of the library's calls, which do not vectorise.
+// Agreement with WaveField::kinematics: ≤ 1e-13 of each quantity's scale (the sum of the components' magnitudes),
+// tested at the surface, at depth, at crest and trough with Wheeler and vertical stretching; on x86-64 the loop
+// runs in AVX2 lanes where the processor has them (function multi-versioning), SSE2 otherwise.
+// Limits: a point with |k_max s| > 1e5 rad (s more than ≈ 70 km from the origin for 2 s waves) or a time with
+// |ω_j t| > 6e6 rad takes WaveField::kinematics itself, point by point.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/ocean_waves.hpp"
+
+namespace maris::ocean {
+
+class WaveKinematicsBatch {
+ public:
+  // Per-caller workspace: the time phases of the last time and the per-component scratch of one point.
+  struct Scratch {
+    double time = std::numeric_limits<double>::quiet_NaN();
+    bool time_reduced = false;  // θ_j in [−π, π] (else the point-by-point fallback)
+    std::vector<double> theta, cos_psi, sin_psi;
+  };
+
+  WaveKinematicsBatch() = default;
+  // `direction_rad` and `gravity`: the ones the field was made with (its wave numbers are recomputed from them by
+  // waveNumber, bit for bit the field's own).
+  WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity);
+
+  // out[i] = field.kinematics(points[i], t, ramp, ramp_rate) to the accuracy stated above.
+  void evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp, double ramp_rate,
+                Scratch& scratch, FluidKinematics* out) const;
+
+  const WaveField& field() const { return field_; }
+
+ private:
+  WaveField field_;
+  double cos_dir_ = 1.0, sin_dir_ = 0.0, depth_ = kDeepWater, largest_k_ = 0.0;
+  // Per component: k, a, a ω, a ω², 1/(1 − e^{−2kh}), e^{−2kh} (0 in deep water or where it underflows), ω, φ.
+  std::vector<double> k_, amplitude_, a_omega_, a_omega2_, depth_scale_, mirror_, omega_, phase_;
+};
+
+// The kernels, exposed for their test: sin and cos of x for |x| ≤ 1e5 and e^x for |x| ≤ 708, within a few
+// units in the last place of std::sin, std::cos, std::exp.
+void fastSinCos(double x, double& sine, double& cosine);
+double fastExp(double x);
+
+}  // namespace maris::ocean

@@ -1,0 +1,167 @@
+// The batched (vectorised) wave kinematics against the direct formula, WaveField::kinematics, which the
+// closed-form tests of test_ocean_waves.cpp check against Dean & Dalrymple's cosh/sinh forms; and its sine,
+// cosine and exponential kernels against the standard library's.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/ocean_kinematics_batch.hpp"
+#include "core/wave_spectrum.hpp"
+
+namespace maris::ocean {
+namespace {
+
+constexpr double kG = 9.81;
+
+TEST(OceanKinematicsBatch, KernelsAgreeWithTheLibraryToAFewUlps) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(-1e5, 1e5), small(-4.0, 4.0), argument(-708.0, 708.0);
+  double worst_trig = 0.0, worst_exp = 0.0;
+  for (int i = 0; i < 200000; ++i) {
+    const double x = i % 2 ? angle(rng) : small(rng);
+    double s, c;
+    fastSinCos(x, s, c);
+    worst_trig = std::max({worst_trig, std::abs(s - std::sin(x)), std::abs(c - std::cos(x))});
+    const double e = argument(rng);
+    worst_exp = std::max(worst_exp, std::abs(fastExp(e) - std::exp(e)) / std::exp(e));
+  }
+  // Values ≤ 1 in magnitude: 4e-16 absolute is two units in the last place at 1; exp relative 4e-16.
+  EXPECT_LT(worst_trig, 4e-16);
+  EXPECT_LT(worst_exp, 4e-16);
+  double s, c;
+  fastSinCos(0.0, s, c);
+  EXPECT_EQ(s, 0.0);
+  EXPECT_EQ(c, 1.0);
+  EXPECT_EQ(fastExp(0.0), 1.0);
+}
+
+// Largest |batch − direct| over the points, per quantity relative to that quantity's scale at the point: the sum of
+// the components' magnitudes a ω^p (|cosh| or |sinh| ratio) at the stretched height, so that a point deep down,
+// where the kinematics are small, is held to its own size and not to the surface's.
+struct Scales {
+  double eta, u, w, du, dw;
+};
+
+Scales scalesAt(const WaveField& field, double z_stretched) {
+  const double h = field.depth();
+  Scales s{0, 0, 0, 0, 0};
+  for (std::size_t j = 0; j < field.size(); ++j) {
+    const WaveComponent& c = field.components()[j];
+    const double k = waveNumber(c.omega, h, kG);
+    const double z = std::isinf(h) ? z_stretched : std::max(z_stretched, -h);
+    const double ch = std::isinf(h) ? std::exp(k * z) : std::cosh(k * (z + h)) / std::sinh(k * h);
+    const double sh = std::isinf(h) ? std::exp(k * z) : std::abs(std::sinh(k * (z + h))) / std::sinh(k * h);
+    s.eta += c.amplitude;
+    s.u += c.amplitude * c.omega * ch;
+    s.w += c.amplitude * c.omega * sh;
+    s.du += c.amplitude * c.omega * c.omega * ch;
+    s.dw += c.amplitude * c.omega * c.omega * sh;
+  }
+  s.w = std::max(s.w, s.u * 1e-3);  // at the sea bed sinh → 0: hold w to a thousandth of u's scale there
+  s.dw = std::max(s.dw, s.du * 1e-3);
+  return s;
+}
+
+double stretchedHeight(const WaveField& field, double z, double eta) {
+  const double h = field.depth();
+  switch (field.stretching()) {
+    case Stretching::Wheeler: return std::isinf(h) ? z - eta : h * (z - eta) / (h + eta);
+    case Stretching::Vertical: return std::min(z, 0.0);
+    case Stretching::None: return z;
+  }
+  return z;
+}
+
+// Crest and trough of the field along its direction at time t (on a 0.05 m grid over ±150 m), and points at the
+// surface just below each, at depths, at the sea bed and above the crest (dry).
+std::vector<Eigen::Vector3d> testPoints(const WaveField& field, double direction, double t) {
+  const double cb = std::cos(direction), sb = std::sin(direction);
+  double crest_s = 0, trough_s = 0, crest = -1e9, trough = 1e9;
+  for (double s = -150.0; s <= 150.0; s += 0.05) {
+    const double eta = field.elevation(s * cb, s * sb, t);
+    if (eta > crest) crest = eta, crest_s = s;
+    if (eta < trough) trough = eta, trough_s = s;
+  }
+  const double bottom = std::isinf(field.depth()) ? -300.0 : -field.depth();
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& [s, eta] : {std::pair{crest_s, crest}, std::pair{trough_s, trough}, std::pair{37.0, 0.0}}) {
+    const double top = s == 37.0 ? field.elevation(s * cb, s * sb, t) : eta;
+    for (double z : {top - 1e-6, top - 0.5, 0.0, -1.0, -10.0, -50.0, 0.999 * bottom, bottom, top + 0.3})
+      points.emplace_back(s * cb + 3.0 * sb, s * sb - 3.0 * cb, z);  // 3 m off the line: y matters
+  }
+  return points;
+}
+
+// The direction of every field below.
+constexpr double kDirection = 0.5;
+
+void expectBatchEqualsDirect(const WaveField& field, double t, double ramp, double ramp_rate, double tolerance) {
+  const WaveKinematicsBatch batch(field, kDirection, kG);
+  WaveKinematicsBatch::Scratch scratch;
+  const std::vector<Eigen::Vector3d> points = testPoints(field, kDirection, t);
+  std::vector<FluidKinematics> fast(points.size());
+  batch.evaluate(points.data(), points.size(), t, ramp, ramp_rate, scratch, fast.data());
+  int wet = 0, dry = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const FluidKinematics direct = field.kinematics(points[i], t, ramp, ramp_rate);
+    const Scales s = scalesAt(field, stretchedHeight(field, points[i].z(), direct.elevation));
+    const double r = std::max(ramp, 1e-300), rate_u = std::abs(ramp_rate) * s.u / r, rate_w = std::abs(ramp_rate) * s.w / r;
+    ASSERT_EQ(fast[i].wet, direct.wet) << "point " << i;
+    (direct.wet ? wet : dry)++;
+    EXPECT_LE(std::abs(fast[i].elevation - direct.elevation), tolerance * ramp * s.eta) << "point " << i;
+    const Eigen::Vector3d dv = fast[i].velocity - direct.velocity, da = fast[i].acceleration - direct.acceleration;
+    EXPECT_LE(dv.head<2>().norm(), tolerance * ramp * s.u) << "point " << i << " z " << points[i].z();
+    EXPECT_LE(std::abs(dv.z()), tolerance * ramp * s.w) << "point " << i << " z " << points[i].z();
+    EXPECT_LE(da.head<2>().norm(), tolerance * (ramp * s.du + rate_u * r)) << "point " << i;
+    EXPECT_LE(std::abs(da.z()), tolerance * (ramp * s.dw + rate_w * r)) << "point " << i;
+  }
+  EXPECT_GE(wet, 17);  // crest, trough and the middle point: surface (wet when unramped), depths, sea bed
+  EXPECT_GE(dry, 3);   // above each surface
+}
+
+WaveField jonswapSea(double depth, Stretching stretching) {
+  return irregularSea(jonswap(6.0, 10.0, 3.3), 200, Discretisation::RandomFrequency, 1, kDirection, depth, kG,
+                     stretching);
+}
+
+// 1e-13 of each quantity's scale: the sums run in another order (SIMD lanes) and the kernels are within 2 ulps.
+TEST(OceanKinematicsBatch, EqualsTheDirectFormulaWithWheelerStretchingAtSurfaceDepthCrestAndTrough) {
+  for (double depth : {100.0, 30.0, kDeepWater}) {
+    SCOPED_TRACE(depth);
+    expectBatchEqualsDirect(jonswapSea(depth, Stretching::Wheeler), 37.3, 1.0, 0.0, 1e-13);
+    expectBatchEqualsDirect(jonswapSea(depth, Stretching::Wheeler), 7.1, 0.37, 0.05, 1e-13);  // within the ramp
+  }
+  // A regular wave: crest and trough exactly on the grid of the search above.
+  expectBatchEqualsDirect(airyWave(8.0, 9.0, kDirection, 0.2, 60.0, kG, Stretching::Wheeler), 3.0, 1.0, 0.0, 1e-13);
+}
+
+TEST(OceanKinematicsBatch, EqualsTheDirectFormulaWithVerticalAndNoStretching) {
+  expectBatchEqualsDirect(jonswapSea(100.0, Stretching::Vertical), 37.3, 1.0, 0.0, 1e-13);
+  expectBatchEqualsDirect(jonswapSea(100.0, Stretching::None), 37.3, 1.0, 0.0, 1e-13);
+}
+
+// After three hours ω t ≈ 4e4 rad: the direct formula's own argument carries ≈ 7e-12 rad of rounding (one unit in
+// the last place of 4e4), so the two agree to that, not to 1e-13.
+TEST(OceanKinematicsBatch, EqualsTheDirectFormulaAfterThreeHours) {
+  expectBatchEqualsDirect(jonswapSea(100.0, Stretching::Wheeler), 10800.0, 1.0, 0.0, 2e-11);
+}
+
+// Points far along the waves (|k s| > 1e5) take the direct formula: the same values exactly.
+TEST(OceanKinematicsBatch, FarPointsFallBackToTheDirectFormula) {
+  const WaveField field = jonswapSea(100.0, Stretching::Wheeler);
+  const WaveKinematicsBatch batch(field, kDirection, kG);
+  WaveKinematicsBatch::Scratch scratch;
+  const Eigen::Vector3d far(1e6 * std::cos(kDirection), 1e6 * std::sin(kDirection), -5.0);
+  FluidKinematics fast;
+  batch.evaluate(&far, 1, 20.0, 1.0, 0.0, scratch, &fast);
+  const FluidKinematics direct = field.kinematics(far, 20.0);
+  EXPECT_EQ(fast.velocity, direct.velocity);
+  EXPECT_EQ(fast.acceleration, direct.acceleration);
+  EXPECT_EQ(fast.elevation, direct.elevation);
+}
+
+}  // namespace
+}  // namespace maris::ocean
