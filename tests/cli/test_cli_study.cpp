@@ -75,12 +75,18 @@ class CliStudy : public ::testing::Test {
 };
 
 // A riser cantilever (statics only, a few ms per case) over a 4 x 3 grid, and a ship load-case table of 12
-// hulls (20 speeds each): two scenes, two designs.
+// hulls (20 speeds each; 5 under the sanitizers, where the speeds are most of the test's time and add no path):
+// two scenes, two designs.
 const char* kRiserStudy = R"({"format": "maris-study/1", "name": "cantilever", "base": "riser_cantilever_tip_load",
   "grid": {"geometry.length": {"from": 10, "to": 30, "count": 4},
            "section.youngs_modulus": [1.5e11, 2.07e11, 2.5e11]}})";
+#if defined(__SANITIZE_ADDRESS__)
+#define MARIS_TEST_SHIP_SPEEDS "5"
+#else
+#define MARIS_TEST_SHIP_SPEEDS "20"
+#endif
 const char* kShipStudy = R"({"format": "maris-study/1", "name": "hulls", "base": "ship_default",
-  "set": {"speed.count": 20, "numerics.threads": 1}, "table": "hulls.csv",
+  "set": {"speed.count": )" MARIS_TEST_SHIP_SPEEDS R"(, "numerics.threads": 1}, "table": "hulls.csv",
   "results": ["c_total", "r_total", "wetted_surface"]})";
 const char* kShipTable =
     "hull.length,hull.beam,water.kind\nm,m,-\n"

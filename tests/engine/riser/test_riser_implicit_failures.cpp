@@ -52,7 +52,8 @@ TEST(RiserImplicitFailures, ResidualBeyondTheChartIsNonFiniteAndNamed) {
 // 0.8 period, so up to ~0.6 of the amplitude, more with ρ∞'s damping (measured 0.62; J2 at T/5, never
 // halved, 0.76; 0.31 while Newton, giving up on its first matrix, halved 25 of 88 steps and so refined the
 // run; at T/10, without halvings, 0.18 against the estimate 0.17). Asserted: within 0.9 of the amplitude (a
-// step that diverged, or a halving that lost the state, leaving the riser near rest, would not be).
+// step that diverged, or a halving that lost the state, leaving the riser near rest, would not be). Under the
+// sanitizers the reference takes T/50 (period error (ωh)²/12 ≈ 1.3e-3, far inside that bound).
 TEST(RiserImplicitFailures, StepTooLongForNewtonIsHalvedNotFatal) {
   RiserParameters p = test::paperCaseFive();
   p.formulation = "absolute";
@@ -66,7 +67,7 @@ TEST(RiserImplicitFailures, StepTooLongForNewtonIsHalvedNotFatal) {
   Results coarse;
   ASSERT_NO_THROW(coarse = solveRiser(p, context));
   EXPECT_GT(coarse.stats.rejected_steps, 0);
-  p.time_step = p.motion_period / 200;
+  p.time_step = p.motion_period / (::maris::test::kSanitizedBuild ? 50 : 200);
   const Results fine = solveRiser(p, context);
   const auto& motion = fine.findTable("history")->find("probe_dx")->values;
   double amplitude = 0;
@@ -122,6 +123,8 @@ TEST(RiserImplicitFailures, FreeCableInAbsoluteCoordinatesTakesCoarseStepsWithou
 // its matrix once more at that iterate (core/ode_newton.cpp), and A2 also takes 63, none. The mass-weighted
 // projection of every joint took 441, 107 rejected; J3 63, none.
 TEST(RiserImplicitFailures, SlackCableHeldAtBothEndsKeepsItsSteps) {
+  MARIS_RELEASE_ONLY("RiserImplicitFailures.SlackCableHeldAtBothEndsBetweenFramesKeepsItsSteps (the same cable, "
+                     "integrator and step, in 40 output chunks)");
   const RiserParameters p = test::implicitCableHeldAtBothEnds(100, 0.16);
   RunContext context;
   const Results r = solveRiser(p, context);

@@ -104,12 +104,13 @@ TEST(RiserPaperCases, CaseOneBeamPulseMatchesCantileverModes) {
 // trajectory in joint (J2, riser_line_end_forces) and absolute coordinates (A2, riser_paper_case2_line_absolute),
 // which "coincide" in the paper. Same equations, different coordinates and constraint handling: measured over 4 s,
 // largest difference 5.5e-8 m at the scenario's h = 0.5 ms and 2.5e-9 m at 0.25 ms, for 58 m of motion. Accepted
-// 1e-6 of the motion over the first 2 s.
+// 1e-6 of the motion over the first 2 s; under the sanitizers over the first 0.5 s (8.6 m of motion, measured in
+// the Release build; the same tolerance).
 TEST(RiserPaperCases, CaseTwoEndTrajectoryIsTheSameInBothFormulations) {
   std::vector<Results> runs;
   for (const char* scenario : {"riser_line_end_forces", "riser_paper_case2_line_absolute"}) {
     RiserParameters p = test::builtinParameters(std::string("scenarios/riser/") + scenario + ".json");
-    p.end_time = 2.0;
+    p.end_time = ::maris::test::kSanitizedBuild ? 0.5 : 2.0;
     p.stress_times.clear();
     RunContext context;
     runs.push_back(solveRiser(p, context));
@@ -157,6 +158,8 @@ TEST(RiserPaperCases, CaseFourFrequenciesMatchTheHeavyRiserReference) {
 // the largest displacement is (2π/L)² = 0.487 1/m² (within 10 %: the top's own 0.013 m motion adds displacement
 // without curvature; measured 0.519, +6 %, peaks at 2.55 and 7.05 m).
 TEST(RiserPaperCases, CaseFourEnvelopesHaveTheSecondModesShape) {
+  MARIS_RELEASE_ONLY("RiserHardCases.SlowTopMotionGivesLinearDisplacementEnvelope (envelopes of a moved top) with "
+                     "RiserPaperCases.CaseFourFrequenciesMatchTheHeavyRiserReference (the case 4 riser)");
   RiserParameters p = test::builtinParameters("scenarios/riser/riser_paper_case4_forced_top.json");
   RunContext context;
   const Results r = solveRiser(p, context);
