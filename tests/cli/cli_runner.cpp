@@ -10,6 +10,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "source_tree.hpp"
 
 extern char** environ;
 
@@ -28,7 +29,7 @@ CliResult runCli(const std::vector<std::string>& args, const std::string& workin
   const std::string base = "/tmp/maris_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
   const std::string out_file = base + ".out", err_file = base + ".err";
   // A tiny shell wrapper changes directory and redirects, keeping the spawn portable.
-  std::string command = "cd '" + working_dir + "' && " + shell_prefix + " exec '" MARIS_CLI_PATH "'";
+  std::string command = "cd '" + working_dir + "' && " + shell_prefix + " exec '" + maris::test::cliPath() + "'";
   for (const auto& a : args) {
     std::string quoted;
     for (char c : a) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);

@@ -18,7 +18,7 @@ struct CliResult {
   double exit_after_signal_s = -1;  // [s] from the signal to the process's end (-1: no signal sent)
 };
 
-// Runs MARIS_CLI_PATH with `args` in `working_dir`. If interrupt_after_s > 0, sends `signal` after
+// Runs the build's maris-cli (maris::test::cliPath) with `args` in `working_dir`. If interrupt_after_s > 0, sends `signal` after
 // that many seconds (to test cancellation). `shell_prefix` runs in the wrapper shell before the exec
 // (e.g. "ulimit -f 8;").
 CliResult runCli(const std::vector<std::string>& args, const std::string& working_dir = ".",

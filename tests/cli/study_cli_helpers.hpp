@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "core/schema.hpp"
+#include "source_tree.hpp"
 
 extern char** environ;
 
@@ -35,7 +36,7 @@ inline bool contains(const std::string& text, const std::string& piece) { return
 // Starts maris-cli in the background (stdout and stderr to out.txt and err.txt in `dir`). With `own_group`
 // it leads a process group of its own, which then holds its case processes too (kill(-pid, ...) ends all).
 inline pid_t startCli(const std::vector<std::string>& args, const std::filesystem::path& dir, bool own_group = false) {
-  std::vector<std::string> all = {MARIS_CLI_PATH};
+  std::vector<std::string> all = {maris::test::cliPath()};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
@@ -51,7 +52,7 @@ inline pid_t startCli(const std::vector<std::string>& args, const std::filesyste
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
   }
   pid_t pid = 0;
-  ::posix_spawn(&pid, MARIS_CLI_PATH, &files, &attributes, argv.data(), environ);
+  ::posix_spawn(&pid, all.front().c_str(), &files, &attributes, argv.data(), environ);
   posix_spawn_file_actions_destroy(&files);
   posix_spawnattr_destroy(&attributes);
   return pid;

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "cli_runner.hpp"
+#include "source_tree.hpp"
 
 namespace fs = std::filesystem;
 using maris::test::runCli;
@@ -56,7 +57,7 @@ fs::path scratch(const std::string& name) {
 TEST(CliPlotRenderer, MarisCliLinksNoQt) {
   const fs::path dir = scratch("ldd");
   // LD_TRACE_LOADED_OBJECTS makes the dynamic loader list the libraries it would map instead of running.
-  const Shell r = shell(dir, "LD_TRACE_LOADED_OBJECTS=1 '" MARIS_CLI_PATH "'");
+  const Shell r = shell(dir, "LD_TRACE_LOADED_OBJECTS=1 '" + maris::test::cliPath() + "'");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("libc.so"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("libQt"), std::string::npos) << r.out;
@@ -78,7 +79,7 @@ TEST(CliPlotRenderer, ARunWritesItsPlotsThroughTheModule) {
 
 TEST(CliPlotRenderer, WithoutTheModuleARunWithPlotsIsRefusedBeforeTheSolve) {
   const fs::path dir = scratch("missing");
-  fs::copy_file(MARIS_CLI_PATH, dir / "maris-cli");
+  fs::copy_file(maris::test::cliPath(), dir / "maris-cli");
   const Shell refused = shell(dir, "./maris-cli run riser_cantilever_tip_load --set solver.end_time=0 --out out");
   EXPECT_EQ(refused.exit_code, 1) << refused.err;
   EXPECT_NE(refused.err.find("maris_plot_renderer.so"), std::string::npos) << refused.err;

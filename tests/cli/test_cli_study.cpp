@@ -23,6 +23,7 @@
 #include "catalog.hpp"
 #include "cli_runner.hpp"
 #include "study_cli_helpers.hpp"
+#include "source_tree.hpp"
 
 namespace maris {
 namespace {
@@ -268,7 +269,7 @@ TEST_F(CliStudy, FailedAndTimedOutCasesAreRecordedAndTheStudyGoesOn) {
 // The examples in resources/studies are valid wherever they are checked from (their table and base resolve
 // against their folder); the riser grid runs and draws a heat map per result.
 TEST_F(CliStudy, TheExampleStudiesAreValidAndTheGridRuns) {
-  const fs::path examples = fs::path(MARIS_SOURCE_DIR) / "resources" / "studies";
+  const fs::path examples = fs::path(maris::test::sourceDir()) / "resources" / "studies";
   std::vector<std::string> args = {"validate"};
   for (const auto& e : fs::directory_iterator(examples))
     if (e.path().extension() == ".json") args.push_back(e.path().string());

@@ -9,11 +9,12 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include "source_tree.hpp"
 
 namespace maris::test_files {
 
 inline std::string readTestDataFile(const std::string& relative) {
-  const std::string path = std::string(MARIS_SOURCE_DIR) + "/tests/data/" + relative;
+  const std::string path = maris::test::sourceDir() + "/tests/data/" + relative;
   std::ifstream in(path, std::ios::binary);
   if (!in.good()) {
     ADD_FAILURE() << "test data file missing or unreadable: " << path;

@@ -6,6 +6,7 @@
 
 #include "catalog.hpp"
 #include "core/errors.hpp"
+#include "source_tree.hpp"
 
 namespace maris {
 namespace {
@@ -24,7 +25,7 @@ std::string runError(const std::vector<std::string>& assignments) {
 
 TEST(ShipInputLimits, AnOffsetsTableAtTheWrongLengthIsNamed) {
   // kcs_model_offsets.csv spans 7.58 m (Lpp 7.2786 m); offsets_length_pp left at 1 m scaled it 7.3 times.
-  const std::string file = std::string(MARIS_SOURCE_DIR) + "/resources/data/ship/kcs_model_offsets.csv";
+  const std::string file = maris::test::sourceDir() + "/resources/data/ship/kcs_model_offsets.csv";
   const std::string m = runError({"hull.source=offsets_file", "hull.offsets_file=" + file, "hull.offsets_length_pp=1.0"});
   EXPECT_NE(m.find("parameters.hull.offsets_length_pp = 1.0: but the stations of"), std::string::npos) << m;
   EXPECT_NE(m.find("span 7.58335 m"), std::string::npos) << m;

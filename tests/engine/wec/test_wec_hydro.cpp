@@ -10,13 +10,14 @@
 #include "wec/wec_hydro.hpp"
 #include "wec/wec_model.hpp"
 #include "wec/wec_wamit.hpp"
+#include "source_tree.hpp"
 
 using namespace maris::wec;
 
 namespace {
 constexpr double kRho = 1025.0;
 constexpr double kWamitG = 9.80665;  // gravity of the WAMIT run
-const std::string kSphere = std::string(MARIS_SOURCE_DIR) + "/tests/engine/wec/data/sphere";
+const std::string kSphere = maris::test::sourceDir() + "/tests/engine/wec/data/sphere";
 double volume(double a) { return 2.0 / 3.0 * std::numbers::pi * a * a * a; }
 }  // namespace
 

@@ -19,6 +19,7 @@
 #include "wec/wec_nemoh.hpp"
 #include "wec/wec_wamit.hpp"
 #include "wec_test_models.hpp"
+#include "source_tree.hpp"
 
 using namespace maris::wec;
 namespace fs = std::filesystem;
@@ -26,7 +27,7 @@ namespace fs = std::filesystem;
 namespace {
 constexpr double kRho = 1025.0;
 constexpr double kWamitG = 9.80665;  // gravity of the WAMIT run
-const std::string kSphere = std::string(MARIS_SOURCE_DIR) + "/tests/engine/wec/data/sphere";
+const std::string kSphere = maris::test::sourceDir() + "/tests/engine/wec/data/sphere";
 
 std::string num(double v) {
   char buf[40];
