@@ -266,11 +266,9 @@ void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
       pivot -= ws.lower[k] * ws.pivot_upper[k - 1];
       r -= ws.lower[k] * ws.reaction[f + k - 1];
     }
-    // The pivot's inverse by cofactors (Eigen's closed form for 3×3) and two products: an LU's solves with a 3×3
-    // right side ran Eigen's general blocked triangular kernels, 16 % of the right-hand side.
-    const Mat3 inverse = pivot.inverse();
-    ws.pivot_upper[k].noalias() = inverse * ws.upper[k];
-    ws.reaction[f + k].noalias() = inverse * r;
+    const Eigen::PartialPivLU<Mat3> lu(pivot);
+    ws.pivot_upper[k] = lu.solve(ws.upper[k]);
+    ws.reaction[f + k] = lu.solve(r);
   }
   for (int k = nb - 2; k >= 0; --k) ws.reaction[f + k] -= ws.pivot_upper[k] * ws.reaction[f + k + 1];
 }

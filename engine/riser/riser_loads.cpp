@@ -88,14 +88,12 @@ void addGravityAndBuoyancy(const RiserModel& m, const RiserPose& pose, double fa
 }
 
 void addDrag(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
-  // One speed and one heading at every depth (the peer riser's current): the current is the same vector at every
-  // point below the water (CurrentProfile::at computes s_k + f·0 and the same (cos, sin)), so it is turned to each
-  // segment's frame once, not looked up and turned at each Gauss point; the numbers are the same bit for bit.
-  const CurrentProfile& profile = m.current_profile;
-  const bool uniform = !profile.speed.empty() &&
-                       std::all_of(profile.speed.begin(), profile.speed.end(), [&](double s) { return s == profile.speed[0]; }) &&
-                       std::all_of(profile.heading.begin(), profile.heading.end(), [&](double h) { return h == profile.heading[0]; });
-  const Vec3 uniform_current = uniform ? m.currentAt(m.water_level) : Vec3::Zero();
+  // One speed and one heading at every depth (the peer riser's current; m.current_is_uniform, set by buildRiserModel):
+  // the current is the same vector at every point below the water (CurrentProfile::at computes s_k + f·0 and the
+  // same (cos, sin)), so it is turned to each segment's frame once, not looked up and turned at each Gauss point;
+  // the numbers are the same bit for bit.
+  const bool uniform = m.current_is_uniform;
+  const Vec3& uniform_current = m.current_uniform;
   for (int i = 0; i <= m.n; ++i) {
     const Segment& seg = m.segments[i];
     if (seg.normal_drag == 0.0 && seg.tangential_drag == 0.0) continue;
