@@ -6,8 +6,6 @@
 
 #include <Eigen/LU>
 
-#include "riser/riser_inverse_mass.hpp"
-
 namespace maris::riser {
 namespace {
 
@@ -155,10 +153,15 @@ void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, Rise
 namespace {
 // W_i = M_i⁻¹ of the dynamic segments in the global frame at ws.pose.
 void updateInverseMasses(const RiserModel& m, RiserWorkspace& ws) {
-  // From the tangent alone (riser_inverse_mass): segmentMass builds every segment's mass axisymmetric.
-  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i)
-    rotateInverseMass(axisymmetricCoefficients(m.segments[i].inverse_mass_local), ws.pose.rotation[i].col(0),
-                      ws.inverse_mass[i]);
+  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
+    const Mat3& r = ws.pose.rotation[i];
+    const Mat6& wl = m.segments[i].inverse_mass_local;
+    Mat6& w = ws.inverse_mass[i];
+    w.topLeftCorner<3, 3>() = r * wl.topLeftCorner<3, 3>() * r.transpose();
+    w.topRightCorner<3, 3>() = r * wl.topRightCorner<3, 3>() * r.transpose();
+    w.bottomLeftCorner<3, 3>() = w.topRightCorner<3, 3>().transpose();
+    w.bottomRightCorner<3, 3>() = r * wl.bottomRightCorner<3, 3>() * r.transpose();
+  }
 }
 }  // namespace
 

@@ -88,12 +88,6 @@ void addGravityAndBuoyancy(const RiserModel& m, const RiserPose& pose, double fa
 }
 
 void addDrag(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
-  // One speed and one heading at every depth (the peer riser's current; m.current_is_uniform, set by buildRiserModel):
-  // the current is the same vector at every point below the water (CurrentProfile::at computes s_k + f·0 and the
-  // same (cos, sin)), so it is turned to each segment's frame once, not looked up and turned at each Gauss point;
-  // the numbers are the same bit for bit.
-  const bool uniform = m.current_is_uniform;
-  const Vec3& uniform_current = m.current_uniform;
   for (int i = 0; i <= m.n; ++i) {
     const Segment& seg = m.segments[i];
     if (seg.normal_drag == 0.0 && seg.tangential_drag == 0.0) continue;
@@ -103,14 +97,13 @@ void addDrag(const RiserModel& m, const RiserPose& pose, double factor, SegmentL
     // force's moment ξ e_x × f, both summed over the points and turned to the global frame once (two products
     // with R per segment instead of two per point: addDrag was the largest item of the profile).
     const Vec3 velocity_local = r.transpose() * pose.velocity[i], omega_local = r.transpose() * pose.omega[i];
-    const Vec3 uniform_local = r.transpose() * uniform_current;
     Vec3 force_local = Vec3::Zero(), moment_local = Vec3::Zero();
     for (int q = 0; q < 3; ++q) {
       const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
       const double z = pose.position[i].z() + xi * t.z();
       if (z > m.water_level) continue;
       const Vec3 v = velocity_local + xi * Vec3(0.0, omega_local.z(), -omega_local.y());
-      const Vec3 current_local = uniform ? uniform_local : Vec3(r.transpose() * m.currentAt(z));
+      const Vec3 current_local = r.transpose() * m.currentAt(z);
       const Vec3 local = v - current_local;
       const double vn = std::sqrt(local.y() * local.y() + local.z() * local.z());
       const Vec3 f = factor * w *

@@ -270,14 +270,6 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   m.current_seabed = p.current_speed_seabed;
   m.current_direction = radiansFromDegrees(p.current_direction_deg);
   m.current_profile = buildCurrentProfile(p);
-  {
-    const CurrentProfile& c = m.current_profile;
-    const auto same = [](const std::vector<double>& v) {
-      return std::all_of(v.begin(), v.end(), [&](double x) { return x == v[0]; });
-    };
-    m.current_is_uniform = !c.speed.empty() && same(c.speed) && same(c.heading);
-    if (m.current_is_uniform) m.current_uniform = m.currentAt(m.water_level);
-  }
   m.point_loads = p.point_loads;
   m.sea = buildRiserSea(p);
   m.seabed = buildRiserSeabed(p);

@@ -123,9 +123,6 @@ struct RiserModel {
   double flow_speed = 0.0;                     // [m/s] u of the internal flow (eqs 43-52)
   double current_surface = 0.0, current_seabed = 0.0, current_direction = 0.0;  // [m/s], [m/s], [rad]
   CurrentProfile current_profile;              // what currentAt evaluates (riser_current.hpp)
-  // One speed and one heading at every depth: currentAt is current_uniform at every point below the water.
-  bool current_is_uniform = false;
-  Vec3 current_uniform = Vec3::Zero();  // [m/s] when current_is_uniform
   std::vector<PointLoadRow> point_loads;
   std::shared_ptr<const RiserSea> sea;                  // waves (riser_waves.hpp); null: none
   std::shared_ptr<const RiserSeabed> seabed;            // sea-bed contact (riser_seabed.hpp); null: none
