@@ -9,7 +9,7 @@
 // can be created and written, that the target is not a file, not a foreign folder and not another run's
 // folder (unless `replace`), that no other run is writing it (an exclusive flock on the sibling lock
 // file `.NAME.lock`, kept for the object's life) and that the file system has room for the expected
-// output. Files go into the hidden sibling `.NAME.partial-PID`; commit() renames it onto NAME (an
+// output. Files go into the hidden sibling `.NAME.partial`; commit() renames it onto NAME (an
 // existing run is swapped out atomically and then removed). An uncommitted folder (error, cancellation)
 // is removed by the destructor, and stale staging folders of killed runs are removed by the next run.
 #pragma once

@@ -15,6 +15,7 @@
 
 #include "catalog.hpp"
 #include "cli_runner.hpp"
+#include "scratch_folder.hpp"
 
 namespace maris {
 namespace {
@@ -31,10 +32,7 @@ class CliRunFolder : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!findBuiltin("riser_default")) GTEST_SKIP() << "needs the riser scene";
-    root_ = fs::temp_directory_path() / ("maris_cli_folder_" + std::to_string(::getpid()) + "_" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    root_ = test::freshTestFolder("maris_cli_folder_");
   }
   void TearDown() override {
     if (!mounted_.empty()) std::system(("umount '" + mounted_.string() + "' 2>/dev/null").c_str());

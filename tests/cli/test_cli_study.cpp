@@ -24,6 +24,7 @@
 #include "cli_runner.hpp"
 #include "study_cli_helpers.hpp"
 #include "source_tree.hpp"
+#include "scratch_folder.hpp"
 
 namespace maris {
 namespace {
@@ -66,10 +67,7 @@ class CliStudy : public ::testing::Test {
   void SetUp() override {
     if (!findBuiltin("riser_cantilever_tip_load") || !findBuiltin("ship_default"))
       GTEST_SKIP() << "needs the riser and ship scenes";
-    dir_ = fs::temp_directory_path() / ("maris_cli_study_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = test::freshTestFolder("maris_cli_study_");
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;

@@ -18,6 +18,7 @@
 #include "catalog.hpp"
 #include "cli_runner.hpp"
 #include "study_cli_helpers.hpp"
+#include "scratch_folder.hpp"
 
 namespace maris {
 namespace {
@@ -34,21 +35,18 @@ class CliStudyResume : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!findBuiltin(test::kQuickBuiltin)) GTEST_SKIP() << "needs the riser scene";
-    dir_ = fs::temp_directory_path() / ("maris_cli_study_resume_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = test::freshTestFolder("maris_cli_study_resume_");
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
 };
 
-// Entries of `cases` that are a run's staging or set-aside folder (.NNNN.partial-PID, .NNNN.old-PID).
+// Entries of `cases` that are a run's staging or set-aside folder (.NNNN.partial, .NNNN.old).
 std::vector<std::string> stagingFolders(const fs::path& cases) {
   std::vector<std::string> found;
   for (const auto& e : fs::directory_iterator(cases)) {
-    const std::string name = e.path().filename().string();
-    if (contains(name, ".partial-") || contains(name, ".old-")) found.push_back(name);
+    const fs::path name = e.path().filename();
+    if (name.extension() == ".partial" || name.extension() == ".old") found.push_back(name.string());
   }
   return found;
 }

@@ -10,6 +10,7 @@
 
 #include "core/run_folder.hpp"
 #include "core/scenario.hpp"
+#include "scratch_folder.hpp"
 
 namespace maris {
 namespace {
@@ -19,10 +20,7 @@ namespace fs = std::filesystem;
 class RunFolderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() / ("maris_run_folder_" + std::to_string(::getpid()) + "_" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    root_ = test::freshTestFolder("maris_run_folder_");
   }
   void TearDown() override { fs::remove_all(root_); }
 
@@ -139,13 +137,18 @@ TEST_F(RunFolderTest, TheLockIsAnFlockOnTheSiblingLockFile) {
 }
 
 TEST_F(RunFolderTest, StagingFoldersOfAKilledRunAreRemovedByTheNext) {
-  fs::create_directories(root_ / ".out.partial-999999");
-  fs::create_directories(root_ / ".out.old-999999");
-  fs::create_directories(root_ / ".other.partial-999999");
+  // What a run killed while writing (.out.partial) or while swapping an earlier run aside (.out.old) leaves.
+  fakeRun(root_ / ".out.partial", "killed");
+  fakeRun(root_ / ".out.old", "earlier");
+  fs::create_directories(root_ / ".other.partial");
   RunFolder folder(root_ / "out");
+  EXPECT_EQ(folder.staging(), root_ / ".out.partial");
+  EXPECT_FALSE(fs::exists(folder.staging() / "killed.csv")) << "a killed run's files mixed into the new run";
+  EXPECT_FALSE(fs::exists(root_ / ".out.old"));
   fakeRun(folder.staging(), "new");
   folder.commit();
-  EXPECT_EQ(entries(), (std::vector<std::string>{".other.partial-999999", "out"}));
+  EXPECT_EQ(entries(), (std::vector<std::string>{".other.partial", "out"}));
+  EXPECT_FALSE(fs::exists(root_ / "out" / "killed.csv"));
 }
 
 TEST_F(RunFolderTest, TooLittleFreeSpaceIsRefusedBeforeTheRun) {
