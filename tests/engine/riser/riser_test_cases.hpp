@@ -80,6 +80,27 @@ inline RiserParameters chainInAir(int n) {
   return p;
 }
 
+// The pinned-pinned tensioned beam of eq (66) of the segment-method paper, n segments: L = 10 m, m* = 1 kg/m,
+// EI = 1000 N·m², T = 100 N, in air without gravity, no torsion, no added mass.
+inline RiserParameters tensionedBeam(int n) {
+  RiserParameters p = calmInAir();
+  p.length = 10.0;
+  p.segment_count = n;
+  p.outer_diameter = 0.1;
+  p.inner_diameter = 0.0;
+  p.added_mass_coefficient = 0.0;
+  p.density = 1.0 / (kPi / 4 * 0.01);             // m* = 1 kg/m
+  p.youngs_modulus = 1000.0 / (kPi / 64 * 1e-4);  // EI = 1000 N·m²
+  p.torsion = false;
+  p.gravity = 0.0;
+  p.top_condition = "tensioner";
+  p.top_tension = 100.0;
+  p.top_z = 0.0;
+  p.bottom_condition = "pinned";
+  p.bottom_z = -10.0;
+  return p;
+}
+
 // Horizontal cantilever of length L clamped at the origin along +x, weightless, with a dead tip force
 // -P e_z. EI of the default steel tube (D 0.1 / 0.08 m).
 inline RiserParameters tipLoadedCantilever(int n, double tip_force, double length = 10.0) {

@@ -65,27 +65,6 @@ RiserParameters defaultRiser(int n) {
   return p;
 }
 
-// The tensioned beam of eq (66) (test_riser_modes.cpp): L = 10 m, m* = 1 kg/m, EI = 1000 N·m², T = 100 N, pinned
-// at both ends, in air without gravity, no torsion.
-RiserParameters tensionedBeam(int n) {
-  RiserParameters p = test::calmInAir();
-  p.length = 10.0;
-  p.segment_count = n;
-  p.outer_diameter = 0.1;
-  p.inner_diameter = 0.0;
-  p.added_mass_coefficient = 0.0;
-  p.density = 1.0 / (kPi / 4 * 0.01);
-  p.youngs_modulus = 1000.0 / (kPi / 64 * 1e-4);
-  p.torsion = false;
-  p.gravity = 0.0;
-  p.top_condition = "tensioner";
-  p.top_tension = 100.0;
-  p.top_z = 0.0;
-  p.bottom_condition = "pinned";
-  p.bottom_z = -10.0;
-  return p;
-}
-
 // Lowest `count` frequencies of the pencil by a dense solve: the null space Z of C (column-pivoted QR of Cᵀ), then
 // the eigenvalues of (ZᵀMZ)⁻¹ ZᵀKZ, positive real ones above the free motions.
 std::vector<double> denseFrequencies(const DensePencil& pencil, int count) {
@@ -178,7 +157,7 @@ TEST(RiserModesKrylov, FindsBothMembersOfEqualFrequencyPairs) {
 TEST(RiserModesKrylov, ConvergesAtSecondOrderInTheSegmentCount) {
   std::vector<double> w;
   for (int n : {40, 80, 160, 320}) {
-    const Solved s = solved(tensionedBeam(n));
+    const Solved s = solved(test::tensionedBeam(n));
     RunContext context;
     w.push_back(computeModesKrylov(s.model, s.statics, 1, context).frequencies.at(0));
   }
