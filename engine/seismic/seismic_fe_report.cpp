@@ -8,7 +8,9 @@
 #include <complex>
 #include <numeric>
 
+#include "core/errors.hpp"
 #include "core/spectrum.hpp"
+#include "core/text_format.hpp"
 #include "seismic/seismic_outline.hpp"
 #include "seismic/seismic_solve.hpp"
 
@@ -37,6 +39,13 @@ PeakRatios amplificationRatios(const FeCase& c) {
   const double dt = c.time_step;
   const auto v0 = timeRate(c.incident, dt), a0 = timeRate(v0, dt);
   const double ru = 2.0 * peak(c.incident), rv = 2.0 * peak(v0), ra = 2.0 * peak(a0);
+  // A run that ends before the incident wave reaches the seabed origin has no reference motion: every ratio
+  // would be 0/0. That is a duration too short for the model, not a solver failure.
+  if (!(ru > 0.0 && rv > 0.0 && ra > 0.0))
+    throw InputError("solver.duration", formatText("%.4g", static_cast<double>(c.steps) * dt) + " s",
+                     "ends before the incident wave reaches the seabed origin at incidence " +
+                         formatText("%.4g", c.angle_deg) +
+                         " deg, so there is no reference motion for the peak ratios: simulate longer");
   PeakRatios r;
   for (std::size_t s = 0; s < c.ux.size(); ++s) {
     const auto vx = timeRate(c.ux[s], dt), vy = timeRate(c.uy[s], dt);
@@ -46,6 +55,12 @@ PeakRatios amplificationRatios(const FeCase& c) {
     r.vy.push_back(peak(vy) / rv);
     r.ax.push_back(peak(timeRate(vx, dt)) / ra);
     r.ay.push_back(peak(timeRate(vy, dt)) / ra);
+    // The water's effect δ divides by these ratios: a station the wave has not reached is the same short
+    // duration, not a result.
+    if (!(r.ax.back() > 0.0))
+      throw InputError("solver.duration", formatText("%.4g", static_cast<double>(c.steps) * dt) + " s",
+                       "ends before the wave reaches the station at x = " + formatText("%.4g", c.station_x[s]) +
+                           " m (incidence " + formatText("%.4g", c.angle_deg) + " deg): simulate longer");
   }
   return r;
 }

@@ -52,6 +52,26 @@ TEST(SeismicScene, SvBeyondCriticalAngleIsAcceptedAndFlagged) {
   EXPECT_LT(r.findScalar("free_field_precursor_at_start")->value, 0.01);
 }
 
+// A duration that ends before the incident wave reaches the seabed origin leaves no reference motion (every peak
+// ratio 0/0): the run ends with an input error naming solver.duration, never with NaN results.
+TEST(SeismicScene, DurationEndingBeforeTheWaveArrivesIsAnInputError) {
+  for (const char* id : {"seismic_default", "seismic_synthetic_record"}) {
+    auto s = findBuiltin(id)->scenario;
+    s.parameters["solver"]["duration"] = 0.1;
+    s.parameters["output"]["snapshot_count"] = 0;
+    const auto& scene = requireScene("seismic");
+    ASSERT_TRUE(validateParameters(scene, s.parameters).empty()) << id;
+    RunContext ctx;
+    try {
+      scene.run(s.parameters, ctx);
+      ADD_FAILURE() << id << ": no error";
+    } catch (const InputError& e) {
+      ASSERT_FALSE(e.errors().empty());
+      EXPECT_NE(e.errors()[0].path.find("solver.duration"), std::string::npos) << id << ": " << e.what();
+    }
+  }
+}
+
 TEST(SeismicScene, TooFineMeshIsAFieldError) {
   auto s = findBuiltin("seismic_default")->scenario;
   s.parameters["solver"]["cutoff_frequency"] = 40.0;
