@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "core/dense_decompositions.hpp"
 #include "core/text_format.hpp"
 #include "riser/riser_dynamics.hpp"
 

@@ -6,6 +6,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "core/dense_decompositions.hpp"
+
 namespace maris::riser {
 namespace {
 

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
+#include "core/dense_decompositions.hpp"
 #include "core/errors.hpp"
 #include "seismic/fe_modes_detail.hpp"
 
