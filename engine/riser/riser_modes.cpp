@@ -9,7 +9,6 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
-#include "core/dense_decompositions.hpp"
 #include "core/text_format.hpp"
 #include "riser/riser_dynamics.hpp"
 

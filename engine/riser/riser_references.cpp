@@ -6,8 +6,6 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "core/dense_decompositions.hpp"
-
 namespace maris::riser {
 namespace {
 

@@ -6,7 +6,6 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 
-#include "core/dense_decompositions.hpp"
 #include "core/errors.hpp"
 #include "core/least_squares.hpp"
 #include "core/text_format.hpp"

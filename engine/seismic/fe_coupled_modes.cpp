@@ -9,7 +9,6 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
-#include "core/dense_decompositions.hpp"
 #include "core/errors.hpp"
 #include "seismic/fe_modes_detail.hpp"
 

@@ -6,8 +6,6 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 
-#include "core/dense_decompositions.hpp"
-
 namespace maris::tether {
 
 DampedInverse dampedPseudoInverse(const Eigen::MatrixXd& matrix, double threshold, double max_damping) {

@@ -8,7 +8,6 @@
 #include <Eigen/Dense>
 #include <Eigen/SVD>
 
-#include "core/dense_decompositions.hpp"
 #include "core/checked_count.hpp"
 
 namespace maris::wec {
