@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages Maris needs to build, test and run (uses sudo when not root).
 set -euo pipefail
 packages=(
-  build-essential cmake ninja-build ccache pkg-config
+  build-essential cmake ninja-build ccache pkg-config lld
   qt6-base-dev libqt6opengl6-dev libqt6svg6-dev qt6-qpa-plugins
   libvtk9-dev libeigen3-dev libfftw3-dev libqcustomplot-dev nlohmann-json3-dev libcli11-dev
   libspectra-dev
