@@ -7,15 +7,7 @@
 
 #include <gtest/gtest.h>
 
-namespace maris::test {
-
-#if defined(__SANITIZE_ADDRESS__)
-inline constexpr bool kSanitizedBuild = true;
-#else
-inline constexpr bool kSanitizedBuild = false;
-#endif
-
-}  // namespace maris::test
+#include "sanitized_build.hpp"
 
 // `covered_by`: the test (Suite.Name) that runs the same code paths under the sanitizers.
 #define MARIS_RELEASE_ONLY(covered_by)                                                                   \

@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Deterministic, seeded mutation fuzzer for `maris-cli run` (Python 3 standard library only).
 
-Seeds are every built-in scenario (`maris-cli list`, `maris-cli show NAME`). Each mutant (see
-mutators.py: deleted keys, swapped types, extreme numbers, huge arrays, deep nesting, long strings,
-duplicate keys, garbage bytes, FIFOs / devices / folders / link loops, broken data files, bad --set)
-runs as `maris-cli run FILE [--set ...] --out DIR --no-plots` in its own folder under a per-case time
+Seeds are every built-in scenario (`maris-cli list`, `maris-cli show NAME`), each as a short copy
+(short_runs.py: short simulated time, coarse grid; a valid mutant runs to its end and its output is
+checked). Each mutant (see mutators.py: deleted keys, swapped types, extreme numbers, huge arrays, deep
+nesting, long strings, duplicate keys, garbage bytes, FIFOs / devices / folders / link loops, broken data
+files, bad --set) runs as `maris-cli run FILE [--set ...] --out DIR --no-plots` in its own folder under a per-case time
 limit. Outcomes:
 
   accepted: ok (exit 0, finite summary.json and CSVs), input-error (exit 2 naming a field or file),
@@ -36,6 +37,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mutators  # noqa: E402
+import short_runs  # noqa: E402
 
 ACCEPTED = ("ok", "input-error", "solver-error", "slow-cancelled")
 SANITIZER = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:|UndefinedBehaviorSanitizer")
@@ -107,8 +109,10 @@ def classify(result, out_dir):
         return "sanitizer"
     if result["killed"]:
         return "hang"
-    if result["interrupted"]:
-        return "slow-cancelled" if code == 130 else "hang"
+    if result["interrupted"] and code == 130:
+        return "slow-cancelled"
+    # Any other exit after SIGINT: the run reached its own end (results, an input or solver error) before its
+    # next cancellation check, within the grace; it is judged as that end.
     if code < 0:
         return "crash"
     if LIBRARY_TEXT.search(stderr):
@@ -153,17 +157,15 @@ def materialise(case, case_dir):
     return target
 
 
-def load_seeds(cli, env):
-    names = []
+def load_seeds(cli, env, pool):
+    """Every built-in scenario, parsed."""
     listing = subprocess.run([cli, "list"], capture_output=True, text=True, env=env, timeout=120, check=True).stdout
-    for line in listing.splitlines()[1:]:
-        if line.strip():
-            names.append(line.split()[0])
-    seeds = {}
-    for n in names:
-        text = subprocess.run([cli, "show", n], capture_output=True, text=True, env=env, timeout=120, check=True).stdout
-        seeds[n] = json.loads(text)
-    return seeds
+    names = [line.split()[0] for line in listing.splitlines()[1:] if line.strip()]
+
+    def show(name):
+        text = subprocess.run([cli, "show", name], capture_output=True, text=True, env=env, timeout=120, check=True).stdout
+        return json.loads(text)
+    return dict(zip(names, pool.map(show, names)))
 
 
 def main():
@@ -188,7 +190,8 @@ def main():
     cli = os.path.abspath(args.cli)
     work = args.work or tempfile.mkdtemp(prefix="maris-fuzz-")
     os.makedirs(work, exist_ok=True)
-    seeds = load_seeds(cli, env)
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs)
+    seeds, full_size = short_runs.short_seeds(cli, env, load_seeds(cli, env, pool), os.path.join(work, "seeds"))
     names = sorted(seeds)
 
     def one(index):
@@ -213,7 +216,7 @@ def main():
         return record
 
     t0 = time.monotonic()
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+    with pool:
         records = list(pool.map(one, range(args.count)))
     with open(os.path.join(work, "results.jsonl"), "w") as f:
         for r in records:
@@ -223,6 +226,8 @@ def main():
     scenes = sorted({r["scene"] for r in records})
     print(f"{args.count} mutants of {len(names)} built-in scenarios, seed {args.seed}, "
           f"{time.monotonic() - t0:.0f} s; work folder {work}")
+    if full_size:
+        print("at full size (their short copies are invalid): " + ", ".join(full_size))
     print("| scene | " + " | ".join(outcomes) + " |")
     print("|---|" + "---|" * len(outcomes))
     for s in scenes + ["all"]:

@@ -13,6 +13,7 @@
 
 #include "catalog.hpp"
 #include "core/run_context.hpp"
+#include "example_runs.hpp"
 #include "test_scene.hpp"
 #include "ui_test_support.hpp"
 #include "view3d/scene_view.hpp"
@@ -60,11 +61,7 @@ class FramingTest : public QObject {
     reused.show();
     QVERIFY(QTest::qWaitForWindowExposed(&reused));
     int shown = 0;
-    for (const auto& b : builtinScenarios()) {
-#if defined(__SANITIZE_ADDRESS__)
-      // Under the sanitizers only each scene's main example runs (the others cost minutes there).
-      if (b.id != b.scenario.scene + "_default") continue;
-#endif
+    for (const auto& b : test::uiTestExamples()) {  // under the sanitizers each scene's main example, shortened
       const auto results = runBuiltin(b);
       if (results->view.empty()) continue;
       ++shown;

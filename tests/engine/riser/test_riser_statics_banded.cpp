@@ -120,8 +120,10 @@ TEST(RiserStaticsBanded, ThousandLinkChainMatchesTheCatenaryToTheDiscretisationE
 // midpoints of n = 25 (dense), 50, 100, 200 (relaxed) and 400 (Newton alone) converge as one sequence.
 TEST(RiserStaticsBanded, SlackCableHeldAtBothEndsIsFoundByDynamicRelaxation) {
   std::vector<Vec3> middle;
-  // Under the sanitizers n = 25 (dense) and 50 (relaxed, then Newton, against the dense Newton) run every code
-  // path of the test; the sequence up to n = 400 and its convergence are checked in the Release build.
+  // Under the sanitizers n = 25 (dense) and 50 (relaxed, then Newton) run every code path of the test; the
+  // sequence up to n = 400 and its convergence are checked in the Release build, and so is the comparison
+  // of n = 50 with the dense Newton (numbers, no new code path: the dense path runs at n = 25; it takes 3 s in
+  // Release and 2 to 3 minutes under the sanitizers).
   const std::vector<int> counts =
       ::maris::test::kSanitizedBuild ? std::vector<int>{25, 50} : std::vector<int>{25, 50, 100, 200, 400};
   for (int n : counts) {
@@ -144,7 +146,7 @@ TEST(RiserStaticsBanded, SlackCableHeldAtBothEndsIsFoundByDynamicRelaxation) {
     const auto joints = jointPositions(m, s);
     EXPECT_LT((joints.back() - m.anchor).norm(), 1e-9) << n;
     middle.push_back(joints[n / 2]);
-    if (n == 50) {
+    if (n == 50 && !::maris::test::kSanitizedBuild) {
       RunContext dense_context;
       const auto dense = jointPositions(m, solveStatics(m, dense_context, StaticMethod::Dense));
       double largest = 0.0;

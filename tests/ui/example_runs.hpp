@@ -1,0 +1,38 @@
+// Every scene's example scenario as ui.framing and ui.labels run it. In Release, each built-in scenario as it
+// is. Under AddressSanitizer and UndefinedBehaviorSanitizer (10 to 20 times slower) only each scene's main
+// example, and those whose full run costs tens of seconds there with a shorter simulated time, a coarser sweep
+// or a coarser mesh: `maris-cli run` writes the same tables (the riser's profiles at other times) and the same
+// scalars for these as for the full examples, and the model is the same, which is what the two tests read.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "catalog.hpp"
+#include "sanitized_build.hpp"
+
+namespace maris::test {
+
+// The examples to run: all in Release; under the sanitizers each scene's "<scene>_default", made cheaper.
+inline std::vector<BuiltinScenario> uiTestExamples() {
+  if (!kSanitizedBuild) return builtinScenarios();
+  // Their full runs under the sanitizers: riser 28 s, seismic over 40 s, ship 13 s (ui.framing took 112 s and
+  // ui.labels 102 s with them, 19 s and 15 s with these).
+  const std::vector<std::pair<std::string, Json>> reductions = {
+      {"riser_default", {{"solver", {{"end_time", 2.0}}}, {"output", {{"stress_times", Json::array({1.0, 2.0})}}}}},
+      {"seismic_default", {{"solver", {{"duration", 1.5}, {"cutoff_frequency", 2.5}}}}},
+      {"ship_default", {{"speed", {{"count", 26}}}}},
+  };
+  std::vector<BuiltinScenario> out;
+  for (const BuiltinScenario& b : builtinScenarios()) {
+    if (b.id != b.scenario.scene + "_default") continue;
+    BuiltinScenario reduced = b;
+    for (const auto& [id, patch] : reductions)
+      if (id == b.id) reduced.scenario.parameters.merge_patch(patch);
+    out.push_back(std::move(reduced));
+  }
+  return out;
+}
+
+}  // namespace maris::test
