@@ -3,12 +3,9 @@
 
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <mutex>
 #include <numbers>
 #include <sstream>
 
-#include "core/ocean_kinematics_batch.hpp"
 #include "riser/riser_loads.hpp"
 #include "riser/riser_model.hpp"
 
@@ -30,31 +27,6 @@ std::string num(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
-}
-
-// Batched kinematics of the live seas, by sea (registered by buildRiserSea, removed when the sea is deleted).
-struct RegisteredBatch {
-  std::shared_ptr<const ocean::WaveKinematicsBatch> batch;
-  std::uint64_t id = 0;
-};
-std::mutex registry_mutex;
-std::map<const RiserSea*, RegisteredBatch> registry;
-std::uint64_t last_id = 0;
-
-void registerBatch(const RiserSea* sea, std::shared_ptr<const ocean::WaveKinematicsBatch> batch) {
-  const std::lock_guard<std::mutex> lock(registry_mutex);
-  registry[sea] = {std::move(batch), ++last_id};
-}
-
-void unregisterBatch(const RiserSea* sea) {
-  const std::lock_guard<std::mutex> lock(registry_mutex);
-  registry.erase(sea);
-}
-
-RegisteredBatch registeredBatch(const RiserSea* sea) {
-  const std::lock_guard<std::mutex> lock(registry_mutex);
-  const auto it = registry.find(sea);
-  return it == registry.end() ? RegisteredBatch{} : it->second;
 }
 
 ocean::WaveSpectrum spectrumOf(const RiserParameters& p) {
@@ -142,12 +114,7 @@ ocean::FluidKinematics RiserSea::at(const Eigen::Vector3d& point, double t) cons
 
 std::shared_ptr<const RiserSea> buildRiserSea(const RiserParameters& p) {
   if (p.wave_type == "none") return nullptr;
-  // The sea's batched kinematics are registered for its lifetime (riser_waves.hpp is included everywhere, so
-  // RiserSea keeps its layout; the registry is the batch's home).
-  std::shared_ptr<RiserSea> sea(new RiserSea, [](RiserSea* s) {
-    unregisterBatch(s);
-    delete s;
-  });
+  auto sea = std::make_shared<RiserSea>();
   const double depth = p.water_level - p.seabed_level, direction = p.wave_direction_deg * kDegree;
   const auto stretching = p.wave_stretching == "vertical" ? ocean::Stretching::Vertical : ocean::Stretching::Wheeler;
   if (p.wave_type == "airy") {
@@ -163,23 +130,24 @@ std::shared_ptr<const RiserSea> buildRiserSea(const RiserParameters& p) {
   sea->ramp_time = p.wave_ramp_time;
   sea->elevation_x = p.wave_elevation_x;
   sea->elevation_y = p.wave_elevation_y;
-  registerBatch(sea.get(), std::make_shared<const ocean::WaveKinematicsBatch>(sea->field, direction, p.gravity));
+  sea->batch = std::make_shared<const ocean::WaveKinematicsBatch>(sea->field, direction, p.gravity);
   return sea;
 }
 
 namespace {
 
-// Per thread: the Gauss points, their kinematics and the batch's scratch (time phases of the last time, for the
-// batch `owner`: a unique number per registered batch, so another sea never reuses them).
+// Per thread: the Gauss points, their kinematics and the batch's scratch (the time phases of the last time, valid
+// for the batch `owner` only; the weak reference keeps the batch's memory block, so a later batch never gets its
+// address while the scratch refers to it).
 struct WaveLoadScratch {
-  std::uint64_t owner = 0;
+  std::weak_ptr<const ocean::WaveKinematicsBatch> owner;
   std::vector<Eigen::Vector3d> points;
   std::vector<ocean::FluidKinematics> fluid;
   ocean::WaveKinematicsBatch::Scratch batch;
 };
 
 // The kinematics at the Gauss points of pose at its time into scratch.fluid (calm water before the ramp starts;
-// point by point for a sea without a registered batch).
+// point by point for a sea without a batch).
 void waveKinematicsAtGaussPoints(const RiserModel& m, const RiserPose& pose, WaveLoadScratch& scratch) {
   const RiserSea& sea = *m.sea;
   const std::size_t count = 3 * static_cast<std::size_t>(m.n + 1);
@@ -190,15 +158,16 @@ void waveKinematicsAtGaussPoints(const RiserModel& m, const RiserPose& pose, Wav
     for (int q = 0; q < 3; ++q) scratch.points[3 * i + q] = pose.position[i] + kGaussX[q] * m.segments[i].length * t;
   }
   const double t = pose.time, r = sea.ramp(t);
-  const RegisteredBatch batch = registeredBatch(&sea);
-  if (r == 0.0 || !batch.batch) {
+  const ocean::WaveKinematicsBatch* batch = sea.batch.get();
+  if (r == 0.0 || batch == nullptr) {
     for (std::size_t k = 0; k < count; ++k) scratch.fluid[k] = sea.at(scratch.points[k], t);
     return;
   }
-  if (scratch.owner != batch.id) scratch.batch = {}, scratch.owner = batch.id;
+  if (scratch.owner.owner_before(sea.batch) || sea.batch.owner_before(scratch.owner))
+    scratch.batch = {}, scratch.owner = sea.batch;
   const Eigen::Vector3d level(0.0, 0.0, sea.water_level);
   for (auto& p : scratch.points) p -= level;  // the field's z = 0 is the still-water level
-  batch.batch->evaluate(scratch.points.data(), count, t, r, sea.rampRate(t), scratch.batch, scratch.fluid.data());
+  batch->evaluate(scratch.points.data(), count, t, r, sea.rampRate(t), scratch.batch, scratch.fluid.data());
   for (auto& p : scratch.points) p += level;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/ocean_kinematics_batch.hpp"
 #include "core/ocean_waves.hpp"
 #include "core/schema_binder.hpp"
 #include "riser/riser_parameters.hpp"
@@ -21,9 +22,11 @@ struct RiserModel;
 struct RiserPose;
 struct SegmentLoads;
 
-// The sea of a riser model: the wave field with z measured from the still-water level, and its start-up ramp.
+// The sea of a riser model: the wave field with z measured from the still-water level, its start-up ramp, and
+// the batched evaluator of the field that the Morison loads use.
 struct RiserSea {
   ocean::WaveField field;
+  std::shared_ptr<const ocean::WaveKinematicsBatch> batch;  // of `field`; null: point by point (sea.at)
   double water_level = 0.0;  // [m] global z of the field's z = 0
   double ramp_time = 0.0;    // [s] r(t) = ½(1 − cos(π t/T_r)) for 0 ≤ t < T_r, 0 before, 1 after
   double elevation_x = 0.0, elevation_y = 0.0;  // [m] the recorded elevation's point
