@@ -10,6 +10,7 @@
 //            assembled in the exponent bits.
 // The nearest integer uses the 1.5·2^52 shifter: after t = y + 1.5·2^52 the low bits of t hold round(y).
 #include "core/ocean_kinematics_batch.hpp"
+#include "core/ocean_stretching.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -187,18 +188,7 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
     f.velocity.setZero();
     f.acceleration.setZero();
     if (!f.wet) continue;
-    double z = p.z();
-    switch (field_.stretching()) {
-      case Stretching::Wheeler:
-        z = std::isinf(depth_) ? z - eta : depth_ * (z - eta) / (depth_ + eta);
-        break;
-      case Stretching::Vertical:
-        z = std::min(z, 0.0);
-        break;
-      case Stretching::None:
-        break;
-    }
-    if (!std::isinf(depth_)) z = std::max(z, -depth_);
+    const double z = stretchedZ(p.z(), eta, depth_, field_.stretching());
     PointSums sums;
     depthSums(n, z, k_.data(), a_omega_.data(), a_omega2_.data(), depth_scale_.data(), mirror_.data(),
               scratch.cos_psi.data(), scratch.sin_psi.data(), sums);
