@@ -71,7 +71,7 @@ void bindWaveParameters(SchemaBinder<RiserParameters>& b) {
            "Kinematics up to the instantaneous surface: Wheeler stretching or vertical extrapolation of the z = 0 "
            "values");
   b.real("waves.ramp_time", &P::wave_ramp_time, "s", Range::positive(1e5),
-         "Half-cosine start of the waves (statics is solved in calm water)");
+         "Smooth start of the waves, r = τ³(10 − 15τ + 6τ²) (statics is solved in calm water)");
   b.real("waves.elevation_x", &P::wave_elevation_x, "m", Range::any(), "x of the recorded wave elevation");
   b.real("waves.elevation_y", &P::wave_elevation_y, "m", Range::any(), "y of the recorded wave elevation");
 }
@@ -96,9 +96,18 @@ void checkWaveParameters(const RiserParameters& p, std::vector<FieldError>& e) {
     e.push_back({"waves.spectrum_table", "all densities 0", "the spectrum has no energy"});
 }
 
-double RiserSea::ramp(double t) const { return ocean::startRamp(t, ramp_time); }
+double RiserSea::ramp(double t) const {
+  if (t >= ramp_time) return 1.0;
+  if (t <= 0.0) return 0.0;
+  const double tau = t / ramp_time;
+  return tau * tau * tau * (10.0 - 15.0 * tau + 6.0 * tau * tau);
+}
 
-double RiserSea::rampRate(double t) const { return ocean::startRampRate(t, ramp_time); }
+double RiserSea::rampRate(double t) const {
+  if (t <= 0.0 || t >= ramp_time) return 0.0;
+  const double tau = t / ramp_time;
+  return 30.0 * tau * tau * (1.0 - tau) * (1.0 - tau) / ramp_time;
+}
 
 double RiserSea::elevation(double x, double y, double t) const { return ramp(t) * field.elevation(x, y, t); }
 

@@ -28,7 +28,9 @@ struct RiserSea {
   ocean::WaveField field;
   std::shared_ptr<const ocean::WaveKinematicsBatch> batch;  // of `field`; null: point by point (sea.at)
   double water_level = 0.0;  // [m] global z of the field's z = 0
-  double ramp_time = 0.0;    // [s] r(t) = ½(1 − cos(π t/T_r)) for 0 ≤ t < T_r, 0 before, 1 after
+  // [s] r(t) = τ³(10 − 15τ + 6τ²), τ = t/T_r, for 0 ≤ t < T_r, 0 before, 1 after: r, ṙ and r̈ are continuous, so
+  // the vessel's acceleration (r̈ times the RAO motion in it) has no jump at 0 or T_r for a step to straddle.
+  double ramp_time = 0.0;
   double elevation_x = 0.0, elevation_y = 0.0;  // [m] the recorded elevation's point
 
   double ramp(double t) const;
