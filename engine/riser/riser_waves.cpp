@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/ocean_kinematics_batch.hpp"
 #include "riser/riser_loads.hpp"
 #include "riser/riser_model.hpp"
 
@@ -15,6 +16,12 @@ namespace {
 using P = RiserParameters;
 constexpr double kPi = std::numbers::pi;
 constexpr double kDegree = kPi / 180.0;
+// The batch's truncation ε (core/ocean_kinematics_batch.hpp): components whose exponential decay makes them
+// negligible at a Gauss point are left out of its depth sums; the wave velocity and acceleration change by at most
+// 1e-7 of the sea's Σ a ω and Σ a ω² (the largest values the sums can take, at the surface), far below the
+// integrator's step error of 1e-3 of the motion. In the speed case (200 components, 100 m deep) it takes the
+// batch from 0.183 to 0.150 ms per evaluation at the 303 Gauss points (bench_riser_long_sea kinematics).
+constexpr double kWaveTruncation = 1e-7;
 
 SchemaBinder<WaveSpectrumRow> spectrumRowBinder() {
   SchemaBinder<WaveSpectrumRow> b;
@@ -139,7 +146,7 @@ std::shared_ptr<const RiserSea> buildRiserSea(const RiserParameters& p) {
   sea->ramp_time = p.wave_ramp_time;
   sea->elevation_x = p.wave_elevation_x;
   sea->elevation_y = p.wave_elevation_y;
-  sea->batch = std::make_shared<const ocean::WaveKinematicsBatch>(sea->field, direction, p.gravity);
+  sea->batch = std::make_shared<const ocean::WaveKinematicsBatch>(sea->field, direction, p.gravity, kWaveTruncation);
   return sea;
 }
 
@@ -172,12 +179,20 @@ void waveKinematicsAtGaussPoints(const RiserModel& m, const RiserPose& pose, Wav
     for (std::size_t k = 0; k < count; ++k) scratch.fluid[k] = sea.at(scratch.points[k], t);
     return;
   }
-  if (scratch.owner.owner_before(sea.batch) || sea.batch.owner_before(scratch.owner))
-    scratch.batch = {}, scratch.owner = sea.batch;
+  const auto sameBatch = [&](const std::weak_ptr<const ocean::WaveKinematicsBatch>& other) {
+    return !other.owner_before(sea.batch) && !sea.batch.owner_before(other);
+  };
+  WaveKinematicsReuse* reuse = pose.wave_reuse.get();
+  if (reuse && reuse->time == t && reuse->pose == &pose && sameBatch(reuse->batch) && reuse->fluid.size() == count) {
+    scratch.fluid = reuse->fluid;
+    return;
+  }
+  if (!sameBatch(scratch.owner)) scratch.batch = {}, scratch.owner = sea.batch;
   const Eigen::Vector3d level(0.0, 0.0, sea.water_level);
   for (auto& p : scratch.points) p -= level;  // the field's z = 0 is the still-water level
   batch->evaluate(scratch.points.data(), count, t, r, sea.rampRate(t), scratch.batch, scratch.fluid.data());
   for (auto& p : scratch.points) p += level;
+  if (reuse) reuse->time = t, reuse->pose = &pose, reuse->batch = sea.batch, reuse->fluid = scratch.fluid;
 }
 
 }  // namespace

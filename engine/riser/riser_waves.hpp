@@ -7,14 +7,18 @@
 // where ( )_n is the component normal to the segment. Buoyancy stays at the still-water level.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <vector>
 
 #include "core/errors.hpp"
-#include "core/ocean_kinematics_batch.hpp"
 #include "core/ocean_waves.hpp"
 #include "core/schema_binder.hpp"
 #include "riser/riser_parameters.hpp"
+
+namespace maris::ocean {
+class WaveKinematicsBatch;  // core/ocean_kinematics_batch.hpp
+}
 
 namespace maris::riser {
 
@@ -38,6 +42,16 @@ struct RiserSea {
   double elevation(double x, double y, double t) const;  // [m] ramped η above the still-water level
   // Ramped kinematics at a global point (its z relative to water_level inside).
   ocean::FluidKinematics at(const Eigen::Vector3d& point, double t) const;
+};
+
+// The wave kinematics at a pose's Gauss points, kept for reuse: a pose whose `wave_reuse` is set (the implicit
+// integrator's, riser_implicit) has the kinematics evaluated once per time and reused by later load evaluations
+// at that time (a step's Newton iterations at t_{n+1}), at the positions of the first (the step's predictor).
+struct WaveKinematicsReuse {
+  double time = std::numeric_limits<double>::quiet_NaN();
+  const void* pose = nullptr;  // the pose they were evaluated for (a copied pose does not reuse them)
+  std::weak_ptr<const ocean::WaveKinematicsBatch> batch;
+  std::vector<ocean::FluidKinematics> fluid;
 };
 
 // The sea of the parameters; nullptr for waves.type = none. Call on validated parameters.
