@@ -11,22 +11,15 @@
 //       CPU seconds of solveStatics for case 5 (L = 500 m) with n = N elements.
 // Times are thread CPU seconds; on a shared machine they are upper bounds. Not a pass/fail test.
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include "core/resources.hpp"
 #include "core/scenario.hpp"
-#include "riser/riser_dynamics.hpp"
-#include "riser/riser_integration.hpp"
-#include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 #include "bench_clock.hpp"
+#include "riser_bench_run.hpp"
 
 using namespace maris;
 using namespace maris::riser;
@@ -42,75 +35,17 @@ RiserParameters case5(const std::string& variant) {
   return p;
 }
 
-struct History {
-  std::vector<double> t;
-  std::vector<Vec3> probe;
-};
-
-struct Outcome {
-  History history;
-  SolverStats stats;
-  double cpu = 0.0;
-};
-
-Outcome run(const RiserParameters& p) {
-  const RiserModel m = buildRiserModel(p);
-  RunContext ctx;
-  const StaticSolution s = solveStatics(m, ctx);
-  Eigen::VectorXd y = restState(m, s.orientation, s.top);
-  IntegrationPlan plan = planIntegration(m, p);
-  if (const char* rate = std::getenv("RISER_BAUMGARTE")) plan.stabilisation_rate = std::atof(rate);
-  RiserRecorder recorder(m, p);
-  recorder.sample(0.0, y, true, std::string("profile_static"));
-  Outcome out;
-  const double t0 = bench::threadCpuSeconds();
-  out.stats = integrateRiser(m, p, plan, y, recorder, ctx);
-  out.cpu = bench::threadCpuSeconds() - t0;
-  const Results r = recorder.finish(out.stats, s);
-  const Table* h = r.findTable("history");
-  const auto& time = h->find("time")->values;
-  const Column* d[3] = {h->find("probe_dx"), h->find("probe_dy"), h->find("probe_dz")};
-  for (std::size_t k = 0; k < time.size(); ++k) {
-    out.history.t.push_back(time[k]);
-    out.history.probe.emplace_back(d[0]->values[k], d[1]->values[k], d[2]->values[k]);
-  }
-  return out;
-}
-
-History reference(const std::string& path, double end_time) {
-  History h;
-  std::ifstream in(path);
-  double t, x, y, z;
-  char c;
-  while (in >> t >> c >> x >> c >> y >> c >> z) h.t.push_back(t), h.probe.emplace_back(x, y, z);
-  if (!h.t.empty() && std::abs(h.t.back() - end_time) < 1e-9) return h;
+bench::ProbeHistory reference(const std::string& path, double end_time) {
+  bench::ProbeHistory h = bench::readHistory(path, end_time);
+  if (!h.t.empty()) return h;
   RiserParameters p = case5("J3");
   p.integrator = "rk4";
   p.time_step = 0.002;
   p.end_time = end_time;
   std::fprintf(stderr, "computing the RK4 reference (h = 2 ms) into %s\n", path.c_str());
-  h = run(p).history;
-  std::ofstream out(path);
-  out.precision(17);
-  for (std::size_t k = 0; k < h.t.size(); ++k)
-    out << h.t[k] << ',' << h.probe[k].x() << ',' << h.probe[k].y() << ',' << h.probe[k].z() << '\n';
+  h = bench::runRiser(p).history;
+  bench::writeHistory(path, h);
   return h;
-}
-
-// Largest deviation at the reference's samples (the run's history linearly interpolated), relative to the
-// largest reference displacement.
-double probeError(const History& a, const History& ref) {
-  double err = 0, scale = 0;
-  std::size_t j = 0;
-  for (std::size_t k = 0; k < ref.t.size(); ++k) {
-    const double t = ref.t[k];
-    while (j + 2 < a.t.size() && a.t[j + 1] < t) ++j;
-    const double w = std::clamp((t - a.t[j]) / (a.t[j + 1] - a.t[j]), 0.0, 1.0);
-    const Vec3 v = (1 - w) * a.probe[j] + w * a.probe[j + 1];
-    err = std::max(err, (v - ref.probe[k]).norm());
-    scale = std::max(scale, (ref.probe[k] - ref.probe[0]).norm());
-  }
-  return err / std::max(scale, 1e-300);
 }
 
 }  // namespace
@@ -133,12 +68,15 @@ int main(int argc, char** argv) {
   const double step = argc > 3 ? std::atof(argv[3]) : 0.05;
   RiserParameters p = case5(variant);
   if (argc > 4) p.end_time = std::atof(argv[4]);
-  const History ref = reference(argc > 5 ? argv[5] : "/tmp/riser_case5_reference.csv", p.end_time);
+  const bench::ProbeHistory ref = reference(argc > 5 ? argv[5] : "/tmp/riser_case5_reference.csv", p.end_time);
   p.integrator = "implicit";
   p.time_step = step;
   if (const char* tol = std::getenv("RISER_TOLERANCE")) p.tolerance = std::atof(tol);
-  const Outcome o = run(p);
+  const bench::RiserRun o = bench::runRiser(p, [](IntegrationPlan& plan) {
+    if (const char* rate = std::getenv("RISER_BAUMGARTE")) plan.stabilisation_rate = std::atof(rate);
+  });
   std::printf("%s h=%g cpu=%.3f s steps=%ld rejected=%ld residuals=%ld error=%.3e\n", variant.c_str(), step, o.cpu,
-              o.stats.steps, o.stats.rejected_steps, o.stats.rhs_evaluations, probeError(o.history, ref));
+              o.stats.steps, o.stats.rejected_steps, o.stats.rhs_evaluations,
+              bench::probeError(o.history, ref, bench::ErrorScale::Excursion));
   return 0;
 }

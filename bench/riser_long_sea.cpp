@@ -12,17 +12,16 @@
 //       at 1e-10, cached in /tmp/riser_long_sea_<duration>_<step>.csv.
 //   bench_riser_long_sea kinematics [repeats = 2000]
 //       µs per call at the static shape (t from 30 s on, a new time each call): the wave kinematics at the 3(n + 1)
-//       Gauss points point by point (WaveField::kinematics, what the loads called before the batch) and batched
-//       (WaveKinematicsBatch), and one whole right-hand side (evaluateRhs, with the batch).
+//       Gauss points point by point (WaveField::kinematics, what the loads called before the batch), batched
+//       (WaveKinematicsBatch) with every component and with the riser's truncation (the sea's own batch), and one
+//       whole right-hand side (evaluateRhs, with the sea's batch).
 //   bench_riser_long_sea rk4 DURATION STEP
 //       RK4 at STEP against the cached reference of that duration (checks the reference on a short run).
 // Times are thread CPU seconds; on a shared machine they are upper bounds. Not a pass/fail test.
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -30,13 +29,10 @@
 
 #include "core/resources.hpp"
 #include "core/scenario.hpp"
-#include "riser/riser_dynamics.hpp"
-#include "riser/riser_integration.hpp"
-#include "riser/riser_results.hpp"
-#include "riser/riser_statics.hpp"
 #include "core/ocean_kinematics_batch.hpp"
 #include "riser/riser_waves.hpp"
 #include "bench_clock.hpp"
+#include "riser_bench_run.hpp"
 
 using namespace maris;
 using namespace maris::riser;
@@ -63,85 +59,24 @@ RiserParameters targetCase(double duration) {
   return p;
 }
 
-struct History {
-  std::vector<double> t;
-  std::vector<Vec3> probe;
-};
-
-struct Outcome {
-  History history;
-  RiserSolverStats stats;
-  double cpu = 0.0;
-};
-
-Outcome run(const RiserParameters& p) {
-  const RiserModel m = buildRiserModel(p);
-  RunContext ctx;
-  const StaticSolution s = solveStatics(m, ctx);
-  Eigen::VectorXd y = restState(m, s.orientation, s.top);
-  const IntegrationPlan plan = planIntegration(m, p);
-  RiserRecorder recorder(m, p);
-  recorder.sample(0.0, y, true, std::string("profile_static"));
-  Outcome out;
-  const double t0 = bench::threadCpuSeconds();
-  out.stats = integrateRiser(m, p, plan, y, recorder, ctx);
-  out.cpu = bench::threadCpuSeconds() - t0;
-  const Results r = recorder.finish(out.stats, s);
-  const Table* h = r.findTable("history");
-  const auto& time = h->find("time")->values;
-  const Column* d[3] = {h->find("probe_dx"), h->find("probe_dy"), h->find("probe_dz")};
-  for (std::size_t k = 0; k < time.size(); ++k) {
-    out.history.t.push_back(time[k]);
-    out.history.probe.emplace_back(d[0]->values[k], d[1]->values[k], d[2]->values[k]);
-  }
-  return out;
-}
-
-History reference(double duration, double step) {
+bench::ProbeHistory reference(double duration, double step) {
   std::ostringstream name;
   name << "/tmp/riser_long_sea_" << duration << "_" << step << ".csv";
-  History h;
-  std::ifstream in(name.str());
-  double t, x, y, z;
-  char c;
-  while (in >> t >> c >> x >> c >> y >> c >> z) h.t.push_back(t), h.probe.emplace_back(x, y, z);
-  if (!h.t.empty() && std::abs(h.t.back() - duration) < 1e-9) return h;
+  bench::ProbeHistory h = bench::readHistory(name.str(), duration);
+  if (!h.t.empty()) return h;
   RiserParameters p = targetCase(duration);
   p.time_step = step;
   p.tolerance = 1e-7;  // Newton at 1e-10 (1e-3 of the tolerance, within [1e-10, 1e-6])
   std::fprintf(stderr, "computing the reference (generalized-α, h = %g s, Newton at 1e-10) into %s\n",
                step, name.str().c_str());
-  const Outcome o = run(p);
+  const bench::RiserRun o = bench::runRiser(p);
   std::fprintf(stderr, "reference: %ld steps, %.1f s CPU\n", o.stats.steps, o.cpu);
-  h = o.history;
-  std::ofstream out(name.str());
-  out.precision(17);
-  for (std::size_t k = 0; k < h.t.size(); ++k)
-    out << h.t[k] << ',' << h.probe[k].x() << ',' << h.probe[k].y() << ',' << h.probe[k].z() << '\n';
-  return h;
+  bench::writeHistory(name.str(), o.history);
+  return o.history;
 }
 
-// Largest deviation at the reference's samples (the run's history linearly interpolated; both have the same
-// sample times) over the range of the reference's motion: the largest distance between two of its samples.
-double probeError(const History& a, const History& ref) {
-  double err = 0;
-  std::size_t j = 0;
-  Vec3 lo = ref.probe[0], hi = ref.probe[0];
-  for (std::size_t k = 0; k < ref.t.size(); ++k) {
-    const double t = ref.t[k];
-    while (j + 2 < a.t.size() && a.t[j + 1] < t) ++j;
-    const double w = std::clamp((t - a.t[j]) / (a.t[j + 1] - a.t[j]), 0.0, 1.0);
-    const Vec3 v = (1 - w) * a.probe[j] + w * a.probe[j + 1];
-    err = std::max(err, (v - ref.probe[k]).norm());
-    lo = lo.cwiseMin(ref.probe[k]);
-    hi = hi.cwiseMax(ref.probe[k]);
-  }
-  // The range: the bounding box's diagonal bounds the largest distance from above by √3 at most; the distance
-  // itself over all pairs is O(N²) on 2000 samples, cheap enough.
-  double range = 0;
-  for (std::size_t p = 0; p < ref.probe.size(); ++p)
-    for (std::size_t q = p + 1; q < ref.probe.size(); ++q) range = std::max(range, (ref.probe[p] - ref.probe[q]).norm());
-  return err / std::max(range, 1e-300);
+double probeError(const bench::ProbeHistory& a, const bench::ProbeHistory& ref) {
+  return bench::probeError(a, ref, bench::ErrorScale::Range);
 }
 
 std::vector<double> parseList(const std::string& text) {
@@ -152,7 +87,7 @@ std::vector<double> parseList(const std::string& text) {
   return out;
 }
 
-void printRow(const char* method, double step, const Outcome& o, double duration, double error) {
+void printRow(const char* method, double step, const bench::RiserRun& o, double duration, double error) {
   std::printf("| %s | %g | %.0f | %ld | %ld | %ld | %ld | %.2f | %.1f | %.2e |\n", method, step, 10.0 / step,
               o.stats.steps, o.stats.rejected_steps, o.stats.rhs_evaluations, o.stats.matrix_refreshes, o.cpu,
               o.cpu * 10800.0 / duration, error);
@@ -175,9 +110,10 @@ void timeKinematics(int repeats) {
       points.push_back(ws.pose.position[i] + kGaussX[q] * m.segments[i].length * ws.pose.rotation[i].col(0) -
                        Eigen::Vector3d(0.0, 0.0, m.sea->water_level));
   const ocean::WaveKinematicsBatch batch(m.sea->field, p.wave_direction_deg * std::numbers::pi / 180.0, p.gravity);
+  const ocean::WaveKinematicsBatch& truncated = *m.sea->batch;
   std::vector<ocean::FluidKinematics> out(points.size());
-  ocean::WaveKinematicsBatch::Scratch scratch;
-  double direct = 1e300, batched = 1e300, rhs = 1e300, sink = 0;
+  ocean::WaveKinematicsBatch::Scratch scratch, scratch_truncated;
+  double direct = 1e300, batched = 1e300, batched_truncated = 1e300, rhs = 1e300, sink = 0;
   for (int round = 0; round < 5; ++round) {
     double t0 = bench::threadCpuSeconds();
     for (int k = 0; k < repeats / 10; ++k)
@@ -191,13 +127,20 @@ void timeKinematics(int repeats) {
     batched = std::min(batched, (bench::threadCpuSeconds() - t0) / repeats * 1e6);
     t0 = bench::threadCpuSeconds();
     for (int k = 0; k < repeats; ++k) {
+      truncated.evaluate(points.data(), points.size(), 30.0 + 0.01 * k, 1.0, 0.0, scratch_truncated, out.data());
+      sink += out[0].velocity.x();
+    }
+    batched_truncated = std::min(batched_truncated, (bench::threadCpuSeconds() - t0) / repeats * 1e6);
+    t0 = bench::threadCpuSeconds();
+    for (int k = 0; k < repeats; ++k) {
       evaluateRhs(m, ws, 30.0 + 0.01 * k, y, dy);
       sink += dy[3];
     }
     rhs = std::min(rhs, (bench::threadCpuSeconds() - t0) / repeats * 1e6);
   }
-  std::printf("%zu points x %zu components: point by point %.1f us, batched %.1f us (%.1fx), right-hand side %.1f us "
-              "(%g)\n", points.size(), m.sea->field.size(), direct, batched, direct / batched, rhs, sink * 0.0);
+  std::printf("%zu points x %zu components: point by point %.1f us, batched %.1f us (%.1fx), batched with the "
+              "riser's truncation %.1f us (%.1fx), right-hand side %.1f us (%g)\n", points.size(), m.sea->field.size(),
+              direct, batched, direct / batched, batched_truncated, direct / batched_truncated, rhs, sink * 0.0);
 }
 
 }  // namespace
@@ -209,25 +152,25 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && std::string(argv[1]) == "rk4") {
     const double duration = argc > 2 ? std::atof(argv[2]) : 30.0, step = argc > 3 ? std::atof(argv[3]) : 1e-4;
-    const History ref = reference(duration, argc > 4 ? std::atof(argv[4]) : 0.0125);
+    const bench::ProbeHistory ref = reference(duration, argc > 4 ? std::atof(argv[4]) : 0.0125);
     RiserParameters p = targetCase(duration);
     p.integrator = "rk4";
     p.time_step = step;
-    const Outcome o = run(p);
+    const bench::RiserRun o = bench::runRiser(p);
     printRow("RK4", step, o, duration, probeError(o.history, ref));
     return 0;
   }
   const double duration = argc > 1 ? std::atof(argv[1]) : 600.0;
   const std::vector<double> steps = parseList(argc > 2 ? argv[2] : "0.2,0.1,0.05");
   const double reference_step = argc > 3 ? std::atof(argv[3]) : 0.0125;
-  const History ref = reference(duration, reference_step);
+  const bench::ProbeHistory ref = reference(duration, reference_step);
   std::printf("duration %g s, reference generalized-α at h = %g s\n", duration, reference_step);
   std::printf("| kinematics | h [s] | Tp/h | steps | rejected | residuals | matrix refreshes | CPU [s] | CPU for 3 h "
               "[s] | error at L/2 / range |\n|---|---|---|---|---|---|---|---|---|---|\n");
   for (double h : steps) {
     RiserParameters p = targetCase(duration);
     p.time_step = h;
-    const Outcome o = run(p);
+    const bench::RiserRun o = bench::runRiser(p);
     printRow("batched", h, o, duration, probeError(o.history, ref));
   }
   return 0;

@@ -18,11 +18,9 @@
 
 #include "core/resources.hpp"
 #include "core/scenario.hpp"
-#include "riser/riser_dynamics.hpp"
-#include "riser/riser_integration.hpp"
-#include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 #include "bench_clock.hpp"
+#include "riser_bench_run.hpp"
 
 using namespace maris;
 using namespace maris::riser;
@@ -34,53 +32,10 @@ RiserParameters peer(const std::string& top) {
   return riserBinder().read(scenarioFromText(std::string(*builtinResource(path)), path).parameters);
 }
 
-struct Outcome {
-  std::vector<double> t, top_force;
-  std::vector<Vec3> probe;
-  RiserSolverStats stats;
-  std::string method;
-  double cpu = 0.0;
-};
-
-Outcome run(const RiserParameters& p) {
-  const RiserModel m = buildRiserModel(p);
-  RunContext ctx;
-  const StaticSolution s = solveStatics(m, ctx);
-  Eigen::VectorXd y = restState(m, s.orientation, s.top);
-  const IntegrationPlan plan = planIntegration(m, p);
-  RiserRecorder recorder(m, p);
-  recorder.sample(0.0, y, true, std::string("profile_static"));
-  Outcome out;
-  const double t0 = bench::threadCpuSeconds();
-  out.stats = integrateRiser(m, p, plan, y, recorder, ctx);
-  out.cpu = bench::threadCpuSeconds() - t0;
-  const Results r = recorder.finish(out.stats, s);
-  out.method = out.stats.method;
-  const Table* h = r.findTable("history");
-  out.t = h->find("time")->values;
-  out.top_force = h->find("top_force_z")->values;
-  const Column* d[3] = {h->find("probe_dx"), h->find("probe_dy"), h->find("probe_dz")};
-  for (std::size_t k = 0; k < out.t.size(); ++k) out.probe.emplace_back(d[0]->values[k], d[1]->values[k], d[2]->values[k]);
-  return out;
-}
-
-double probeError(const Outcome& a, const Outcome& ref) {
-  double err = 0, scale = 0;
-  std::size_t j = 0;
-  for (std::size_t k = 0; k < ref.t.size(); ++k) {
-    while (j + 2 < a.t.size() && a.t[j + 1] < ref.t[k]) ++j;
-    const double w = std::clamp((ref.t[k] - a.t[j]) / (a.t[j + 1] - a.t[j]), 0.0, 1.0);
-    const Vec3 v = (1 - w) * a.probe[j] + w * a.probe[j + 1];
-    err = std::max(err, (v - ref.probe[k]).norm());
-    scale = std::max(scale, (ref.probe[k] - ref.probe[0]).norm());
-  }
-  return err / std::max(scale, 1e-300);
-}
-
-std::pair<double, double> forceRange(const Outcome& o) {
+std::pair<double, double> forceRange(const bench::RiserRun& o) {
   double lo = 1e300, hi = -1e300;
-  for (std::size_t k = 0; k < o.t.size(); ++k)
-    if (o.t[k] >= 20.0) lo = std::min(lo, o.top_force[k]), hi = std::max(hi, o.top_force[k]);
+  for (std::size_t k = 0; k < o.history.t.size(); ++k)
+    if (o.history.t[k] >= 20.0) lo = std::min(lo, o.top_force_z[k]), hi = std::max(hi, o.top_force_z[k]);
   return {lo, hi};
 }
 
@@ -120,20 +75,20 @@ int main(int argc, char** argv) {
     RiserParameters ref_p = peer(top);
     ref_p.segment_count = ns.back();
     ref_p.tolerance = 1e-5;
-    const Outcome ref = run(ref_p);
+    const bench::RiserRun ref = bench::runRiser(ref_p);
     const auto [ref_lo, ref_hi] = forceRange(ref);
     std::printf("| %s | %d | reference 1e-5 | %s | %ld | %.3f | - | %.3f ... %.3f |\n", top.c_str(), ns.back(),
-                ref.method.find("generalized") == 0 ? "implicit" : "RK4", ref.stats.steps, ref.cpu, ref_lo / 1e6, ref_hi / 1e6);
+                ref.stats.method.find("generalized") == 0 ? "implicit" : "RK4", ref.stats.steps, ref.cpu, ref_lo / 1e6, ref_hi / 1e6);
     for (int n : ns)
       for (double tol : {1e-3, 1e-4}) {
         RiserParameters p = peer(top);
         p.segment_count = n;
         p.tolerance = tol;
-        const Outcome o = run(p);
+        const bench::RiserRun o = bench::runRiser(p);
         const auto [lo, hi] = forceRange(o);
-        const bool implicit = o.method.find("generalized") == 0;
+        const bool implicit = o.stats.method.find("generalized") == 0;
         std::printf("| %s | %d | %.0e | %s | %ld | %.3f | %.2e | %.3f ... %.3f |\n", top.c_str(), n, tol,
-                    implicit ? "implicit" : "RK4", o.stats.steps, o.cpu, probeError(o, ref), lo / 1e6, hi / 1e6);
+                    implicit ? "implicit" : "RK4", o.stats.steps, o.cpu, bench::probeError(o.history, ref.history, bench::ErrorScale::Excursion), lo / 1e6, hi / 1e6);
         std::fflush(stdout);
       }
   }

@@ -10,12 +10,14 @@
 //            assembled in the exponent bits.
 // The nearest integer uses the 1.5·2^52 shifter: after t = y + 1.5·2^52 the low bits of t hold round(y).
 #include "core/ocean_kinematics_batch.hpp"
+#include "core/ocean_stretching.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <utility>
 
 namespace maris::ocean {
 namespace {
@@ -81,13 +83,13 @@ constexpr double inverseFactorial(int k) {
   return p * std::bit_cast<double>(static_cast<std::uint64_t>(power + 1023) << 52);
 }
 
-// The per-point sums, vectorised over the components (AVX2 + FMA clone on processors that have them).
+// The per-point sums, vectorised over the components (AVX-512 and AVX2 + FMA clones on processors that have them).
 struct PointSums {
   double eta = 0.0, u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
 };
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define MARIS_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#define MARIS_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
 #define MARIS_SIMD_CLONES
 #endif
@@ -134,13 +136,20 @@ void fastSinCos(double x, double& sine, double& cosine) { sinCosKernel(x, sine, 
 
 double fastExp(double x) { return expKernel(x); }
 
-WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity)
-    : field_(field), cos_dir_(std::cos(direction_rad)), sin_dir_(std::sin(direction_rad)), depth_(field.depth()) {
+WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity,
+                                         double truncation)
+    : field_(field),
+      cos_dir_(std::cos(direction_rad)),
+      sin_dir_(std::sin(direction_rad)),
+      depth_(field.depth()),
+      truncation_(truncation) {
   const std::size_t n = field.size();
   const bool deep = std::isinf(depth_);
-  for (std::size_t j = 0; j < n; ++j) {
+  std::vector<std::pair<double, std::size_t>> by_k;
+  for (std::size_t j = 0; j < n; ++j) by_k.emplace_back(waveNumber(field.components()[j].omega, depth_, gravity), j);
+  std::sort(by_k.begin(), by_k.end());
+  for (const auto& [k, j] : by_k) {
     const WaveComponent& c = field.components()[j];
-    const double k = waveNumber(c.omega, depth_, gravity);
     k_.push_back(k);
     amplitude_.push_back(c.amplitude);
     a_omega_.push_back(c.amplitude * c.omega);
@@ -152,6 +161,32 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     phase_.push_back(c.phase);
     largest_k_ = std::max(largest_k_, k);
   }
+  tail_velocity_.assign(n + 1, 0.0);
+  tail_acceleration_.assign(n + 1, 0.0);
+  for (std::size_t j = n; j-- > 0;) {
+    tail_velocity_[j] = tail_velocity_[j + 1] + std::abs(a_omega_[j]);
+    tail_acceleration_[j] = tail_acceleration_[j + 1] + std::abs(a_omega2_[j]);
+  }
+}
+
+std::size_t WaveKinematicsBatch::keptComponents(double z) const {
+  const std::size_t n = k_.size();
+  if (!(truncation_ > 0.0) || !(z < 0.0) || n == 0) return n;
+  const double velocity_bound = truncation_ * tail_velocity_[0], acceleration_bound = truncation_ * tail_acceleration_[0];
+  // Is every component from m on negligible? Monotone in m (C_m(z') and both tails fall with m): bisection.
+  auto negligibleFrom = [&](std::size_t m) {
+    if (m >= n) return true;
+    const double e = std::exp(k_[m] * z);
+    const double c = (e + (mirror_[m] > 0.0 ? mirror_[m] / e : 0.0)) * depth_scale_[m];
+    return c * tail_velocity_[m] <= velocity_bound && c * tail_acceleration_[m] <= acceleration_bound;
+  };
+  std::size_t lo = 0, hi = n;  // negligibleFrom(hi) holds; the answer is in [lo, hi]
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (negligibleFrom(mid)) hi = mid;
+    else lo = mid + 1;
+  }
+  return lo;
 }
 
 void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp,
@@ -187,20 +222,9 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
     f.velocity.setZero();
     f.acceleration.setZero();
     if (!f.wet) continue;
-    double z = p.z();
-    switch (field_.stretching()) {
-      case Stretching::Wheeler:
-        z = std::isinf(depth_) ? z - eta : depth_ * (z - eta) / (depth_ + eta);
-        break;
-      case Stretching::Vertical:
-        z = std::min(z, 0.0);
-        break;
-      case Stretching::None:
-        break;
-    }
-    if (!std::isinf(depth_)) z = std::max(z, -depth_);
+    const double z = stretchedZ(p.z(), eta, depth_, field_.stretching());
     PointSums sums;
-    depthSums(n, z, k_.data(), a_omega_.data(), a_omega2_.data(), depth_scale_.data(), mirror_.data(),
+    depthSums(keptComponents(z), z, k_.data(), a_omega_.data(), a_omega2_.data(), depth_scale_.data(), mirror_.data(),
               scratch.cos_psi.data(), scratch.sin_psi.data(), sums);
     const Eigen::Vector3d velocity(sums.u * cos_dir_, sums.u * sin_dir_, sums.w);
     const Eigen::Vector3d acceleration(sums.du * cos_dir_, sums.du * sin_dir_, sums.dw);

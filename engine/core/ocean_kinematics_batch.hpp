@@ -11,7 +11,13 @@
 // below the double's rounding; ocean_kinematics_batch.cpp) instead of the library's calls, which do not vectorise.
 // Agreement with WaveField::kinematics: ≤ 1e-13 of each quantity's scale (the sum of the components' magnitudes),
 // tested at the surface, at depth, at crest and trough with Wheeler and vertical stretching; on x86-64 the loop
-// runs in AVX2 lanes where the processor has them (function multi-versioning), SSE2 otherwise.
+// runs in AVX-512 or AVX2 lanes where the processor has them (function multi-versioning), SSE2 otherwise.
+// Truncation (optional, `truncation` ε > 0): the components are kept sorted by k, and at a point with z' < 0 the
+// depth sums stop at the first component m with C_m(z') Σ_{j≥m} a_j ω_j ≤ ε Σ_j a_j ω_j and
+// C_m(z') Σ_{j≥m} a_j ω_j² ≤ ε Σ_j a_j ω_j² (found by bisection). C_j(z') = cosh k_j(z'+h)/sinh k_j h falls with k
+// for z' ≤ 0 and bounds S_j(z'), so the dropped components change each velocity component by at most ε Σ a_j ω_j
+// and each acceleration component by at most ε Σ a_j ω_j² (times the ramp; the ramp-rate term likewise): an exact
+// bound, not an estimate. η (and so wetness and stretching) always takes every component.
 // Limits: a point with |k_max s| > 1e5 rad (s more than ≈ 70 km from the origin for 2 s waves) or a time with
 // |ω_j t| > 6e6 rad takes WaveField::kinematics itself, point by point.
 #pragma once
@@ -37,10 +43,10 @@ class WaveKinematicsBatch {
 
   WaveKinematicsBatch() = default;
   // `direction_rad` and `gravity`: the ones the field was made with (its wave numbers are recomputed from them by
-  // waveNumber, bit for bit the field's own).
-  WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity);
+  // waveNumber, bit for bit the field's own). `truncation`: ε of the truncation above (0: every component).
+  WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity, double truncation = 0.0);
 
-  // out[i] = field.kinematics(points[i], t, ramp, ramp_rate) to the accuracy stated above.
+  // out[i] = field.kinematics(points[i], t, ramp, ramp_rate) to the accuracy stated above (and the truncation).
   void evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp, double ramp_rate,
                 Scratch& scratch, FluidKinematics* out) const;
 
@@ -49,8 +55,13 @@ class WaveKinematicsBatch {
  private:
   WaveField field_;
   double cos_dir_ = 1.0, sin_dir_ = 0.0, depth_ = kDeepWater, largest_k_ = 0.0;
-  // Per component: k, a, a ω, a ω², 1/(1 − e^{−2kh}), e^{−2kh} (0 in deep water or where it underflows), ω, φ.
+  double truncation_ = 0.0;
+  // Per component, in increasing k: k, a, a ω, a ω², 1/(1 − e^{−2kh}), e^{−2kh} (0 in deep water or where it
+  // underflows), ω, φ; and the tail sums Σ_{j≥m} a_j ω_j, Σ_{j≥m} a_j ω_j² (n + 1 entries, the last 0).
   std::vector<double> k_, amplitude_, a_omega_, a_omega2_, depth_scale_, mirror_, omega_, phase_;
+  std::vector<double> tail_velocity_, tail_acceleration_;
+  // Components whose depth sums the point at stretched height z' (≤ 0 or not) needs.
+  std::size_t keptComponents(double z) const;
 };
 
 // The kernels, exposed for their test: sin and cos of x for |x| ≤ 1e5 and e^x for |x| ≤ 708, within a few

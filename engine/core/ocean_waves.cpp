@@ -1,5 +1,6 @@
 // Linear wave kinematics and sea synthesis (contract in core/ocean_waves.hpp).
 #include "core/ocean_waves.hpp"
+#include "core/ocean_stretching.hpp"
 #include "core/portable_random.hpp"
 
 #include <algorithm>
@@ -128,7 +129,6 @@ double WaveField::variance() const {
 
 void WaveField::linearAt(double z, const double* cos_psi, const double* sin_psi, FluidKinematics& out) const {
   const bool deep = std::isinf(depth_);
-  if (!deep) z = std::max(z, -depth_);
   double u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
   for (std::size_t j = 0; j < components_.size(); ++j) {
     // C = cosh k(z+h)/sinh kh = (e^{kz} + e^{−k(z+2h)})/(1 − e^{−2kh}), S likewise with −: no overflow at any kh.
@@ -161,18 +161,7 @@ FluidKinematics WaveField::kinematics(const Eigen::Vector3d& point, double t, do
   out.elevation = eta;
   out.wet = point.z() <= eta;
   if (!out.wet) return out;
-  double z = point.z();
-  switch (stretching_) {
-    case Stretching::Wheeler:
-      z = std::isinf(depth_) ? z - eta : depth_ * (z - eta) / (depth_ + eta);
-      break;
-    case Stretching::Vertical:
-      z = std::min(z, 0.0);
-      break;
-    case Stretching::None:
-      break;
-  }
-  linearAt(z, cos_psi.data(), sin_psi.data(), out);
+  linearAt(stretchedZ(point.z(), eta, depth_, stretching_), cos_psi.data(), sin_psi.data(), out);
   if (ramp != 1.0 || ramp_rate != 0.0) {
     out.acceleration = ramp * out.acceleration + ramp_rate * out.velocity;
     out.velocity *= ramp;

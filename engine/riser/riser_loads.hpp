@@ -4,11 +4,14 @@
 // separate functions; computeLoads() calls the ones the model switches on.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "riser/riser_model.hpp"
 
 namespace maris::riser {
+
+struct WaveKinematicsReuse;
 
 // Positions, orientations and velocities of all n+1 segments at one instant.
 struct RiserPose {
@@ -19,6 +22,7 @@ struct RiserPose {
   std::vector<Vec3> velocity;       // [m/s] velocity of A_i, global (n+1)
   Vec3 end_position = Vec3::Zero(); // [m] bottom end (node n+1)
   Vec3 end_velocity = Vec3::Zero(); // [m/s]
+  std::shared_ptr<WaveKinematicsReuse> wave_reuse;  // set: wave kinematics once per time (riser_waves.hpp)
 
   void resize(int segment_count);
   Vec3 tangent(int i) const { return rotation[i].col(0); }

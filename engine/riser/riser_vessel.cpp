@@ -54,11 +54,11 @@ RaoValue atHeading(const RaoTable& t, std::size_t h, double omega, bool* outside
   return blend(row(f), row(f + 1), (omega - t.omega[f]) / (t.omega[f + 1] - t.omega[f]));
 }
 
-// Half-cosine ramp's second derivative (the sea's ramp r(t), riser_waves): zero outside (0, T_r).
+// The second derivative of the sea's ramp r(t) (riser_waves): zero outside (0, T_r) and continuous at both ends.
 double rampAcceleration(const RiserSea& sea, double t) {
   if (t <= 0.0 || t >= sea.ramp_time) return 0.0;
-  const double w = kPi / sea.ramp_time;
-  return 0.5 * w * w * std::cos(w * t);
+  const double tau = t / sea.ramp_time;
+  return 60.0 * tau * (1.0 - tau) * (1.0 - 2.0 * tau) / (sea.ramp_time * sea.ramp_time);
 }
 
 Mat3 rotationX(double a) { return Eigen::AngleAxisd(a, Vec3::UnitX()).toRotationMatrix(); }

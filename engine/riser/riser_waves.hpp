@@ -7,6 +7,7 @@
 // where ( )_n is the component normal to the segment. Buoyancy stays at the still-water level.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -15,17 +16,25 @@
 #include "core/schema_binder.hpp"
 #include "riser/riser_parameters.hpp"
 
+namespace maris::ocean {
+class WaveKinematicsBatch;  // core/ocean_kinematics_batch.hpp
+}
+
 namespace maris::riser {
 
 struct RiserModel;
 struct RiserPose;
 struct SegmentLoads;
 
-// The sea of a riser model: the wave field with z measured from the still-water level, and its start-up ramp.
+// The sea of a riser model: the wave field with z measured from the still-water level, its start-up ramp, and
+// the batched evaluator of the field that the Morison loads use.
 struct RiserSea {
   ocean::WaveField field;
+  std::shared_ptr<const ocean::WaveKinematicsBatch> batch;  // of `field`; null: point by point (sea.at)
   double water_level = 0.0;  // [m] global z of the field's z = 0
-  double ramp_time = 0.0;    // [s] r(t) = ½(1 − cos(π t/T_r)) for 0 ≤ t < T_r, 0 before, 1 after
+  // [s] r(t) = τ³(10 − 15τ + 6τ²), τ = t/T_r, for 0 ≤ t < T_r, 0 before, 1 after: r, ṙ and r̈ are continuous, so
+  // the vessel's acceleration (r̈ times the RAO motion in it) has no jump at 0 or T_r for a step to straddle.
+  double ramp_time = 0.0;
   double elevation_x = 0.0, elevation_y = 0.0;  // [m] the recorded elevation's point
 
   double ramp(double t) const;
@@ -33,6 +42,16 @@ struct RiserSea {
   double elevation(double x, double y, double t) const;  // [m] ramped η above the still-water level
   // Ramped kinematics at a global point (its z relative to water_level inside).
   ocean::FluidKinematics at(const Eigen::Vector3d& point, double t) const;
+};
+
+// The wave kinematics at a pose's Gauss points, kept for reuse: a pose whose `wave_reuse` is set (the implicit
+// integrator's, riser_implicit) has the kinematics evaluated once per time and reused by later load evaluations
+// at that time (a step's Newton iterations at t_{n+1}), at the positions of the first (the step's predictor).
+struct WaveKinematicsReuse {
+  double time = std::numeric_limits<double>::quiet_NaN();
+  const void* pose = nullptr;  // the pose they were evaluated for (a copied pose does not reuse them)
+  std::weak_ptr<const ocean::WaveKinematicsBatch> batch;
+  std::vector<ocean::FluidKinematics> fluid;
 };
 
 // The sea of the parameters; nullptr for waves.type = none. Call on validated parameters.

@@ -149,6 +149,43 @@ TEST(OceanKinematicsBatch, EqualsTheDirectFormulaAfterThreeHours) {
   expectBatchEqualsDirect(jonswapSea(100.0, Stretching::Wheeler), 10800.0, 1.0, 0.0, 2e-11);
 }
 
+// Truncation ε: against the direct formula (all components) every wet point's velocity is within ε Σ|a ω| and its
+// acceleration within ε Σ|a ω²| (times the ramp, plus the ramp-rate term's ε share), the bound stated in
+// ocean_kinematics_batch.hpp, with 1e-13 of the scale for the rounding; and components are in fact dropped (the
+// deep points differ from the untruncated batch), else the bound would be checked on nothing.
+TEST(OceanKinematicsBatch, TruncationStaysWithinItsStatedBound) {
+  for (const double depth : {100.0, kDeepWater}) {
+    SCOPED_TRACE(depth);
+    const WaveField field = jonswapSea(depth, Stretching::Wheeler);
+    double velocity_scale = 0.0, acceleration_scale = 0.0;
+    for (const WaveComponent& c : field.components()) {
+      velocity_scale += c.amplitude * c.omega;
+      acceleration_scale += c.amplitude * c.omega * c.omega;
+    }
+    const double epsilon = 1e-4, ramp = 0.8, ramp_rate = 0.05;
+    const WaveKinematicsBatch truncated(field, kDirection, kG, epsilon), exact(field, kDirection, kG);
+    WaveKinematicsBatch::Scratch scratch_truncated, scratch_exact;
+    std::vector<Eigen::Vector3d> points;
+    for (double z = 0.0; z >= -100.0; z -= 2.5) points.emplace_back(3.0, -2.0, z);
+    std::vector<FluidKinematics> fast(points.size()), all(points.size());
+    const double t = 41.7;
+    truncated.evaluate(points.data(), points.size(), t, ramp, ramp_rate, scratch_truncated, fast.data());
+    exact.evaluate(points.data(), points.size(), t, ramp, ramp_rate, scratch_exact, all.data());
+    const double velocity_bound = (epsilon + 1e-13) * ramp * velocity_scale;
+    const double acceleration_bound = (epsilon + 1e-13) * (ramp * acceleration_scale + ramp_rate * velocity_scale);
+    int dropped = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const FluidKinematics direct = field.kinematics(points[i], t, ramp, ramp_rate);
+      ASSERT_EQ(fast[i].wet, direct.wet);
+      EXPECT_EQ(fast[i].elevation, all[i].elevation) << "η takes every component";
+      EXPECT_LE((fast[i].velocity - direct.velocity).cwiseAbs().maxCoeff(), velocity_bound) << points[i].z();
+      EXPECT_LE((fast[i].acceleration - direct.acceleration).cwiseAbs().maxCoeff(), acceleration_bound) << points[i].z();
+      dropped += fast[i].velocity != all[i].velocity;
+    }
+    EXPECT_GE(dropped, 20);  // of 41 points: the deeper ones lose their short waves
+  }
+}
+
 // Points far along the waves (|k s| > 1e5) take the direct formula: the same values exactly.
 TEST(OceanKinematicsBatch, FarPointsFallBackToTheDirectFormula) {
   const WaveField field = jonswapSea(100.0, Stretching::Wheeler);

@@ -93,7 +93,7 @@ TEST(RiserFatigue, RunInAnAiryWaveRecordsElevationFatigueAndClosesItsEnergyBalan
   ASSERT_TRUE(checkRiserParameters(p).empty());
   RunContext context;
   const Results r = solveRiser(p, context);
-  // η at x = y = 0: r(t)·(H/2) cos(−ωt + φ), r = ½(1 − cos(πt/T_r)) before T_r.
+  // η at x = y = 0: r(t)·(H/2) cos(−ωt + φ), r = τ³(10 − 15τ + 6τ²) with τ = t/T_r before T_r.
   const Table* history = r.findTable("history");
   ASSERT_NE(history, nullptr);
   const Column* eta = history->find("wave_elevation");
@@ -101,7 +101,7 @@ TEST(RiserFatigue, RunInAnAiryWaveRecordsElevationFatigueAndClosesItsEnergyBalan
   const Column* time = history->find("time");
   for (std::size_t k = 0; k < time->values.size(); ++k) {
     const double t = time->values[k];
-    const double ramp = t < 4.0 ? 0.5 * (1 - std::cos(kPiValue * t / 4.0)) : 1.0;
+    const double tau = std::min(t / 4.0, 1.0), ramp = tau * tau * tau * (10 - 15 * tau + 6 * tau * tau);
     EXPECT_NEAR(eta->values[k], ramp * 2.0 * std::cos(-2 * kPiValue / 8.0 * t + kPiValue / 6), 1e-12) << t;
   }
   // Fatigue: one row per joint, the scalar is the table's shortest life.
