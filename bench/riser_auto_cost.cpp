@@ -28,32 +28,15 @@
 #include "riser/riser_newton.hpp"
 #include "riser/riser_statics.hpp"
 #include "bench_clock.hpp"
+#include "riser_moving_state.hpp"
 
 using namespace maris;
 using namespace maris::riser;
 
 namespace {
 
-RiserModel builtinModel(const std::string& scenario, int n, bool joint) {
-  const std::string path = "scenarios/riser/" + scenario + ".json";
-  RiserParameters p = riserBinder().read(scenarioFromText(std::string(*builtinResource(path)), path).parameters);
-  p.segment_count = n;
-  p.formulation = joint ? "joint" : "absolute";
-  return buildRiserModel(p);
-}
-
-Eigen::VectorXd movingState(const RiserModel& m) {
-  RunContext ctx;
-  const StaticSolution s = solveStatics(m, ctx);
-  Eigen::VectorXd y = restState(m, s.orientation, s.top);
-  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
-    const double a = i;
-    y.segment<3>(angularVelocityStateOffset(m, i)) = 0.02 * Vec3(std::sin(0.7 * a), std::cos(1.3 * a), std::sin(0.4 * a));
-    if (m.formulation == Formulation::Absolute)
-      y.segment<3>(velocityStateOffset(m, i)) = 0.05 * Vec3(std::cos(0.5 * a), std::sin(0.9 * a), 0.1 * std::cos(a));
-  }
-  return y;
-}
+using bench::builtinRiserModel;
+using bench::movingState;
 
 struct Cost {
   double best = 1e300, worst = 0.0;  // [s] per call
@@ -91,7 +74,7 @@ int main(int argc, char** argv) {
   for (const char* scenario : {"riser_paper_case5_j3", "riser_peer_tensioned"})
     for (const bool joint : {true, false})
       for (const int n : counts) {
-        const RiserModel m = builtinModel(scenario, n, joint);
+        const RiserModel m = builtinRiserModel(scenario, n, joint);
         const Eigen::VectorXd y = movingState(m);
         const long calls = std::max(20L, 200000L / (n + 1));
         RiserWorkspace ws = makeWorkspace(m, kRate);
