@@ -21,34 +21,16 @@
 #include "riser/riser_dynamics.hpp"
 #include "riser/riser_statics.hpp"
 #include "bench_clock.hpp"
+#include "riser_moving_state.hpp"
 
 using namespace maris;
 using namespace maris::riser;
 
 namespace {
 
-RiserModel peerModel(int n, bool joint) {
-  const std::string path = "scenarios/riser/riser_peer_tensioned.json";
-  RiserParameters p = riserBinder().read(scenarioFromText(std::string(*builtinResource(path)), path).parameters);
-  p.segment_count = n;
-  p.formulation = joint ? "joint" : "absolute";
-  return buildRiserModel(p);
-}
+RiserModel peerModel(int n, bool joint) { return bench::builtinRiserModel("riser_peer_tensioned", n, joint); }
 
-// The static shape set in motion: segment i turns at 0.02 (sin 0.7i, cos 1.3i, sin 0.4i) rad/s; in absolute
-// coordinates its origin moves at 0.05 (cos 0.5i, sin 0.9i, 0.1 cos i) m/s.
-Eigen::VectorXd movingState(const RiserModel& m) {
-  RunContext ctx;
-  const StaticSolution s = solveStatics(m, ctx);
-  Eigen::VectorXd y = restState(m, s.orientation, s.top);
-  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
-    const double a = i;
-    y.segment<3>(angularVelocityStateOffset(m, i)) = 0.02 * Vec3(std::sin(0.7 * a), std::cos(1.3 * a), std::sin(0.4 * a));
-    if (m.formulation == Formulation::Absolute)
-      y.segment<3>(velocityStateOffset(m, i)) = 0.05 * Vec3(std::cos(0.5 * a), std::sin(0.9 * a), 0.1 * std::cos(a));
-  }
-  return y;
-}
+using bench::movingState;
 
 // Largest difference between two right-hand sides relative to the largest entry of the same kind (the same
 // component of every segment, e.g. all angular accelerations z; the header and work entries each on their own).

@@ -1,4 +1,5 @@
 #include "riser/riser_dynamics.hpp"
+#include "riser/riser_small_lu.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -269,7 +270,7 @@ void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
       pivot -= ws.lower[k] * ws.pivot_upper[k - 1];
       r -= ws.lower[k] * ws.reaction[f + k - 1];
     }
-    const Eigen::PartialPivLU<Mat3> lu(pivot);
+    const SmallLu3 lu(pivot);  // Eigen's PartialPivLU to the bit, without its general kernels
     ws.pivot_upper[k] = lu.solve(ws.upper[k]);
     ws.reaction[f + k] = lu.solve(r);
   }

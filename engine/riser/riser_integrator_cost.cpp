@@ -8,16 +8,18 @@
 namespace maris::riser {
 namespace {
 
-// Measured weights (bench_riser_auto_cost, case 5 and the peer riser, n = 20…400), in right-hand sides:
-// a chart residual is one evaluation plus the chart maps; a banded solve of the force-space Newton matrix
-// (9(n + 1) unknowns, bandwidth 14) and, in joint coordinates, the twin's solve and the map back.
-constexpr double kResidualCost = 1.1;
-constexpr double kAbsoluteSolveCost = 0.35;
-constexpr double kJointSolveCost = 0.55;
-constexpr double kFactorisationCost = 2.0;
-// One right-hand side per segment [µs] (docs/riser_work_precision.md: 0.50–0.67 µs from n = 10 to 1000), for
-// the per-step times of the method line only.
-constexpr double kRhsMicrosecondsPerSegment = 0.55;
+// Measured weights (bench_riser_auto_cost: case 5 and the peer riser, J3 and A3, n = 20…400, minimum of 3 repeats;
+// the table in docs/riser_work_precision.md), in right-hand sides: a chart residual is one evaluation plus the chart
+// maps (1.37–1.46); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
+// coordinates, the twin's solve and the map back (A 1.05–1.16, J 1.08–1.19); a refresh's work beside its balance
+// evaluations (colouring, the band's assembly and factorisation: 3.7–8.8, median 5).
+constexpr double kResidualCost = 1.4;
+constexpr double kAbsoluteSolveCost = 1.1;
+constexpr double kJointSolveCost = 1.15;
+constexpr double kFactorisationCost = 5.0;
+// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.34–0.36 µs from n = 20 to 400), for the per-step
+// times of the method line only.
+constexpr double kRhsMicrosecondsPerSegment = 0.35;
 
 std::string grouped(double value) {
   const long v = std::lround(value);

@@ -1,7 +1,7 @@
 // Predicted cost of the riser's integrators, for the `auto` choice of planIntegration.
 //
-// The unit is one right-hand side (evaluateRhs, O(n): 0.5–0.6 µs per segment measured, see
-// docs/riser_work_precision.md), so the prediction does not depend on the machine:
+// The unit is one right-hand side (evaluateRhs, O(n): 0.34–0.36 µs per segment measured by bench_riser_auto_cost,
+// see docs/riser_work_precision.md), so the prediction does not depend on the machine:
 //   RK4:      4 evaluations per step, steps = end_time / h, h = the smaller of half its stability limit
 //             2.8/ω_max and the step whose phase error on the top's frequency meets the tolerance;
 //   DOPRI5:   stability-bound as well; reported at the measured 2.7 × RK4's evaluations, never chosen;

@@ -6,6 +6,7 @@
 
 #include "core/angles.hpp"
 #include "riser/riser_buoyancy.hpp"
+#include "riser/riser_piecewise_catenary.hpp"
 
 namespace maris::riser {
 namespace {
@@ -291,8 +292,12 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     const Vec3 dir = (m.anchor - top).normalized();
     for (double sk : s) points.push_back(top + sk * dir);
   } else if (fixed_bottom && m.top != TopCondition::Free && (m.anchor - top).norm() < p.length) {
+    // Weight changing along the riser (buoyancy modules): the catenary piece by piece, sag and hog bends in place.
+    if (submergedWeightVaries(m.segments)) {
+      if (const auto line = piecewiseCatenary(m.segments, m.seabed.get(), top, m.anchor, p.length, s)) points = line->points;
+    }
     // On a bed the sagging arc would bury its lower part: start from the cable catenary resting on the bed.
-    if (m.seabed) points = seabedInitialPoints(*m.seabed, top, m.anchor, p.length, s);
+    if (m.seabed && points.empty()) points = seabedInitialPoints(*m.seabed, top, m.anchor, p.length, s);
     if (points.empty()) points = arcPoints(top, m.anchor, p.length, s);
   } else {
     const double inclination = radiansFromDegrees(p.initial_inclination_deg);
