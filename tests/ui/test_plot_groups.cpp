@@ -229,6 +229,43 @@ class PlotGroupsTest : public QObject {
     QVERIFY(!tabs->isTabVisible(0));
   }
 
+  // A scene's declared groups (its registry entry's plot_groups) come first, each with its plots in the order of its
+  // names; a plot in none of them keeps the group of its table; a group that holds no plot of the run is left out.
+  void declaredGroupsComeFirstAndTablesTakeTheRest() {
+    const Results made = riserLikePlots();
+    const std::vector<PlotGroupSpec> declared = {
+        {"Over time at the probes", {"history_Probe*_displacement", "history_Stress_at_the_probes"}},
+        {"Along the riser", {"envelope_*", "profile_t24_*", "fatigue_*"}},
+        {"Sweeps", {"frequency_*"}},  // none in this run
+    };
+    const std::vector<PlotGroup> groups = groupPlots(made, declared);
+    QCOMPARE(groups.size(), std::size_t(4));
+    QCOMPARE(groups[0].title, QStringLiteral("Over time at the probes"));
+    QCOMPARE(groups[0].plots, std::vector<int>({0, 1, 2, 5}));
+    QCOMPARE(groups[1].title, QStringLiteral("Along the riser"));
+    QCOMPARE(groups[1].plots, std::vector<int>({7, 8, 9, 10, 11, 12}));
+    QCOMPARE(groups[1].common_prefix, QString());  // "Envelope: " is not shared by the whole group
+    QCOMPARE(groups[2].title, QStringLiteral("Probe points, end reactions and energies over time"));
+    QCOMPARE(groups[2].plots, std::vector<int>({3, 4, 6}));  // the history's plots no group declared
+    QCOMPARE(groups[3].title, QStringLiteral("Modes"));
+    QVERIFY(plotGroupHolds(declared[0], "history_Probe_2_displacement"));
+    QVERIFY(!plotGroupHolds(declared[0], "history_Probe_2_stress"));
+    QVERIFY(plotGroupHolds({"", {"a*bc"}}, "abc"));  // "a" and "bc" with nothing between
+    QVERIFY(!plotGroupHolds({"", {"ab*bc"}}, "abc"));  // head and tail may not overlap
+
+    // In the panel: the declared groups are the plot list's headings, and declaring them regroups shown results.
+    PlotPanel panel;
+    panel.resize(420, 600);
+    panel.showResults(std::make_shared<Results>(made), QStringLiteral("run 1"));
+    QCOMPARE(panel.groups().size(), std::size_t(5));
+    panel.setDeclaredGroups(declared);
+    QCOMPARE(panel.groups().size(), std::size_t(4));
+    QVERIFY(panel.showsPlotList());
+    QCOMPARE(panel.plotList()->itemText(0), QStringLiteral("Over time at the probes"));
+    QCOMPARE(panel.plotList()->itemText(4), QStringLiteral("Stress at the probes"));
+    QCOMPARE(panel.plotList()->count(), 14 + 4);
+  }
+
   // Six plots or fewer, or all from one table: plain tabs, no chooser, when their titles fit.
   void fewPlotsStayPlainTabs() {
     PlotPanel panel;

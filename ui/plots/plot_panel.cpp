@@ -181,7 +181,7 @@ void PlotPanel::rebuildTabs(const Results& results) {
 void PlotPanel::regroup(const Results& results) {
   const QString shown_group =
       group_box_->currentIndex() >= 0 ? group_box_->currentText() : QString();
-  groups_ = groupPlots(results);
+  groups_ = groupPlots(results, declared_groups_);
   QStringList titles;
   for (int i = 0; i < count(); ++i) {
     const int g = groupOfTab(i);
@@ -253,6 +253,12 @@ PlotView* PlotPanel::takeSpareView(const PlotSpec& spec) {
   if (auto it = references_.find(spec.name); it != references_.end()) view->setReferences(it->second);
   view->setObjectName(QString::fromStdString("plot:" + spec.name));
   return view;
+}
+
+void PlotPanel::setDeclaredGroups(const std::vector<PlotGroupSpec>& declared) {
+  if (declared == declared_groups_) return;
+  declared_groups_ = declared;
+  if (shown_) regroup(*shown_);
 }
 
 void PlotPanel::setAvailableRuns(const std::vector<RunRecord>& runs, quint64 shown_run) {

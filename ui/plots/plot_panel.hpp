@@ -38,6 +38,9 @@ class PlotPanel : public QWidget {
   // current tab, and the change between a live run's plots and the finished run's (which has more)
   // makes no new views after the first run (making a plot view and its first layout cost ~2 ms each).
   void showResults(std::shared_ptr<const Results> results, const QString& label);
+  // The groups the shown scene declares (SceneDefinition::plot_groups); set before its results are shown. Shown
+  // results are grouped again when they change.
+  void setDeclaredGroups(const std::vector<PlotGroupSpec>& declared);
   // Runs offered for overlay (the shown one is skipped by id).
   void setAvailableRuns(const std::vector<RunRecord>& runs, quint64 shown_run);
   void setOverlay(quint64 run, bool on);
@@ -97,6 +100,7 @@ class PlotPanel : public QWidget {
   PlotList* plot_list_;
   bool list_mode_ = false;
   std::vector<PlotGroup> groups_;
+  std::vector<PlotGroupSpec> declared_groups_;
   bool grouping_ = false;  // inside showGroup: tab changes are its own
   QAction* log_x_;
   QAction* log_y_;
