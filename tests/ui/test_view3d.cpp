@@ -123,6 +123,17 @@ std::pair<double, double> colourBarRange(SceneView& view) {
   return {0.0, 0.0};
 }
 
+// The test tube (scalars 0 … 20, top to bottom) with its scalars × `factor`, named `name`, in `unit`.
+std::shared_ptr<Results> scaledTube(double factor, const std::string& name, const std::string& unit) {
+  auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
+  for (auto& frame : tube->view.frames)
+    for (auto& shape : frame.shapes)
+      for (double& v : shape.scalars) v *= factor;
+  tube->view.scalar_name = name;
+  tube->view.scalar_unit = unit;
+  return tube;
+}
+
 // The colour bar's title and its lookup table's range (the labels' numbers, in the bar's unit).
 std::pair<QString, std::pair<double, double>> colourBarTitle(SceneView& view) {
   vtkPropCollection* props = view.glWidget()->renderer()->GetViewProps();
@@ -352,12 +363,7 @@ class View3dTest : public QObject {
     view.resize(500, 500);
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
-    auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
-    for (auto& frame : tube->view.frames)
-      for (auto& shape : frame.shapes)
-        for (double& v : shape.scalars) v *= 1e6;  // 0 … 20 MPa
-    tube->view.scalar_name = "bending stress";
-    tube->view.scalar_unit = "Pa";
+    auto tube = scaledTube(1e6, "bending stress", "Pa");  // 0 … 20 MPa
     view.showResults(tube);
     auto [title, range] = colourBarTitle(view);
     QVERIFY2(title.startsWith(QStringLiteral("bending stress [MPa]")), qPrintable(title));
@@ -383,12 +389,7 @@ class View3dTest : public QObject {
     view.resize(500, 500);
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
-    auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
-    for (auto& frame : tube->view.frames)
-      for (auto& shape : frame.shapes)
-        for (double& v : shape.scalars) v *= 1e5;  // 0 … 2 MN
-    tube->view.scalar_name = "axial force";
-    tube->view.scalar_unit = "N";
+    auto tube = scaledTube(1e5, "axial force", "N");  // 0 … 2 MN
     view.showResults(tube);
     ColorMapControl* control = view.colorControl();
     QCOMPARE(control->minLabel()->text(), QStringLiteral("Min [MN]"));
