@@ -148,6 +148,7 @@ bool MainWindow::startRun() {
   }
   if (!confirmLargeRun()) return false;
   live_->restart();
+  plots_->setDeclaredGroups(document_->scene()->plot_groups);  // live plots are grouped as the scene wants
   const quint64 id = runs_->start(*document_->scene(), document_->scenario());
   run_panel_->log(RunPanel::Level::Info,
                   tr("Run %1 started: %2").arg(id).arg(QString::fromStdString(document_->scenario().name)));
@@ -182,6 +183,7 @@ void MainWindow::cancelRun() {
 
 void MainWindow::showRecord(const RunRecord& record) {
   shown_run_ = record.id;
+  if (const SceneDefinition* scene = library_->findScene(record.scenario.scene)) plots_->setDeclaredGroups(scene->plot_groups);
   plots_->showResults(record.results, record.label);
   // Overlays and the all-runs CSV combine runs whose columns mean the same: runs of the same scenario.
   std::vector<RunRecord> same_scenario;

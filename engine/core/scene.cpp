@@ -1,11 +1,23 @@
 #include "core/scene.hpp"
 
 #include <algorithm>
+#include <string_view>
 
 #include "core/input_limits.hpp"
 
 
 namespace maris {
+
+bool plotGroupHolds(const PlotGroupSpec& group, const std::string& plot_name) {
+  return std::any_of(group.plots.begin(), group.plots.end(), [&](const std::string& pattern) {
+    const std::size_t star = pattern.find('*');
+    if (star == std::string::npos) return pattern == plot_name;
+    const std::string_view head(pattern.data(), star), tail(pattern.data() + star + 1, pattern.size() - star - 1);
+    const std::string_view name(plot_name);
+    return name.size() >= head.size() + tail.size() && name.substr(0, head.size()) == head &&
+           name.substr(name.size() - tail.size()) == tail;
+  });
+}
 
 std::vector<std::string> upgradeParameters(const SceneDefinition& scene, Json& parameters) {
   if (!scene.upgrade || !parameters.is_object()) return {};

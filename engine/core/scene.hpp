@@ -15,6 +15,18 @@
 
 namespace maris {
 
+// A group of plots a scene declares for front ends that group many plots (the GUI's plot list and group chooser):
+// its title and its plots by name, in the order wanted. A name with one '*' matches every plot name that starts
+// with the text before it and ends with the text after it ("envelope_*", "probe*_displacement").
+struct PlotGroupSpec {
+  std::string title;
+  std::vector<std::string> plots;
+  bool operator==(const PlotGroupSpec&) const = default;
+};
+
+// True when `plot_name` is one of `group`'s names or matches one of its patterns.
+bool plotGroupHolds(const PlotGroupSpec& group, const std::string& plot_name);
+
 struct SceneDefinition {
   std::string name;         // registry key used in scenario files: "riser"
   std::string title;        // "Riser / cable dynamics"
@@ -38,6 +50,9 @@ struct SceneDefinition {
   // value and why. Never refuses a run: front ends show them before a run, and runScenario adds them to the
   // run's warnings. A built-in example that warns says why in its description.
   std::function<std::vector<FieldError>(const Json& parameters)> plausibility;
+  // Optional: how its plots are grouped where a run has many (by what they show rather than by table). A plot in
+  // no declared group is grouped with the other plots of its table; front ends know no plot by name.
+  std::vector<PlotGroupSpec> plot_groups;
 };
 
 // Sets scene.estimate from a typed estimator over the scene's parameter struct.

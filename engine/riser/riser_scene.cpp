@@ -10,6 +10,7 @@
 #include "riser/riser_integration.hpp"
 #include "riser/riser_modes_krylov.hpp"
 #include "riser/riser_plausibility.hpp"
+#include "riser/riser_plot_groups.hpp"
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser/riser_stress_convergence.hpp"
@@ -85,6 +86,7 @@ SceneDefinition makeRiserScene() {
   scene.upgrade = riser::upgradeRiserParameters;
   setWorkEstimate<riser::RiserParameters>(scene, riser::riserBinder(), riser::estimateRiserWork);
   setPlausibility<riser::RiserParameters>(scene, riser::riserBinder(), riser::riserPlausibility);
+  scene.plot_groups = riser::riserPlotGroups();
   return scene;
 }
 

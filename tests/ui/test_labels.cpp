@@ -3,6 +3,7 @@
 // its scalars in the results dock, scanned for snake_case words ("c_wave_holtrop") and dotted parameter paths
 // ("speed.froude_min"). The test fails listing every offender. Columns and scalars whose scene declared no label
 // (shown under the readable fallback made from the name) are counted and listed, not failed.
+#include <map>
 #include <memory>
 #include <regex>
 #include <set>
@@ -59,7 +60,11 @@ class LabelsTest : public QObject {
     QStringList offenders, fallbacks;
     int texts = 0, declared = 0;
     std::set<std::string> seen_fallbacks;
+    std::map<std::string, std::set<std::string>> unused_group_names;  // scene -> declared plot names no plot matched
     for (const auto& b : test::uiTestExamples()) {  // under the sanitizers each scene's main example, shortened
+      const SceneDefinition& scene = requireScene(b.scenario.scene);
+      if (!unused_group_names.count(scene.name))
+        for (const PlotGroupSpec& g : scene.plot_groups) unused_group_names[scene.name].insert(g.plots.begin(), g.plots.end());
       RunContext context({}, nullptr);
       const Results results = runScenario(requireScene(b.scenario.scene), b.scenario, context);
       const QString where = QString::fromStdString(b.id);
@@ -69,6 +74,16 @@ class LabelsTest : public QObject {
       };
       for (const PlotSpec& spec : results.plots) {
         const QString plot_name = QString::fromStdString(spec.name);
+        // A scene that declares plot groups puts every plot in one of them.
+        int holders = 0;
+        for (const PlotGroupSpec& g : scene.plot_groups)
+          for (const std::string& name : g.plots)
+            if (plotGroupHolds(PlotGroupSpec{g.title, {name}}, spec.name)) {
+              holders += 1;
+              unused_group_names[scene.name].erase(name);
+            }
+        QVERIFY2(scene.plot_groups.empty() || holders == 1,
+                 qPrintable(QStringLiteral("%1: plot %2 is in %3 declared plot groups").arg(where, plot_name).arg(holders)));
         QVERIFY2(!spec.title.empty(), qPrintable(where + ": plot " + plot_name + " has no title (its tab would show "
                                                                              "the file stem)"));
         QCustomPlot plot;
@@ -92,6 +107,11 @@ class LabelsTest : public QObject {
         declared += !s.label.empty();
       }
     }
+    // Every name a scene's plot groups declare is a plot of one of its built-in scenarios (no name left behind);
+    // the sanitizers' shortened examples do not run every scenario.
+    if (!test::kSanitizedBuild)
+      for (const auto& [scene, names] : unused_group_names)
+        for (const std::string& name : names) QFAIL(qPrintable(QString::fromStdString(scene + ": plot group name " + name + " matches no plot")));
     qInfo("%d texts scanned; %d plotted columns and scalars with a declared label; %lld fall back to their name:",
           texts, declared, static_cast<long long>(fallbacks.size()));
     for (const QString& f : fallbacks) qInfo("  fallback %s", qPrintable(f));

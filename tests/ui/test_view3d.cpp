@@ -6,6 +6,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSlider>
 #include <QSettings>
@@ -120,6 +121,17 @@ std::pair<double, double> colourBarRange(SceneView& view) {
       return {range[0], range[1]};
     }
   return {0.0, 0.0};
+}
+
+// The test tube (scalars 0 … 20, top to bottom) with its scalars × `factor`, named `name`, in `unit`.
+std::shared_ptr<Results> scaledTube(double factor, const std::string& name, const std::string& unit) {
+  auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
+  for (auto& frame : tube->view.frames)
+    for (auto& shape : frame.shapes)
+      for (double& v : shape.scalars) v *= factor;
+  tube->view.scalar_name = name;
+  tube->view.scalar_unit = unit;
+  return tube;
 }
 
 // The colour bar's title and its lookup table's range (the labels' numbers, in the bar's unit).
@@ -351,12 +363,7 @@ class View3dTest : public QObject {
     view.resize(500, 500);
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
-    auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
-    for (auto& frame : tube->view.frames)
-      for (auto& shape : frame.shapes)
-        for (double& v : shape.scalars) v *= 1e6;  // 0 … 20 MPa
-    tube->view.scalar_name = "bending stress";
-    tube->view.scalar_unit = "Pa";
+    auto tube = scaledTube(1e6, "bending stress", "Pa");  // 0 … 20 MPa
     view.showResults(tube);
     auto [title, range] = colourBarTitle(view);
     QVERIFY2(title.startsWith(QStringLiteral("bending stress [MPa]")), qPrintable(title));
@@ -372,6 +379,58 @@ class View3dTest : public QObject {
     setDisplayUnit("Pa", "Pa");
     view.showResults(tube);
     QVERIFY(colourBarTitle(view).first.startsWith(QStringLiteral("bending stress [Pa]")));
+  }
+
+  // The Colours control's range fields are in the unit the bar reads (2 MN of force: MN by default; kN once chosen
+  // in View ▸ Units), a range typed there is kept in SI (what is saved and what colours the model), and a fixed bar
+  // is labelled in the unit its range was typed in.
+  void colourRangeFieldsFollowTheDisplayUnit() {
+    SceneView view;
+    view.resize(500, 500);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    auto tube = scaledTube(1e5, "axial force", "N");  // 0 … 2 MN
+    view.showResults(tube);
+    ColorMapControl* control = view.colorControl();
+    QCOMPARE(control->minLabel()->text(), QStringLiteral("Min [MN]"));
+    QCOMPARE(control->minEdit()->text(), QStringLiteral("0"));
+    QCOMPARE(control->maxEdit()->text(), QStringLiteral("2"));  // the data's 2e6 N
+
+    // A fixed range typed in MN: 0.5 … 1.5 MN is 5e5 … 1.5e6 N for the colours and the saved settings.
+    control->automaticBox()->setChecked(false);
+    control->minEdit()->setText(QStringLiteral("0.5"));
+    emit control->minEdit()->editingFinished();
+    control->maxEdit()->setText(QStringLiteral("1.5"));
+    emit control->maxEdit()->editingFinished();
+    QCOMPARE(view.colorRange(), std::make_pair(5e5, 1.5e6));
+    QCOMPARE(view.colorSettings().min, 5e5);
+    QCOMPARE(loadColorSettings("axial force")->max, 1.5e6);
+    auto [title, range] = colourBarTitle(view);
+    QVERIFY2(title.startsWith(QStringLiteral("axial force [MN]")), qPrintable(title));
+    QCOMPARE(range, std::make_pair(0.5, 1.5));
+
+    // View ▸ Units ▸ Force ▸ kN: the same range reads 500 … 1500 kN; retyping the max in kN keeps the min exact.
+    setDisplayUnit("N", "kN");
+    view.showResults(tube);
+    QCOMPARE(control->minLabel()->text(), QStringLiteral("Min [kN]"));
+    QCOMPARE(control->minEdit()->text(), QStringLiteral("500"));
+    QCOMPARE(control->maxEdit()->text(), QStringLiteral("1500"));
+    std::tie(title, range) = colourBarTitle(view);
+    QVERIFY2(title.startsWith(QStringLiteral("axial force [kN]")), qPrintable(title));
+    QCOMPARE(range, std::make_pair(500.0, 1500.0));
+    control->maxEdit()->setText(QStringLiteral("1200"));
+    emit control->maxEdit()->editingFinished();
+    QCOMPARE(view.colorRange(), std::make_pair(5e5, 1.2e6));
+    QCOMPARE(view.colorSettings().min, 5e5);
+
+    // A unit without prefixes (a dimensionless index) shows its fields as they are, with no unit.
+    auto index = std::make_shared<Results>(*tube);
+    index->view.scalar_name = "segment index";
+    index->view.scalar_unit = "-";
+    view.showResults(index);
+    QCOMPARE(control->minLabel()->text(), QStringLiteral("Min"));
+    QCOMPARE(control->maxEdit()->text(), QStringLiteral("2e+06"));
+    setDisplayUnit("N", "N");
   }
 
   // A static result (one frame) shows no time, but a label of its own it shows in the caption: what a ship's

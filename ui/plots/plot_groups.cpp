@@ -30,12 +30,29 @@ QString commonPrefix(const Results& results, const PlotGroup& group) {
 
 }  // namespace
 
-std::vector<PlotGroup> groupPlots(const Results& results, int ungrouped_limit) {
+std::vector<PlotGroup> groupPlots(const Results& results, const std::vector<PlotGroupSpec>& declared,
+                                  int ungrouped_limit) {
   std::vector<PlotGroup> groups;
-  if (static_cast<int>(results.plots.size()) <= ungrouped_limit) return groups;
-  for (int i = 0; i < static_cast<int>(results.plots.size()); ++i) {
+  const int n = static_cast<int>(results.plots.size());
+  if (n <= ungrouped_limit) return groups;
+  std::vector<bool> placed(static_cast<std::size_t>(n), false);
+  for (const PlotGroupSpec& spec : declared) {
+    PlotGroup group;
+    group.title = QString::fromStdString(spec.title);
+    for (const std::string& name : spec.plots)
+      for (int i = 0; i < n; ++i)
+        if (!placed[i] && plotGroupHolds(PlotGroupSpec{{}, {name}}, results.plots[i].name)) {
+          placed[i] = true;
+          group.plots.push_back(i);
+        }
+    if (!group.plots.empty()) groups.push_back(std::move(group));
+  }
+  const std::size_t declared_groups = groups.size();
+  for (int i = 0; i < n; ++i) {
+    if (placed[i]) continue;
     const std::string& table = results.plots[i].table;
-    auto it = std::find_if(groups.begin(), groups.end(), [&](const PlotGroup& g) { return g.table == table; });
+    auto it = std::find_if(groups.begin() + static_cast<std::ptrdiff_t>(declared_groups), groups.end(),
+                           [&](const PlotGroup& g) { return g.table == table; });
     if (it == groups.end()) {
       PlotGroup group;
       group.table = table;

@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QFileDialog>
 #include <QMenu>
+#include <QResizeEvent>
 #include <QTabWidget>
 #include <QToolBar>
 #include <QToolButton>
@@ -22,8 +23,8 @@
 namespace maris::ui {
 
 PlotPanel::PlotPanel(QWidget* parent)
-    : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new QTabWidget(this)), group_box_(new QComboBox(this)),
-      overlay_menu_(new QMenu(tr("Overlay runs"), this)) {
+    : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new PlotTabs(this)), group_box_(new QComboBox(this)),
+      plot_list_(new PlotList(this)), overlay_menu_(new QMenu(tr("Overlay runs"), this)) {
   toolbar_->setIconSize(QSize(16, 16));
   toolbar_->setToolButtonStyle(Qt::ToolButtonTextOnly);
   log_x_ = toolbar_->addAction(tr("Log x"));
@@ -75,6 +76,8 @@ PlotPanel::PlotPanel(QWidget* parent)
   connect(group_box_, &QComboBox::currentIndexChanged, this, [this](int g) {
     if (!grouping_) showGroup(g);
   });
+  plot_list_->hide();
+  connect(plot_list_, &PlotList::plotChosen, tabs_, &QTabWidget::setCurrentIndex);
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -82,6 +85,7 @@ PlotPanel::PlotPanel(QWidget* parent)
   layout->addWidget(toolbar_);
   // Above the tabs, not beside them: the tab bar keeps the panel's whole width.
   layout->addWidget(group_box_);
+  layout->addWidget(plot_list_);
   layout->addWidget(tabs_, 1);
 
   connect(log_x_, &QAction::toggled, this, [this](bool on) {
@@ -94,6 +98,7 @@ PlotPanel::PlotPanel(QWidget* parent)
     // A tab chosen from outside (a test, --tab) brings its group.
     if (!grouping_ && !groups_.empty() && groupOfTab(tab) >= 0 && groupOfTab(tab) != group_box_->currentIndex())
       group_box_->setCurrentIndex(groupOfTab(tab));
+    plot_list_->setCurrentPlot(tab);
     syncToolbar();
   });
   syncToolbar();
@@ -118,6 +123,10 @@ void PlotPanel::clear() {
   groups_.clear();
   group_box_->clear();
   group_box_->hide();
+  plot_list_->clear();
+  plot_list_->hide();
+  list_mode_ = false;
+  tabs_->tabBar()->show();
   qDeleteAll(views_);
   views_.clear();
   for (auto& [name, view] : spare_views_) delete view;
@@ -172,25 +181,43 @@ void PlotPanel::rebuildTabs(const Results& results) {
 void PlotPanel::regroup(const Results& results) {
   const QString shown_group =
       group_box_->currentIndex() >= 0 ? group_box_->currentText() : QString();
-  groups_ = groupPlots(results);
+  groups_ = groupPlots(results, declared_groups_);
+  QStringList titles;
   for (int i = 0; i < count(); ++i) {
     const int g = groupOfTab(i);
     tabs_->setTabText(i, plotTabText(views_[i]->spec(), g >= 0 ? &groups_[g] : nullptr));
-    tabs_->setTabToolTip(i, plotTabText(views_[i]->spec()));
+    titles << plotTabText(views_[i]->spec());
+    tabs_->setTabToolTip(i, titles.back());
   }
+  plot_list_->setPlots(titles, groups_);
+  plot_list_->setCurrentPlot(tabs_->currentIndex());
   grouping_ = true;
   group_box_->clear();
   for (const PlotGroup& g : groups_) {
     group_box_->addItem(g.title);
     group_box_->setItemData(group_box_->count() - 1, g.title, Qt::ToolTipRole);
   }
-  group_box_->setVisible(!groups_.empty());
   // The group of the current tab stays chosen (else the group of the same title, else the first).
   int g = groupOfTab(tabs_->currentIndex());
   if (g < 0) g = std::max(0, group_box_->findText(shown_group));
   group_box_->setCurrentIndex(groups_.empty() ? -1 : g);
   grouping_ = false;
-  showGroup(groups_.empty() ? -1 : g);
+  choosePicker(true);
+}
+
+void PlotPanel::choosePicker(bool force) {
+  const bool list = count() > 0 && !tabsFitUnelided(*tabs_, groups_, width());
+  if (list == list_mode_ && !force) return;
+  list_mode_ = list;
+  tabs_->tabBar()->setVisible(!list);
+  plot_list_->setVisible(list);
+  group_box_->setVisible(!list && !groups_.empty());
+  showGroup(groups_.empty() ? -1 : group_box_->currentIndex());
+}
+
+void PlotPanel::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  choosePicker(false);
 }
 
 int PlotPanel::groupOfTab(int tab) const {
@@ -201,7 +228,8 @@ int PlotPanel::groupOfTab(int tab) const {
 
 void PlotPanel::showGroup(int g) {
   grouping_ = true;
-  const bool grouped = g >= 0 && g < static_cast<int>(groups_.size());
+  // The plot list offers every plot: no tab is hidden behind it.
+  const bool grouped = !list_mode_ && g >= 0 && g < static_cast<int>(groups_.size());
   // The group's tabs are shown and one of them made current before the others hide, so the current tab never
   // falls into a hidden one.
   for (int i = 0; i < count(); ++i)
@@ -225,6 +253,12 @@ PlotView* PlotPanel::takeSpareView(const PlotSpec& spec) {
   if (auto it = references_.find(spec.name); it != references_.end()) view->setReferences(it->second);
   view->setObjectName(QString::fromStdString("plot:" + spec.name));
   return view;
+}
+
+void PlotPanel::setDeclaredGroups(const std::vector<PlotGroupSpec>& declared) {
+  if (declared == declared_groups_) return;
+  declared_groups_ = declared;
+  if (shown_) regroup(*shown_);
 }
 
 void PlotPanel::setAvailableRuns(const std::vector<RunRecord>& runs, quint64 shown_run) {

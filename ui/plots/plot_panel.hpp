@@ -2,7 +2,9 @@
 // (log axes, fit, reference data from a CSV, export as PNG/PDF/SVG/CSV of the shown run or of all
 // kept runs) and an "Overlay runs" menu listing earlier runs of the same scene, whose curves are
 // drawn dashed or in other colours on every tab. A run with many plots from several tables shows them in groups
-// (plots/plot_groups.hpp): a group chooser above the tab bar, and the chosen group's tabs.
+// (plots/plot_groups.hpp): a group chooser above the tab bar, and the chosen group's tabs. Where the tabs would have
+// to shorten their titles (a narrow panel), a plot list (plots/plot_list.hpp) takes the place of the group chooser
+// and the tab bar.
 #pragma once
 
 #include <map>
@@ -13,6 +15,7 @@
 #include <QWidget>
 
 #include "plots/plot_groups.hpp"
+#include "plots/plot_list.hpp"
 #include "plots/plot_view.hpp"
 #include "run/run_controller.hpp"
 
@@ -35,6 +38,9 @@ class PlotPanel : public QWidget {
   // current tab, and the change between a live run's plots and the finished run's (which has more)
   // makes no new views after the first run (making a plot view and its first layout cost ~2 ms each).
   void showResults(std::shared_ptr<const Results> results, const QString& label);
+  // The groups the shown scene declares (SceneDefinition::plot_groups); set before its results are shown. Shown
+  // results are grouped again when they change.
+  void setDeclaredGroups(const std::vector<PlotGroupSpec>& declared);
   // Runs offered for overlay (the shown one is skipped by id).
   void setAvailableRuns(const std::vector<RunRecord>& runs, quint64 shown_run);
   void setOverlay(quint64 run, bool on);
@@ -47,6 +53,9 @@ class PlotPanel : public QWidget {
   // The group chooser (hidden when the plots are not grouped) and the groups of the shown run (empty: none).
   QComboBox* groupBox() const { return group_box_; }
   const std::vector<PlotGroup>& groups() const { return groups_; }
+  // The plot list (shown instead of the tab bar and the group chooser when the tabs would shorten their titles).
+  PlotList* plotList() const { return plot_list_; }
+  bool showsPlotList() const { return list_mode_; }
 
   // Reads a CSV (see plots/reference_data.hpp) and draws it as markers on the current plot, for this
   // and later runs. Returns false and says why (message()) if the file cannot be read.
@@ -64,6 +73,9 @@ class PlotPanel : public QWidget {
   // Never narrower than the whole toolbar: no button may hide behind the toolbar's overflow "»".
   QSize minimumSizeHint() const override;
 
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
  signals:
   void message(const QString& text);  // export results and errors, for the status bar / log
 
@@ -76,14 +88,19 @@ class PlotPanel : public QWidget {
   void regroup(const Results& results);
   // Shows the tabs of group `g` only (every tab when the plots are not grouped).
   void showGroup(int g);
+  // Tabs when every group's tabs fit the panel's width unshortened, else the plot list.
+  void choosePicker(bool force);
   int groupOfTab(int tab) const;
   void syncToolbar();
   void exportCurrent(const QString& suffix);
 
   QToolBar* toolbar_;
-  QTabWidget* tabs_;
+  PlotTabs* tabs_;
   QComboBox* group_box_;
+  PlotList* plot_list_;
+  bool list_mode_ = false;
   std::vector<PlotGroup> groups_;
+  std::vector<PlotGroupSpec> declared_groups_;
   bool grouping_ = false;  // inside showGroup: tab changes are its own
   QAction* log_x_;
   QAction* log_y_;

@@ -10,6 +10,8 @@
 #include <QMenu>
 #include <QWidgetAction>
 
+#include "plots/result_plot.hpp"
+
 namespace maris::ui {
 
 namespace {
@@ -21,7 +23,8 @@ QString number(double v) { return QString::number(v, 'g', 6); }
 ColorMapControl::ColorMapControl(QWidget* parent)
     : QToolButton(parent), map_(new QComboBox), automatic_(new QCheckBox(tr("Automatic"))),
       per_frame_(new QCheckBox(tr("Each frame its own range"))),
-      min_(new QLineEdit), max_(new QLineEdit), problem_(new QLabel) {
+      min_(new QLineEdit), max_(new QLineEdit), problem_(new QLabel), min_label_(new QLabel(tr("Min"))),
+      max_label_(new QLabel(tr("Max"))) {
   setText(tr("Colours"));
   setToolTip(tr("Colour map and colour-bar range of the coloured quantity"));
   setPopupMode(QToolButton::InstantPopup);
@@ -40,8 +43,8 @@ ColorMapControl::ColorMapControl(QWidget* parent)
   form->addRow(QString(), per_frame_);
   per_frame_->setObjectName(QStringLiteral("colorPerFrame"));
   per_frame_->setToolTip(tr("Automatic range of the frame shown (else of all frames of the run)"));
-  form->addRow(tr("Min"), min_);
-  form->addRow(tr("Max"), max_);
+  form->addRow(min_label_, min_);
+  form->addRow(max_label_, max_);
   form->addRow(problem_);
   auto* menu = new QMenu(this);
   auto* action = new QWidgetAction(menu);
@@ -75,26 +78,35 @@ ColorMapControl::ColorMapControl(QWidget* parent)
   syncEnabled();
 }
 
-void ColorMapControl::showSettings(const ColorSettings& settings, double data_lo, double data_hi) {
+void ColorMapControl::showSettings(const ColorSettings& settings, double data_lo, double data_hi,
+                                   const DisplayUnit& unit) {
   settings_ = settings;
+  unit_ = unit.unit.empty() ? DisplayUnit{} : unit;
+  min_label_->setText(axisLabel(tr("Min").toStdString(), unit_.unit));
+  max_label_->setText(axisLabel(tr("Max").toStdString(), unit_.unit));
   const QSignalBlocker b1(map_), b2(automatic_), b3(per_frame_);
   map_->setCurrentIndex(static_cast<int>(settings.map));
   automatic_->setChecked(settings.automatic);
   per_frame_->setChecked(settings.per_frame);
-  min_->setText(number(settings.automatic ? data_lo : settings.min));
-  max_->setText(number(settings.automatic ? data_hi : settings.max));
+  shown_min_si_ = settings.automatic ? data_lo : settings.min;
+  shown_max_si_ = settings.automatic ? data_hi : settings.max;
+  shown_min_ = number(shown_min_si_ * unit_.factor);
+  shown_max_ = number(shown_max_si_ * unit_.factor);
+  min_->setText(shown_min_);
+  max_->setText(shown_max_);
   problem_->hide();
   syncEnabled();
 }
 
 void ColorMapControl::onRangeEdited() {
   if (automatic_->isChecked()) return;
-  bool ok_lo = false, ok_hi = false;
-  const double lo = min_->text().trimmed().toDouble(&ok_lo), hi = max_->text().trimmed().toDouble(&ok_hi);
+  double lo = 0.0, hi = 0.0;
+  const bool ok_lo = fieldValue(min_, shown_min_, shown_min_si_, lo);
+  const bool ok_hi = fieldValue(max_, shown_max_, shown_max_si_, hi);
   QString problem;
-  if (!ok_lo || !std::isfinite(lo))
+  if (!ok_lo)
     problem = tr("Min must be a number");
-  else if (!ok_hi || !std::isfinite(hi))
+  else if (!ok_hi)
     problem = tr("Max must be a number");
   else if (!(hi > lo))
     problem = tr("Max must be greater than min");
@@ -108,6 +120,18 @@ void ColorMapControl::onRangeEdited() {
   if (next == settings_) return;
   settings_ = next;
   emit settingsChanged(settings_);
+}
+
+bool ColorMapControl::fieldValue(const QLineEdit* field, const QString& shown_text, double shown_si, double& si) const {
+  const QString text = field->text().trimmed();
+  if (text == shown_text) {
+    si = shown_si;  // not retyped: no rounding through the 6 digits shown
+    return true;
+  }
+  bool ok = false;
+  const double shown = text.toDouble(&ok);
+  si = shown / unit_.factor;
+  return ok && std::isfinite(shown) && std::isfinite(si);
 }
 
 void ColorMapControl::syncEnabled() {

@@ -316,16 +316,24 @@ void SceneView::rebuildStatic() {
 void SceneView::applyColorSettings() {
   const auto [lo, hi] = colorRange();
   fillColorMap(colors_, color_settings_.map, lo, hi);
-  color_control_->showSettings(color_settings_, data_lo_, data_hi_);
-  if (!results_) return;
+  if (!results_) {
+    color_control_->showSettings(color_settings_, data_lo_, data_hi_);
+    return;
+  }
   // The bar reads in an engineering unit with ticks on a 1–2–5 grid; the title wraps to the bar's strip
   // (~15 % of the view): a long quantity name ("modal amplitude (displacement, or twist for torsion modes)")
   // would run off the right edge.
-  // A unit chosen in View ▸ Units is kept; otherwise the prefix that reads best for the range.
+  // A unit chosen in View ▸ Units is kept; otherwise the prefix that reads best for the data's range. The range
+  // fields of the Colours control are in that unit, and so is the bar of a fixed range (as it was typed); an
+  // automatic bar picks the prefix that reads best for the range it shows.
   const std::string& si_unit = results_->view.scalar_unit;
-  const DisplayUnit chosen = displayUnit(si_unit);
-  const ColorBarScale scale = displayUnitChosen(si_unit) ? colorBarScaleIn(lo, hi, chosen.factor, chosen.unit)
-                                                         : colorBarScale(lo, hi, si_unit);
+  const bool chosen = displayUnitChosen(si_unit);
+  const ColorBarScale data_scale = colorBarScale(data_lo_, data_hi_, si_unit);
+  const DisplayUnit field_unit = chosen ? displayUnit(si_unit) : DisplayUnit{data_scale.factor, data_scale.unit};
+  color_control_->showSettings(color_settings_, data_lo_, data_hi_, field_unit);
+  const ColorBarScale scale = chosen || !color_settings_.automatic
+                                  ? colorBarScaleIn(lo, hi, field_unit.factor, field_unit.unit)
+                                  : colorBarScale(lo, hi, si_unit);
   fillColorMap(bar_colors_, color_settings_.map, lo * scale.factor, hi * scale.factor);
   auto ticks = vtkSmartPointer<vtkDoubleArray>::New();
   for (double t : scale.ticks) ticks->InsertNextValue(t);
