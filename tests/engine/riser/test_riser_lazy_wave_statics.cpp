@@ -11,6 +11,7 @@
 #include "riser/riser_relaxation.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser_test_cases.hpp"
+#include "sanitized_build.hpp"
 
 namespace maris::riser {
 namespace {
@@ -79,11 +80,13 @@ TEST(RiserLazyWaveStatics, PiecewiseStartHasSagAndHogBendsAndEndsAtTheAnchor) {
 
 // The O(n) Newton from the piecewise start: no dynamic relaxation, no dense fallback, no warning, at most 15
 // iterations for every n from 20 to 60 and at 80 and 100 (measured 8–11; from the uniform catenary start it took
-// 35–102 damped iterations and needed dynamic relaxation at n = 30, 38, 44, 50).
+// 35–102 damped iterations and needed dynamic relaxation at n = 30, 38, 44, 50). Under the sanitizers those four
+// n only (the same code paths at each n); the whole range is checked in the Release build.
 TEST(RiserLazyWaveStatics, NewtonConvergesWithoutRelaxationOverARangeOfN) {
   std::vector<int> counts;
   for (int n = 20; n <= 60; n += 2) counts.push_back(n);
   counts.insert(counts.end(), {80, 100});
+  if (::maris::test::kSanitizedBuild) counts = {30, 38, 44, 50};
   for (int n : counts) {
     const RiserModel m = buildRiserModel(lazyWave(n));
     RunContext context;
@@ -99,8 +102,13 @@ TEST(RiserLazyWaveStatics, NewtonConvergesWithoutRelaxationOverARangeOfN) {
 // Dynamic relaxation (riser_relaxation: damped motion, generalized-α) run for 20 pendulum periods reaches the
 // Newton's shape: every joint within 1e-6 m (measured: the difference falls ×4 per period to 5e-10–9e-10 m after
 // 15 periods and stays there, the relaxation's own integration tolerance; 0.2–0.4 m after the first period).
+// Under the sanitizers n = 30 only, relaxed for 12 periods (the same code paths; 0.4 m / 4¹¹ ≈ 1e-7 m, inside
+// the same 1e-6 m): n = 50 and the full 20 periods are checked in the Release build.
 TEST(RiserLazyWaveStatics, NewtonShapeAgreesWithDynamicRelaxation) {
-  for (int n : {30, 50}) {
+  constexpr bool kSanitized = ::maris::test::kSanitizedBuild;
+  const std::vector<int> counts = kSanitized ? std::vector<int>{30} : std::vector<int>{30, 50};
+  const double periods = kSanitized ? 12.0 : 20.0;
+  for (int n : counts) {
     const RiserModel m = buildRiserModel(lazyWave(n));
     RunContext context;
     const StaticSolution s = solveStatics(m, context);
@@ -108,7 +116,7 @@ TEST(RiserLazyWaveStatics, NewtonShapeAgreesWithDynamicRelaxation) {
     still.motion_amplitude.setZero();
     DampedRelaxation relax(still);
     Eigen::VectorXd y = restState(relax.model(), m.initial_orientation, m.initial_top);
-    relax.advance(y, 20 * relax.period(), context);
+    relax.advance(y, periods * relax.period(), context);
     const auto newton = jointPositions(m, restState(m, s.orientation, s.top));
     const auto relaxed = jointPositions(relax.model(), y);
     ASSERT_EQ(newton.size(), relaxed.size());
