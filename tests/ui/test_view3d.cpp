@@ -13,11 +13,14 @@
 #include <QtTest>
 
 #include <vtkCamera.h>
+#include <vtkProp.h>
 #include <vtkPropCollection.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkScalarsToColors.h>
 
+#include "catalog.hpp"
+#include "core/run_context.hpp"
 #include "plots/display_units.hpp"
 #include "test_scene.hpp"
 #include "theme.hpp"
@@ -144,6 +147,15 @@ std::pair<QString, std::pair<double, double>> colourBarTitle(SceneView& view) {
       return {QString::fromUtf8(bar->GetTitle()), {range[0], range[1]}};
     }
   return {};
+}
+
+// Where a world point (z = 0) appears in the framebuffer's image (rows from the top).
+QPoint imagePoint(SceneView& view, double x, double y, int image_height) {
+  vtkRenderer* renderer = view.glWidget()->renderer();
+  renderer->SetWorldPoint(x, y, 0.0, 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  return {static_cast<int>(std::lround(d[0])), image_height - 1 - static_cast<int>(std::lround(d[1]))};
 }
 
 // Two translucent horizontal squares, red at z = 0 and blue at z = −5 (opacity 0.5 each), seen from
@@ -449,6 +461,52 @@ class View3dTest : public QObject {
     QVERIFY2(view.captionText().startsWith(QStringLiteral("Kelvin wave pattern at Fn = 0.35, U = 2.192 m/s\n"
                                                           "wave elevation drawn × 10")),
              qPrintable(view.captionText()));
+  }
+
+  // The ship's wave pattern is drawn around the hull, not only behind it: seen from above, pixels beside the hull
+  // (a quarter of the length out, from stern to bow) change when the pattern is taken away, and so do pixels behind
+  // the stern.
+  void shipWavePatternIsShownBesideTheHull() {
+    BuiltinScenario ship = *findBuiltin("ship_default");
+    ship.scenario.parameters.merge_patch(Json{{"speed", {{"count", 11}}}});
+    RunContext context({}, nullptr);
+    auto results = std::make_shared<Results>(runScenario(requireScene("ship"), ship.scenario, context));
+    auto without = std::make_shared<Results>(*results);
+    auto& shapes = without->view.frames.front().shapes;
+    const auto before = shapes.size();
+    std::erase_if(shapes, [](const Shape3D& s) { return s.name.rfind("Kelvin wave pattern", 0) == 0; });
+    QCOMPARE(shapes.size(), before - 1);
+    const double L = 4.0;  // the Wigley model, from x = 0 (stern) to 4 m (bow)
+    auto topDown = [&](std::shared_ptr<Results> r) {
+      SceneView view;
+      view.resize(700, 700);
+      view.show();
+      if (!QTest::qWaitForWindowExposed(&view)) return std::make_pair(QImage(), std::vector<QPoint>());
+      view.showResults(r);
+      vtkCamera* camera = view.glWidget()->renderer()->GetActiveCamera();
+      camera->SetFocalPoint(0.5 * L, 0, 0);
+      camera->SetPosition(0.5 * L, 0, 40);
+      camera->SetViewUp(1, 0, 0);
+      camera->SetViewAngle(30);
+      view.glWidget()->renderer()->ResetCameraClippingRange();
+      const QImage image = view.glWidget()->grabFramebuffer();
+      std::vector<QPoint> points;
+      for (int k = 1; k <= 9; ++k) points.push_back(imagePoint(view, L * k / 10.0, 0.25 * L, image.height()));
+      for (int k = 1; k <= 4; ++k) points.push_back(imagePoint(view, -0.25 * L * k, 0.25 * L, image.height()));
+      return std::make_pair(image, points);
+    };
+    const auto [with_image, points] = topDown(results);
+    const auto [without_image, points_again] = topDown(without);
+    QVERIFY(!with_image.isNull() && !without_image.isNull());
+    test::keepScreenshot(with_image, QStringLiteral("ship_wave_pattern_top"));
+    int beside = 0, behind = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      QVERIFY(with_image.rect().contains(points[i]));
+      const bool changed = with_image.pixel(points[i]) != without_image.pixel(points[i]);
+      (i < 9 ? beside : behind) += changed;
+    }
+    QVERIFY2(beside >= 8, qPrintable(QString::number(beside)));
+    QCOMPARE(behind, 4);
   }
 
   // Translucent surfaces are composited in depth order: seen from above, the nearer red square
