@@ -149,6 +149,25 @@ std::pair<QString, std::pair<double, double>> colourBarTitle(SceneView& view) {
   return {};
 }
 
+// The pixels where the colour bar is drawn: those that change when it is hidden.
+QRect colourBarPixels(SceneView& view) {
+  vtkScalarBarActor* bar = nullptr;
+  vtkPropCollection* props = view.glWidget()->renderer()->GetViewProps();
+  props->InitTraversal();
+  while (vtkProp* prop = props->GetNextProp())
+    if (auto* b = vtkScalarBarActor::SafeDownCast(prop)) bar = b;
+  if (!bar) return {};
+  const QImage with = view.glWidget()->grabFramebuffer();
+  bar->SetVisibility(0);
+  const QImage without = view.glWidget()->grabFramebuffer();
+  bar->SetVisibility(1);
+  QRect box;
+  for (int y = 0; y < with.height(); ++y)
+    for (int x = 0; x < with.width(); ++x)
+      if (with.pixel(x, y) != without.pixel(x, y)) box |= QRect(x, y, 1, 1);
+  return box;
+}
+
 // Where a world point (z = 0) appears in the framebuffer's image (rows from the top).
 QPoint imagePoint(SceneView& view, double x, double y, int image_height) {
   vtkRenderer* renderer = view.glWidget()->renderer();
@@ -461,6 +480,28 @@ class View3dTest : public QObject {
     QVERIFY2(view.captionText().startsWith(QStringLiteral("Kelvin wave pattern at Fn = 0.35, U = 2.192 m/s\n"
                                                           "wave elevation drawn × 10")),
              qPrintable(view.captionText()));
+  }
+
+  // A long quantity name makes a title wider than the bar's strip: at every width the title keeps clear of the
+  // view's right and top edges (it touched the right edge of a 630 px view), and where there is room the bar stays
+  // at its place, the right fifth of the view.
+  void colourBarTitleKeepsAMarginAtEverySize() {
+    for (int width : {420, 630, 1000}) {
+      SceneView view;
+      view.resize(width, 500);
+      view.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&view));
+      view.showResults(scaledTube(1e-3, "displacement magnitude", "m"));
+      QCoreApplication::processEvents();
+      const QRect bar = colourBarPixels(view);
+      const int w = view.glWidget()->grabFramebuffer().width();
+      const QString where = QStringLiteral("%1 px view: bar drawn over x %2..%3, y %4..%5 of %6")
+                                .arg(width).arg(bar.left()).arg(bar.right()).arg(bar.top()).arg(bar.bottom()).arg(w);
+      QVERIFY2(bar.width() > 40, qPrintable(where));  // the bar and its text are drawn
+      QVERIFY2(bar.right() <= w - 1 - 5, qPrintable(where));  // 8 px asked for; anti-aliasing may take a pixel or two
+      QVERIFY2(bar.top() >= 3, qPrintable(where));
+      if (width == 1000) QVERIFY2(bar.left() >= 0.78 * w, qPrintable(where));
+    }
   }
 
   // The ship's wave pattern is drawn around the hull, not only behind it: seen from above, pixels beside the hull
