@@ -278,6 +278,7 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
         s.scalars.push_back(w.elevation(i, j));
       }
     s.color = {0.2, 0.4, 0.8};
+    s.opacity = 0.75;  // the hull, below the waterline and inside the pattern now, shows through the water
     frame.shapes.push_back(std::move(s));
     frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s, around and behind the hull\n"
                              "wave elevation drawn × %g; hull at its real proportions",
