@@ -3,7 +3,7 @@
 #include <numbers>
 
 #include "core/text_format.hpp"
-#include "ship/kelvin_pattern.hpp"
+#include "ship/ship_wave_field.hpp"
 #include "ship/ship_study.hpp"
 
 namespace maris::ship {
@@ -256,16 +256,20 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   // 3-D view: the hull, both sides, with the still waterline.
   Frame3D frame = hullFrame(m.hull);
   {
-    // Far-field Kelvin pattern behind the stern at the design speed, its elevation drawn exaggerated (a 5 cm wave
-    // beside a 100 m hull would be flat); the view's caption names the speed and the exaggeration.
+    // The Kelvin pattern around and behind the hull at the design speed (the wave component of the thin-ship
+    // elevation: calm ahead of the bow, the bow's waves along the sides, the whole pattern behind the stern), its
+    // elevation drawn exaggerated (a 5 cm wave beside a 100 m hull would be flat); the caption names the speed
+    // and the exaggeration.
     constexpr double kElevationScale = 10.0;
     context.progress(0.97, "wave pattern");
-    GridKochin kochin(m.grid, false);
     const double L = m.hull.length_pp;
-    const WavePattern w = kelvinWavePattern(kochin, c.speed[d], p.gravity, m.grid.x_aft, 2.0 * L, 0.8 * L, 81, 41);
+    const double x_fore = m.grid.x(m.grid.nx() - 1);
+    const WaveFieldRegion region{.x_from = m.grid.x_aft - 2.0 * L, .x_to = x_fore + 0.25 * L, .half_width = 0.8 * L,
+                                 .nx = 131, .ny = 41};
+    const WavePattern w = thinShipWaveField(m.grid, c.speed[d], p.gravity, region).pattern;
     Shape3D s;
     s.kind = Shape3D::Kind::Surface;
-    s.name = formatText("Kelvin wave pattern (far field, elevation x%g)", kElevationScale);
+    s.name = formatText("Kelvin wave pattern (elevation x%g)", kElevationScale);
     s.grid_u = static_cast<int>(w.y.size());
     s.grid_v = static_cast<int>(w.x.size());
     for (Eigen::Index i = 0; i < w.x.size(); ++i)
@@ -274,8 +278,9 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
         s.scalars.push_back(w.elevation(i, j));
       }
     s.color = {0.2, 0.4, 0.8};
+    s.opacity = 0.75;  // the hull, below the waterline and inside the pattern now, shows through the water
     frame.shapes.push_back(std::move(s));
-    frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s (far field behind the stern)\n"
+    frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s, around and behind the hull\n"
                              "wave elevation drawn × %g; hull at its real proportions",
                              c.froude[d], c.speed[d], kElevationScale);
     r.view.scalar_name = "wave elevation";

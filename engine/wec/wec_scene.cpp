@@ -363,6 +363,16 @@ SceneDefinition makeWecScene() {
   scene.upgrade = upgradeWecParameters;
   setWorkEstimate<WecParameters>(scene, wecBinder(), estimateWecWork);
   setPlausibility<WecParameters>(scene, wecBinder(), wecPlausibility);
+  // The plot list's headings (the names are those of wecPlots, powerMatrixPlot and responseSpectraPlot in
+  // wec_results.cpp; ui.labels checks that every plot of every built-in scenario is in exactly one group).
+  scene.plot_groups = {
+      {"Response per unit wave amplitude (frequency domain)",
+       {"pitch_rao", "pitch_rao_phase", "hinge_fx", "hinge_fz", "capture_width", "optimal_pto_damping"}},
+      {"Over time (time domain)",
+       {"wave_elevation", "pitch_history", "hinge_fx_history", "hinge_fz_history", "moment_history", "pto_power_history"}},
+      {"Irregular seas: reaction spectra and power", {"hinge_reaction_spectra", "power_matrix"}},
+      {"Hydrodynamic coefficients of float 1", {"radiation_kernel", "hydro_damping", "hydro_added_mass"}},
+  };
   return scene;
 }
 

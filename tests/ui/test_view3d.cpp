@@ -13,11 +13,14 @@
 #include <QtTest>
 
 #include <vtkCamera.h>
+#include <vtkProp.h>
 #include <vtkPropCollection.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkScalarsToColors.h>
 
+#include "catalog.hpp"
+#include "core/run_context.hpp"
 #include "plots/display_units.hpp"
 #include "test_scene.hpp"
 #include "theme.hpp"
@@ -144,6 +147,34 @@ std::pair<QString, std::pair<double, double>> colourBarTitle(SceneView& view) {
       return {QString::fromUtf8(bar->GetTitle()), {range[0], range[1]}};
     }
   return {};
+}
+
+// The pixels where the colour bar is drawn: those that change when it is hidden.
+QRect colourBarPixels(SceneView& view) {
+  vtkScalarBarActor* bar = nullptr;
+  vtkPropCollection* props = view.glWidget()->renderer()->GetViewProps();
+  props->InitTraversal();
+  while (vtkProp* prop = props->GetNextProp())
+    if (auto* b = vtkScalarBarActor::SafeDownCast(prop)) bar = b;
+  if (!bar) return {};
+  const QImage with = view.glWidget()->grabFramebuffer();
+  bar->SetVisibility(0);
+  const QImage without = view.glWidget()->grabFramebuffer();
+  bar->SetVisibility(1);
+  QRect box;
+  for (int y = 0; y < with.height(); ++y)
+    for (int x = 0; x < with.width(); ++x)
+      if (with.pixel(x, y) != without.pixel(x, y)) box |= QRect(x, y, 1, 1);
+  return box;
+}
+
+// Where a world point (z = 0) appears in the framebuffer's image (rows from the top).
+QPoint imagePoint(SceneView& view, double x, double y, int image_height) {
+  vtkRenderer* renderer = view.glWidget()->renderer();
+  renderer->SetWorldPoint(x, y, 0.0, 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  return {static_cast<int>(std::lround(d[0])), image_height - 1 - static_cast<int>(std::lround(d[1]))};
 }
 
 // Two translucent horizontal squares, red at z = 0 and blue at z = −5 (opacity 0.5 each), seen from
@@ -449,6 +480,74 @@ class View3dTest : public QObject {
     QVERIFY2(view.captionText().startsWith(QStringLiteral("Kelvin wave pattern at Fn = 0.35, U = 2.192 m/s\n"
                                                           "wave elevation drawn × 10")),
              qPrintable(view.captionText()));
+  }
+
+  // A long quantity name makes a title wider than the bar's strip: at every width the title keeps clear of the
+  // view's right and top edges (it touched the right edge of a 630 px view), and where there is room the bar stays
+  // at its place, the right fifth of the view.
+  void colourBarTitleKeepsAMarginAtEverySize() {
+    for (int width : {420, 630, 1000}) {
+      SceneView view;
+      view.resize(width, 500);
+      view.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&view));
+      view.showResults(scaledTube(1e-3, "displacement magnitude", "m"));
+      QCoreApplication::processEvents();
+      const QRect bar = colourBarPixels(view);
+      const int w = view.glWidget()->grabFramebuffer().width();
+      const QString where = QStringLiteral("%1 px view: bar drawn over x %2..%3, y %4..%5 of %6")
+                                .arg(width).arg(bar.left()).arg(bar.right()).arg(bar.top()).arg(bar.bottom()).arg(w);
+      QVERIFY2(bar.width() > 40, qPrintable(where));  // the bar and its text are drawn
+      QVERIFY2(bar.right() <= w - 1 - 5, qPrintable(where));  // 8 px asked for; anti-aliasing may take a pixel or two
+      QVERIFY2(bar.top() >= 3, qPrintable(where));
+      if (width == 1000) QVERIFY2(bar.left() >= 0.78 * w, qPrintable(where));
+    }
+  }
+
+  // The ship's wave pattern is drawn around the hull, not only behind it: seen from above, pixels beside the hull
+  // (a quarter of the length out, from stern to bow) change when the pattern is taken away, and so do pixels behind
+  // the stern.
+  void shipWavePatternIsShownBesideTheHull() {
+    BuiltinScenario ship = *findBuiltin("ship_default");
+    ship.scenario.parameters.merge_patch(Json{{"speed", {{"count", 11}}}});
+    RunContext context({}, nullptr);
+    auto results = std::make_shared<Results>(runScenario(requireScene("ship"), ship.scenario, context));
+    auto without = std::make_shared<Results>(*results);
+    auto& shapes = without->view.frames.front().shapes;
+    const auto before = shapes.size();
+    std::erase_if(shapes, [](const Shape3D& s) { return s.name.rfind("Kelvin wave pattern", 0) == 0; });
+    QCOMPARE(shapes.size(), before - 1);
+    const double L = 4.0;  // the Wigley model, from x = 0 (stern) to 4 m (bow)
+    auto topDown = [&](std::shared_ptr<Results> r) {
+      SceneView view;
+      view.resize(700, 700);
+      view.show();
+      if (!QTest::qWaitForWindowExposed(&view)) return std::make_pair(QImage(), std::vector<QPoint>());
+      view.showResults(r);
+      vtkCamera* camera = view.glWidget()->renderer()->GetActiveCamera();
+      camera->SetFocalPoint(0.5 * L, 0, 0);
+      camera->SetPosition(0.5 * L, 0, 40);
+      camera->SetViewUp(1, 0, 0);
+      camera->SetViewAngle(30);
+      view.glWidget()->renderer()->ResetCameraClippingRange();
+      const QImage image = view.glWidget()->grabFramebuffer();
+      std::vector<QPoint> points;
+      for (int k = 1; k <= 9; ++k) points.push_back(imagePoint(view, L * k / 10.0, 0.25 * L, image.height()));
+      for (int k = 1; k <= 4; ++k) points.push_back(imagePoint(view, -0.25 * L * k, 0.25 * L, image.height()));
+      return std::make_pair(image, points);
+    };
+    const auto [with_image, points] = topDown(results);
+    const auto [without_image, points_again] = topDown(without);
+    QVERIFY(!with_image.isNull() && !without_image.isNull());
+    test::keepScreenshot(with_image, QStringLiteral("ship_wave_pattern_top"));
+    int beside = 0, behind = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      QVERIFY(with_image.rect().contains(points[i]));
+      const bool changed = with_image.pixel(points[i]) != without_image.pixel(points[i]);
+      (i < 9 ? beside : behind) += changed;
+    }
+    QVERIFY2(beside >= 8, qPrintable(QString::number(beside)));
+    QCOMPARE(behind, 4);
   }
 
   // Translucent surfaces are composited in depth order: seen from above, the nearer red square

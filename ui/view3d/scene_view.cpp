@@ -27,6 +27,8 @@
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
+#include <vtkGenericOpenGLRenderWindow.h>
 
 #include "plots/display_units.hpp"
 #include "plots/result_plot.hpp"
@@ -239,6 +241,7 @@ void SceneView::showResults(std::shared_ptr<const Results> results) {
 
 void SceneView::resizeEvent(QResizeEvent* event) {
   QWidget::resizeEvent(event);
+  placeColorBar();
   // The fit depends on the view's aspect ratio: a view first framed while hidden or small is framed again.
   if (results_ && camera_placed_ && !user_moved_camera_) resetCamera();
 }
@@ -344,6 +347,25 @@ void SceneView::applyColorSettings() {
                                                     : tr("range of all frames");
   const QString title = wrapAtSpaces(axisLabel(results_->view.scalar_name, scale.unit), 22) + QStringLiteral("\n") + range;
   scalar_bar_->SetTitle(title.toStdString().c_str());
+  placeColorBar();
+}
+
+void SceneView::placeColorBar() {
+  // VTK centres the title over the bar's strip (0.15 of the view, at most 150 px) and lets a title wider than the
+  // strip overhang both sides: measured here, the strip moves left until the title keeps 8 px from the right edge.
+  constexpr double kPreferredLeft = 0.80, kStripFraction = 0.15, kMaxStripPx = 150, kMarginPx = 8;
+  const double view_px = gl_->width() * gl_->devicePixelRatioF();
+  const char* title = scalar_bar_->GetTitle();
+  int box[4] = {0, 0, 0, 0};
+  double title_px = 0;
+  if (title && *title &&
+      vtkTextRenderer::GetInstance()->GetBoundingBox(scalar_bar_->GetTitleTextProperty(), std::string(title), box,
+                                                     gl_->renderWindow()->GetDPI()))
+    title_px = box[1] - box[0] + 2.0 * scalar_bar_->GetTextPad();
+  const double strip_px = std::min(kStripFraction * view_px, kMaxStripPx);
+  const double left = colorBarLeft(view_px, strip_px, title_px, kMarginPx, kPreferredLeft);
+  scalar_bar_->GetPositionCoordinate()->SetValue(left, 0.12);
+  gl_->requestRender();
 }
 
 std::pair<double, double> SceneView::colorRange() const {

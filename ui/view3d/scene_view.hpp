@@ -97,6 +97,7 @@ class SceneView : public QWidget {
   void applyPaletteColors();
   void rebuildStatic();
   void applyColorSettings();
+  void placeColorBar();  // keeps the bar's title inside the view with a margin
   void drawFrame();
   void updateTimeLabel();
   Bounds3D framingBounds() const;  // the model and the water and sea-bed planes drawn with it
