@@ -34,8 +34,9 @@ struct SegmentInverseMass {
   AxialBlock far_force;                // top rows of W D': the origin's acceleration per unit far-end force
   AxialBlock far_end;                  // D'ᵀ W D': the far end's acceleration per unit far-end force
 
-  // W g for g = (force, moment), in the global frame of tangent t.
-  Vec6 apply(const Vec3& t, const Vec6& g) const {
+  // W g for g = (force, moment), in the global frame of tangent t. Inlined by force: GCC kept it a call, 6.5 % of
+  // the right-hand side's samples.
+  [[gnu::always_inline]] Vec6 apply(const Vec3& t, const Vec6& g) const {
     const Vec3 f = g.head<3>(), q = g.tail<3>();
     const double tf = t.dot(f), tq = t.dot(q);
     const Vec3 xf = t.cross(f), xq = t.cross(q);

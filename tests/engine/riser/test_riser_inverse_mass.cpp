@@ -1,7 +1,8 @@
 // The inverse mass from the tangent (riser_inverse_mass.hpp) against the products it replaces, written out here:
 // W = blockdiag(R) W_local blockdiag(R)ᵀ, W D' with D' = [1; [d]×], and D'ᵀ W D', for segments of the peer riser
 // (with and without torsion, with a tangential added mass unlike the normal one) turned to orientations far from the
-// initial shape. Same algebra, so they agree to rounding: tolerance 1e-13 of the largest entry (measured ≤ 4e-16).
+// initial shape. Same algebra, so they agree to rounding: tolerance 1e-13 of the largest entry; 1e-12 for D'ᵀ W D',
+// a difference of products about ten times larger than itself (measured up to 2.1e-13 there).
 #include <algorithm>
 #include <cmath>
 
@@ -47,7 +48,7 @@ void checkModel(const RiserModel& m) {
       d_prime << Mat3::Identity(), skew(s.length * t);
       const Eigen::Matrix<double, 6, 3> wd = expected * d_prime;
       EXPECT_LT(relativeDifference(w.far_force.at(t), wd.topRows<3>()), 1e-13);
-      EXPECT_LT(relativeDifference(w.far_end.at(t), d_prime.transpose() * wd), 1e-13);
+      EXPECT_LT(relativeDifference(w.far_end.at(t), d_prime.transpose() * wd), 1e-12);
       Vec6 g;
       g << 3e5 * std::sin(a), -2e4, 7e3 * std::cos(a), 1e5 * std::cos(2 * a), 4e4, -9e4 * std::sin(0.3 * a);
       const Vec6 x = expected * g;
