@@ -1,7 +1,8 @@
 // The riser benches' model and state for timing one evaluation: a built-in scenario at n segments in joint or
 // absolute coordinates, and its static shape set in motion, so that drag, spring dampers and the velocity terms all
 // do work: segment i turns at 0.02 (sin 0.7i, cos 1.3i, sin 0.4i) rad/s; in absolute coordinates its origin moves
-// at 0.05 (cos 0.5i, sin 0.9i, 0.1 cos i) m/s.
+// at 0.05 (cos 0.5i, sin 0.9i, 0.1 cos i) m/s. `statics_iterations`, when given, receives the Newton iterations the
+// static shape took (a faster right-hand side that changes rounding must not make them grow).
 #pragma once
 
 #include <cmath>
@@ -23,10 +24,11 @@ inline riser::RiserModel builtinRiserModel(const std::string& scenario, int n, b
   return riser::buildRiserModel(p);
 }
 
-inline Eigen::VectorXd movingState(const riser::RiserModel& m) {
+inline Eigen::VectorXd movingState(const riser::RiserModel& m, int* statics_iterations = nullptr) {
   using riser::Vec3;
   RunContext ctx;
   const riser::StaticSolution s = riser::solveStatics(m, ctx);
+  if (statics_iterations) *statics_iterations = s.iterations;
   Eigen::VectorXd y = riser::restState(m, s.orientation, s.top);
   for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
     const double a = i;
