@@ -54,13 +54,6 @@ RaoValue atHeading(const RaoTable& t, std::size_t h, double omega, bool* outside
   return blend(row(f), row(f + 1), (omega - t.omega[f]) / (t.omega[f + 1] - t.omega[f]));
 }
 
-// The second derivative of the sea's ramp r(t) (riser_waves): zero outside (0, T_r) and continuous at both ends.
-double rampAcceleration(const RiserSea& sea, double t) {
-  if (t <= 0.0 || t >= sea.ramp_time) return 0.0;
-  const double tau = t / sea.ramp_time;
-  return 60.0 * tau * (1.0 - tau) * (1.0 - 2.0 * tau) / (sea.ramp_time * sea.ramp_time);
-}
-
 Mat3 rotationX(double a) { return Eigen::AngleAxisd(a, Vec3::UnitX()).toRotationMatrix(); }
 Mat3 rotationY(double a) { return Eigen::AngleAxisd(a, Vec3::UnitY()).toRotationMatrix(); }
 Mat3 rotationZ(double a) { return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix(); }
@@ -225,7 +218,7 @@ void VesselMotion::degreesOfFreedom(double t, Vec6& x, Vec6& v, Vec6& a) const {
     ddd -= (w * w) * (in_phase * c - quadrature * s);
   }
   const RiserSea& sea = *sea_;
-  const double r = sea.ramp(t), rd = sea.rampRate(t), rdd = rampAcceleration(sea, t);
+  const double r = sea.ramp(t), rd = sea.rampRate(t), rdd = sea.rampAcceleration(t);
   x = r * d;
   v = rd * d + r * dd;
   a = rdd * d + 2 * rd * dd + r * ddd;

@@ -116,6 +116,12 @@ double RiserSea::rampRate(double t) const {
   return 30.0 * tau * tau * (1.0 - tau) * (1.0 - tau) / ramp_time;
 }
 
+double RiserSea::rampAcceleration(double t) const {
+  if (t <= 0.0 || t >= ramp_time) return 0.0;
+  const double tau = t / ramp_time;
+  return 60.0 * tau * (1.0 - tau) * (1.0 - 2.0 * tau) / (ramp_time * ramp_time);
+}
+
 double RiserSea::elevation(double x, double y, double t) const { return ramp(t) * field.elevation(x, y, t); }
 
 ocean::FluidKinematics RiserSea::at(const Eigen::Vector3d& point, double t) const {

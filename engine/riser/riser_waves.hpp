@@ -39,6 +39,7 @@ struct RiserSea {
 
   double ramp(double t) const;
   double rampRate(double t) const;  // [1/s] dr/dt
+  double rampAcceleration(double t) const;  // [1/s²] d²r/dt², zero outside (0, T_r) and continuous at both ends
   double elevation(double x, double y, double t) const;  // [m] ramped η above the still-water level
   // Ramped kinematics at a global point (its z relative to water_level inside).
   ocean::FluidKinematics at(const Eigen::Vector3d& point, double t) const;
