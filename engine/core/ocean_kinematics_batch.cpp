@@ -7,7 +7,8 @@
 //            |r| ≤ π/4 + tiny, Taylor series of sin to r^17 and cos to r^16 (next terms < 1e-19 and 2e-18);
 //            the quadrant q mod 4 swaps and signs the pair.
 //   exp:     x = n ln 2 + r, |r| ≤ ½ ln 2 (ln 2 split likewise), Taylor to r^13 (next term < 4e-18), times 2^n
-//            assembled in the exponent bits.
+//            assembled in the exponent bits. The depth sums need e^x and e^−x: with the series' even and odd
+//            parts E(r²) and r O(r²), e^r = E + rO and e^−r = E − rO, so both cost one evaluation and no division.
 // The nearest integer uses the 1.5·2^52 shifter: after t = y + 1.5·2^52 the low bits of t hold round(y).
 #include "core/ocean_kinematics_batch.hpp"
 #include "core/ocean_stretching.hpp"
@@ -83,6 +84,24 @@ constexpr double inverseFactorial(int k) {
   return p * std::bit_cast<double>(static_cast<std::uint64_t>(power + 1023) << 52);
 }
 
+// e^x and e^−x for |x| ≤ 708 (clamped beyond), each as accurate as expKernel (the same series and reduction).
+[[gnu::always_inline]] inline void expPairKernel(double x, double& plus, double& minus) {
+  x = x < -kLargestExpArgument ? -kLargestExpArgument : x;
+  x = x > kLargestExpArgument ? kLargestExpArgument : x;
+  const double shifted = x * kLog2E + kShifter;
+  const double n = shifted - kShifter;
+  const std::int64_t power = std::bit_cast<std::int64_t>(shifted) - std::bit_cast<std::int64_t>(kShifter);
+  const double r = (x - n * kLn2Head) - n * kLn2Tail, r2 = r * r;
+  constexpr double e2 = inverseFactorial(2), e3 = inverseFactorial(3), e4 = inverseFactorial(4),
+                   e5 = inverseFactorial(5), e6 = inverseFactorial(6), e7 = inverseFactorial(7),
+                   e8 = inverseFactorial(8), e9 = inverseFactorial(9), e10 = inverseFactorial(10),
+                   e11 = inverseFactorial(11), e12 = inverseFactorial(12), e13 = inverseFactorial(13);
+  const double even = 1.0 + r2 * (e2 + r2 * (e4 + r2 * (e6 + r2 * (e8 + r2 * (e10 + r2 * e12)))));
+  const double odd = r * (1.0 + r2 * (e3 + r2 * (e5 + r2 * (e7 + r2 * (e9 + r2 * (e11 + r2 * e13))))));
+  plus = (even + odd) * std::bit_cast<double>(static_cast<std::uint64_t>(1023 + power) << 52);
+  minus = (even - odd) * std::bit_cast<double>(static_cast<std::uint64_t>(1023 - power) << 52);
+}
+
 // The per-point sums, vectorised over the components (AVX-512 and AVX2 + FMA clones on processors that have them).
 struct PointSums {
   double eta = 0.0, u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
@@ -118,9 +137,10 @@ MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restri
   double u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
 #pragma omp simd reduction(+ : u, w, du, dw)
   for (std::size_t j = 0; j < n; ++j) {
-    const double e1 = expKernel(k[j] * z);
-    // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300).
-    const double e2 = mirror[j] / (e1 > 1e-300 ? e1 : 1e-300);
+    double e1, inverse;
+    expPairKernel(k[j] * z, e1, inverse);
+    // e^{−k(z+2h)} = e^{−2kh} e^{−kz}; e^{−kz} ≤ e^{708} is finite, and kept only where e^{−2kh} is (kh ≤ 300).
+    const double e2 = mirror[j] * inverse;
     const double ch = (e1 + e2) * depth_scale[j], sh = (e1 - e2) * depth_scale[j];
     u += a_omega[j] * ch * cos_psi[j];
     w += a_omega[j] * sh * sin_psi[j];
@@ -130,7 +150,36 @@ MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restri
   out.u = u, out.w = w, out.du = du, out.dw = dw;
 }
 
+// cos and sin of phase_j − ω_j t reduced to [−π, π]; false (outputs unspecified) if some |phase_j − ω_j t| is
+// beyond the reduction's range.
+MARIS_SIMD_CLONES bool reducedHarmonicPhases(std::size_t n, const double* __restrict phase,
+                                             const double* __restrict omega, double t, double* __restrict cosine,
+                                             double* __restrict sine) {
+  bool in_range = true;
+#pragma omp simd reduction(&& : in_range)
+  for (std::size_t j = 0; j < n; ++j) {
+    const double psi = phase[j] - omega[j] * t;
+    in_range = in_range && std::abs(psi) < kLargestTimePhase;
+    const double turns_shifted = psi * kInverseTwoPi + kShifter;
+    const double turns = turns_shifted - kShifter;
+    double sn, cs;
+    sinCosKernel((psi - turns * kTwoPiHead) - turns * kTwoPiTail, sn, cs);
+    cosine[j] = cs;
+    sine[j] = sn;
+  }
+  return in_range;
+}
+
 }  // namespace
+
+void harmonicPhases(std::size_t n, const double* phase, const double* omega, double t, double* cosine, double* sine) {
+  if (reducedHarmonicPhases(n, phase, omega, t, cosine, sine)) return;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double psi = phase[j] - omega[j] * t;
+    cosine[j] = std::cos(psi);
+    sine[j] = std::sin(psi);
+  }
+}
 
 void fastSinCos(double x, double& sine, double& cosine) { sinCosKernel(x, sine, cosine); }
 
@@ -167,26 +216,39 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     tail_velocity_[j] = tail_velocity_[j + 1] + std::abs(a_omega_[j]);
     tail_acceleration_[j] = tail_acceleration_[j + 1] + std::abs(a_omega2_[j]);
   }
+  // The components from m on are negligible where C_m(z') ≤ B_m = ε min(T_v,0/T_v,m, T_a,0/T_a,m) (T the tail sums):
+  // with C_m(z') = cosh k(z'+h)/sinh kh (e^{kz'}/(1 − e^{−2kh}) where the mirror term is dropped), increasing in z',
+  // that is z' ≤ z*_m. The z*_m do not fall with m (C_m falls with k at z' ≤ 0, the tails fall with m); they are
+  // lowered by 1e-9 (1 + |z*_m|) m, far above their rounding, so that a component is never dropped above its bound.
+  negligible_below_.assign(n, -std::numeric_limits<double>::infinity());
+  double previous = -std::numeric_limits<double>::infinity();
+  for (std::size_t m = 0; m < n && truncation_ > 0.0; ++m) {
+    const double tails_v = tail_velocity_[m], tails_a = tail_acceleration_[m];
+    double bound = std::numeric_limits<double>::infinity();
+    if (tails_v > 0.0) bound = std::min(bound, truncation_ * tail_velocity_[0] / tails_v);
+    if (tails_a > 0.0) bound = std::min(bound, truncation_ * tail_acceleration_[0] / tails_a);
+    double z = std::numeric_limits<double>::infinity();
+    if (std::isfinite(bound)) {
+      const double k = k_[m];
+      if (mirror_[m] > 0.0) {
+        const double argument = bound * std::sinh(k * depth_);
+        z = argument >= 1.0 ? std::acosh(argument) / k - depth_ : -std::numeric_limits<double>::infinity();
+      } else {
+        z = std::log(bound / depth_scale_[m]) / k;
+      }
+      if (std::isfinite(z)) z -= 1e-9 * (1.0 + std::abs(z));
+    }
+    previous = std::max(previous, z);
+    negligible_below_[m] = previous;
+  }
 }
 
 std::size_t WaveKinematicsBatch::keptComponents(double z) const {
   const std::size_t n = k_.size();
   if (!(truncation_ > 0.0) || !(z < 0.0) || n == 0) return n;
-  const double velocity_bound = truncation_ * tail_velocity_[0], acceleration_bound = truncation_ * tail_acceleration_[0];
-  // Is every component from m on negligible? Monotone in m (C_m(z') and both tails fall with m): bisection.
-  auto negligibleFrom = [&](std::size_t m) {
-    if (m >= n) return true;
-    const double e = std::exp(k_[m] * z);
-    const double c = (e + (mirror_[m] > 0.0 ? mirror_[m] / e : 0.0)) * depth_scale_[m];
-    return c * tail_velocity_[m] <= velocity_bound && c * tail_acceleration_[m] <= acceleration_bound;
-  };
-  std::size_t lo = 0, hi = n;  // negligibleFrom(hi) holds; the answer is in [lo, hi]
-  while (lo < hi) {
-    const std::size_t mid = lo + (hi - lo) / 2;
-    if (negligibleFrom(mid)) hi = mid;
-    else lo = mid + 1;
-  }
-  return lo;
+  // The first m whose threshold z*_m lies at or above z (every component from there on negligible).
+  return static_cast<std::size_t>(std::lower_bound(negligible_below_.begin(), negligible_below_.end(), z) -
+                                  negligible_below_.begin());
 }
 
 void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp,
