@@ -7,8 +7,7 @@
 //            |r| ≤ π/4 + tiny, Taylor series of sin to r^17 and cos to r^16 (next terms < 1e-19 and 2e-18);
 //            the quadrant q mod 4 swaps and signs the pair.
 //   exp:     x = n ln 2 + r, |r| ≤ ½ ln 2 (ln 2 split likewise), Taylor to r^13 (next term < 4e-18), times 2^n
-//            assembled in the exponent bits. The depth sums need e^x and e^−x: with the series' even and odd
-//            parts E(r²) and r O(r²), e^r = E + rO and e^−r = E − rO, so both cost one evaluation and no division.
+//            assembled in the exponent bits.
 // The nearest integer uses the 1.5·2^52 shifter: after t = y + 1.5·2^52 the low bits of t hold round(y).
 #include "core/ocean_kinematics_batch.hpp"
 #include "core/ocean_stretching.hpp"
@@ -84,24 +83,6 @@ constexpr double inverseFactorial(int k) {
   return p * std::bit_cast<double>(static_cast<std::uint64_t>(power + 1023) << 52);
 }
 
-// e^x and e^−x for |x| ≤ 708 (clamped beyond), each as accurate as expKernel (the same series and reduction).
-[[gnu::always_inline]] inline void expPairKernel(double x, double& plus, double& minus) {
-  x = x < -kLargestExpArgument ? -kLargestExpArgument : x;
-  x = x > kLargestExpArgument ? kLargestExpArgument : x;
-  const double shifted = x * kLog2E + kShifter;
-  const double n = shifted - kShifter;
-  const std::int64_t power = std::bit_cast<std::int64_t>(shifted) - std::bit_cast<std::int64_t>(kShifter);
-  const double r = (x - n * kLn2Head) - n * kLn2Tail, r2 = r * r;
-  constexpr double e2 = inverseFactorial(2), e3 = inverseFactorial(3), e4 = inverseFactorial(4),
-                   e5 = inverseFactorial(5), e6 = inverseFactorial(6), e7 = inverseFactorial(7),
-                   e8 = inverseFactorial(8), e9 = inverseFactorial(9), e10 = inverseFactorial(10),
-                   e11 = inverseFactorial(11), e12 = inverseFactorial(12), e13 = inverseFactorial(13);
-  const double even = 1.0 + r2 * (e2 + r2 * (e4 + r2 * (e6 + r2 * (e8 + r2 * (e10 + r2 * e12)))));
-  const double odd = r * (1.0 + r2 * (e3 + r2 * (e5 + r2 * (e7 + r2 * (e9 + r2 * (e11 + r2 * e13))))));
-  plus = (even + odd) * std::bit_cast<double>(static_cast<std::uint64_t>(1023 + power) << 52);
-  minus = (even - odd) * std::bit_cast<double>(static_cast<std::uint64_t>(1023 - power) << 52);
-}
-
 // The per-point sums, vectorised over the components (AVX-512 and AVX2 + FMA clones on processors that have them).
 struct PointSums {
   double eta = 0.0, u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
@@ -137,10 +118,9 @@ MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restri
   double u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
 #pragma omp simd reduction(+ : u, w, du, dw)
   for (std::size_t j = 0; j < n; ++j) {
-    double e1, inverse;
-    expPairKernel(k[j] * z, e1, inverse);
-    // e^{−k(z+2h)} = e^{−2kh} e^{−kz}; e^{−kz} ≤ e^{708} is finite, and kept only where e^{−2kh} is (kh ≤ 300).
-    const double e2 = mirror[j] * inverse;
+    const double e1 = expKernel(k[j] * z);
+    // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300).
+    const double e2 = mirror[j] / (e1 > 1e-300 ? e1 : 1e-300);
     const double ch = (e1 + e2) * depth_scale[j], sh = (e1 - e2) * depth_scale[j];
     u += a_omega[j] * ch * cos_psi[j];
     w += a_omega[j] * sh * sin_psi[j];
