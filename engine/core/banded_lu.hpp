@@ -35,7 +35,10 @@ class BandedLu {
   double band(Eigen::Index i, Eigen::Index j) const { return storage_(i, j - i + kl_); }
 
   Eigen::Index n_ = 0, kl_ = 0, ku_ = 0;
-  Eigen::MatrixXd storage_;                // row i holds columns i − kl … i + kl + ku (fill-in included)
+  // Row i holds columns i − kl … i + kl + ku (fill-in included); row-major, so that the elimination's row updates and
+  // the back substitution run along memory and the forward substitution's multipliers of one step lie within kl
+  // consecutive rows (the solve of n = 909, kl = ku = 14 is called once per Newton iteration of the riser).
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> storage_;
   std::vector<Eigen::Index> pivot_rows_;   // row swapped with row k at elimination step k
 };
 

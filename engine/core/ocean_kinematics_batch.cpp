@@ -130,7 +130,36 @@ MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restri
   out.u = u, out.w = w, out.du = du, out.dw = dw;
 }
 
+// cos and sin of phase_j − ω_j t reduced to [−π, π]; false (outputs unspecified) if some |phase_j − ω_j t| is
+// beyond the reduction's range.
+MARIS_SIMD_CLONES bool reducedHarmonicPhases(std::size_t n, const double* __restrict phase,
+                                             const double* __restrict omega, double t, double* __restrict cosine,
+                                             double* __restrict sine) {
+  bool in_range = true;
+#pragma omp simd reduction(&& : in_range)
+  for (std::size_t j = 0; j < n; ++j) {
+    const double psi = phase[j] - omega[j] * t;
+    in_range = in_range && std::abs(psi) < kLargestTimePhase;
+    const double turns_shifted = psi * kInverseTwoPi + kShifter;
+    const double turns = turns_shifted - kShifter;
+    double sn, cs;
+    sinCosKernel((psi - turns * kTwoPiHead) - turns * kTwoPiTail, sn, cs);
+    cosine[j] = cs;
+    sine[j] = sn;
+  }
+  return in_range;
+}
+
 }  // namespace
+
+void harmonicPhases(std::size_t n, const double* phase, const double* omega, double t, double* cosine, double* sine) {
+  if (reducedHarmonicPhases(n, phase, omega, t, cosine, sine)) return;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double psi = phase[j] - omega[j] * t;
+    cosine[j] = std::cos(psi);
+    sine[j] = std::sin(psi);
+  }
+}
 
 void fastSinCos(double x, double& sine, double& cosine) { sinCosKernel(x, sine, cosine); }
 
@@ -167,26 +196,39 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     tail_velocity_[j] = tail_velocity_[j + 1] + std::abs(a_omega_[j]);
     tail_acceleration_[j] = tail_acceleration_[j + 1] + std::abs(a_omega2_[j]);
   }
+  // The components from m on are negligible where C_m(z') ≤ B_m = ε min(T_v,0/T_v,m, T_a,0/T_a,m) (T the tail sums):
+  // with C_m(z') = cosh k(z'+h)/sinh kh (e^{kz'}/(1 − e^{−2kh}) where the mirror term is dropped), increasing in z',
+  // that is z' ≤ z*_m. The z*_m do not fall with m (C_m falls with k at z' ≤ 0, the tails fall with m); they are
+  // lowered by 1e-9 (1 + |z*_m|) m, far above their rounding, so that a component is never dropped above its bound.
+  negligible_below_.assign(n, -std::numeric_limits<double>::infinity());
+  double previous = -std::numeric_limits<double>::infinity();
+  for (std::size_t m = 0; m < n && truncation_ > 0.0; ++m) {
+    const double tails_v = tail_velocity_[m], tails_a = tail_acceleration_[m];
+    double bound = std::numeric_limits<double>::infinity();
+    if (tails_v > 0.0) bound = std::min(bound, truncation_ * tail_velocity_[0] / tails_v);
+    if (tails_a > 0.0) bound = std::min(bound, truncation_ * tail_acceleration_[0] / tails_a);
+    double z = std::numeric_limits<double>::infinity();
+    if (std::isfinite(bound)) {
+      const double k = k_[m];
+      if (mirror_[m] > 0.0) {
+        const double argument = bound * std::sinh(k * depth_);
+        z = argument >= 1.0 ? std::acosh(argument) / k - depth_ : -std::numeric_limits<double>::infinity();
+      } else {
+        z = std::log(bound / depth_scale_[m]) / k;
+      }
+      if (std::isfinite(z)) z -= 1e-9 * (1.0 + std::abs(z));
+    }
+    previous = std::max(previous, z);
+    negligible_below_[m] = previous;
+  }
 }
 
 std::size_t WaveKinematicsBatch::keptComponents(double z) const {
   const std::size_t n = k_.size();
   if (!(truncation_ > 0.0) || !(z < 0.0) || n == 0) return n;
-  const double velocity_bound = truncation_ * tail_velocity_[0], acceleration_bound = truncation_ * tail_acceleration_[0];
-  // Is every component from m on negligible? Monotone in m (C_m(z') and both tails fall with m): bisection.
-  auto negligibleFrom = [&](std::size_t m) {
-    if (m >= n) return true;
-    const double e = std::exp(k_[m] * z);
-    const double c = (e + (mirror_[m] > 0.0 ? mirror_[m] / e : 0.0)) * depth_scale_[m];
-    return c * tail_velocity_[m] <= velocity_bound && c * tail_acceleration_[m] <= acceleration_bound;
-  };
-  std::size_t lo = 0, hi = n;  // negligibleFrom(hi) holds; the answer is in [lo, hi]
-  while (lo < hi) {
-    const std::size_t mid = lo + (hi - lo) / 2;
-    if (negligibleFrom(mid)) hi = mid;
-    else lo = mid + 1;
-  }
-  return lo;
+  // The first m whose threshold z*_m lies at or above z (every component from there on negligible).
+  return static_cast<std::size_t>(std::lower_bound(negligible_below_.begin(), negligible_below_.end(), z) -
+                                  negligible_below_.begin());
 }
 
 void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp,

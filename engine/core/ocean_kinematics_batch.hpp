@@ -14,10 +14,11 @@
 // runs in AVX-512 or AVX2 lanes where the processor has them (function multi-versioning), SSE2 otherwise.
 // Truncation (optional, `truncation` ε > 0): the components are kept sorted by k, and at a point with z' < 0 the
 // depth sums stop at the first component m with C_m(z') Σ_{j≥m} a_j ω_j ≤ ε Σ_j a_j ω_j and
-// C_m(z') Σ_{j≥m} a_j ω_j² ≤ ε Σ_j a_j ω_j² (found by bisection). C_j(z') = cosh k_j(z'+h)/sinh k_j h falls with k
+// C_m(z') Σ_{j≥m} a_j ω_j² ≤ ε Σ_j a_j ω_j². C_j(z') = cosh k_j(z'+h)/sinh k_j h falls with k
 // for z' ≤ 0 and bounds S_j(z'), so the dropped components change each velocity component by at most ε Σ a_j ω_j
 // and each acceleration component by at most ε Σ a_j ω_j² (times the ramp; the ramp-rate term likewise): an exact
-// bound, not an estimate. η (and so wetness and stretching) always takes every component.
+// bound, not an estimate. The first such m is found among thresholds z*_m of z' computed once (no exponential per
+// point). η (and so wetness and stretching) always takes every component.
 // Limits: a point with |k_max s| > 1e5 rad (s more than ≈ 70 km from the origin for 2 s waves) or a time with
 // |ω_j t| > 6e6 rad takes WaveField::kinematics itself, point by point.
 #pragma once
@@ -60,6 +61,8 @@ class WaveKinematicsBatch {
   // underflows), ω, φ; and the tail sums Σ_{j≥m} a_j ω_j, Σ_{j≥m} a_j ω_j² (n + 1 entries, the last 0).
   std::vector<double> k_, amplitude_, a_omega_, a_omega2_, depth_scale_, mirror_, omega_, phase_;
   std::vector<double> tail_velocity_, tail_acceleration_;
+  // z*_m: at stretched heights z' ≤ z*_m every component from m on is negligible (nondecreasing in m).
+  std::vector<double> negligible_below_;
   // Components whose depth sums the point at stretched height z' (≤ 0 or not) needs.
   std::size_t keptComponents(double z) const;
 };
@@ -68,5 +71,11 @@ class WaveKinematicsBatch {
 // units in the last place of std::sin, std::cos, std::exp.
 void fastSinCos(double x, double& sine, double& cosine);
 double fastExp(double x);
+
+// cos ψ_i and sin ψ_i of ψ_i = phase_i − ω_i t, i < n, in SIMD lanes: each ψ_i is first reduced to [−π, π] with 2π
+// in two parts (as the batch's time phases: no error beyond the rounding of ω_i t itself), then the kernels above
+// (within a few units in the last place of std::cos, std::sin). Where some |ψ_i| ≥ 6e6 rad: std::cos, std::sin.
+// For harmonic syntheses at one point (the vessel motion of the riser's sea).
+void harmonicPhases(std::size_t n, const double* phase, const double* omega, double t, double* cosine, double* sine);
 
 }  // namespace maris::ocean

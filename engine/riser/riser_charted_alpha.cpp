@@ -10,6 +10,7 @@ namespace maris::riser {
 ChartedGeneralizedAlpha::ChartedGeneralizedAlpha(const RiserModel& m, double stabilisation_rate)
     : m_(m), chart_(m, stabilisation_rate), projection_ws_(makeWorkspace(m, 0.0)) {
   system_.size = chart_.size();
+  if (m.sea) chart_.workspace().pose.step_waves = &step_waves_;
   // The O(n) Newton matrices give the work-integral rows the identity (the powers feed back into nothing), so
   // their corrections lag one iteration behind; as passive coordinates they are left out of the convergence
   // test. Counted in, they failed steps whose motion had converged: the top's work has an absolute tolerance at
@@ -20,10 +21,12 @@ ChartedGeneralizedAlpha::ChartedGeneralizedAlpha(const RiserModel& m, double sta
   system_.residual = [this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& acc,
                             Eigen::VectorXd& r) {
     context_->throwIfCancelled();
+    if (m_.sea && t != step_time_) beginStepAt(t);
     chart_.residual(t, q, v, acc, r);
   };
   if (m.formulation == Formulation::Joint) {
     joint_newton_.emplace(m, chart_, stabilisation_rate);
+    if (m.sea) joint_newton_->holdTwinWaveKinematics(&twin_step_waves_);
     system_.solve_iteration_matrix = [this](const IterationMatrixRequest& request, Eigen::VectorXd& rhs) {
       context_->throwIfCancelled();
       return joint_newton_->solve(request, rhs);
@@ -43,6 +46,12 @@ ChartedGeneralizedAlpha::ChartedGeneralizedAlpha(const RiserModel& m, double sta
       chart_.fromState(projected_, q, v);
     };
   }
+}
+
+void ChartedGeneralizedAlpha::beginStepAt(double t) {
+  step_time_ = t;
+  step_waves_.beginStep();
+  twin_step_waves_.beginStep();
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <optional>
 
 #include <Eigen/Core>
@@ -18,6 +19,7 @@
 #include "riser/riser_implicit.hpp"
 #include "riser/riser_joint_newton.hpp"
 #include "riser/riser_newton.hpp"
+#include "riser/riser_waves.hpp"
 
 namespace maris::riser {
 
@@ -44,6 +46,14 @@ class ChartedGeneralizedAlpha {
   long steps() const { return steps_; }  // accepted steps of all chunks so far
 
  private:
+  // In a sea, a step's Newton iterations and Newton-matrix differences reuse the wave kinematics of its first
+  // residual (the predictor) in the chart and in the joint formulation's twin: the fluid velocity and acceleration
+  // are then off by their gradient times the predictor's position error, O(h²) like the step's own error, and
+  // second order is kept (bench_riser_long_sea, docs/riser.md). The core integrator evaluates every residual of
+  // a step at its t_{n+1} and each step, or retry after a halving, at a new time: a residual at a new time begins
+  // a step.
+  void beginStepAt(double t);
+
   // One piece [options.t0, options.t1] of the chunk ending at chunk_end, in a chart reset at its start.
   OdeStats advanceChart(Eigen::VectorXd& y, OdeOptions options, const GeneralizedAlphaOptions& alpha,
                         RunContext& context, const RunContext::ProgressFn& progress, const StateObserver& observer,
@@ -59,6 +69,8 @@ class ChartedGeneralizedAlpha {
   GeneralizedAlphaState carried_;
   Eigen::VectorXd q_, v_, state_, projected_;
   long steps_ = 0;
+  StepWaveKinematics step_waves_, twin_step_waves_;  // held over the step at step_time_ (m.sea only)
+  double step_time_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace maris::riser

@@ -7,7 +7,6 @@
 #include <Eigen/LU>
 
 #include "core/errors.hpp"
-#include "riser/riser_waves.hpp"
 
 namespace maris::riser {
 namespace {
@@ -30,10 +29,6 @@ OrientationChart::OrientationChart(const RiserModel& m, double stabilisation_rat
   work_ = 3 + static_cast<Eigen::Index>(segments) * per_segment_;
   size_ = work_ + kWorkIntegrals;
   reference_.assign(segments, Mat3::Identity());
-  // In a sea the Newton iterations of a step reuse the wave kinematics of its first residual (the predictor):
-  // the fluid velocity and acceleration are then off by their gradient times the predictor's position error,
-  // O(h²) like the step's own error, and second order is kept (bench_riser_long_sea, docs/riser.md).
-  if (m.sea) ws_.pose.wave_reuse = std::make_shared<WaveKinematicsReuse>();
   y_.resize(stateSize(m));
   dy_.resize(stateSize(m));
 }

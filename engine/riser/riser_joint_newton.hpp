@@ -47,6 +47,9 @@ class JointNewtonMatrix {
   // See ForceSpaceNewtonMatrix::useCoordinateSteps (statics by pseudo-time).
   void useCoordinateSteps() { twin_newton_.useCoordinateSteps(); }
 
+  // Points the twin chart's pose at wave kinematics held over a step (riser_charted_alpha, riser_waves.hpp).
+  void holdTwinWaveKinematics(StepWaveKinematics* held) { twin_chart_.workspace().pose.step_waves = held; }
+
   long refreshes() const { return twin_newton_.refreshes(); }
   // Balance/residual evaluations of the twin (each O(n)): the cost of the refreshes.
   long balanceEvaluations() const { return twin_newton_.balanceEvaluations(); }

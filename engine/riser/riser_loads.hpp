@@ -11,7 +11,7 @@
 
 namespace maris::riser {
 
-struct WaveKinematicsReuse;
+struct StepWaveKinematics;
 
 // Positions, orientations and velocities of all n+1 segments at one instant.
 struct RiserPose {
@@ -22,7 +22,7 @@ struct RiserPose {
   std::vector<Vec3> velocity;       // [m/s] velocity of A_i, global (n+1)
   Vec3 end_position = Vec3::Zero(); // [m] bottom end (node n+1)
   Vec3 end_velocity = Vec3::Zero(); // [m/s]
-  std::shared_ptr<WaveKinematicsReuse> wave_reuse;  // set: wave kinematics once per time (riser_waves.hpp)
+  StepWaveKinematics* step_waves = nullptr;  // set by the implicit integrator: wave kinematics held over its step
 
   void resize(int segment_count);
   Vec3 tangent(int i) const { return rotation[i].col(0); }

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/angles.hpp"
+#include "core/ocean_kinematics_batch.hpp"
 #include "core/text_format.hpp"
 #include "core/ocean_waves.hpp"
 #include "core/resources.hpp"
@@ -52,13 +53,6 @@ RaoValue atHeading(const RaoTable& t, std::size_t h, double omega, bool* outside
   }
   const std::size_t f = static_cast<std::size_t>(std::upper_bound(t.omega.begin(), t.omega.end(), omega) - t.omega.begin()) - 1;
   return blend(row(f), row(f + 1), (omega - t.omega[f]) / (t.omega[f + 1] - t.omega[f]));
-}
-
-// The second derivative of the sea's ramp r(t) (riser_waves): zero outside (0, T_r) and continuous at both ends.
-double rampAcceleration(const RiserSea& sea, double t) {
-  if (t <= 0.0 || t >= sea.ramp_time) return 0.0;
-  const double tau = t / sea.ramp_time;
-  return 60.0 * tau * (1.0 - tau) * (1.0 - 2.0 * tau) / (sea.ramp_time * sea.ramp_time);
 }
 
 Mat3 rotationX(double a) { return Eigen::AngleAxisd(a, Vec3::UnitX()).toRotationMatrix(); }
@@ -213,19 +207,33 @@ RaoValue interpolateRao(const RaoTable& t, double heading_deg, double omega, boo
 }
 
 void VesselMotion::degreesOfFreedom(double t, Vec6& x, Vec6& v, Vec6& a) const {
-  Vec6 d = Vec6::Zero(), dd = Vec6::Zero(), ddd = Vec6::Zero();  // unramped motion and its derivatives
+  // The unramped motion d = Σ a R cos(ψ + ε) = P cos ψ − Q sin ψ (P = a R cos ε, Q = a R sin ε per dof and
+  // component) and its derivatives (dψ/dt = −ω), in blocks of components whose cos ψ and sin ψ (core/
+  // ocean_kinematics_batch: reduced to [−π, π], kernels in SIMD lanes) and their ω, ω² multiples fit on the stack;
+  // each sum is a 6 × block matrix–vector product.
+  constexpr std::size_t kBlock = 64;
+  Vec6 d = Vec6::Zero(), dd = Vec6::Zero(), ddd = Vec6::Zero();
+  double phase[kBlock], c[kBlock], s[kBlock], wc[kBlock], ws[kBlock], wwc[kBlock], wws[kBlock];
   const double x_ref = reference.x(), y_ref = reference.y();
-  for (std::size_t i = 0; i < omega_.size(); ++i) {
-    const double psi = kx_[i] * x_ref + ky_[i] * y_ref - omega_[i] * t + phase_[i];  // as WaveField::elevation
-    const double c = std::cos(psi), s = std::sin(psi), w = omega_[i];
-    const auto col = static_cast<Eigen::Index>(i);
-    const Vec6 in_phase = cos_part_.col(col), quadrature = sin_part_.col(col);
-    d += in_phase * c - quadrature * s;              // Σ a R cos(ψ + ε)
-    dd += w * (in_phase * s + quadrature * c);       // dψ/dt = −ω
-    ddd -= (w * w) * (in_phase * c - quadrature * s);
+  for (std::size_t start = 0; start < omega_.size(); start += kBlock) {
+    const std::size_t count = std::min(kBlock, omega_.size() - start);
+    const double* w = omega_.data() + start;
+    for (std::size_t j = 0; j < count; ++j)  // ψ = k·x_ref + φ − ω t, as WaveField::elevation
+      phase[j] = kx_[start + j] * x_ref + ky_[start + j] * y_ref + phase_[start + j];
+    ocean::harmonicPhases(count, phase, w, t, c, s);
+    for (std::size_t j = 0; j < count; ++j) {
+      wc[j] = w[j] * c[j], ws[j] = w[j] * s[j];
+      wwc[j] = w[j] * wc[j], wws[j] = w[j] * ws[j];
+    }
+    const auto first = static_cast<Eigen::Index>(start), size = static_cast<Eigen::Index>(count);
+    const auto in_phase = cos_part_.middleCols(first, size), quadrature = sin_part_.middleCols(first, size);
+    using Block = Eigen::Map<const Eigen::VectorXd>;
+    d.noalias() += in_phase * Block(c, size) - quadrature * Block(s, size);
+    dd.noalias() += in_phase * Block(ws, size) + quadrature * Block(wc, size);
+    ddd.noalias() += quadrature * Block(wws, size) - in_phase * Block(wwc, size);
   }
   const RiserSea& sea = *sea_;
-  const double r = sea.ramp(t), rd = sea.rampRate(t), rdd = rampAcceleration(sea, t);
+  const double r = sea.ramp(t), rd = sea.rampRate(t), rdd = sea.rampAcceleration(t);
   x = r * d;
   v = rd * d + r * dd;
   a = rdd * d + 2 * rd * dd + r * ddd;

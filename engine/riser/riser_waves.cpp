@@ -116,6 +116,12 @@ double RiserSea::rampRate(double t) const {
   return 30.0 * tau * tau * (1.0 - tau) * (1.0 - tau) / ramp_time;
 }
 
+double RiserSea::rampAcceleration(double t) const {
+  if (t <= 0.0 || t >= ramp_time) return 0.0;
+  const double tau = t / ramp_time;
+  return 60.0 * tau * (1.0 - tau) * (1.0 - 2.0 * tau) / (ramp_time * ramp_time);
+}
+
 double RiserSea::elevation(double x, double y, double t) const { return ramp(t) * field.elevation(x, y, t); }
 
 ocean::FluidKinematics RiserSea::at(const Eigen::Vector3d& point, double t) const {
@@ -162,44 +168,43 @@ struct WaveLoadScratch {
   ocean::WaveKinematicsBatch::Scratch batch;
 };
 
-// The kinematics at the Gauss points of pose at its time into scratch.fluid (calm water before the ramp starts;
-// point by point for a sea without a batch).
-void waveKinematicsAtGaussPoints(const RiserModel& m, const RiserPose& pose, WaveLoadScratch& scratch) {
+// The kinematics at the Gauss points of pose at its time: those held for the step (pose.step_waves, once its first
+// evaluation has filled them), else evaluated (into the held ones, or into scratch.fluid without them; calm water
+// before the ramp starts; point by point for a sea without a batch).
+const std::vector<ocean::FluidKinematics>& waveKinematicsAtGaussPoints(const RiserModel& m, const RiserPose& pose,
+                                                                       WaveLoadScratch& scratch) {
   const RiserSea& sea = *m.sea;
-  const std::size_t count = 3 * static_cast<std::size_t>(m.n + 1);
-  scratch.points.resize(count);
-  scratch.fluid.resize(count);
-  for (int i = 0; i <= m.n; ++i) {
-    const Vec3 t = pose.rotation[i].col(0);
-    for (int q = 0; q < 3; ++q) scratch.points[3 * i + q] = pose.position[i] + kGaussX[q] * m.segments[i].length * t;
-  }
   const double t = pose.time, r = sea.ramp(t);
   const ocean::WaveKinematicsBatch* batch = sea.batch.get();
+  StepWaveKinematics* held = r == 0.0 || batch == nullptr ? nullptr : pose.step_waves;
+  if (held && held->filled) return held->fluid;
+  const std::size_t count = 3 * static_cast<std::size_t>(m.n + 1);
+  std::vector<ocean::FluidKinematics>& fluid = held ? held->fluid : scratch.fluid;
+  scratch.points.resize(count);
+  fluid.resize(count);
+  for (int i = 0; i <= m.n; ++i) {
+    const Vec3 tangent = pose.rotation[i].col(0);
+    for (int q = 0; q < 3; ++q)
+      scratch.points[3 * i + q] = pose.position[i] + kGaussX[q] * m.segments[i].length * tangent;
+  }
   if (r == 0.0 || batch == nullptr) {
-    for (std::size_t k = 0; k < count; ++k) scratch.fluid[k] = sea.at(scratch.points[k], t);
-    return;
+    for (std::size_t k = 0; k < count; ++k) fluid[k] = sea.at(scratch.points[k], t);
+    return fluid;
   }
-  const auto sameBatch = [&](const std::weak_ptr<const ocean::WaveKinematicsBatch>& other) {
-    return !other.owner_before(sea.batch) && !sea.batch.owner_before(other);
-  };
-  WaveKinematicsReuse* reuse = pose.wave_reuse.get();
-  if (reuse && reuse->time == t && reuse->pose == &pose && sameBatch(reuse->batch) && reuse->fluid.size() == count) {
-    scratch.fluid = reuse->fluid;
-    return;
-  }
-  if (!sameBatch(scratch.owner)) scratch.batch = {}, scratch.owner = sea.batch;
+  if (scratch.owner.owner_before(sea.batch) || sea.batch.owner_before(scratch.owner))  // another sea's scratch
+    scratch.batch = {}, scratch.owner = sea.batch;
   const Eigen::Vector3d level(0.0, 0.0, sea.water_level);
   for (auto& p : scratch.points) p -= level;  // the field's z = 0 is the still-water level
-  batch->evaluate(scratch.points.data(), count, t, r, sea.rampRate(t), scratch.batch, scratch.fluid.data());
-  for (auto& p : scratch.points) p += level;
-  if (reuse) reuse->time = t, reuse->pose = &pose, reuse->batch = sea.batch, reuse->fluid = scratch.fluid;
+  batch->evaluate(scratch.points.data(), count, t, r, sea.rampRate(t), scratch.batch, fluid.data());
+  if (held) held->filled = true;
+  return fluid;
 }
 
 }  // namespace
 
 void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor, SegmentLoads& loads) {
   thread_local WaveLoadScratch scratch;
-  waveKinematicsAtGaussPoints(m, pose, scratch);
+  const std::vector<ocean::FluidKinematics>& kinematics = waveKinematicsAtGaussPoints(m, pose, scratch);
   for (int i = 0; i <= m.n; ++i) {
     const Segment& seg = m.segments[i];
     const Mat3& r = pose.rotation[i];
@@ -207,7 +212,7 @@ void addMorisonInWaves(const RiserModel& m, const RiserPose& pose, double factor
     for (int q = 0; q < 3; ++q) {
       const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
       const Vec3 p = pose.position[i] + xi * t;
-      const ocean::FluidKinematics& fluid = scratch.fluid[3 * static_cast<std::size_t>(i) + q];
+      const ocean::FluidKinematics& fluid = kinematics[3 * static_cast<std::size_t>(i) + q];
       if (!fluid.wet) continue;
       const Vec3 v = pose.velocity[i] + pose.omega[i].cross(xi * t);
       const Vec3 local = r.transpose() * (v - m.currentAt(p.z()) - fluid.velocity);

@@ -39,19 +39,20 @@ struct RiserSea {
 
   double ramp(double t) const;
   double rampRate(double t) const;  // [1/s] dr/dt
+  double rampAcceleration(double t) const;  // [1/s²] d²r/dt², zero outside (0, T_r) and continuous at both ends
   double elevation(double x, double y, double t) const;  // [m] ramped η above the still-water level
   // Ramped kinematics at a global point (its z relative to water_level inside).
   ocean::FluidKinematics at(const Eigen::Vector3d& point, double t) const;
 };
 
-// The wave kinematics at a pose's Gauss points, kept for reuse: a pose whose `wave_reuse` is set (the implicit
-// integrator's, riser_implicit) has the kinematics evaluated once per time and reused by later load evaluations
-// at that time (a step's Newton iterations at t_{n+1}), at the positions of the first (the step's predictor).
-struct WaveKinematicsReuse {
-  double time = std::numeric_limits<double>::quiet_NaN();
-  const void* pose = nullptr;  // the pose they were evaluated for (a copied pose does not reuse them)
-  std::weak_ptr<const ocean::WaveKinematicsBatch> batch;
+// The wave kinematics at the Gauss points held over one step of the implicit integrator (riser_charted_alpha owns
+// them, points its charts' poses at them through RiserPose::step_waves and calls beginStep() when a step begins):
+// the first load evaluation of the step fills them at its pose (the step's predictor), its later evaluations (the
+// Newton iterations and the Newton matrix's differences) read them. A pose without them evaluates every time.
+struct StepWaveKinematics {
+  bool filled = false;  // `fluid` holds this step's kinematics
   std::vector<ocean::FluidKinematics> fluid;
+  void beginStep() { filled = false; }
 };
 
 // The sea of the parameters; nullptr for waves.type = none. Call on validated parameters.

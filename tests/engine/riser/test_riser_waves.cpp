@@ -139,6 +139,26 @@ TEST(RiserWaves, NoneBuildsNoSeaAndEveryBuiltinScenarioHasAWavesSection) {
   EXPECT_GT(riser_scenarios, 20);
 }
 
+TEST(RiserWaves, RampRateAndAccelerationAreTheRampsDerivatives) {
+  // r = τ³(10 − 15τ + 6τ²), τ = t/T_r: ṙ and r̈ against central differences of r and ṙ at step δ = 1e-6 T_r
+  // (truncation δ²/6 times the next derivative: ≤ 1e-11/T_r and 6e-11/T_r²; rounding ≈ 1e-16/δ times r or ṙ),
+  // zero outside (0, T_r), r̈ tending to 0 at both ends (continuous), and one hand value.
+  RiserSea sea;
+  sea.ramp_time = 10.0;
+  const double tr = sea.ramp_time, delta = 1e-6 * tr;
+  for (int j = 1; j < 20; ++j) {
+    const double t = j * tr / 20;
+    const double rate = (sea.ramp(t + delta) - sea.ramp(t - delta)) / (2 * delta);
+    const double acceleration = (sea.rampRate(t + delta) - sea.rampRate(t - delta)) / (2 * delta);
+    EXPECT_NEAR(sea.rampRate(t), rate, 1e-8 / tr) << t;
+    EXPECT_NEAR(sea.rampAcceleration(t), acceleration, 1e-8 / (tr * tr)) << t;
+  }
+  for (const double t : {-1.0, 0.0, tr, tr + 1.0}) EXPECT_EQ(sea.rampAcceleration(t), 0.0) << t;
+  EXPECT_NEAR(sea.rampAcceleration(1e-9 * tr), 0.0, 1e-7 / (tr * tr));
+  EXPECT_NEAR(sea.rampAcceleration((1 - 1e-9) * tr), 0.0, 1e-7 / (tr * tr));
+  EXPECT_NEAR(sea.rampAcceleration(0.25 * tr), 5.625 / (tr * tr), 1e-15);  // 60 · ¼ · ¾ · ½ / T_r²
+}
+
 TEST(RiserWaves, BadWaveInputNamesTheField) {
   RiserParameters p = riserInAiryWave(0.0);
   p.seabed_level = 5.0;  // above the water
