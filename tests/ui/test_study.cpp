@@ -6,15 +6,18 @@
 // case runs nothing; a load-case table runs its rows; a Latin hypercube built in its dialog samples
 // every stratum.
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QMenu>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -417,6 +420,61 @@ class StudyTest : public QObject {
       dialog.show();
       QTest::qWait(200);
       dialog.grab().save(QDir(QString::fromLocal8Bit(shots)).filePath(QStringLiteral("latin_hypercube_dialog.png")));
+    }
+  }
+
+  void theSweepDialogStaysOpenOnARangeWithInvalidCasesAndSaysWhy() {
+    // The radius must stay below half the length: with r = 5 m a length of 5 m breaks the scene's cross-field
+    // check although the length field allows it. The real dialog (the panel's own prompt) is answered below.
+    window_->document()->edit("geometry.radius", Json(5.0));
+    QString shown;
+    bool stayed_open = false;
+    auto sweepDialog = [] {
+      for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* d = qobject_cast<SweepDialog*>(w); d && d->isVisible()) return d;
+      return static_cast<SweepDialog*>(nullptr);
+    };
+    QTimer::singleShot(0, this, [&] {
+      SweepDialog* dialog = sweepDialog();
+      if (!dialog) return;
+      dialog->fromEdit()->setText(QStringLiteral("5"));
+      dialog->toEdit()->setText(QStringLiteral("100"));
+      dialog->countBox()->setValue(3);
+      dialog->addButton()->click();
+      stayed_open = dialog->isVisible();
+      shown = dialog->problemLabel()->isVisible() ? dialog->problemLabel()->text() : QString();
+      dialog->fromEdit()->setText(QStringLiteral("20"));
+      dialog->addButton()->click();
+    });
+    QTimer::singleShot(20000, this, [&] {  // never hang on a dialog left open
+      if (SweepDialog* dialog = sweepDialog()) dialog->reject();
+    });
+    QVERIFY(panel()->sweep(QStringLiteral("geometry.length")));
+    QVERIFY(stayed_open);
+    QVERIFY2(shown.contains(QStringLiteral("geometry.radius")), qPrintable(shown));
+    QVERIFY2(shown.contains(QStringLiteral("case 0001")), qPrintable(shown));
+    QCOMPARE(panel()->parameters().size(), std::size_t(1));
+    QCOMPARE(panel()->parameters()[0].from, 20.0);
+    QVERIFY(!panel()->isRunning());  // Add to study: nothing runs
+  }
+
+  void aWindowTooNarrowForTheStudyDockBesideTheViewsGetsItFloatingAndKeepsItsWidth() {
+    auto* dock = window_->findChild<QDockWidget*>(QStringLiteral("studyDock"));
+    QVERIFY(dock);
+    for (const int width : {1366, 2600}) {
+      dock->hide();
+      dock->setFloating(false);
+      window_->resize(width, 740);
+      QTest::qWait(50);
+      const int before = window_->width();
+      panel()->setSweepPrompt(answer({"", 50.0, 150.0, 5, false}, true));
+      QVERIFY(chooseSweep(window_->editor(), "geometry.length"));
+      QTest::qWait(100);
+      QVERIFY(dock->isVisible());
+      QCOMPARE(window_->width(), before);  // the window never grows past the screen for the dock
+      QVERIFY2(dock->width() >= dock->minimumSizeHint().width(), qPrintable(QString::number(dock->width())));
+      // 1366 px hold the views and the left column but not the dock beside them; 2600 px do.
+      QCOMPARE(dock->isFloating(), width == 1366);
     }
   }
 

@@ -112,8 +112,8 @@ SweepDialog::SweepDialog(const ParamSpec& spec, const SweepRange& proposed, QWid
   sweep_->setDefault(true);
   add_ = buttons->addButton(tr("Add to study"), QDialogButtonBox::AcceptRole);
   add_->setToolTip(tr("Add this parameter to the study's grid (Study panel) without running"));
-  connect(add_, &QPushButton::clicked, this, [this] { add_only_ = true; });
-  connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  connect(sweep_, &QPushButton::clicked, this, [this] { finish(false); });
+  connect(add_, &QPushButton::clicked, this, [this] { finish(true); });
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
   auto* layout = new QVBoxLayout(this);
@@ -139,6 +139,20 @@ SweepRange SweepDialog::range() const {
   r.count = count_->value();
   r.log = spacing_->currentIndex() == 1;
   return r;
+}
+
+void SweepDialog::finish(bool add_only) {
+  if (case_check_) {
+    const QString problem = case_check_(range(), add_only);
+    if (!problem.isEmpty()) {
+      problem_->setText(problem);
+      problem_->setVisible(true);
+      adjustSize();
+      return;
+    }
+  }
+  add_only_ = add_only;
+  accept();
 }
 
 void SweepDialog::check() {
