@@ -36,6 +36,11 @@ enum Column { kParameter, kFrom, kTo, kValues, kSpacing, kColumnCount };
 
 QString number(double v) { return QString::number(v, 'g', 12); }
 
+// "1 case", "5 cases" (the application loads no translation, whose plural forms %n would need).
+QString counted(int n, const QString& one, const QString& many) {
+  return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
+}
+
 // A file dialog's folder, remembered per purpose.
 QString askFile(QWidget* parent, bool save, const QString& title, const QString& key, const QString& name,
                 const QString& filter) {
@@ -318,9 +323,10 @@ bool StudyPanel::startStudy() {
   plot_view_->refresh();
   const int threads = threads_ > 0 ? threads_ : threads_box_->value();
   if (!runner_->start(*session_.scene(), session_.caseScenarios(), threads)) return false;
-  const QString text = tr("Study started: %n case(s) of %1 on %2 worker(s)", nullptr, session_.caseCount())
-                           .arg(QString::fromStdString(session_.base().name))
-                           .arg(runner_->threadCount());
+  const QString text = tr("Study started: %1 of %2 on %3")
+                           .arg(counted(session_.caseCount(), tr("case"), tr("cases")),
+                                QString::fromStdString(session_.base().name),
+                                counted(runner_->threadCount(), tr("worker"), tr("workers")));
   summary_->setText(text);
   emit logged(0, text);
   return true;
@@ -422,7 +428,7 @@ bool StudyPanel::defineLatinHypercube(const LatinHypercubeDesign& design) {
         next.defineLatinHypercube(*document_->scene(), document_->scenario(), design);
       }))
     return false;
-  emit message(tr("Latin hypercube of %n case(s): run the study to run them", nullptr, design.samples));
+  emit message(tr("Latin hypercube of %1: run the study to run them").arg(counted(design.samples, tr("case"), tr("cases"))));
   return true;
 }
 
