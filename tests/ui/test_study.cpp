@@ -357,12 +357,12 @@ class StudyTest : public QObject {
   // A Latin hypercube built in its dialog over the open scenario (the engine draws the cases): 8 cases,
   // each parameter inside its interval with exactly one case in each of its 8 equal strata (the design's
   // definition); each case's volume is pi r^2 L of its own values (closed form, 1e-12 relative); the same
-  // seed gives the same cases (bitwise). Defaults come from the schema's allowed range.
+  // seed gives the same cases (bitwise). Defaults are half to one and a half times the scenario's value.
   void aLatinHypercubeFromItsDialogSamplesEveryStratum() {
     const ScenarioDocument* document = window_->document();
     LatinHypercubeDialog dialog(*document->scene(), document->scenario());
     QVERIFY(!dialog.createButton()->isEnabled());  // nothing ticked yet
-    // geometry.length is allowed in (0, 1000] m: proposed 10 (the open end moved in by 1 % of the span) to 1000.
+    // geometry.length is 100 m (allowed in (0, 1000] m): proposed 50 to 150 m, not the allowed range.
     // Rows show the parameter's label (the path is in the tooltip), never the raw path.
     const ParamSpec* length = nullptr;
     for (const ParamSpec& spec : document->scene()->schema.fields)
@@ -370,8 +370,8 @@ class StudyTest : public QObject {
     QVERIFY(length);
     const auto rows = dialog.table()->findItems(fieldLabel(*length) + QStringLiteral(" [m]"), Qt::MatchExactly);
     QCOMPARE(rows.size(), 1);
-    QCOMPARE(dialog.table()->item(rows.first()->row(), 1)->text(), QStringLiteral("10"));
-    QCOMPARE(dialog.table()->item(rows.first()->row(), 2)->text(), QStringLiteral("1000"));
+    QCOMPARE(dialog.table()->item(rows.first()->row(), 1)->text(), QStringLiteral("50"));
+    QCOMPARE(dialog.table()->item(rows.first()->row(), 2)->text(), QStringLiteral("150"));
     QVERIFY(dialog.choose("geometry.length", -5.0, 150.0));
     QVERIFY(!dialog.createButton()->isEnabled());
     QVERIFY2(dialog.problem().startsWith(fieldLabel(*length) + QStringLiteral(": from")), qPrintable(dialog.problem()));

@@ -49,16 +49,10 @@ SweepRange proposedSweep(const ParamSpec& spec, const Json& current) {
 }
 
 SweepRange proposedSampleRange(const ParamSpec& spec, const Json& current) {
-  if (!std::isfinite(spec.range.min) || !std::isfinite(spec.range.max)) return proposedSweep(spec, current);
-  SweepRange r;
-  r.path = spec.path;
-  r.from = clipToRange(spec.range.min, spec.range);
-  r.to = clipToRange(spec.range.max, spec.range);
-  if (spec.kind == ParamKind::Integer) {
-    r.from = std::ceil(r.from);
-    r.to = std::floor(r.to);
-  }
-  return r;
+  // Around the design being studied, like a sweep: a field's allowed range is a validity limit (a riser's
+  // length may be up to 100 km), far wider than the variations worth sampling, and its ends often break
+  // the scene's rules between fields.
+  return proposedSweep(spec, current);
 }
 
 QString sweepProblem(const ParamSpec& spec, const SweepRange& r) {

@@ -33,8 +33,8 @@ struct SweepRange {
 // (0 … 1 for a zero), clipped to the field's range, 5 values, linear.
 SweepRange proposedSweep(const ParamSpec& spec, const Json& current);
 
-// The interval proposed for sampling `spec` (value `current`) in a Latin hypercube: its allowed range
-// when both ends are finite (an open end moved in by a hundredth of the span), else proposedSweep's.
+// The interval proposed for sampling `spec` (value `current`) in a Latin hypercube: proposedSweep's (half to
+// one and a half times the value, clipped to the field's range).
 SweepRange proposedSampleRange(const ParamSpec& spec, const Json& current);
 
 // Why `range` cannot be swept over `spec` ("from: must be > 0 for a logarithmic spacing"), or empty.
