@@ -55,16 +55,23 @@ ParameterEditor::ParameterEditor(ScenarioDocument* document, QWidget* parent)
   problems_->setWordWrap(true);
   problems_->setStyleSheet(QString::fromLatin1(kErrorTextStyle));
 
+  // The title and description scroll with the fields: in a narrow column (a 1366 px screen) the wrapped
+  // description alone would otherwise take most of the dock's height and leave room for one field.
   auto* scroll = new QScrollArea(this);
   scroll->setWidgetResizable(true);
   scroll->setFrameShape(QFrame::NoFrame);
-  fields_host_ = new QWidget(scroll);
+  auto* content = new QWidget(scroll);
+  auto* content_layout = new QVBoxLayout(content);
+  content_layout->setContentsMargins(0, 0, 0, 0);
+  content_layout->addWidget(title_);
+  content_layout->addWidget(description_);
+  fields_host_ = new QWidget(content);
   fields_layout_ = new QVBoxLayout(fields_host_);
-  scroll->setWidget(fields_host_);
+  fields_layout_->setContentsMargins(0, 0, 0, 0);
+  content_layout->addWidget(fields_host_, 1);
+  scroll->setWidget(content);
 
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(title_);
-  layout->addWidget(description_);
   layout->addWidget(problems_);
   layout->addWidget(scroll, 1);
 
