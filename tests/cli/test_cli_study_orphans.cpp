@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -95,6 +96,11 @@ TEST_F(CliStudyOrphans, ResumeWaitsForACaseProcessThatOutlivedItsStudyAndDoesNot
   writeText(dir_ / "slow.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
     "grid": {"solver.end_time": [4, 5]}})");
   const fs::path out = dir_ / "out", cases = out / "cases";
+  // The orphans are held stopped below. Were they re-parented to init, their process group would be orphaned
+  // with stopped members, and the kernel would send it SIGHUP and SIGCONT (POSIX), killing them. This test
+  // process adopts them instead (a subreaper in another process group of the same session), so the group stays
+  // unorphaned, as it does for case processes that are running, not stopped, when their study is killed.
+  ASSERT_EQ(::prctl(PR_SET_CHILD_SUBREAPER, 1), 0);
   const pid_t study = startCli({"study", "run", (dir_ / "slow.json").string(), "--out", out.string(), "--jobs", "2",
                                 "--no-plots"}, dir_, true);
   ASSERT_GT(study, 0);
@@ -149,6 +155,8 @@ TEST_F(CliStudyOrphans, ResumeWaitsForACaseProcessThatOutlivedItsStudyAndDoesNot
   }
   const Json manifest = Json::parse(slurp(out / "study.json"));
   EXPECT_EQ(manifest["collected"]["ok"], 2);
+  while (::waitpid(-1, nullptr, WNOHANG) > 0) {  // the adopted orphans, ended by now
+  }
 }
 
 }  // namespace
