@@ -125,6 +125,7 @@ int cmdCollect(const StudyOptions& options, int argc, char** argv) {
   if (!options.no_plots) requirePlotRenderer();
   FolderLock lock(folder.root, "maris-cli study collect");
   StudyManifest manifest = readManifest(folder);
+  removeOldVersionLeftovers(folder);
   return collectAndReport(folder, manifest, options.no_plots, argc, argv);
 }
 

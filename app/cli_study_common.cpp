@@ -10,6 +10,7 @@
 #include "cli_conventions.hpp"
 #include "cli_study_internal.hpp"
 #include "core/input_limits.hpp"
+#include "core/run_folder.hpp"
 #include "plot_writer.hpp"
 #include "study/study_collect.hpp"
 
@@ -58,7 +59,14 @@ PreparedStudy prepareStudy(const StudyOptions& options, const std::string& out, 
       std::filesystem::remove_all(p);
   }
   prepareStudyFolder(folder, study, cases, options.study_file, options.resume);
+  if (options.resume) removeOldVersionLeftovers(folder);
   return prepared;
+}
+
+void removeOldVersionLeftovers(const StudyFolder& folder) {
+  if (const std::size_t removed = maris::removeOldVersionLeftovers(folder.cases()))
+    std::fprintf(stderr, "note: removed %zu staging folder%s that killed runs of an earlier maris version left in %s\n",
+                 removed, removed == 1 ? "" : "s", folder.cases().c_str());
 }
 
 int collectAndReport(const StudyFolder& folder, StudyManifest& manifest, bool no_plots, int argc, char** argv) {

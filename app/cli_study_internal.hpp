@@ -44,9 +44,14 @@ struct PreparedStudy {
 
 // Loads the study, expands and checks every case (throws InputError listing every bad case, before anything
 // is written), checks and locks the output folder (throws StudyFolderRefused), then writes the case files
-// and study.json (with options.resume: checks that DIR holds the same study; with options.force: removes
-// the earlier study's files first).
+// and study.json (with options.resume: checks that DIR holds the same study and removes old versions'
+// leftovers; with options.force: removes the earlier study's files first).
 PreparedStudy prepareStudy(const StudyOptions& options, const std::string& out, const std::string& command);
+
+// Removes the staging folders (`.NNNN.partial-PID`, `.NNNN.old-PID`) that killed case runs of Maris 0.5 and
+// earlier left in DIR/cases, each under its case's lock, with one listing of the folder (a case of this version
+// does not look for them: `run --study-case`). Called by `study run --resume`, `submit --resume` and `collect`.
+void removeOldVersionLeftovers(const study::StudyFolder& folder);
 
 // Collects DIR into study.csv and study.json, draws the plots unless `no_plots`, prints the tally (and the
 // failed and missing cases); returns 0 when every case is complete, else 3.

@@ -69,6 +69,7 @@ struct RunOptions {
   bool force = false;                  // --force: replace an earlier run in DIR
   bool allow_large = false;            // --allow-large: run beyond the work limits
   bool no_sync = false;                // --no-sync: do not wait for the device (a study syncs its cases in batches)
+  bool study_case = false;             // --study-case: a study's case; the study removes old versions' leftovers
 };
 
 int cmdList() {
@@ -174,7 +175,8 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
   installSignalHandlers();
   RunFolder folder(out_dir, {.replace = options.force,
                              .expected_bytes = static_cast<std::uintmax_t>(estimate.output_bytes),
-                             .sync = !options.no_sync});
+                             .sync = !options.no_sync,
+                             .remove_old_version_leftovers = !options.study_case});
   RunContext context(makeProgressPrinter(), &g_cancel);
   std::fprintf(stderr, "running %s (%s)\n", id.c_str(), scene.title.c_str());
   const auto started_at = std::chrono::system_clock::now();
@@ -238,6 +240,9 @@ struct Commands {
     run->add_flag("--no-sync", run_options.no_sync,
                   "do not wait until the results are on the disk (faster; a power loss soon after can leave "
                   "them empty): for a caller that syncs many runs at once, as `study run` does");
+    // Not in --help: what `study run` passes to its cases (one listing of the cases folder per study, not
+    // one per case).
+    run->add_flag("--study-case", run_options.study_case, "")->group("");
     study.add(app);
   }
 };

@@ -17,6 +17,7 @@
 
 #include "case_durability.hpp"
 #include "core/input_limits.hpp"
+#include "core/run_folder.hpp"
 #include "core/run_output.hpp"
 
 extern char** environ;
@@ -29,7 +30,14 @@ using Clock = std::chrono::steady_clock;
 using study::CaseOutcome;
 using study::CaseStatus;
 
-constexpr double kKillGraceSeconds = 5.0;  // from SIGTERM (timeout) to SIGKILL
+constexpr double kKillGraceSeconds = 5.0;       // from SIGTERM (timeout) to SIGKILL
+constexpr double kElsewherePollSeconds = 0.25;  // how often a case run by another process is looked at
+
+// A case whose run folder another process is writing: a case process that a killed study left running.
+struct ElsewhereCase {
+  std::string id;
+  Clock::time_point since;
+};
 
 struct RunningCase {
   std::string id;
@@ -49,12 +57,13 @@ std::string durationText(double seconds) {
   return text;
 }
 
-// Starts `maris-cli run CASE.json --out CASE/ --no-sync` with its messages going to CASE.log; 0 when it
-// cannot start. The case does not wait for the disk: CaseDurability syncs the ended cases in batches.
+// Starts `maris-cli run CASE.json --out CASE/ --no-sync --study-case` with its messages going to CASE.log; 0
+// when it cannot start. The case does not wait for the disk: CaseDurability syncs the ended cases in batches;
+// nor does it list the cases folder for an old version's leftovers: the study did that once for all.
 pid_t spawnCase(const study::StudyFolder& folder, const std::string& id, const CaseRunOptions& options) {
   const std::string scenario = folder.caseScenario(id).string(), out = folder.caseRun(id).string();
   const std::string log = folder.caseLog(id).string();
-  std::vector<std::string> args = {"maris-cli", "run", scenario, "--out", out, "--no-sync"};
+  std::vector<std::string> args = {"maris-cli", "run", scenario, "--out", out, "--no-sync", "--study-case"};
   // A folder of a case that is not complete was torn by a crash (a power loss before its batch was synced):
   // the run replaces it.
   std::error_code exists_error;
@@ -98,7 +107,7 @@ std::string readLog(const study::StudyFolder& folder, const std::string& id) {
 class Progress {
  public:
   Progress(std::size_t total, bool enabled) : total_(total), enabled_(enabled), tty_(::isatty(STDERR_FILENO)) {}
-  void show(const CaseRunTally& tally, std::size_t running, bool force) {
+  void show(const CaseRunTally& tally, std::size_t running, std::size_t elsewhere, bool force) {
     if (!enabled_ || (!force && secondsSince(last_) < (tty_ ? 0.5 : 5.0))) return;
     last_ = Clock::now();
     const std::size_t finished = tally.ok + tally.failed + tally.timeout;
@@ -107,9 +116,16 @@ class Progress {
     if (finished > 0 && done < total_)
       left = ", about " + durationText(secondsSince(start_) / static_cast<double>(finished) *
                                        static_cast<double>(total_ - done)) + " left";
-    std::fprintf(stderr, "%scases: %zu/%zu done, %zu failed, %zu running%s%s", tty_ ? "\r" : "", done, total_,
-                 tally.failed + tally.timeout, running, left.c_str(), tty_ ? "\033[K" : "\n");
+    const std::string others = elsewhere ? ", " + std::to_string(elsewhere) + " running elsewhere" : "";
+    std::fprintf(stderr, "%scases: %zu/%zu done, %zu failed, %zu running%s%s%s", tty_ ? "\r" : "", done, total_,
+                 tally.failed + tally.timeout, running, others.c_str(), left.c_str(), tty_ ? "\033[K" : "\n");
     std::fflush(stderr);
+  }
+  // A line of its own (over the redrawn progress line on a terminal).
+  void note(const std::string& text) {
+    if (!enabled_) return;
+    std::fprintf(stderr, "%s%s\n", tty_ ? "\r\033[K" : "", text.c_str());
+    last_ = Clock::now() - std::chrono::hours(1);  // redraw the progress line at once
   }
   void finish() {
     if (enabled_ && tty_) std::fputc('\n', stderr);
@@ -146,6 +162,9 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
 
   Progress progress(ids.size(), options.progress);
   std::map<pid_t, RunningCase> running;
+  // Cases whose run folder is locked by a process that is not ours: left running by a killed study (`--resume`
+  // right after the kill). Their folders are theirs to commit; waited for, never run a second time beside them.
+  std::vector<ElsewhereCase> elsewhere;
   std::size_t next = 0;
   const unsigned jobs = std::max(1u, options.jobs);
   // Ended cases are counted once their folders are durable and their outcomes recorded (CaseDurability).
@@ -189,9 +208,45 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
     durability.add(std::move(outcome));
   };
 
+  // A case that a process of an earlier study run completed: recorded (after the next batch's sync) as ok.
+  auto finishedElsewhere = [&](const std::string& id, Clock::time_point since) {
+    durability.add({id, CaseStatus::Ok, 0, "completed by a case process of an earlier, stopped study run",
+                    secondsSince(since), isoUtc(std::chrono::system_clock::now())});
+  };
+  // Looks again at the cases run elsewhere: one that ended is recorded when complete, else run here.
+  auto recheckElsewhere = [&] {
+    for (auto it = elsewhere.begin(); it != elsewhere.end();) {
+      if (runFolderBusy(folder.caseRun(it->id))) {
+        if (options.timeout_s > 0 && secondsSince(it->since) >= options.timeout_s) {
+          durability.add({it->id, CaseStatus::Timeout, 0,
+                          "another process kept the case's run folder locked for longer than the timeout of " +
+                              durationText(options.timeout_s) + "; it was not stopped (not this study's process)",
+                          secondsSince(it->since), isoUtc(std::chrono::system_clock::now())});
+          it = elsewhere.erase(it);
+        } else {
+          ++it;
+        }
+        continue;
+      }
+      if (folder.caseComplete(it->id)) finishedElsewhere(it->id, it->since);
+      else queue.push_back(it->id);  // it ended without results: run it here
+      it = elsewhere.erase(it);
+    }
+  };
+
   for (;;) {
     while (tally.cancel_signal == 0 && running.size() < jobs && next < queue.size()) {
-      const std::string& id = queue[next++];
+      const std::string id = queue[next++];
+      if (runFolderBusy(folder.caseRun(id))) {
+        elsewhere.push_back({id, Clock::now()});
+        progress.note("case " + id + " is being run by another process (a case process of a stopped study run?); "
+                      "waiting for it to end");
+        continue;
+      }
+      if (folder.caseComplete(id)) {  // completed by such a process since this run started
+        finishedElsewhere(id, Clock::now());
+        continue;
+      }
       const pid_t pid = spawnCase(folder, id, options);
       if (pid == 0) {
         durability.add({id, CaseStatus::Failed, 127, "could not start maris-cli for the case", 0.0,
@@ -201,12 +256,13 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
       running[pid] = {id, Clock::now(), std::chrono::system_clock::now(), false, {}};
     }
     count(durability.poll());  // after the next cases have started (the sync itself runs in its own thread)
-    progress.show(tally, running.size(), false);
-    if (running.empty()) break;
+    progress.show(tally, running.size(), elsewhere.size(), false);
+    // Cancelled: the cases run elsewhere are left to their processes (not recorded; --resume looks again).
+    if (running.empty() && (tally.cancel_signal != 0 || (elsewhere.empty() && next >= queue.size()))) break;
 
     // Sleep until a case ends, a signal arrives, a timeout falls due, a batch of cases is to be synced or
     // the progress line is due.
-    double wait_s = std::min(1.0, durability.secondsToNextPoll());
+    double wait_s = std::min(elsewhere.empty() ? 1.0 : kElsewherePollSeconds, durability.secondsToNextPoll());
     for (const auto& [pid, c] : running) {
       if (options.timeout_s > 0 && !c.timed_out) wait_s = std::min(wait_s, options.timeout_s - secondsSince(c.started));
       if (c.timed_out) wait_s = std::min(wait_s, -std::chrono::duration<double>(Clock::now() - c.kill_at).count());
@@ -224,6 +280,7 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
     }
     int status = 0;
     for (pid_t pid; (pid = ::waitpid(-1, &status, WNOHANG)) > 0;) finish(pid, status);
+    recheckElsewhere();
     for (auto& [pid, c] : running) {
       if (options.timeout_s > 0 && !c.timed_out && secondsSince(c.started) >= options.timeout_s) {
         c.timed_out = true;
@@ -236,7 +293,7 @@ CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::s
     }
   }
   count(durability.finish());
-  progress.show(tally, 0, true);
+  progress.show(tally, 0, elsewhere.size(), true);
   progress.finish();
   // A signal that arrived after the last case ended still cancels the study (it is pending, not lost).
   sigset_t pending;

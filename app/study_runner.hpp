@@ -30,7 +30,10 @@ struct CaseRunTally {
 };
 
 // Runs the cases `ids` of `folder` that are not complete. Blocks SIGINT, SIGTERM and SIGCHLD while it runs
-// (they are waited for, not handled), and restores the signal mask when it returns.
+// (they are waited for, not handled), and restores the signal mask when it returns. A case whose run folder
+// another process is writing (its lock is held: a case process that a killed study left running) is not
+// started beside it but waited for, and then counted ok if that process completed it, else run; with a
+// timeout, a wait longer than the timeout is recorded as `timeout` (the other process is not stopped).
 CaseRunTally runCases(const study::StudyFolder& folder, const std::vector<std::string>& ids,
                       const CaseRunOptions& options);
 

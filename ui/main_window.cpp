@@ -89,12 +89,7 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
   connect(browser_, &ScenarioBrowser::fileActivated, this, &MainWindow::openFile);
   connect(browser_, &ScenarioBrowser::openFileRequested, this, &MainWindow::openFileDialog);
   connect(editor_, &ParameterEditor::sweepRequested, this, [this](const QString& path) {
-    // A quarter of the window for the study (its plot needs room); the 3D view and plots give way.
-    if (!study_dock_->isVisible()) {
-      study_dock_->show();
-      // Together with the left docks' width, or the left docks alone would give the room.
-      resizeDocks({left_dock_, study_dock_}, {std::min(440, width() / 4), std::max(380, width() / 4)}, Qt::Horizontal);
-    }
+    if (!study_dock_->isVisible()) showStudyDock();
     study_dock_->raise();
     study_->sweep(path);
   });
@@ -116,6 +111,25 @@ MainWindow::MainWindow(std::shared_ptr<const SceneLibrary> library, QWidget* par
     openExample(QString::fromStdString(first->id));
   updateTitle();
   updateRunEnabled();
+}
+
+void MainWindow::showStudyDock() {
+  // Docked beside the 3D view and the plots, the dock needs their minimum widths plus its own: where the
+  // window is narrower than that (1366 px screens), docking it would widen the window past the screen's edge.
+  // It then floats over the views' right part instead (double-click its title to dock it).
+  const int separator = style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, this);
+  const int docked_width = minimumSizeHint().width() + study_dock_->minimumSizeHint().width() + separator;
+  if (!study_dock_->isFloating() && docked_width > width()) {
+    const int w = std::min(width() - 40, std::max(560, study_dock_->minimumSizeHint().width()));
+    const int h = std::max(study_dock_->minimumSizeHint().height(), height() - 140);
+    study_dock_->setFloating(true);
+    study_dock_->setGeometry(QRect(mapToGlobal(QPoint(width() - w - 20, 90)), QSize(w, h)));
+    study_dock_->show();
+    return;
+  }
+  study_dock_->show();
+  if (!study_dock_->isFloating())  // a quarter of the window for the study (its plot needs room)
+    resizeDocks({left_dock_, study_dock_}, {std::min(440, width() / 4), std::max(380, width() / 4)}, Qt::Horizontal);
 }
 
 MainWindow::~MainWindow() {
@@ -190,7 +204,16 @@ void MainWindow::createDocks() {
   resizeDocks({run}, {270}, Qt::Vertical);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  for (QDockWidget* d : {scenarios, parameters, run, results, study_dock_}) view->addAction(d->toggleViewAction());
+  for (QDockWidget* d : {scenarios, parameters, run, results}) view->addAction(d->toggleViewAction());
+  // View ▸ Study shows the dock where it fits (showStudyDock), not always beside the views.
+  QAction* study_toggle = view->addAction(study_dock_->windowTitle());
+  study_toggle->setCheckable(true);
+  connect(study_toggle, &QAction::triggered, this, [this](bool show) {
+    if (show) showStudyDock();
+    else study_dock_->hide();
+  });
+  connect(study_dock_, &QDockWidget::visibilityChanged, study_toggle,
+          [this, study_toggle] { study_toggle->setChecked(!study_dock_->isHidden()); });
   view->addSeparator();
   view->addAction(tr("Reset 3D &Camera"), this, [this] { view_->resetCamera(); });
   view->addSeparator();

@@ -95,6 +95,7 @@ class MainWindow : public QMainWindow {
  private:
   void createActions();
   void createDocks();
+  void showStudyDock();  // docked beside the views where the window is wide enough, else floating over them
   void restoreSettings();
   void saveSettings() const;
   void addRecentFile(const QString& path);

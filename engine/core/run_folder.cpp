@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -36,11 +38,45 @@ fs::path asideFolder(const fs::path& target) {
   return target.parent_path() / ("." + target.filename().string() + ".old");
 }
 
+fs::path lockFile(const fs::path& target) {
+  return target.parent_path() / ("." + target.filename().string() + ".lock");
+}
+
+// The NAME of a staging or set-aside folder of Maris 0.5 and earlier (`.NAME.partial-PID`, `.NAME.old-PID`:
+// a dot, a non-empty NAME, the suffix, a dash and only digits), or "" for any other file name.
+std::string oldVersionLeftoverOwner(const std::string& entry) {
+  const auto dash = entry.rfind('-');
+  if (entry.empty() || entry.front() != '.' || dash == std::string::npos || dash + 1 == entry.size()) return "";
+  if (entry.size() - dash - 1 > 10) return "";  // longer than any process id
+  for (std::size_t i = dash + 1; i < entry.size(); ++i)
+    if (entry[i] < '0' || entry[i] > '9') return "";
+  const std::string stem = entry.substr(1, dash - 1);  // NAME.partial or NAME.old
+  for (const std::string suffix : {".partial", ".old"}) {
+    if (stem.size() > suffix.size() && stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0)
+      return stem.substr(0, stem.size() - suffix.size());
+  }
+  return "";
+}
+
+// Every old version's leftover in `parent` (one listing), with its owner's NAME.
+std::vector<std::pair<fs::path, std::string>> oldVersionLeftovers(const fs::path& parent) {
+  std::vector<std::pair<fs::path, std::string>> found;
+  std::error_code ec;
+  for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+    std::string owner = oldVersionLeftoverOwner(it->path().filename().string());
+    if (!owner.empty()) found.emplace_back(it->path(), std::move(owner));
+  }
+  return found;
+}
+
 // Removes the staging and set-aside folders that a killed run left next to `target` (called under the lock).
-void removeStale(const fs::path& target) {
+void removeStale(const fs::path& target, bool old_version_leftovers) {
   std::error_code ec;
   fs::remove_all(stagingFolder(target), ec);
   fs::remove_all(asideFolder(target), ec);
+  if (!old_version_leftovers) return;
+  for (const auto& [path, owner] : oldVersionLeftovers(target.parent_path()))
+    if (owner == target.filename().string()) fs::remove_all(path, ec);
 }
 
 void syncDirectory(const fs::path& dir) {
@@ -68,6 +104,32 @@ bool isRunFolder(const fs::path& dir) {
   return fs::exists(dir / "summary.json", ec) || fs::exists(dir / "scenario.json", ec);
 }
 
+std::size_t removeOldVersionLeftovers(const fs::path& parent) {
+  std::size_t removed = 0;
+  for (const auto& [path, owner] : oldVersionLeftovers(parent)) {
+    const fs::path lock = lockFile(parent / owner);
+    const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) continue;
+    if (::flock(fd, LOCK_EX | LOCK_NB) == 0) {  // no run writes NAME now: the folder is a killed run's
+      std::error_code ec;
+      if (fs::remove_all(path, ec) > 0 && !ec) ++removed;
+    }
+    ::close(fd);  // releases the flock
+  }
+  return removed;
+}
+
+bool runFolderBusy(const fs::path& target) {
+  fs::path normal = fs::absolute(target).lexically_normal();
+  if (!normal.has_filename()) normal = normal.parent_path();  // "out/" -> "out"
+  const fs::path lock = lockFile(normal);
+  const int fd = ::open(lock.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;  // never locked: no run has written the folder
+  const bool busy = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);
+  return busy;
+}
+
 RunFolder::RunFolder(fs::path target, RunFolderOptions options) : options_(options) {
   if (target.empty()) fail("the output folder is empty: name a folder");
   std::error_code ec;
@@ -84,7 +146,7 @@ RunFolder::RunFolder(fs::path target, RunFolderOptions options) : options_(optio
   if (!fs::is_directory(parent, ec)) fail(quoted(parent) + " is not a folder");
 
   // The lock is also the first write: a read-only or foreign parent fails here, before any solve.
-  const fs::path lock = parent / ("." + name + ".lock");
+  const fs::path lock = lockFile(target);
   lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_fd_ < 0) fail("cannot write in " + quoted(parent) + ": " + std::strerror(errno));
   if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
@@ -110,7 +172,7 @@ RunFolder::RunFolder(fs::path target, RunFolderOptions options) : options_(optio
         fail(quoted(target) + " holds the results of another run; choose another output folder or replace "
              "them (maris-cli run --force)");
     }
-    removeStale(target);
+    removeStale(target, options_.remove_old_version_leftovers);
     staging_ = stagingFolder(target);
     if (::mkdir(staging_.c_str(), 0755) != 0) {
       const int err = errno;

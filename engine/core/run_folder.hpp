@@ -12,6 +12,8 @@
 // output. Files go into the hidden sibling `.NAME.partial`; commit() renames it onto NAME (an
 // existing run is swapped out atomically and then removed). An uncommitted folder (error, cancellation)
 // is removed by the destructor, and stale staging folders of killed runs are removed by the next run.
+// Maris 0.5 and earlier named them with the process id (`.NAME.partial-PID`, `.NAME.old-PID`); a run
+// removes those of its NAME too, and a study those of all its cases at once (removeOldVersionLeftovers).
 #pragma once
 
 #include <cstdint>
@@ -34,6 +36,11 @@ struct RunFolderOptions {
   // many folders durable at once (a study: one syncfs per batch of cases); until then a power loss can leave
   // the committed folder absent or with empty files (see docs/studies.md, "Crash safety").
   bool sync = true;
+  // Also remove the staging and set-aside folders that a killed run of Maris 0.5 or earlier left beside the
+  // target under names with its process id (`.NAME.partial-PID`, `.NAME.old-PID`): one listing of the parent.
+  // Off for a study's cases (`maris-cli run --study-case`): the study removes its cases' leftovers with one
+  // listing for all of them (removeOldVersionLeftovers), not one per case of a folder of 40 000 entries.
+  bool remove_old_version_leftovers = true;
 };
 
 class RunFolder {
@@ -62,5 +69,16 @@ class RunFolder {
 
 // True when `dir` holds the files of a run (scenario.json or summary.json).
 bool isRunFolder(const std::filesystem::path& dir);
+
+// Removes every staging or set-aside folder that a killed run of Maris 0.5 or earlier left in `parent`
+// (`.NAME.partial-PID`, `.NAME.old-PID`, for any NAME), each while holding NAME's run-folder lock; one
+// whose lock another process holds (a run still writing it) is kept. One listing of `parent`; returns how
+// many folders were removed.
+std::size_t removeOldVersionLeftovers(const std::filesystem::path& parent);
+
+// True when another process holds the run-folder lock of `target`: a run is writing it (a study's case
+// process left running by a killed study, say). Takes the lock for an instant when it is free, so it is for
+// the owner of `target` (the study of a case), not for a bystander. Never creates the lock file.
+bool runFolderBusy(const std::filesystem::path& target);
 
 }  // namespace maris

@@ -6,15 +6,18 @@
 // case runs nothing; a load-case table runs its rows; a Latin hypercube built in its dialog samples
 // every stratum.
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QMenu>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -354,12 +357,12 @@ class StudyTest : public QObject {
   // A Latin hypercube built in its dialog over the open scenario (the engine draws the cases): 8 cases,
   // each parameter inside its interval with exactly one case in each of its 8 equal strata (the design's
   // definition); each case's volume is pi r^2 L of its own values (closed form, 1e-12 relative); the same
-  // seed gives the same cases (bitwise). Defaults come from the schema's allowed range.
+  // seed gives the same cases (bitwise). Defaults are half to one and a half times the scenario's value.
   void aLatinHypercubeFromItsDialogSamplesEveryStratum() {
     const ScenarioDocument* document = window_->document();
     LatinHypercubeDialog dialog(*document->scene(), document->scenario());
     QVERIFY(!dialog.createButton()->isEnabled());  // nothing ticked yet
-    // geometry.length is allowed in (0, 1000] m: proposed 10 (the open end moved in by 1 % of the span) to 1000.
+    // geometry.length is 100 m (allowed in (0, 1000] m): proposed 50 to 150 m, not the allowed range.
     // Rows show the parameter's label (the path is in the tooltip), never the raw path.
     const ParamSpec* length = nullptr;
     for (const ParamSpec& spec : document->scene()->schema.fields)
@@ -367,8 +370,8 @@ class StudyTest : public QObject {
     QVERIFY(length);
     const auto rows = dialog.table()->findItems(fieldLabel(*length) + QStringLiteral(" [m]"), Qt::MatchExactly);
     QCOMPARE(rows.size(), 1);
-    QCOMPARE(dialog.table()->item(rows.first()->row(), 1)->text(), QStringLiteral("10"));
-    QCOMPARE(dialog.table()->item(rows.first()->row(), 2)->text(), QStringLiteral("1000"));
+    QCOMPARE(dialog.table()->item(rows.first()->row(), 1)->text(), QStringLiteral("50"));
+    QCOMPARE(dialog.table()->item(rows.first()->row(), 2)->text(), QStringLiteral("150"));
     QVERIFY(dialog.choose("geometry.length", -5.0, 150.0));
     QVERIFY(!dialog.createButton()->isEnabled());
     QVERIFY2(dialog.problem().startsWith(fieldLabel(*length) + QStringLiteral(": from")), qPrintable(dialog.problem()));
@@ -417,6 +420,61 @@ class StudyTest : public QObject {
       dialog.show();
       QTest::qWait(200);
       dialog.grab().save(QDir(QString::fromLocal8Bit(shots)).filePath(QStringLiteral("latin_hypercube_dialog.png")));
+    }
+  }
+
+  void theSweepDialogStaysOpenOnARangeWithInvalidCasesAndSaysWhy() {
+    // The radius must stay below half the length: with r = 5 m a length of 5 m breaks the scene's cross-field
+    // check although the length field allows it. The real dialog (the panel's own prompt) is answered below.
+    window_->document()->edit("geometry.radius", Json(5.0));
+    QString shown;
+    bool stayed_open = false;
+    auto sweepDialog = [] {
+      for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* d = qobject_cast<SweepDialog*>(w); d && d->isVisible()) return d;
+      return static_cast<SweepDialog*>(nullptr);
+    };
+    QTimer::singleShot(0, this, [&] {
+      SweepDialog* dialog = sweepDialog();
+      if (!dialog) return;
+      dialog->fromEdit()->setText(QStringLiteral("5"));
+      dialog->toEdit()->setText(QStringLiteral("100"));
+      dialog->countBox()->setValue(3);
+      dialog->addButton()->click();
+      stayed_open = dialog->isVisible();
+      shown = dialog->problemLabel()->isVisible() ? dialog->problemLabel()->text() : QString();
+      dialog->fromEdit()->setText(QStringLiteral("20"));
+      dialog->addButton()->click();
+    });
+    QTimer::singleShot(20000, this, [&] {  // never hang on a dialog left open
+      if (SweepDialog* dialog = sweepDialog()) dialog->reject();
+    });
+    QVERIFY(panel()->sweep(QStringLiteral("geometry.length")));
+    QVERIFY(stayed_open);
+    QVERIFY2(shown.contains(QStringLiteral("geometry.radius")), qPrintable(shown));
+    QVERIFY2(shown.contains(QStringLiteral("case 0001")), qPrintable(shown));
+    QCOMPARE(panel()->parameters().size(), std::size_t(1));
+    QCOMPARE(panel()->parameters()[0].from, 20.0);
+    QVERIFY(!panel()->isRunning());  // Add to study: nothing runs
+  }
+
+  void aWindowTooNarrowForTheStudyDockBesideTheViewsGetsItFloatingAndKeepsItsWidth() {
+    auto* dock = window_->findChild<QDockWidget*>(QStringLiteral("studyDock"));
+    QVERIFY(dock);
+    for (const int width : {1366, 2600}) {
+      dock->hide();
+      dock->setFloating(false);
+      window_->resize(width, 740);
+      QTest::qWait(50);
+      const int before = window_->width();
+      panel()->setSweepPrompt(answer({"", 50.0, 150.0, 5, false}, true));
+      QVERIFY(chooseSweep(window_->editor(), "geometry.length"));
+      QTest::qWait(100);
+      QVERIFY(dock->isVisible());
+      QCOMPARE(window_->width(), before);  // the window never grows past the screen for the dock
+      QVERIFY2(dock->width() >= dock->minimumSizeHint().width(), qPrintable(QString::number(dock->width())));
+      // 1366 px hold the views and the left column but not the dock beside them; 2600 px do.
+      QCOMPARE(dock->isFloating(), width == 1366);
     }
   }
 

@@ -12,6 +12,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QScrollArea>
+#include <QSplitter>
 #include <QSignalBlocker>
 #include <QStyle>
 #include <QToolButton>
@@ -62,11 +63,31 @@ ParameterEditor::ParameterEditor(ScenarioDocument* document, QWidget* parent)
   fields_layout_ = new QVBoxLayout(fields_host_);
   scroll->setWidget(fields_host_);
 
+  // The title and description in a pane of their own above the fields, a quarter of the height to begin with
+  // (drag the handle for more): in a narrow column (a 1366 px screen) the wrapped description alone would
+  // otherwise take most of the dock's height and leave room for one field.
+  auto* header = new QScrollArea(this);
+  header->setWidgetResizable(true);
+  header->setFrameShape(QFrame::NoFrame);
+  header->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // the labels wrap to its width
+  auto* header_content = new QWidget(header);
+  auto* header_layout = new QVBoxLayout(header_content);
+  header_layout->setContentsMargins(0, 0, 0, 0);
+  header_layout->addWidget(title_);
+  header_layout->addWidget(description_);
+  header_layout->addStretch(1);
+  header->setWidget(header_content);
+  auto* split = new QSplitter(Qt::Vertical, this);
+  split->setChildrenCollapsible(false);
+  split->addWidget(header);
+  split->addWidget(scroll);
+  split->setStretchFactor(0, 1);
+  split->setStretchFactor(1, 3);
+  split->setSizes({1, 3});  // proportions: the splitter scales them to its height
+
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(title_);
-  layout->addWidget(description_);
   layout->addWidget(problems_);
-  layout->addWidget(scroll, 1);
+  layout->addWidget(split, 1);
 
   connect(document_, &ScenarioDocument::scenarioReset, this, &ParameterEditor::rebuild);
   connect(document_, &ScenarioDocument::valueChanged, this,

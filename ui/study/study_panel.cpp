@@ -36,6 +36,11 @@ enum Column { kParameter, kFrom, kTo, kValues, kSpacing, kColumnCount };
 
 QString number(double v) { return QString::number(v, 'g', 12); }
 
+// "1 case", "5 cases" (the application loads no translation, whose plural forms %n would need).
+QString counted(int n, const QString& one, const QString& many) {
+  return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
+}
+
 // A file dialog's folder, remembered per purpose.
 QString askFile(QWidget* parent, bool save, const QString& title, const QString& key, const QString& name,
                 const QString& filter) {
@@ -58,6 +63,13 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
       refresh_timer_(new QTimer(this)) {
   sweep_prompt_ = [this](const ParamSpec& spec, const SweepRange& proposed) -> std::optional<std::pair<SweepRange, bool>> {
     SweepDialog dialog(spec, proposed, this);
+    dialog.setCaseCheck([this](const SweepRange& range, bool add_only) {
+      std::vector<SweepRange> grid = add_only ? grid_ : std::vector<SweepRange>{};
+      const auto same = std::find_if(grid.begin(), grid.end(), [&](const SweepRange& r) { return r.path == range.path; });
+      if (same != grid.end()) *same = range;
+      else grid.push_back(range);
+      return gridProblem(std::move(grid));
+    });
     if (dialog.exec() != QDialog::Accepted) return std::nullopt;
     return std::make_pair(dialog.range(), dialog.addOnly());
   };
@@ -235,9 +247,40 @@ bool StudyPanel::isRunning() const { return runner_->isRunning(); }
 
 void StudyPanel::fail(const QString& text) {
   last_error_ = text;
-  summary_->setText(text.section(QLatin1Char('\n'), 0, 0));
+  QString first = text.section(QLatin1Char('\n'), 0, 0);
+  if (first.endsWith(QLatin1Char(':'))) first.chop(1);  // what follows is in the run log
+  summary_->setText(first);
   emit logged(2, text);
-  emit message(text.section(QLatin1Char('\n'), 0, 0));
+  emit message(first);
+}
+
+QString StudyPanel::gridProblem(std::vector<SweepRange> grid) const {
+  const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
+  if (!scene || (!from_file_ && !document_->isValid())) return {};  // startStudy says what to fix
+  for (const SweepRange& r : grid) {
+    const ParamSpec* spec = scene->schema.find(r.path);
+    if (!spec) return tr("%1: not a parameter of the scene %2").arg(QString::fromStdString(r.path),
+                                                                     QString::fromStdString(scene->name));
+    if (const QString problem = sweepProblem(*spec, r); !problem.isEmpty())
+      return tr("%1: %2").arg(QString::fromStdString(r.path), problem);
+  }
+  StudySession trial;
+  try {
+    trial.define(*scene, from_file_ ? session_.base() : document_->scenario(), std::move(grid));
+    trial.expand();
+  } catch (const InputError& e) {
+    QStringList lines = QString::fromStdString(describeErrors(e.errors())).split(QLatin1Char('\n'));
+    constexpr int kShownLines = 4;
+    if (lines.size() > kShownLines) {
+      const auto more = lines.size() - kShownLines;
+      lines = lines.mid(0, kShownLines);
+      lines << tr("… and %n more", nullptr, static_cast<int>(more));
+    }
+    return lines.join(QLatin1Char('\n'));
+  } catch (const std::exception& e) {
+    return QString::fromUtf8(e.what());
+  }
+  return {};
 }
 
 bool StudyPanel::startStudy() {
@@ -268,7 +311,8 @@ bool StudyPanel::startStudy() {
   try {
     session_.expand();
   } catch (const InputError& e) {
-    fail(tr("The study has invalid cases; nothing was run:\n%1").arg(QString::fromStdString(describeErrors(e.errors()))));
+    fail(tr("The study has invalid cases (listed in the run log); nothing was run:\n%1")
+             .arg(QString::fromStdString(describeErrors(e.errors()))));
     plot_view_->refresh();
     return false;
   } catch (const std::exception& e) {
@@ -279,9 +323,10 @@ bool StudyPanel::startStudy() {
   plot_view_->refresh();
   const int threads = threads_ > 0 ? threads_ : threads_box_->value();
   if (!runner_->start(*session_.scene(), session_.caseScenarios(), threads)) return false;
-  const QString text = tr("Study started: %n case(s) of %1 on %2 worker(s)", nullptr, session_.caseCount())
-                           .arg(QString::fromStdString(session_.base().name))
-                           .arg(runner_->threadCount());
+  const QString text = tr("Study started: %1 of %2 on %3")
+                           .arg(counted(session_.caseCount(), tr("case"), tr("cases")),
+                                QString::fromStdString(session_.base().name),
+                                counted(runner_->threadCount(), tr("worker"), tr("workers")));
   summary_->setText(text);
   emit logged(0, text);
   return true;
@@ -383,7 +428,7 @@ bool StudyPanel::defineLatinHypercube(const LatinHypercubeDesign& design) {
         next.defineLatinHypercube(*document_->scene(), document_->scenario(), design);
       }))
     return false;
-  emit message(tr("Latin hypercube of %n case(s): run the study to run them", nullptr, design.samples));
+  emit message(tr("Latin hypercube of %1: run the study to run them").arg(counted(design.samples, tr("case"), tr("cases"))));
   return true;
 }
 

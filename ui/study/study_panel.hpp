@@ -90,6 +90,8 @@ class StudyPanel : public QWidget {
   void onCaseFailed(int index, const QString& message);
   void addParameterDialog();
   void fail(const QString& text);
+  // Why the grid `grid` over the study's base cannot run (its first invalid cases), or "" (sweep dialog).
+  QString gridProblem(std::vector<SweepRange> grid) const;
   bool replaceSession(const QString& failure, const std::function<void(StudySession&)>& build);
 
   ScenarioDocument* document_;

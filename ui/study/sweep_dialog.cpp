@@ -49,16 +49,10 @@ SweepRange proposedSweep(const ParamSpec& spec, const Json& current) {
 }
 
 SweepRange proposedSampleRange(const ParamSpec& spec, const Json& current) {
-  if (!std::isfinite(spec.range.min) || !std::isfinite(spec.range.max)) return proposedSweep(spec, current);
-  SweepRange r;
-  r.path = spec.path;
-  r.from = clipToRange(spec.range.min, spec.range);
-  r.to = clipToRange(spec.range.max, spec.range);
-  if (spec.kind == ParamKind::Integer) {
-    r.from = std::ceil(r.from);
-    r.to = std::floor(r.to);
-  }
-  return r;
+  // Around the design being studied, like a sweep: a field's allowed range is a validity limit (a riser's
+  // length may be up to 100 km), far wider than the variations worth sampling, and its ends often break
+  // the scene's rules between fields.
+  return proposedSweep(spec, current);
 }
 
 QString sweepProblem(const ParamSpec& spec, const SweepRange& r) {
@@ -112,8 +106,8 @@ SweepDialog::SweepDialog(const ParamSpec& spec, const SweepRange& proposed, QWid
   sweep_->setDefault(true);
   add_ = buttons->addButton(tr("Add to study"), QDialogButtonBox::AcceptRole);
   add_->setToolTip(tr("Add this parameter to the study's grid (Study panel) without running"));
-  connect(add_, &QPushButton::clicked, this, [this] { add_only_ = true; });
-  connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  connect(sweep_, &QPushButton::clicked, this, [this] { finish(false); });
+  connect(add_, &QPushButton::clicked, this, [this] { finish(true); });
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
   auto* layout = new QVBoxLayout(this);
@@ -139,6 +133,20 @@ SweepRange SweepDialog::range() const {
   r.count = count_->value();
   r.log = spacing_->currentIndex() == 1;
   return r;
+}
+
+void SweepDialog::finish(bool add_only) {
+  if (case_check_) {
+    const QString problem = case_check_(range(), add_only);
+    if (!problem.isEmpty()) {
+      problem_->setText(problem);
+      problem_->setVisible(true);
+      adjustSize();
+      return;
+    }
+  }
+  add_only_ = add_only;
+  accept();
 }
 
 void SweepDialog::check() {

@@ -3,6 +3,8 @@
 // dialog only describes the sweep; the study panel builds and expands the study.
 #pragma once
 
+#include <functional>
+
 #include <QDialog>
 
 #include "core/schema.hpp"
@@ -31,8 +33,8 @@ struct SweepRange {
 // (0 … 1 for a zero), clipped to the field's range, 5 values, linear.
 SweepRange proposedSweep(const ParamSpec& spec, const Json& current);
 
-// The interval proposed for sampling `spec` (value `current`) in a Latin hypercube: its allowed range
-// when both ends are finite (an open end moved in by a hundredth of the span), else proposedSweep's.
+// The interval proposed for sampling `spec` (value `current`) in a Latin hypercube: proposedSweep's (half to
+// one and a half times the value, clipped to the field's range).
 SweepRange proposedSampleRange(const ParamSpec& spec, const Json& current);
 
 // Why `range` cannot be swept over `spec` ("from: must be > 0 for a logarithmic spacing"), or empty.
@@ -54,9 +56,17 @@ class SweepDialog : public QDialog {
   QComboBox* spacingBox() const { return spacing_; }
   QPushButton* sweepButton() const { return sweep_; }
   QLabel* problemLabel() const { return problem_; }
+  QPushButton* addButton() const { return add_; }
+
+  // Checks the cases the answer would make (the second argument: "Add to study"); a non-empty answer keeps
+  // the dialog open with it shown (a value the field allows can still break a cross-field rule, e.g. a probe
+  // beyond a shorter riser). Without one, the dialog checks the field's range only.
+  using CaseCheck = std::function<QString(const SweepRange&, bool)>;
+  void setCaseCheck(CaseCheck check) { case_check_ = std::move(check); }
 
  private:
   void check();
+  void finish(bool add_only);  // Run sweep or Add to study: accepts unless the case check objects
 
   ParamSpec spec_;
   QLineEdit* from_;
@@ -64,6 +74,7 @@ class SweepDialog : public QDialog {
   QSpinBox* count_;
   QComboBox* spacing_;
   QLabel* problem_;
+  CaseCheck case_check_;
   QPushButton* sweep_;
   QPushButton* add_;
   bool add_only_ = false;

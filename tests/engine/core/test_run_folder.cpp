@@ -151,6 +151,74 @@ TEST_F(RunFolderTest, StagingFoldersOfAKilledRunAreRemovedByTheNext) {
   EXPECT_FALSE(fs::exists(root_ / "out" / "killed.csv"));
 }
 
+// Maris 0.5 and earlier staged into `.NAME.partial-PID` and set aside into `.NAME.old-PID`; a killed run of
+// such a version left them. Names that only look alike belong to someone else and stay.
+const std::vector<std::string> kNotOldVersionLeftovers = {
+    ".out.partial-", ".out.partial-12a", ".out.partial-12345678901", ".out.partial-x1", "out.partial-12",
+    ".out.old-1-2", ".out.partialx-12", "..partial-12", ".out.lock-12"};
+
+TEST_F(RunFolderTest, OldVersionStagingFoldersOfTheSameNameAreRemovedByTheNextRunAndNothingElse) {
+  fakeRun(root_ / ".out.partial-4242", "killed");
+  fakeRun(root_ / ".out.old-17", "earlier");
+  // Other folders' (their own next runs remove them).
+  const std::vector<std::string> others = {".other.partial-99", ".outer.partial-12", ".ou.old-3"};
+  for (const auto& name : others) fs::create_directories(root_ / name);
+  for (const auto& name : kNotOldVersionLeftovers) fs::create_directories(root_ / name);
+  std::vector<std::string> kept = kNotOldVersionLeftovers;
+  kept.insert(kept.end(), others.begin(), others.end());
+  kept.push_back("out");
+  std::sort(kept.begin(), kept.end());
+  RunFolder folder(root_ / "out");
+  fakeRun(folder.staging(), "new");
+  folder.commit();
+  EXPECT_EQ(entries(), kept);
+  EXPECT_EQ(readTextFile(root_ / "out" / "summary.json"), "{\"tag\": \"new\"}\n");
+}
+
+TEST_F(RunFolderTest, AStudyCaseLeavesOldVersionLeftoversToItsStudy) {
+  fakeRun(root_ / ".out.partial-4242", "killed");
+  RunFolder folder(root_ / "out", {.remove_old_version_leftovers = false});
+  fakeRun(folder.staging(), "new");
+  folder.commit();
+  EXPECT_EQ(entries(), (std::vector<std::string>{".out.partial-4242", "out"}));
+}
+
+TEST_F(RunFolderTest, AllOldVersionLeftoversOfAFolderAreRemovedUnderTheirRunsLocksAndALockedOneIsKept) {
+  for (const std::string name : {".0001.partial-11", ".0001.old-12", ".0002.partial-13", ".0003.old-14"})
+    fakeRun(root_ / name, name);
+  for (const auto& name : kNotOldVersionLeftovers) fs::create_directories(root_ / name);
+  fs::create_directories(root_ / ".0004.partial");  // this version's: removed by case 0004's next run
+  // Case 0003 is being written: an old version's run holds its lock (and owns its staging folder).
+  const int fd = ::open((root_ / ".0003.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  EXPECT_EQ(removeOldVersionLeftovers(root_), 3u);
+  std::vector<std::string> kept = kNotOldVersionLeftovers;
+  kept.push_back(".0003.old-14");
+  kept.push_back(".0004.partial");
+  std::sort(kept.begin(), kept.end());
+  EXPECT_EQ(entries(), kept);
+  ::close(fd);
+  EXPECT_EQ(removeOldVersionLeftovers(root_), 1u);
+  EXPECT_FALSE(fs::exists(root_ / ".0003.old-14"));
+  EXPECT_EQ(removeOldVersionLeftovers(root_ / "absent"), 0u);
+}
+
+TEST_F(RunFolderTest, AFolderIsBusyExactlyWhileAnotherHolderHasItsLock) {
+  const fs::path out = root_ / "out";
+  EXPECT_FALSE(runFolderBusy(out));
+  EXPECT_FALSE(fs::exists(root_ / ".out.lock")) << "probing created the lock file";
+  {
+    RunFolder folder(out);
+    EXPECT_TRUE(runFolderBusy(out));
+    EXPECT_TRUE(runFolderBusy(root_ / "out/"));
+    EXPECT_FALSE(runFolderBusy(root_ / "other"));
+  }
+  EXPECT_FALSE(runFolderBusy(out));  // the lock file stays, unlocked
+  RunFolder again(out);               // and probing left it free
+  EXPECT_TRUE(runFolderBusy(out));
+}
+
 TEST_F(RunFolderTest, TooLittleFreeSpaceIsRefusedBeforeTheRun) {
   try {
     RunFolder f(root_ / "out", {.expected_bytes = std::uintmax_t(1) << 62});  // 4.6 EB
