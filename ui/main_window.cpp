@@ -212,8 +212,9 @@ void MainWindow::createDocks() {
     if (show) showStudyDock();
     else study_dock_->hide();
   });
+  // Captures the dock, not the window: the dock reports a change while the window's children are destroyed.
   connect(study_dock_, &QDockWidget::visibilityChanged, study_toggle,
-          [this, study_toggle] { study_toggle->setChecked(!study_dock_->isHidden()); });
+          [dock = study_dock_, study_toggle] { study_toggle->setChecked(!dock->isHidden()); });
   view->addSeparator();
   view->addAction(tr("Reset 3D &Camera"), this, [this] { view_->resetCamera(); });
   view->addSeparator();
