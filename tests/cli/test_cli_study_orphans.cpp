@@ -15,11 +15,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "catalog.hpp"
 #include "cli_runner.hpp"
 #include "core/run_folder.hpp"
-#include "scratch_folder.hpp"
 #include "study_cli_helpers.hpp"
+#include "study_test_folder.hpp"
 
 namespace maris {
 namespace {
@@ -32,14 +31,9 @@ using test::slurp;
 using test::startCli;
 using test::writeText;
 
-class CliStudyOrphans : public ::testing::Test {
+class CliStudyOrphans : public test::StudyTestFolder {
  protected:
-  void SetUp() override {
-    if (!findBuiltin(test::kQuickBuiltin)) GTEST_SKIP() << "needs the riser scene";
-    dir_ = test::freshTestFolder("maris_cli_study_orphans_");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  CliStudyOrphans() : StudyTestFolder("maris_cli_study_orphans_") {}
 };
 
 // A staging folder as a killed run of an earlier version left it: some of the run's files.

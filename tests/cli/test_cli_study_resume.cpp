@@ -15,10 +15,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "catalog.hpp"
 #include "cli_runner.hpp"
 #include "study_cli_helpers.hpp"
-#include "scratch_folder.hpp"
+#include "study_test_folder.hpp"
 
 namespace maris {
 namespace {
@@ -31,14 +30,9 @@ using test::slurp;
 using test::startCli;
 using test::writeText;
 
-class CliStudyResume : public ::testing::Test {
+class CliStudyResume : public test::StudyTestFolder {
  protected:
-  void SetUp() override {
-    if (!findBuiltin(test::kQuickBuiltin)) GTEST_SKIP() << "needs the riser scene";
-    dir_ = test::freshTestFolder("maris_cli_study_resume_");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  CliStudyResume() : StudyTestFolder("maris_cli_study_resume_") {}
 };
 
 // Entries of `cases` that are a run's staging or set-aside folder (.NNNN.partial, .NNNN.old).
