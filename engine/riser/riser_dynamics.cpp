@@ -1,4 +1,5 @@
 #include "riser/riser_dynamics.hpp"
+#include "riser/riser_inverse_mass.hpp"
 #include "riser/riser_small_lu.hpp"
 
 #include <algorithm>
@@ -151,26 +152,10 @@ void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, Rise
   }
 }
 
-namespace {
-// W_i = M_i⁻¹ of the dynamic segments in the global frame at ws.pose.
-void updateInverseMasses(const RiserModel& m, RiserWorkspace& ws) {
-  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
-    const Mat3& r = ws.pose.rotation[i];
-    const Mat6& wl = m.segments[i].inverse_mass_local;
-    Mat6& w = ws.inverse_mass[i];
-    w.topLeftCorner<3, 3>() = r * wl.topLeftCorner<3, 3>() * r.transpose();
-    w.topRightCorner<3, 3>() = r * wl.topRightCorner<3, 3>() * r.transpose();
-    w.bottomLeftCorner<3, 3>() = w.topRightCorner<3, 3>().transpose();
-    w.bottomRightCorner<3, 3>() = r * wl.bottomRightCorner<3, 3>() * r.transpose();
-  }
-}
-}  // namespace
-
 void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
   RiserPose& pose = ws.pose;
   poseFromState(m, t, y, pose);
   computeLoads(m, pose, 1.0, ws.loads);
-  updateInverseMasses(m, ws);
   for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
     const Segment& s = m.segments[i];
     const Mat3& r = pose.rotation[i];
@@ -222,19 +207,27 @@ ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& po
 
 namespace {
 
-// Stages 2-4: the block-tridiagonal matrix of the reactions (rows: top, inner joints, bottom).
-void assembleReactionMatrix(const RiserModel& m, RiserWorkspace& ws) {
+// W_i's blocks of the dynamic segments (riser_inverse_mass.hpp) for one right-hand side, made at its start: a few
+// operations per segment; per thread, so that nothing allocates per call.
+const std::vector<SegmentInverseMass>& inverseMassBlocks(const RiserModel& m) {
+  thread_local std::vector<SegmentInverseMass> blocks;
+  blocks.resize(m.segmentCount());
+  for (int i = m.first_dynamic; i <= m.last_dynamic; ++i)
+    blocks[i] = segmentInverseMass(m.segments[i].inverse_mass_local, m.segments[i].length);
+  return blocks;
+}
+
+// Stages 2-4: the block-tridiagonal matrix of the reactions (rows: top, inner joints, bottom). Row k couples
+// F_{j-1}, F_j, F_{j+1} (j = f + k) through the segments above and below joint j: the far end of j-1 (D'ᵀ W D'),
+// the origin of j (W's force block), W D' of each (riser_inverse_mass.hpp), all from the tangents.
+void assembleReactionMatrix(const RiserModel& m, const std::vector<SegmentInverseMass>& w, RiserWorkspace& ws) {
   const RiserPose& pose = ws.pose;
   const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
-  auto d = [&](int i) -> Vec3 { return m.segments[i].length * pose.rotation[i].col(0); };
-  auto wd = [&](int i) -> Eigen::Matrix<double, 6, 3> {  // W_i D'_i: response to a unit far-end force
-    const Mat6& w = ws.inverse_mass[i];
-    return w.leftCols<3>() + w.rightCols<3>() * skew(d(i));
-  };
-  Eigen::Matrix<double, 6, 3> wd_above = wd(f);  // W_i D'_i of the segment above row k, each computed once
+  auto t = [&](int i) -> Vec3 { return pose.rotation[i].col(0); };
+  Mat3 far_force_above = w[f].far_force.at(t(f));  // W D' top rows of the segment above row k
   ws.lower[0].setZero();
-  ws.diag[0] = ws.inverse_mass[f].topLeftCorner<3, 3>();
-  ws.upper[0] = -wd_above.topRows<3>();
+  ws.diag[0] = w[f].force.at(t(f));
+  ws.upper[0] = -far_force_above;
   for (int c = 0; c < 3; ++c) {
     if (!topForceKnown(m, c)) continue;
     ws.diag[0].row(c) = Vec3::Unit(c).transpose();
@@ -242,39 +235,72 @@ void assembleReactionMatrix(const RiserModel& m, RiserWorkspace& ws) {
   }
   for (int k = 1; k < nb - 1; ++k) {
     const int j = f + k;
-    const Eigen::Matrix<double, 6, 3> wd_below = wd(j);
-    ws.lower[k] = -wd_above.topRows<3>().transpose();
-    ws.diag[k] = ws.inverse_mass[j].topLeftCorner<3, 3>() + wd_above.topRows<3>() - skew(d(j - 1)) * wd_above.bottomRows<3>();
-    ws.upper[k] = -wd_below.topRows<3>();
-    wd_above = wd_below;
+    const Vec3 t_above = t(j - 1), t_below = t(j);
+    const Mat3 far_force_below = w[j].far_force.at(t_below);
+    ws.lower[k] = -far_force_above.transpose();
+    ws.diag[k] = w[j].force.at(t_below) + w[j - 1].far_end.at(t_above);
+    ws.upper[k] = -far_force_below;
+    far_force_above = far_force_below;
   }
   const int k = nb - 1;
   ws.upper[k].setZero();
   if (bottomHeld(m)) {
-    const auto& wd_last = wd_above;
-    ws.lower[k] = -wd_last.topRows<3>().transpose();
-    ws.diag[k] = wd_last.topRows<3>() - skew(d(last)) * wd_last.bottomRows<3>();
+    ws.lower[k] = -far_force_above.transpose();
+    ws.diag[k] = w[last].far_end.at(t(last));
   } else {
     ws.lower[k].setZero();
     ws.diag[k].setIdentity();
   }
 }
 
-// Stage 5: block-Thomas sweep of the assembled system for right side ws.rhs into ws.reaction[f ..].
+// Stage 5: the assembled system for right side ws.rhs into ws.reaction[f ..], by a block-Thomas sweep from both
+// ends at once (a twisted factorisation): rows 0 … p−1 eliminated downwards (F_k = y_k − C_k F_{k+1}), rows
+// nb−1 … p+1 upwards (F_k = z_k − E_k F_{k−1}), the two meeting in row p. Each sweep is a chain of dependent 3×3
+// solves whose latency, not its arithmetic, sets the time; two independent chains of half the length run side by
+// side in the processor, the same work in about half the time. Pivots by SmallLu3 (LU with partial pivoting).
 void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
-  const int f = m.first_dynamic, nb = m.last_dynamic - f + 2;
-  for (int k = 0; k < nb; ++k) {
+  const int f = m.first_dynamic, nb = m.last_dynamic - f + 2, p = nb / 2;
+  std::vector<Mat3>& c = ws.pivot_upper;  // C_k above row p, E_k below it
+  Vec3* x = ws.reaction.data() + f;
+  auto down = [&](int k) {  // row k eliminated with the rows above it
     Mat3 pivot = ws.diag[k];
     Vec3 r = ws.rhs[k];
     if (k > 0) {
-      pivot -= ws.lower[k] * ws.pivot_upper[k - 1];
-      r -= ws.lower[k] * ws.reaction[f + k - 1];
+      pivot -= ws.lower[k] * c[k - 1];
+      r -= ws.lower[k] * x[k - 1];
     }
-    const SmallLu3 lu(pivot);  // Eigen's PartialPivLU to the bit, without its general kernels
-    ws.pivot_upper[k] = lu.solve(ws.upper[k]);
-    ws.reaction[f + k] = lu.solve(r);
+    const SmallLu3 lu(pivot);
+    c[k] = lu.solve(ws.upper[k]);
+    x[k] = lu.solve(r);
+  };
+  auto up = [&](int k) {  // row k eliminated with the rows below it
+    Mat3 pivot = ws.diag[k];
+    Vec3 r = ws.rhs[k];
+    if (k < nb - 1) {
+      pivot -= ws.upper[k] * c[k + 1];
+      r -= ws.upper[k] * x[k + 1];
+    }
+    const SmallLu3 lu(pivot);
+    c[k] = lu.solve(ws.lower[k]);
+    x[k] = lu.solve(r);
+  };
+  for (int k = 0; k < p; ++k) {
+    down(k);
+    if (nb - 1 - k > p) up(nb - 1 - k);
   }
-  for (int k = nb - 2; k >= 0; --k) ws.reaction[f + k] -= ws.pivot_upper[k] * ws.reaction[f + k + 1];
+  Mat3 pivot = ws.diag[p];
+  Vec3 r = ws.rhs[p];
+  if (p > 0) {
+    pivot -= ws.lower[p] * c[p - 1];
+    r -= ws.lower[p] * x[p - 1];
+  }
+  if (p < nb - 1) {
+    pivot -= ws.upper[p] * c[p + 1];
+    r -= ws.upper[p] * x[p + 1];
+  }
+  x[p] = SmallLu3(pivot).solve(r);
+  for (int k = p - 1; k >= 0; --k) x[k] -= c[k] * x[k + 1];
+  for (int k = p + 1; k < nb; ++k) x[k] -= c[k] * x[k - 1];
 }
 
 // Baumgarte term 2αΦ̇ + α²Φ of row k (absolute coordinates; joint: only the bottom row).
@@ -293,10 +319,11 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
   const bool joint = m.formulation == Formulation::Joint;
   const double alpha = ws.stabilisation_rate;
   const ConstraintViolation phi = constraintViolation(m, pose, t);
-  assembleReactionMatrix(m, ws);
+  const std::vector<SegmentInverseMass>& w_blocks = inverseMassBlocks(m);
+  assembleReactionMatrix(m, w_blocks, ws);
   auto d = [&](int i) -> Vec3 { return m.segments[i].length * pose.rotation[i].col(0); };
   auto kappa = [&](int i) -> Vec3 { return pose.omega[i].cross(pose.omega[i].cross(d(i))); };
-  auto wb = [&](int i) -> Vec6 { return ws.inverse_mass[i] * ws.bias[i]; };
+  auto wb = [&](int i) -> Vec6 { return w_blocks[i].apply(pose.rotation[i].col(0), ws.bias[i]); };
 
   // Right sides: top row (prescribed acceleration, or known force components), continuity, bottom.
   const TopKinematics top = m.topAt(t);
@@ -324,7 +351,7 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
     Vec6 g = ws.bias[i];
     g.head<3>() += ws.reaction[i] - ws.reaction[i + 1];
     g.tail<3>() -= d(i).cross(ws.reaction[i + 1]);
-    ws.acceleration[i] = ws.inverse_mass[i] * g;
+    ws.acceleration[i] = w_blocks[i].apply(pose.rotation[i].col(0), g);
     const int o = segmentOffset(m, i), oq = o + quaternionOffset(m);
     const Vec3& w = pose.omega[i];
     const double qw = y[oq];
@@ -364,7 +391,8 @@ void balanceResidual(const RiserModel& m, const RiserWorkspace& ws, double t, co
     Vec6 g = ws.bias[i];
     g.head<3>() += reaction[i] - reaction[i + 1];
     g.tail<3>() -= d(i).cross(reaction[i + 1]);
-    segment_residual[i] = x[i] - ws.inverse_mass[i] * g;
+    const SegmentInverseMass w = segmentInverseMass(m.segments[i].inverse_mass_local, m.segments[i].length);
+    segment_residual[i] = x[i] - w.apply(pose.rotation[i].col(0), g);
   }
   const TopKinematics top = m.topAt(t);
   const bool joint = m.formulation == Formulation::Joint;
