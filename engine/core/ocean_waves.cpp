@@ -13,7 +13,7 @@
 namespace maris::ocean {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 constexpr int kCumulativeCells = 20000;  // grid of the equal-energy inversion
 
 // Cumulative variance and first moment of a spectrum on a fine grid over its band, for the equal-energy bins.
@@ -178,7 +178,7 @@ WaveField airyWave(double height, double period, double direction_rad, double ph
                    Stretching stretching) {
   requirePositive(height, "wave height H");
   requirePositive(period, "wave period T");
-  return WaveField({{2.0 * kPi / period, 0.5 * height, phase_rad}}, direction_rad, depth, gravity, stretching);
+  return WaveField({{2.0 * pi / period, 0.5 * height, phase_rad}}, direction_rad, depth, gravity, stretching);
 }
 
 WaveField irregularSea(const WaveSpectrum& spectrum, int component_count, Discretisation discretisation,
@@ -198,7 +198,7 @@ WaveField irregularSea(const WaveSpectrum& spectrum, int component_count, Discre
       const double m = c.at(c.first_moment, right) - c.at(c.first_moment, left);
       components[j].omega = v > 0.0 ? m / v : 0.5 * (left + right);
       components[j].amplitude = std::sqrt(2.0 * share);
-      components[j].phase = 2.0 * kPi * uniform01(rng());
+      components[j].phase = 2.0 * pi * uniform01(rng());
       left = right;
     }
   } else {
@@ -208,7 +208,7 @@ WaveField irregularSea(const WaveSpectrum& spectrum, int component_count, Discre
       components[j].omega = left + width * uniform01(rng());
       if (components[j].omega <= 0.0) components[j].omega = 0.5 * width;  // a table from ω = 0: no ω = 0 wave
       components[j].amplitude = std::sqrt(2.0 * bandVariance(spectrum, left, left + width));
-      components[j].phase = 2.0 * kPi * uniform01(rng());
+      components[j].phase = 2.0 * pi * uniform01(rng());
     }
   }
   return WaveField(std::move(components), direction_rad, depth, gravity, stretching);
@@ -217,12 +217,12 @@ WaveField irregularSea(const WaveSpectrum& spectrum, int component_count, Discre
 double startRamp(double t, double ramp_time) {
   if (t >= ramp_time) return 1.0;
   if (t <= 0.0) return 0.0;
-  return 0.5 * (1.0 - std::cos(kPi * t / ramp_time));
+  return 0.5 * (1.0 - std::cos(pi * t / ramp_time));
 }
 
 double startRampRate(double t, double ramp_time) {
   if (t <= 0.0 || t >= ramp_time) return 0.0;
-  return 0.5 * kPi / ramp_time * std::sin(kPi * t / ramp_time);
+  return 0.5 * pi / ramp_time * std::sin(pi * t / ramp_time);
 }
 
 double smallestSpacing(const WaveField& field) {

@@ -18,4 +18,6 @@ std::string formatText(const char* spec, ...) {
   return out;
 }
 
+std::string numberText(double v) { return formatText("%g", v); }
+
 }  // namespace maris

@@ -10,7 +10,7 @@
 namespace maris::ocean {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 // 5-point Gauss–Legendre on [−1, 1].
 constexpr double kNode[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
 constexpr double kWeight[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
@@ -34,7 +34,7 @@ double integrateU(F f, double a, double b) {
   return 0.5 * h * sum;
 }
 
-double peakFrequency(const WaveSpectrum& s) { return 2.0 * kPi / s.peak_period; }
+double peakFrequency(const WaveSpectrum& s) { return 2.0 * pi / s.peak_period; }
 
 // γ^{exp(−(ω − ω_p)²/(2σ²ω_p²))}, 1 for Pierson–Moskowitz.
 double peakFactor(const WaveSpectrum& s, double omega) {
@@ -71,7 +71,7 @@ double tableMoment(const WaveSpectrum& s, int order, double a, double b) {
   return sum;
 }
 
-void requirePositive(double value, const char* what) {
+void requirePositiveFinite(double value, const char* what) {
   if (!(value > 0.0) || !std::isfinite(value))
     throw std::invalid_argument(std::string(what) + " must be a positive finite number");
 }
@@ -111,8 +111,8 @@ std::string WaveSpectrum::name() const {
 }
 
 WaveSpectrum piersonMoskowitz(double significant_height, double peak_period) {
-  requirePositive(significant_height, "significant wave height Hs");
-  requirePositive(peak_period, "peak period Tp");
+  requirePositiveFinite(significant_height, "significant wave height Hs");
+  requirePositiveFinite(peak_period, "peak period Tp");
   WaveSpectrum s;
   s.kind = SpectrumKind::PiersonMoskowitz;
   s.significant_height = significant_height;

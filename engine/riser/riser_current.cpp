@@ -13,8 +13,6 @@ namespace {
 
 using P = RiserParameters;
 
-std::string num(double v) { return formatText("%g", v); }
-
 SchemaBinder<CurrentProfileRow> profileRowBinder() {
   SchemaBinder<CurrentProfileRow> b;
   b.real("depth", &CurrentProfileRow::depth, "m", Range::nonNegative(1e5), "Depth below environment.water_level");
@@ -90,8 +88,8 @@ void checkCurrentProfile(const RiserParameters& p, std::vector<FieldError>& e) {
     e.push_back({"current.profile", "0 rows", "current.type = table needs at least 1 row"});
   for (std::size_t k = 1; k < p.current_profile.size(); ++k)
     if (!(p.current_profile[k].depth > p.current_profile[k - 1].depth))
-      e.push_back({"current.profile[" + std::to_string(k) + "].depth", num(p.current_profile[k].depth),
-                   "must be greater than the previous row's depth " + num(p.current_profile[k - 1].depth)});
+      e.push_back({"current.profile[" + std::to_string(k) + "].depth", numberText(p.current_profile[k].depth),
+                   "must be greater than the previous row's depth " + numberText(p.current_profile[k - 1].depth)});
 }
 
 void upgradeCurrentProfile(Json& parameters, std::vector<std::string>& notes) {

@@ -3,25 +3,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <numbers>
 #include <string>
 
 #include "core/abandonable.hpp"
 #include "core/errors.hpp"
 #include "riser/riser_modes.hpp"
 #include "riser/riser_statics.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::riser {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 constexpr int kGalerkinModes = 24;  // 16 and 24 sine modes agree to < 3e-7 (test_riser_modes.cpp)
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // One sweep row: the riser of `p` with tension and segment count replaced, solved and compared.
 struct SweepRow {
@@ -91,7 +86,7 @@ std::optional<ConveyingPipe> conveyingPipeOf(const RiserParameters& p, const Ris
   c.length = m.length;
   c.mass_per_length = mid.mass / mid.length;
   c.fluid_mass_per_length = mid.fluid_mass_per_length;
-  c.ei = p.youngs_modulus * kPi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
+  c.ei = p.youngs_modulus * pi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
   c.top_tension = p.top_tension;
   c.weight_per_length = net;
   c.flow_speed = m.flow_speed;
@@ -135,9 +130,9 @@ void addFrequencySweeps(const RiserParameters& p, Results& results, RunContext& 
     bool referenced = true;
     for (double ratio : p.sweep_pretension_ratios) {
       context.throwIfCancelled();
-      context.progress(double(done++) / double(total), "frequency sweep: i_T = " + num(ratio));
-      const SweepRow r = solveRow(p, ratio * weight, p.segment_count, context, "i_T = " + num(ratio));
-      if (unstable(r.sm, "i_T = " + num(ratio), context)) continue;
+      context.progress(double(done++) / double(total), "frequency sweep: i_T = " + numberText(ratio));
+      const SweepRow r = solveRow(p, ratio * weight, p.segment_count, context, "i_T = " + numberText(ratio));
+      if (unstable(r.sm, "i_T = " + numberText(ratio), context)) continue;
       referenced = referenced && r.pipe.has_value();
       const double d1 = relative(r.sm.first, r.reference.first), d2 = relative(r.sm.second, r.reference.second);
       const double row[10] = {ratio, ratio * weight, r.sm.first, r.sm.second, r.reference.first, r.reference.second,
@@ -154,7 +149,7 @@ void addFrequencySweeps(const RiserParameters& p, Results& results, RunContext& 
   if (!p.sweep_segment_counts.empty()) {
     Table t;
     t.name = "frequency_vs_segments";
-    t.title = "First two bending frequencies against segment count n (T = " + num(p.top_tension) + " N)";
+    t.title = "First two bending frequencies against segment count n (T = " + numberText(p.top_tension) + " N)";
     t.add("segment_count", "-", {}, riserColumnLabel("segment_count"));
     for (const char* c : {"omega_1", "omega_2", "omega_1_reference", "omega_2_reference"}) t.add(c, "rad/s", {}, riserColumnLabel(c));
     for (const char* c : {"error_1", "error_2"}) t.add(c, "-", {}, riserColumnLabel(c));

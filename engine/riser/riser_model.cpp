@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/angles.hpp"
 #include "riser/riser_buoyancy.hpp"
@@ -11,7 +12,7 @@
 namespace maris::riser {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 
 // Section properties at arc length s: the last `sections` row covering s, else the uniform section.
 SectionRow sectionAt(const RiserParameters& p, double s) {
@@ -60,7 +61,7 @@ std::vector<Vec3> arcPoints(const Vec3& a, const Vec3& b, double length, const s
   if (bulge.norm() < 1e-6) bulge = Vec3::UnitX() - along * along.x();
   bulge.normalize();
   // Half angle φ with sin φ / φ = c/L, by bisection on (0, π].
-  double lo = 1e-12, hi = kPi;
+  double lo = 1e-12, hi = pi;
   for (int it = 0; it < 200; ++it) {
     const double mid = 0.5 * (lo + hi);
     (std::sin(mid) / mid > c / length ? lo : hi) = mid;
@@ -188,12 +189,12 @@ RiserModel buildRiserModel(const RiserParameters& p) {
     g.length = (i == 0 || i == m.n) ? d / 2 : d;
     g.arc_start = i == 0 ? 0.0 : (i - 0.5) * d;
     const SectionRow sec = sectionAt(p, g.arc_start + g.length / 2);
-    const double a_out = kPi / 4 * sec.outer_diameter * sec.outer_diameter;
-    const double a_inn = kPi / 4 * sec.inner_diameter * sec.inner_diameter;
+    const double a_out = pi / 4 * sec.outer_diameter * sec.outer_diameter;
+    const double a_inn = pi / 4 * sec.inner_diameter * sec.inner_diameter;
     const double wall_mass = sec.density * (a_out - a_inn), contents = p.internal_fluid_density * a_inn;
     double mu = wall_mass + contents + p.water_density * sec.added_mass_coefficient * a_out;  // eq (11)
     double mu_axial = wall_mass + contents + p.water_density * sec.tangential_added_mass_coefficient * a_out;
-    const double polar = sec.density * kPi / 32 * (std::pow(sec.outer_diameter, 4) - std::pow(sec.inner_diameter, 4));
+    const double polar = sec.density * pi / 32 * (std::pow(sec.outer_diameter, 4) - std::pow(sec.inner_diameter, 4));
     g.outer_diameter = sec.outer_diameter;
     g.weight_per_length = (wall_mass + contents) * p.gravity;
     g.buoyancy_per_length = p.water_density * p.gravity * a_out;
@@ -209,7 +210,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
       mu = wall_mass + contents + modules.mass_per_length + p.water_density * added;
       mu_axial = wall_mass + contents + modules.mass_per_length +
                  p.water_density * sec.tangential_added_mass_coefficient * area;
-      g.outer_diameter = std::sqrt(4 * area / kPi);
+      g.outer_diameter = std::sqrt(4 * area / pi);
       g.weight_per_length = (wall_mass + contents + modules.mass_per_length) * p.gravity;
       g.buoyancy_per_length = p.water_density * p.gravity * area;
       g.normal_drag =
@@ -228,14 +229,14 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   for (int i = 1; i <= m.n; ++i) {
     const SectionRow sec = sectionAt(p, (i - 0.5) * d);
     const double i4 = std::pow(sec.outer_diameter, 4) - std::pow(sec.inner_diameter, 4);
-    const double second_moment = kPi / 64 * i4;
+    const double second_moment = pi / 64 * i4;
     Joint& j = m.joints[i];
     j.stiffness = Vec3(sec.shear_modulus * 2 * second_moment * (m.torsion ? 1.0 : 0.0),
                        sec.youngs_modulus * second_moment, sec.youngs_modulus * second_moment) / d;
     j.damping = p.stiffness_damping * j.stiffness;
-    j.bending_modulus = kPi / 32 * i4 / sec.outer_diameter;
-    j.torsion_modulus = kPi / 16 * i4 / sec.outer_diameter;
-    j.wall_area = kPi / 4 * (sec.outer_diameter * sec.outer_diameter - sec.inner_diameter * sec.inner_diameter);
+    j.bending_modulus = pi / 32 * i4 / sec.outer_diameter;
+    j.torsion_modulus = pi / 16 * i4 / sec.outer_diameter;
+    j.wall_area = pi / 4 * (sec.outer_diameter * sec.outer_diameter - sec.inner_diameter * sec.inner_diameter);
     j.wall_thickness = 0.5 * (sec.outer_diameter - sec.inner_diameter);
   }
   // Boundary conditions and loads.
@@ -262,7 +263,7 @@ RiserModel buildRiserModel(const RiserParameters& p) {
   if (m.top == TopCondition::Tensioner) m.motion_amplitude.z() = 0.0;
   if (m.top == TopCondition::Free) m.motion_amplitude.setZero();
   m.motion_phase = Vec3(p.motion_phase_x_deg, p.motion_phase_y_deg, p.motion_phase_z_deg) * kRadiansPerDegree;
-  m.motion_omega = 2 * kPi / p.motion_period;
+  m.motion_omega = 2 * pi / p.motion_period;
   m.ramp_time = p.motion_ramp_time;
   if (p.top_motion == "table" && m.top != TopCondition::Free)
     m.top_table = buildTopMotionSpline(p.top_motion_table, m.top == TopCondition::Tensioner);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <numbers>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
@@ -15,7 +16,7 @@
 namespace maris::riser {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 // Eigenvalues with |Re λ| ≤ kOnAxis |λ| are on the imaginary axis: the differenced Jacobians leave
 // ≈ 1e-14 (measured on case 3 with either flow term alone).
 constexpr double kOnAxis = 1e-6;
@@ -393,7 +394,7 @@ void appendModeFrames(const RiserModel& model, const StaticSolution& statics, co
   for (std::size_t k = 0; k < modes.frequencies.size(); ++k) {
     const bool torsion = modes.torsion_share[k] > 0.5;
     for (int f = 0; f < frames_per_mode; ++f) {
-      const double phase = 2 * kPi * f / frames_per_mode, s = std::sin(phase);
+      const double phase = 2 * pi * f / frames_per_mode, s = std::sin(phase);
       Shape3D tube;
       tube.kind = Shape3D::Kind::Tube;
       tube.name = "mode " + std::to_string(k + 1) + ", " + std::to_string(modes.frequencies[k]) + " rad/s";
@@ -406,7 +407,7 @@ void appendModeFrames(const RiserModel& model, const StaticSolution& statics, co
       Frame3D frame;
       frame.time = static_cast<double>(k) + static_cast<double>(f) / frames_per_mode;
       frame.label = formatText("mode %zu%s: %.4g rad/s (%.4g Hz), phase %.0f°", k + 1, torsion ? " (torsion)" : "",
-                               modes.frequencies[k], modes.frequencies[k] / (2 * kPi), 360.0 * f / frames_per_mode);
+                               modes.frequencies[k], modes.frequencies[k] / (2 * pi), 360.0 * f / frames_per_mode);
       frame.shapes.push_back(std::move(tube));
       view.frames.push_back(std::move(frame));
     }

@@ -3,26 +3,27 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <numbers>
 
 #include <Eigen/Eigenvalues>
 
 namespace maris::riser {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 
 // ∫_0^L cos(a s) cos(b s) ds and ∫_0^L s cos(a s) cos(b s) ds for a = jπ/L, b = kπ/L (j, k ≥ 1):
 // cos·cos = ½[cos((a−b)s) + cos((a+b)s)], ∫_0^L s cos(c s) ds = ((−1)^m − 1)/c² for c = mπ/L ≠ 0, L²/2 for c = 0.
 double firstMomentOfCosine(int m, double length) {
   if (m == 0) return length * length / 2;
-  const double c = m * kPi / length;
+  const double c = m * pi / length;
   return ((m % 2 == 0 ? 1.0 : -1.0) - 1.0) / (c * c);
 }
 
 }  // namespace
 
 double tensionedBeamFrequency(int k, double length, double tension, double mass_per_length, double ei) {
-  const double a = k * kPi / length;
+  const double a = k * pi / length;
   return a * std::sqrt(tension / mass_per_length + a * a * ei / mass_per_length);
 }
 
@@ -31,9 +32,9 @@ std::vector<double> conveyingPipeFrequencies(const ConveyingPipe& pipe, int mode
   const double flux = pipe.fluid_mass_per_length * pipe.flow_speed * pipe.flow_speed;  // M u² [N]
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(modes, modes), g = Eigen::MatrixXd::Zero(modes, modes);
   for (int j = 1; j <= modes; ++j) {
-    const double a = j * kPi / length;
+    const double a = j * pi / length;
     for (int c = 1; c <= modes; ++c) {
-      const double b = c * kPi / length;
+      const double b = c * pi / length;
       // ∫ (T0 − Mu² − w s) a b cos(a s) cos(b s) ds
       const double plain = j == c ? length / 2 : 0.0;
       const double moment = (firstMomentOfCosine(j - c, length) + firstMomentOfCosine(j + c, length)) / 2;

@@ -15,17 +15,15 @@ namespace maris::riser {
 namespace {
 
 using P = RiserParameters;
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 constexpr const char* kExpectedColumns =
     "columns heading [deg], omega [rad/s] (or period [s]), and <dof>_amplitude, <dof>_phase [deg] for surge, sway, "
     "heave (m/m), roll, pitch, yaw (deg/m)";
 
-std::string num(double v) { return formatText("%g", v); }
-
 // a + w (b − a) for amplitudes; for phases along the shorter arc.
 double lerp(double a, double b, double w) { return a + w * (b - a); }
-double lerpPhase(double a, double b, double w) { return a + w * std::remainder(b - a, 2 * kPi); }
+double lerpPhase(double a, double b, double w) { return a + w * std::remainder(b - a, 2 * pi); }
 
 RaoValue blend(const RaoValue& a, const RaoValue& b, double w) {
   RaoValue out;
@@ -113,8 +111,8 @@ RaoTable raoTableFromText(std::string_view text, const TableSpec& spec, bool pha
                !std::equal(block.begin(), block.end(), out.omega.begin(),
                            [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); })) {
       errors.push_back(tableError(spec, block_lines.front(),
-                                  "heading " + num(out.heading.back()) + " has other frequencies than heading " +
-                                      num(out.heading.front()) + " (every heading needs the same frequencies)",
+                                  "heading " + numberText(out.heading.back()) + " has other frequencies than heading " +
+                                      numberText(out.heading.front()) + " (every heading needs the same frequencies)",
                                   &t, frequency));
     }
     block.clear();
@@ -126,14 +124,14 @@ RaoTable raoTableFromText(std::string_view text, const TableSpec& spec, bool pha
     if (!complete) continue;  // its empty or bad cells are already in errors
     const double h = *row.cells[heading], f = *row.cells[frequency];
     if (!(f > 0)) {
-      errors.push_back(tableError(spec, row.line, "must be > 0, found " + num(f), &t, frequency));
+      errors.push_back(tableError(spec, row.line, "must be > 0, found " + numberText(f), &t, frequency));
       continue;
     }
-    const double w = omega >= 0 ? f : 2 * kPi / f;
+    const double w = omega >= 0 ? f : 2 * pi / f;
     if (out.heading.empty() || h != out.heading.back()) {
       if (!out.heading.empty() && !(h > out.heading.back())) {
         errors.push_back(tableError(spec, row.line,
-                                    "heading " + num(h) + " after heading " + num(out.heading.back()) +
+                                    "heading " + numberText(h) + " after heading " + numberText(out.heading.back()) +
                                         ": rows must come in blocks of one heading, in increasing heading",
                                     &t, heading));
         continue;
@@ -142,11 +140,11 @@ RaoTable raoTableFromText(std::string_view text, const TableSpec& spec, bool pha
       out.heading.push_back(h);
     }
     if (!block.empty()) {
-      const double previous = omega >= 0 ? block.back() : 2 * kPi / block.back();
+      const double previous = omega >= 0 ? block.back() : 2 * pi / block.back();
       if (!(f > previous)) {
         errors.push_back(tableError(spec, row.line,
-                                    "must be greater than the previous row's " + num(previous) + " at heading " +
-                                        num(h) + " (frequencies of one heading strictly increasing)",
+                                    "must be greater than the previous row's " + numberText(previous) + " at heading " +
+                                        numberText(h) + " (frequencies of one heading strictly increasing)",
                                     &t, frequency));
         continue;
       }
@@ -155,15 +153,15 @@ RaoTable raoTableFromText(std::string_view text, const TableSpec& spec, bool pha
     block_lines.push_back(row.line);
     for (int d = 0; d < 6; ++d) {
       const double a = *row.cells[amplitude[d]];
-      if (a < 0) errors.push_back(tableError(spec, row.line, "must be ≥ 0 (an amplitude), found " + num(a), &t, amplitude[d]));
+      if (a < 0) errors.push_back(tableError(spec, row.line, "must be ≥ 0 (an amplitude), found " + numberText(a), &t, amplitude[d]));
       out.amplitude[d].push_back(d >= 3 ? a * rotation_scale : a);
       out.phase_lag[d].push_back(phase_sign * radiansFromDegrees(*row.cells[phase[d]]));
     }
   }
   closeBlock();
   if (!out.heading.empty() && out.heading.back() - out.heading.front() > 360.0)
-    errors.push_back(tableError(spec, 0, "headings span " + num(out.heading.back() - out.heading.front()) +
-                                             " deg from " + num(out.heading.front()) + ": at most 360", &t, heading));
+    errors.push_back(tableError(spec, 0, "headings span " + numberText(out.heading.back() - out.heading.front()) +
+                                             " deg from " + numberText(out.heading.front()) + ": at most 360", &t, heading));
   if (errors.size() > first_error) return {};
   // A period column lists frequencies in decreasing order: store every block by increasing omega.
   if (period >= 0) {
@@ -300,15 +298,15 @@ std::shared_ptr<const VesselMotion> buildVesselMotion(const RiserParameters& p, 
       m->sin_part_(d, i) = c.amplitude * rao.amplitude[d] * std::sin(rao.phase_lag[d]);
     }
   }
-  m->mean_period = 2 * kPi * variance / first_moment;
+  m->mean_period = 2 * pi * variance / first_moment;
   if (outside)
-    m->warnings.push_back("vessel.rao_file: wave components outside the RAO frequencies [" + num(table.omega.front()) +
-                          ", " + num(table.omega.back()) + "] rad/s (" + num(100.0 * variance_outside / variance) +
+    m->warnings.push_back("vessel.rao_file: wave components outside the RAO frequencies [" + numberText(table.omega.front()) +
+                          ", " + numberText(table.omega.back()) + "] rad/s (" + numberText(100.0 * variance_outside / variance) +
                           " % of the wave variance) take the nearest row's RAO");
   if (clamped)
-    m->warnings.push_back("vessel.rao_file: the relative wave direction " + num(relative_deg) +
+    m->warnings.push_back("vessel.rao_file: the relative wave direction " + numberText(relative_deg) +
                           " deg (waves.direction_deg − vessel.heading_deg) is outside the RAO headings [" +
-                          num(table.heading.front()) + ", " + num(table.heading.back()) +
+                          numberText(table.heading.front()) + ", " + numberText(table.heading.back()) +
                           "] deg: the nearest heading's RAOs are used");
   m->sea_ = std::move(sea);
   return m;

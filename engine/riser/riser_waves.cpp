@@ -4,18 +4,18 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <sstream>
 
 #include "core/ocean_kinematics_batch.hpp"
 #include "riser/riser_loads.hpp"
 #include "riser/riser_model.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::riser {
 namespace {
 
 using P = RiserParameters;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180.0;
+using std::numbers::pi;
+constexpr double kDegree = pi / 180.0;
 // The batch's truncation ε (core/ocean_kinematics_batch.hpp): components whose exponential decay makes them
 // negligible at a Gauss point are left out of its depth sums; the wave velocity and acceleration change by at most
 // 1e-7 of the sea's Σ a ω and Σ a ω² (the largest values the sums can take, at the surface), far below the
@@ -28,12 +28,6 @@ SchemaBinder<WaveSpectrumRow> spectrumRowBinder() {
   b.real("omega", &WaveSpectrumRow::omega, "rad/s", Range::nonNegative(100.0), "Angular frequency ω");
   b.real("density", &WaveSpectrumRow::density, "m^2*s/rad", Range::nonNegative(1e6), "One-sided spectral density S(ω)");
   return b;
-}
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
 }
 
 ocean::WaveSpectrum spectrumOf(const RiserParameters& p) {
@@ -86,8 +80,8 @@ void bindWaveParameters(SchemaBinder<RiserParameters>& b) {
 void checkWaveParameters(const RiserParameters& p, std::vector<FieldError>& e) {
   if (p.wave_type == "none") return;
   if (!(p.water_level > p.seabed_level))
-    e.push_back({"environment.seabed_level", num(p.seabed_level),
-                 "waves need the sea bed below environment.water_level = " + num(p.water_level) + " (the depth)"});
+    e.push_back({"environment.seabed_level", numberText(p.seabed_level),
+                 "waves need the sea bed below environment.water_level = " + numberText(p.water_level) + " (the depth)"});
   if (p.wave_type != "spectrum_table") return;
   if (p.wave_spectrum_table.size() < 2)
     e.push_back({"waves.spectrum_table", std::to_string(p.wave_spectrum_table.size()) + " rows",
@@ -96,8 +90,8 @@ void checkWaveParameters(const RiserParameters& p, std::vector<FieldError>& e) {
   for (std::size_t k = 0; k < p.wave_spectrum_table.size(); ++k) {
     any = any || p.wave_spectrum_table[k].density > 0.0;
     if (k > 0 && !(p.wave_spectrum_table[k].omega > p.wave_spectrum_table[k - 1].omega))
-      e.push_back({"waves.spectrum_table[" + std::to_string(k) + "].omega", num(p.wave_spectrum_table[k].omega),
-                   "must be greater than the previous row's omega " + num(p.wave_spectrum_table[k - 1].omega)});
+      e.push_back({"waves.spectrum_table[" + std::to_string(k) + "].omega", numberText(p.wave_spectrum_table[k].omega),
+                   "must be greater than the previous row's omega " + numberText(p.wave_spectrum_table[k - 1].omega)});
   }
   if (p.wave_spectrum_table.size() >= 2 && !any)
     e.push_back({"waves.spectrum_table", "all densities 0", "the spectrum has no energy"});

@@ -2,17 +2,12 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
+
+#include "core/text_format.hpp"
 
 namespace maris::seismic {
 
 namespace {
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 SchemaBinder<ReefLayer> layerBinder() {
   SchemaBinder<ReefLayer> b;
@@ -112,12 +107,12 @@ std::vector<FieldError> checkSeismicParameters(const SeismicParameters& p) {
   const double root2 = std::sqrt(2.0);
   // Poisson ratio in [0, 0.5): vp ≥ √2·vs.
   if (p.seabed_vp < root2 * p.seabed_vs)
-    errors.push_back({"seabed.vp", num(p.seabed_vp),
-                      "must be at least sqrt(2)·seabed.vs = " + num(root2 * p.seabed_vs) + " m/s (Poisson ratio >= 0)"});
+    errors.push_back({"seabed.vp", numberText(p.seabed_vp),
+                      "must be at least sqrt(2)·seabed.vs = " + numberText(root2 * p.seabed_vs) + " m/s (Poisson ratio >= 0)"});
   for (std::size_t i = 0; i < p.layers.size(); ++i)
     if (p.layers[i].vp < root2 * p.layers[i].vs)
-      errors.push_back({"geometry.layers[" + std::to_string(i) + "].vp", num(p.layers[i].vp),
-                        "must be at least sqrt(2)·vs = " + num(root2 * p.layers[i].vs) + " m/s (Poisson ratio >= 0)"});
+      errors.push_back({"geometry.layers[" + std::to_string(i) + "].vp", numberText(p.layers[i].vp),
+                        "must be at least sqrt(2)·vs = " + numberText(root2 * p.layers[i].vs) + " m/s (Poisson ratio >= 0)"});
   if (p.input_kind == "accelerogram" && p.accelerogram_file.empty())
     errors.push_back({"input.accelerogram_file", "\"\"", "must name a CSV or PEER .AT2 file when input.kind is \"accelerogram\""});
   // Mesh size guard: Δ = v_min/(10 f_cut) over the model box.
@@ -126,8 +121,8 @@ std::vector<FieldError> checkSeismicParameters(const SeismicParameters& p) {
   const double elements =
       std::ceil(2.0 * box.half_width / delta) * std::ceil((box.top + box.seabed_depth) / delta);
   if (elements > 6.0e5)
-    errors.push_back({"solver.cutoff_frequency", num(p.cutoff_frequency),
-                      "gives about " + num(elements) + " elements of " + num(delta) +
+    errors.push_back({"solver.cutoff_frequency", numberText(p.cutoff_frequency),
+                      "gives about " + numberText(elements) + " elements of " + numberText(delta) +
                           " m (limit 600000): lower the cut-off frequency or the model size"});
   return errors;
 }

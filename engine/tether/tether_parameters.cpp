@@ -3,13 +3,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.hpp"
 #include "core/text_format.hpp"
 
 namespace maris::tether {
 
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 std::string number(double v) { return formatText("%.6g", v); }
 
@@ -123,14 +122,14 @@ ServoSettings servoSettingsOf(const TetherParameters& p) {
   }
   s.integral_window = p.integral_window;
   s.max_linear_speed = p.max_linear_speed;
-  s.max_yaw_rate = p.max_yaw_rate_deg * kDegree;
+  s.max_yaw_rate = p.max_yaw_rate_deg * kRadiansPerDegree;
   return s;
 }
 
 CameraModel cameraOf(const TetherParameters& p) {
   CameraModel c;
   c.position_in_body = {p.vision_camera_x, 0.0, p.vision_camera_z};
-  c.half_field_of_view = p.vision_half_fov_deg * kDegree;
+  c.half_field_of_view = p.vision_half_fov_deg * kRadiansPerDegree;
   c.noise = p.vision_noise;
   c.sample_count = p.vision_points;
   return c;

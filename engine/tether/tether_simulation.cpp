@@ -6,14 +6,13 @@
 
 #include <Eigen/Geometry>
 
+#include "core/angles.hpp"
 #include "core/errors.hpp"
 #include "core/text_format.hpp"
 
 namespace maris::tether {
 
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // World-frame pushes active at `time`, expressed as a follower body twist.
 Vector4 disturbanceTwist(const TetherParameters& p, const RobotPose& follower, double time) {
@@ -22,7 +21,7 @@ Vector4 disturbanceTwist(const TetherParameters& p, const RobotPose& follower, d
   for (const auto& d : p.disturbances)
     if (time >= d.start_time && time < d.start_time + d.duration) {
       velocity += Eigen::Vector3d(d.velocity_x, d.velocity_y, d.velocity_z);
-      yaw_rate += d.yaw_rate_deg * kDegree;
+      yaw_rate += d.yaw_rate_deg * kRadiansPerDegree;
     }
   const Eigen::Vector3d body = Eigen::AngleAxisd(-follower.yaw, Eigen::Vector3d::UnitZ()) * velocity;
   return {body.x(), body.y(), body.z(), yaw_rate};
@@ -66,7 +65,7 @@ Vector4 leaderTwistAt(const TetherParameters& p, double time) {
   double start = 0.0;
   for (const auto& leg : p.leader_path) {
     if (time < start + leg.duration)
-      return {leg.forward_speed, leg.lateral_speed, leg.vertical_speed, leg.yaw_rate_deg * kDegree};
+      return {leg.forward_speed, leg.lateral_speed, leg.vertical_speed, leg.yaw_rate_deg * kRadiansPerDegree};
     start += leg.duration;
   }
   return Vector4::Zero();
@@ -79,7 +78,7 @@ SimulationOutput simulateTether(const TetherParameters& p, RunContext& context) 
   const Features target{p.target_a, p.target_b, p.target_d, p.target_b1};
 
   // Initial poses: the leader as given, the follower where the initial features put it.
-  RobotPose leader{{p.leader_x, p.leader_y, p.leader_z}, p.leader_yaw_deg * kDegree};
+  RobotPose leader{{p.leader_x, p.leader_y, p.leader_z}, p.leader_yaw_deg * kRadiansPerDegree};
   RobotPose follower = followerPoseFromFeatures(rig, leader, Features{p.initial_a, p.initial_b, p.initial_d, p.initial_b1});
   LumpedMassCable cable(cablePropertiesOf(p));
   TetherState tether = tetherState(rig, follower, leader);

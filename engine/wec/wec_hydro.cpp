@@ -6,6 +6,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/angles.hpp"
+
 namespace maris::wec {
 
 namespace {
@@ -63,8 +65,6 @@ double tabulated(const MonotoneCubic& f, const std::vector<double>& ka, const st
   return f(x);
 }
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 }  // namespace
 
 double hulmeHeaveAddedMass(double ka) {
@@ -85,11 +85,11 @@ double hulmeSurgeDamping(double ka) {
 }
 double hemisphereHeavePhase(double ka) {
   static const MonotoneCubic f(kPhaseKa, kHeavePhaseDeg);
-  return f(ka) * kDeg;
+  return f(ka) * kRadiansPerDegree;
 }
 double hemisphereSurgePhase(double ka) {
   static const MonotoneCubic f(kPhaseKa, kSurgePhaseDeg);
-  return f(ka) * kDeg;
+  return f(ka) * kRadiansPerDegree;
 }
 
 // ---------------------------------------------------------------------------------------------

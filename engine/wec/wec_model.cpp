@@ -13,9 +13,9 @@
 namespace maris::wec {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 // β of the scene's direction of travel s = ±1 (cos β = s exactly: cos π rounds to −1).
-double heading(double direction) { return direction < 0.0 ? kPi : 0.0; }
+double heading(double direction) { return direction < 0.0 ? pi : 0.0; }
 }  // namespace
 
 WecModel buildWecModel(const WecParameters& p) {
@@ -42,7 +42,7 @@ WecModel buildWecModel(const WecParameters& p) {
   for (const auto& row : p.floats) {
     FloatModel f;
     f.arm_length = row.arm_length;
-    f.theta0 = row.arm_angle_deg * kPi / 180.0;
+    f.theta0 = row.arm_angle_deg * pi / 180.0;
     f.hinge_x = row.hinge_x;
     f.hinge_z = -row.arm_length * std::sin(f.theta0);
     f.radius = row.radius;
@@ -51,7 +51,7 @@ WecModel buildWecModel(const WecParameters& p) {
     f.inertia_hinge = row.inertia_cg + row.mass * row.arm_length * row.arm_length;
     f.pto_damping = row.pto_damping;
     f.pto_stiffness = row.pto_stiffness;
-    f.waterplane_area = kPi * row.radius * row.radius;
+    f.waterplane_area = pi * row.radius * row.radius;
     f.x_f0 = row.hinge_x + row.arm_length * std::cos(f.theta0);
     // Floats of equal radius share one coefficient database (and, below, one set of kernels).
     if (m.coupled) {

@@ -16,7 +16,7 @@ namespace maris::wec {
 
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& file, int line, const std::string& what) {
+[[noreturn]] void failNemohFile(const std::filesystem::path& file, int line, const std::string& what) {
   throw InputError("hydro.nemoh_directory", "\"" + file.parent_path().string() + "\"",
                    file.filename().string() + (line > 0 ? " line " + std::to_string(line) : std::string()) + ": " +
                        what);
@@ -97,7 +97,7 @@ NemohImport readNemoh(const std::filesystem::path& directory) {
   // column pair in a row is (2g − 1, 2g) with g = 6(b − 1) + DoF the global Nemoh DoF.
   int bodies = 0;
   for (const auto& z : rad.zones) bodies = std::max(bodies, numberAfter(z.title, "body"));
-  if (bodies < 1) fail(rad_file, 0, "no zone 'Motion of body 1 in DoF 1'");
+  if (bodies < 1) failNemohFile(rad_file, 0, "no zone 'Motion of body 1 in DoF 1'");
   const int nd = 2 * bodies;
   auto global = [](int body, int dof) { return 6 * (body - 1) + dof; };
   std::map<long long, CoupledHydro::Row> rows;
@@ -111,9 +111,9 @@ NemohImport readNemoh(const std::filesystem::path& directory) {
       const auto& r = z.rows[k];
       const int line = z.line + 1 + static_cast<int>(k);
       if (r.size() < static_cast<std::size_t>(2 * global(bodies, 3) + 1))
-        fail(rad_file, line, "row too short for DoF 3 of body " + std::to_string(bodies));
+        failNemohFile(rad_file, line, "row too short for DoF 3 of body " + std::to_string(bodies));
       const double omega = toOmega(rad.variables, r[0]);
-      if (!(omega > 0.0)) fail(rad_file, line, "frequency must be positive");
+      if (!(omega > 0.0)) failNemohFile(rad_file, line, "frequency must be positive");
       auto& row = rows[omegaKey(omega)];
       if (row.added_mass.size() == 0) {
         row.omega = omega;
@@ -130,7 +130,7 @@ NemohImport readNemoh(const std::filesystem::path& directory) {
   }
   for (int i = 0; i < nd; ++i)
     if (!seen[static_cast<std::size_t>(i)])
-      fail(rad_file, 0, "no zone 'Motion of body " + std::to_string(i / 2 + 1) + " in DoF " + (i % 2 ? "3" : "1") + "'");
+      failNemohFile(rad_file, 0, "no zone 'Motion of body " + std::to_string(i / 2 + 1) + " in DoF " + (i % 2 ? "3" : "1") + "'");
 
   // Excitation: the zone of heading 0 (the first one if none says beta = 0).
   const Zone* heading = nullptr;
@@ -142,19 +142,19 @@ NemohImport readNemoh(const std::filesystem::path& directory) {
     if (s >> beta && std::abs(beta) < 1e-6) heading = &z;
   }
   if (!heading && !exc.zones.empty()) heading = &exc.zones.front();
-  if (!heading) fail(exc_file, 0, "no excitation zone");
+  if (!heading) failNemohFile(exc_file, 0, "no excitation zone");
   std::size_t matched = 0;
   for (std::size_t k = 0; k < heading->rows.size(); ++k) {
     const auto& r = heading->rows[k];
     const int line = heading->line + 1 + static_cast<int>(k);
     if (r.size() < static_cast<std::size_t>(2 * global(bodies, 3) + 1))
-      fail(exc_file, line, "row too short for DoF 3 of body " + std::to_string(bodies) +
+      failNemohFile(exc_file, line, "row too short for DoF 3 of body " + std::to_string(bodies) +
                                " (need w and magnitude/phase pairs)");
     // Same frequency as a radiation row to 1e-6 relative (the two files may print different digits).
     const double omega = toOmega(exc.variables, r[0]);
     auto it = rows.lower_bound(omegaKey(omega * (1.0 - 1e-6)));
     if (it != rows.end() && std::abs(it->second.omega - omega) > 1e-6 * omega) it = rows.end();
-    if (it == rows.end()) fail(exc_file, line, "frequency " + std::to_string(r[0]) + " is not in RadiationCoefficients.tec");
+    if (it == rows.end()) failNemohFile(exc_file, line, "frequency " + std::to_string(r[0]) + " is not in RadiationCoefficients.tec");
     // e^{−iωt} amplitudes → e^{+iωt} (conjugate).
     for (int b = 1; b <= bodies; ++b)
       for (int d : {1, 3}) {
@@ -165,8 +165,8 @@ NemohImport readNemoh(const std::filesystem::path& directory) {
     ++matched;
   }
   if (matched != rows.size())
-    fail(exc_file, heading->line, std::to_string(rows.size() - matched) + " radiation frequencies have no excitation row");
-  if (rows.size() < 4) fail(rad_file, 0, "need at least 4 frequencies, found " + std::to_string(rows.size()));
+    failNemohFile(exc_file, heading->line, std::to_string(rows.size() - matched) + " radiation frequencies have no excitation row");
+  if (rows.size() < 4) failNemohFile(rad_file, 0, "need at least 4 frequencies, found " + std::to_string(rows.size()));
 
   // A∞ of every entry by Ogilvie (Nemoh writes none); the error bars reported are the largest of the diagonal.
   std::vector<double> w;

@@ -12,7 +12,7 @@ namespace maris::wec {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 // Limiting steepness of a periodic wave, H/λ ≈ 1/7 (Michell 1893); a design sea's significant steepness stays
 // near 1/15 (DNV-RP-C205, sect. 3.5.5.4); a wave breaks where H > 0.78 d (McCowan 1894).
 constexpr double kLimitingSteepness = 1.0 / 7.0;
@@ -23,7 +23,7 @@ constexpr double kBreakingDepthRatio = 0.78;
 constexpr double kHulmeLastKa = 10.0;
 // Shallow water begins where the depth is below 1/20 of the wave length (kh < π/10), the usual division of
 // linear wave theory (e.g. Dean & Dalrymple, Water Wave Mechanics for Engineers and Scientists, 1991, ch. 3).
-constexpr double kShallowKh = kPi / 10.0;
+constexpr double kShallowKh = pi / 10.0;
 
 std::string num(double v) { return formatText("%.4g", v); }
 
@@ -58,9 +58,9 @@ std::vector<FieldError> wecPlausibility(const WecParameters& p) {
   const bool regular = p.wave_type == "regular";
   const std::string field = regular ? "waves.height" : "waves.significant_height";
   const double height = regular ? p.wave_height : p.significant_height;
-  const double omega = regular ? p.wave_frequency : 2 * kPi / p.peak_period;
+  const double omega = regular ? p.wave_frequency : 2 * pi / p.peak_period;
   const double k = ocean::waveNumber(omega, p.depth, p.gravity);
-  const double length = 2 * kPi / k;
+  const double length = 2 * pi / k;
   const double steepness = height / length;
   if (steepness > (regular ? kLimitingSteepness : kSeaStateSteepness))
     w.push_back({field, num(height),

@@ -13,7 +13,7 @@ namespace maris::wec {
 
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& file, int line, const std::string& what) {
+[[noreturn]] void failWamitFile(const std::filesystem::path& file, int line, const std::string& what) {
   throw InputError("hydro.wamit_stem", "\"" + file.string() + "\"",
                    (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + what);
 }
@@ -42,7 +42,7 @@ std::shared_ptr<TabulatedHydro> readWamit(const std::filesystem::path& stem, dou
       continue;
     }
     if (r.period < 0.0) continue;  // zero frequency: not needed
-    if (!r.damping) fail(file1, r.line, "damping coefficient missing");
+    if (!r.damping) failWamitFile(file1, r.line, "damping coefficient missing");
     const double omega = 2.0 * std::numbers::pi / r.period;
     auto& row = rows[periodKey(r.period)];
     row.omega = omega;
@@ -50,14 +50,14 @@ std::shared_ptr<TabulatedHydro> readWamit(const std::filesystem::path& stem, dou
     mode.added_mass = r.added_mass * density * l3;
     mode.damping = *r.damping * density * omega * l3;
   }
-  if (rows.empty()) fail(file1, 0, "no surge or heave rows with a positive period");
+  if (rows.empty()) failWamitFile(file1, 0, "no surge or heave rows with a positive period");
 
   // Excitation, heading 0.
   const auto file3 = std::filesystem::path(stem.string() + ".3");
   for (const auto& r : formats::parseWamit3(readFile(file3), "hydro.wamit_stem", file3.string())) {
     if ((r.i != 1 && r.i != 3) || std::abs(r.heading) > 1e-6 || r.period <= 0.0) continue;
     auto it = rows.find(periodKey(r.period));
-    if (it == rows.end()) fail(file3, r.line, "period " + std::to_string(r.period) + " s is not in " + file1.string());
+    if (it == rows.end()) failWamitFile(file3, r.line, "period " + std::to_string(r.period) + " s is not in " + file1.string());
     (r.i == 1 ? it->second.hydro.surge : it->second.hydro.heave).excitation =
         Complex(r.re, r.im) * density * gravity * l2;
   }

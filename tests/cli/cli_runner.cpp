@@ -2,8 +2,6 @@
 
 #include <chrono>
 #include <csignal>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include <fcntl.h>
@@ -11,17 +9,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "source_tree.hpp"
+#include "study_cli_helpers.hpp"
 
 extern char** environ;
 
 namespace maris::test {
-
-static std::string slurp(const std::string& file) {
-  std::ifstream in(file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 CliResult runCli(const std::vector<std::string>& args, const std::string& working_dir, double interrupt_after_s,
                  int signal, const std::string& shell_prefix) {

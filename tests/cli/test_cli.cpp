@@ -23,6 +23,7 @@
 
 #include "catalog.hpp"
 #include "cli_runner.hpp"
+#include "study_cli_helpers.hpp"
 
 namespace maris {
 namespace {
@@ -30,16 +31,13 @@ namespace {
 namespace fs = std::filesystem;
 using test::runCli;
 using test::kQuickBuiltin;
+using test::writeText;
 
 fs::path freshDir(const std::string& name) {
   const auto dir = fs::temp_directory_path() / ("maris_cli_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-void writeText(const fs::path& file, const std::string& text) {
-  std::ofstream(file) << text;
 }
 
 // The default scenario with one edit, written to a file.

@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <sys/wait.h>
@@ -16,9 +15,11 @@
 
 #include "cli_runner.hpp"
 #include "source_tree.hpp"
+#include "study_cli_helpers.hpp"
 
 namespace fs = std::filesystem;
 using maris::test::runCli;
+using maris::test::slurp;
 
 namespace {
 
@@ -26,13 +27,6 @@ struct Shell {
   int exit_code = -1;
   std::string out, err;
 };
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Runs `command` with /bin/sh in `dir`, stdout and stderr captured.
 Shell shell(const fs::path& dir, const std::string& command) {

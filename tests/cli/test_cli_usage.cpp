@@ -9,13 +9,13 @@
 
 #include "cli_runner.hpp"
 #include "core/version.hpp"
+#include "study_cli_helpers.hpp"
 
 namespace maris {
 namespace {
 
+using test::contains;
 using test::runCli;
-
-bool contains(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
 
 TEST(CliUsage, VersionIsTheProjectVersionAndTheCommit) {
   const auto r = runCli({"--version"});

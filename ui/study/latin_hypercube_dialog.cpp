@@ -12,15 +12,14 @@
 #include <QVBoxLayout>
 
 #include "document/scenario_document.hpp"
+#include "study/study_cell_text.hpp"
 
 namespace maris::ui {
 
 namespace {
 
-enum Column { kParameter, kFrom, kTo, kAllowed };
+enum RangeColumn { kRangeParameter, kRangeFrom, kRangeTo, kRangeAllowed };
 constexpr int kMaxSamples = 100000;  // the engine's limit of cases in one study (StudyLimits::kCases)
-
-QString number(double v) { return QString::number(v, 'g', 12); }
 
 double cellNumber(const QTableWidget* table, int row, int column) {
   bool ok = false;
@@ -44,7 +43,7 @@ LatinHypercubeDialog::LatinHypercubeDialog(const SceneDefinition& scene, const S
   table_->setHorizontalHeaderLabels({tr("Parameter"), tr("From"), tr("To"), tr("Allowed")});
   table_->setRowCount(static_cast<int>(specs_.size()));
   table_->verticalHeader()->hide();
-  table_->horizontalHeader()->setSectionResizeMode(kParameter, QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(kRangeParameter, QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
   for (int row = 0; row < static_cast<int>(specs_.size()); ++row) {
     const ParamSpec& spec = specs_[row];
@@ -55,12 +54,12 @@ LatinHypercubeDialog::LatinHypercubeDialog(const SceneDefinition& scene, const S
     name->setFlags((name->flags() | Qt::ItemIsUserCheckable) & ~Qt::ItemIsEditable);
     name->setCheckState(Qt::Unchecked);
     name->setToolTip(QString::fromStdString(spec.path + (spec.description.empty() ? "" : ": " + spec.description)));
-    table_->setItem(row, kParameter, name);
-    table_->setItem(row, kFrom, new QTableWidgetItem(number(proposed.from)));
-    table_->setItem(row, kTo, new QTableWidgetItem(number(proposed.to)));
+    table_->setItem(row, kRangeParameter, name);
+    table_->setItem(row, kRangeFrom, new QTableWidgetItem(cellText(proposed.from)));
+    table_->setItem(row, kRangeTo, new QTableWidgetItem(cellText(proposed.to)));
     auto* allowed = new QTableWidgetItem(QString::fromStdString(spec.range.str()));
     allowed->setFlags(allowed->flags() & ~Qt::ItemIsEditable);
-    table_->setItem(row, kAllowed, allowed);
+    table_->setItem(row, kRangeAllowed, allowed);
   }
   table_->setMinimumSize(560, 260);
   samples_->setRange(2, kMaxSamples);
@@ -91,9 +90,9 @@ LatinHypercubeDialog::LatinHypercubeDialog(const SceneDefinition& scene, const S
 bool LatinHypercubeDialog::choose(const std::string& path, double from, double to) {
   for (int row = 0; row < static_cast<int>(specs_.size()); ++row) {
     if (specs_[row].path != path) continue;
-    table_->item(row, kFrom)->setText(number(from));
-    table_->item(row, kTo)->setText(number(to));
-    table_->item(row, kParameter)->setCheckState(Qt::Checked);
+    table_->item(row, kRangeFrom)->setText(cellText(from));
+    table_->item(row, kRangeTo)->setText(cellText(to));
+    table_->item(row, kRangeParameter)->setCheckState(Qt::Checked);
     return true;
   }
   return false;
@@ -102,11 +101,11 @@ bool LatinHypercubeDialog::choose(const std::string& path, double from, double t
 LatinHypercubeDesign LatinHypercubeDialog::design() const {
   LatinHypercubeDesign d;
   for (int row = 0; row < static_cast<int>(specs_.size()); ++row) {
-    if (table_->item(row, kParameter)->checkState() != Qt::Checked) continue;
+    if (table_->item(row, kRangeParameter)->checkState() != Qt::Checked) continue;
     SweepRange r;
     r.path = specs_[row].path;
-    r.from = cellNumber(table_, row, kFrom);
-    r.to = cellNumber(table_, row, kTo);
+    r.from = cellNumber(table_, row, kRangeFrom);
+    r.to = cellNumber(table_, row, kRangeTo);
     d.ranges.push_back(r);
   }
   d.samples = samples_->value();
@@ -118,8 +117,8 @@ QString LatinHypercubeDialog::problem() const {
   const LatinHypercubeDesign d = design();
   if (d.ranges.empty()) return tr("Tick at least one parameter to sample.");
   for (int row = 0; row < static_cast<int>(specs_.size()); ++row) {
-    if (table_->item(row, kParameter)->checkState() != Qt::Checked) continue;
-    SweepRange r{specs_[row].path, cellNumber(table_, row, kFrom), cellNumber(table_, row, kTo), 2, false};
+    if (table_->item(row, kRangeParameter)->checkState() != Qt::Checked) continue;
+    SweepRange r{specs_[row].path, cellNumber(table_, row, kRangeFrom), cellNumber(table_, row, kRangeTo), 2, false};
     QString why = sweepProblem(specs_[row], r);
     if (why.isEmpty() && !(r.from < r.to)) why = tr("from: must be below to");
     if (!why.isEmpty()) return QStringLiteral("%1: %2").arg(fieldLabel(specs_[row]), why);

@@ -27,14 +27,13 @@
 #include "start_folder.hpp"
 #include "study/study_plot_view.hpp"
 #include "study/study_runner.hpp"
+#include "study/study_cell_text.hpp"
 
 namespace maris::ui {
 
 namespace {
 
 enum Column { kParameter, kFrom, kTo, kValues, kSpacing, kColumnCount };
-
-QString number(double v) { return QString::number(v, 'g', 12); }
 
 // "1 case", "5 cases" (the application loads no translation, whose plural forms %n would need).
 QString counted(int n, const QString& one, const QString& many) {
@@ -493,8 +492,8 @@ void StudyPanel::rebuildTable() {
     auto* name = new QTableWidgetItem(QString::fromStdString(r.path) + unit);
     name->setFlags(name->flags() & ~Qt::ItemIsEditable);
     table_->setItem(row, kParameter, name);
-    table_->setItem(row, kFrom, new QTableWidgetItem(number(r.from)));
-    table_->setItem(row, kTo, new QTableWidgetItem(number(r.to)));
+    table_->setItem(row, kFrom, new QTableWidgetItem(cellText(r.from)));
+    table_->setItem(row, kTo, new QTableWidgetItem(cellText(r.to)));
     table_->setItem(row, kValues, new QTableWidgetItem(QString::number(r.count)));
     auto* spacing = new QComboBox(table_);
     spacing->addItems({tr("linear"), tr("log")});

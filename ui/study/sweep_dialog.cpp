@@ -13,6 +13,7 @@
 #include <QVBoxLayout>
 
 #include "document/scenario_document.hpp"
+#include "study/study_cell_text.hpp"
 
 namespace maris::ui {
 
@@ -29,8 +30,6 @@ double clipToRange(double v, const Range& range) {
     v = range.max_open ? range.max - 0.01 * span : range.max;
   return v;
 }
-
-QString number(double v) { return QString::number(v, 'g', 12); }
 
 }  // namespace
 
@@ -69,14 +68,14 @@ QString sweepProblem(const ParamSpec& spec, const SweepRange& r) {
     if (r.from != std::floor(r.from) || r.to != std::floor(r.to)) return QObject::tr("from, to: must be whole numbers");
     if (r.count > std::abs(r.to - r.from) + 1)
       return QObject::tr("values: at most %1 whole numbers lie from %2 to %3")
-          .arg(std::abs(r.to - r.from) + 1).arg(number(r.from), number(r.to));
+          .arg(std::abs(r.to - r.from) + 1).arg(cellText(r.from), cellText(r.to));
   }
   return {};
 }
 
 SweepDialog::SweepDialog(const ParamSpec& spec, const SweepRange& proposed, QWidget* parent)
-    : QDialog(parent), spec_(spec), from_(new QLineEdit(number(proposed.from), this)),
-      to_(new QLineEdit(number(proposed.to), this)), count_(new QSpinBox(this)), spacing_(new QComboBox(this)),
+    : QDialog(parent), spec_(spec), from_(new QLineEdit(cellText(proposed.from), this)),
+      to_(new QLineEdit(cellText(proposed.to), this)), count_(new QSpinBox(this)), spacing_(new QComboBox(this)),
       problem_(new QLabel(this)) {
   setWindowTitle(tr("Sweep %1").arg(fieldLabel(spec)));
   const QString unit = spec.unit == "-" ? QString() : QString::fromStdString(spec.unit);

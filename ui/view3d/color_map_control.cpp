@@ -16,7 +16,7 @@ namespace maris::ui {
 
 namespace {
 
-QString number(double v) { return QString::number(v, 'g', 6); }
+QString limitText(double v) { return QString::number(v, 'g', 6); }
 
 }  // namespace
 
@@ -90,8 +90,8 @@ void ColorMapControl::showSettings(const ColorSettings& settings, double data_lo
   per_frame_->setChecked(settings.per_frame);
   shown_min_si_ = settings.automatic ? data_lo : settings.min;
   shown_max_si_ = settings.automatic ? data_hi : settings.max;
-  shown_min_ = number(shown_min_si_ * unit_.factor);
-  shown_max_ = number(shown_max_si_ * unit_.factor);
+  shown_min_ = limitText(shown_min_si_ * unit_.factor);
+  shown_max_ = limitText(shown_max_si_ * unit_.factor);
   min_->setText(shown_min_);
   max_->setText(shown_max_);
   problem_->hide();

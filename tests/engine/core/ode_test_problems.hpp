@@ -11,6 +11,9 @@
 
 namespace maris::test {
 
+// The damped oscillator most ODE tests integrate: ω [rad/s], ζ [-] and the start x(0), x'(0).
+inline constexpr double kOmega = 2.0, kZeta = 0.1, kX0 = 1.0, kV0 = 0.5;
+
 // x'' + 2ζω x' + ω² x = 0 as y = (x, v).
 inline OdeRhs oscillatorRhs(double omega, double zeta) {
   return [omega, zeta](double, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {

@@ -24,7 +24,7 @@ namespace {
 
 using test_files::readTestDataFile;
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 
 // (period, i, j) -> (A, B) of a .1 file or a report.
 std::map<std::tuple<double, int, int>, std::pair<double, double>> byKey(const std::vector<WamitCoefficientRow>& rows) {
@@ -75,7 +75,7 @@ TEST(Formats, WamitReportAndNumericFilesOfOneRunAgree) {
 // a = 5 m, 130.90. WAMIT's panels give it to 0.1 %.
 TEST(Formats, WamitInfiniteFrequencyHeaveAddedMassIsHalfTheDisplacedMass) {
   const auto one = parseWamit1(readTestDataFile("wamit/sphere.1"), "hydro", "sphere.1");
-  const double closed = 0.5 * (2.0 / 3.0) * kPi * 125.0;
+  const double closed = 0.5 * (2.0 / 3.0) * pi * 125.0;
   const auto row = std::find_if(one.begin(), one.end(), [](const auto& r) { return r.period == 0.0 && r.i == 3 && r.j == 3; });
   ASSERT_NE(row, one.end());
   EXPECT_FALSE(row->damping.has_value());
@@ -99,7 +99,7 @@ TEST(Formats, NemohTecplotAgreesWithWamitOnTheSameSphere) {
   for (const auto& [row_index, period] : {std::pair{1, 4.424781}, std::pair{2, 2.228081}}) {
     const auto& row = heave.rows[static_cast<std::size_t>(row_index)];
     const double omega = row[0];
-    EXPECT_NEAR(omega, 2.0 * kPi / period, 1e-5 * omega);
+    EXPECT_NEAR(omega, 2.0 * pi / period, 1e-5 * omega);
     const auto [a_bar, b_bar] = wamit.at({period, 3, 3});
     const double a_wamit = a_bar * rho, b_wamit = b_bar * rho * omega;
     EXPECT_NEAR(row[5], a_wamit, 0.02 * a_wamit) << "A33 at omega = " << omega;

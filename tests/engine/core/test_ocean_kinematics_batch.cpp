@@ -10,11 +10,12 @@
 
 #include "core/ocean_kinematics_batch.hpp"
 #include "core/wave_spectrum.hpp"
+#include "ocean_test_constants.hpp"
 
 namespace maris::ocean {
 namespace {
 
-constexpr double kG = 9.81;
+using test::kG;
 
 TEST(OceanKinematicsBatch, KernelsAgreeWithTheLibraryToAFewUlps) {
   std::mt19937_64 rng(7);

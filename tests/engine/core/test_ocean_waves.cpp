@@ -8,12 +8,13 @@
 #include <gtest/gtest.h>
 
 #include "core/ocean_waves.hpp"
+#include "ocean_test_constants.hpp"
 
 namespace maris::ocean {
 namespace {
 
-constexpr double kG = 9.81;
-constexpr double kPi = std::numbers::pi;
+using test::kG;
+using std::numbers::pi;
 
 // Independent root of ω² = g k tanh(kh): bisection in long double on [0, ω²/g + ω/√(gh)].
 long double bisectionWaveNumber(double omega, double depth) {
@@ -44,7 +45,7 @@ TEST(OceanWaves, GroupVelocityIsTheSlopeOfTheDispersionRelation) {
 TEST(OceanWaves, DispersionMatchesBisectionTo1e12FromShallowToDeep) {
   for (double depth : {1.0, 10.0, 100.0, 1000.0}) {
     for (double period : {2.0, 5.0, 10.0, 20.0, 60.0}) {
-      const double omega = 2.0 * kPi / period;
+      const double omega = 2.0 * pi / period;
       const double k = waveNumber(omega, depth, kG);
       const long double reference = bisectionWaveNumber(omega, depth);
       EXPECT_LT(std::abs(k - reference) / reference, 1e-12) << "h = " << depth << ", T = " << period;
@@ -52,7 +53,7 @@ TEST(OceanWaves, DispersionMatchesBisectionTo1e12FromShallowToDeep) {
     }
   }
   // Deep water: k = ω²/g exactly; kh = 50 finite depth agrees with it to 1e-15 (tanh 50 = 1 − 7e-44).
-  const double omega = 2.0 * kPi / 8.0;
+  const double omega = 2.0 * pi / 8.0;
   EXPECT_EQ(waveNumber(omega, kDeepWater, kG), omega * omega / kG);
   const double k_deep = omega * omega / kG;
   EXPECT_NEAR(waveNumber(omega, 50.0 / k_deep, kG), k_deep, 1e-15 * k_deep);
@@ -82,10 +83,10 @@ struct AiryReference {
 };
 
 TEST(OceanWaves, AiryKinematicsMatchClosedFormsInDeepAndFiniteDepth) {
-  const double height = 6.0, period = 10.0, beta = 30.0 * kPi / 180.0, phase = 0.4;
+  const double height = 6.0, period = 10.0, beta = 30.0 * pi / 180.0, phase = 0.4;
   for (double depth : {kDeepWater, 200.0, 30.0}) {
     const WaveField wave = airyWave(height, period, beta, phase, depth, kG, Stretching::None);
-    const double omega = 2.0 * kPi / period;
+    const double omega = 2.0 * pi / period;
     const AiryReference ref{0.5 * height, omega, waveNumber(omega, depth, kG), depth, beta, phase};
     const double scale = ref.a * omega;  // velocity amplitude at the surface in deep water
     const double bottom = std::isinf(depth) ? -150.0 : -depth;
@@ -107,7 +108,7 @@ TEST(OceanWaves, AiryKinematicsMatchClosedFormsInDeepAndFiniteDepth) {
   }
   // Deep-water surface speed is πH/T; a point above the crest is dry.
   const WaveField deep = airyWave(height, period, 0.0, 0.0, kDeepWater, kG, Stretching::None);
-  EXPECT_NEAR(deep.kinematics(Eigen::Vector3d::Zero(), 0.0).velocity.x(), kPi * height / period, 1e-14);
+  EXPECT_NEAR(deep.kinematics(Eigen::Vector3d::Zero(), 0.0).velocity.x(), pi * height / period, 1e-14);
   EXPECT_FALSE(deep.kinematics(Eigen::Vector3d(0, 0, 3.01), 0.0).wet);
   EXPECT_EQ(deep.kinematics(Eigen::Vector3d(0, 0, 3.01), 0.0).velocity, Eigen::Vector3d::Zero());
 }
@@ -118,7 +119,7 @@ TEST(OceanWaves, WheelerStretchingMapsTheSurfaceToZeroAndTheSeabedToItself) {
     const WaveField linear = airyWave(height, period, 0.0, 0.0, depth, kG, Stretching::None);
     const WaveField wheeler = airyWave(height, period, 0.0, 0.0, depth, kG, Stretching::Wheeler);
     const WaveField vertical = airyWave(height, period, 0.0, 0.0, depth, kG, Stretching::Vertical);
-    const double omega = 2.0 * kPi / period;
+    const double omega = 2.0 * pi / period;
     const AiryReference ref{0.5 * height, omega, waveNumber(omega, depth, kG), depth, 0.0, 0.0};
     // t = 0: crest (η = +4 m) at x = 0; t = T/2: trough (η = −4 m); and two times in between.
     for (double t : {0.0, 0.5 * period, 0.2 * period, 0.7 * period}) {
@@ -182,7 +183,7 @@ TEST(OceanWaves, SynthesisedSeaHasItsSignificantHeightWithinTheStatisticalTolera
   const double lo = spectrum.bandLow(), hi = spectrum.bandHigh(), h = (hi - lo) / 20000.0;
   for (int i = 0; i <= 20000; ++i) s2 += (i == 0 || i == 20000 ? 0.5 : 1.0) * h * std::pow(spectrum.density(lo + i * h), 2);
   const double m0 = hs * hs / 16.0;
-  const double relative_sigma_hs = std::sqrt(2.0 * kPi * s2 / duration) / (2.0 * m0);
+  const double relative_sigma_hs = std::sqrt(2.0 * pi * s2 / duration) / (2.0 * m0);
   EXPECT_GT(relative_sigma_hs, 0.005);  // ≈ 1.9 % for this sea: the tolerance below is 4σ ≈ 7.6 %
   EXPECT_LT(relative_sigma_hs, 0.03);
   for (auto method : {Discretisation::EqualEnergy, Discretisation::RandomFrequency}) {
@@ -200,7 +201,7 @@ TEST(OceanWaves, IrregularSeaDoesNotRepeatAtTheBinPeriod) {
   // With equally spaced frequencies Δω the record would repeat after 2π/Δω (here 5.5 ω_p/200 → 364 s).
   // Random-in-bin and equal-energy frequencies do not: η(t) and η(t + 2π/Δω) are nearly uncorrelated.
   const WaveSpectrum spectrum = piersonMoskowitz(3.0, 9.0);
-  const double d_omega = (spectrum.bandHigh() - spectrum.bandLow()) / 200.0, repeat = 2.0 * kPi / d_omega;
+  const double d_omega = (spectrum.bandHigh() - spectrum.bandLow()) / 200.0, repeat = 2.0 * pi / d_omega;
   for (auto method : {Discretisation::EqualEnergy, Discretisation::RandomFrequency}) {
     const WaveField sea = irregularSea(spectrum, 200, method, 9, 0.0, kDeepWater, kG, Stretching::Wheeler);
     EXPECT_GT(smallestSpacing(sea), 0.0);
@@ -228,7 +229,7 @@ TEST(OceanWaves, StartRampAndItsRate) {
   for (double t : {1.0, 7.3, 10.0, 19.0}) {
     const double h = 1e-4;
     EXPECT_NEAR(startRampRate(t, tr), (startRamp(t + h, tr) - startRamp(t - h, tr)) / (2.0 * h),
-                1e-8 * kPi / (2.0 * tr)) << t;
+                1e-8 * pi / (2.0 * tr)) << t;
   }
 }
 

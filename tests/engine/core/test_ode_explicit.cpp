@@ -13,9 +13,7 @@
 namespace maris {
 namespace {
 
-constexpr double kOmega = 2.0;  // [rad/s]
-constexpr double kZeta = 0.1;   // [-]
-constexpr double kX0 = 1.0, kV0 = 0.5;
+using test::kOmega, test::kZeta, test::kX0, test::kV0;
 
 // Max-norm error of (x, v) at t1 against the damped oscillator's closed form.
 double oscillatorError(const Eigen::VectorXd& y, double t1) {

@@ -14,7 +14,7 @@
 namespace maris {
 namespace {
 
-constexpr double kOmega = 2.0, kZeta = 0.1, kX0 = 1.0, kV0 = 0.5;
+using test::kOmega, test::kZeta, test::kX0, test::kV0;
 
 double alphaError(double h, double rho_inf) {
   Eigen::VectorXd q = Eigen::VectorXd::Constant(1, kX0), v = Eigen::VectorXd::Constant(1, kV0);

@@ -10,19 +10,19 @@
 namespace maris::ocean {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 
 // m_n of S_PM = (5/16) Hs² ω_p⁴ ω⁻⁵ exp(−1.25 (ω_p/ω)⁴): substituting v = 1.25 (ω_p/ω)⁴,
 //   m_n = (5/64) Hs² ω_p^n 1.25^{(n−4)/4} Γ(1 − n/4)   (n < 4; m0 = Hs²/16 exactly).
 double pmMomentClosedForm(double hs, double tp, int n) {
-  const double wp = 2.0 * kPi / tp;
+  const double wp = 2.0 * pi / tp;
   return 5.0 / 64.0 * hs * hs * std::pow(wp, n) * std::pow(1.25, (n - 4) / 4.0) * std::tgamma(1.0 - n / 4.0);
 }
 
 // ∫ ω^n S dω by the trapezoid rule on 4·10⁵ cells over [0.1, 100]·ω_p plus the ω⁻⁵ tail beyond, in closed
 // form to leading order (exp → 1, γ-factor → 1): an independent check of the library's u-quadrature.
 double bruteMoment(const WaveSpectrum& s, int n) {
-  const double wp = 2.0 * kPi / s.peak_period, lo = 0.1 * wp, hi = 100.0 * wp;
+  const double wp = 2.0 * pi / s.peak_period, lo = 0.1 * wp, hi = 100.0 * wp;
   const int cells = 400000;
   const double h = (hi - lo) / cells;
   double sum = 0.0;
@@ -45,8 +45,8 @@ TEST(WaveSpectrum, PiersonMoskowitzMomentsMatchTheirClosedForms) {
         EXPECT_NEAR(spectralMoment(pm, n), expected, 1e-11 * expected) << "m" << n;
       }
       // Zero-crossing period Tz = 2π √(m0/m2) = 0.7104 Tp (from the closed forms: (0.8·√1.25/√π)^{1/2}).
-      const double tz = 2.0 * kPi * std::sqrt(spectralMoment(pm, 0) / spectralMoment(pm, 2));
-      EXPECT_NEAR(tz / tp, std::sqrt(0.8 * std::sqrt(1.25) / std::sqrt(kPi)), 1e-11);
+      const double tz = 2.0 * pi * std::sqrt(spectralMoment(pm, 0) / spectralMoment(pm, 2));
+      EXPECT_NEAR(tz / tp, std::sqrt(0.8 * std::sqrt(1.25) / std::sqrt(pi)), 1e-11);
     }
   }
   EXPECT_THROW(spectralMoment(piersonMoskowitz(1.0, 8.0), 4), std::invalid_argument);

@@ -13,7 +13,7 @@
 namespace maris::fiv {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 
 TEST(FivExact, LogarithmicDecrementOfTenPercentDampingIs0_63148) {
   // Closed form: δ = 2πξ/√(1 − ξ²) = 0.63148 for ξ = 0.1 (5 digits given).
@@ -60,7 +60,7 @@ TEST(FivExact, UndampedRk4EnergyFollowsTheStabilityPolynomial) {
   const FivModel model = buildFivModel(p);
   const FivRhs rhs(model, makeOperatingPoint(model, 0.0, kDeep));
   const int steps_per_period = 40, periods = 20;
-  const double theta = 2.0 * kPi / steps_per_period;
+  const double theta = 2.0 * pi / steps_per_period;
   const double h = theta / model.omega_n;
   State s{0.02, 0.0, 0, 0, 0, 0};
   auto energy = [&](const State& x) { return 0.5 * model.stiffness * x[0] * x[0] + 0.5 * model.total_mass * x[1] * x[1]; };
@@ -77,7 +77,7 @@ TEST(FivExact, UndampedRk4EnergyFollowsTheStabilityPolynomial) {
 TEST(FivExact, DamperPowerOfASineIsHalfCOmegaSquaredASquared) {
   // Paper eq 13 on y = A sin ωt: ⟨cẏ²⟩ = ½cω²A². 400 samples per period hit every peak and the
   // trapezoid rule is exact (to round-off) for a periodic integrand over whole periods.
-  const double a = 0.25, f = 0.5, c = 30.0, w = 2.0 * kPi * f, dt = 1.0 / (400.0 * f);
+  const double a = 0.25, f = 0.5, c = 30.0, w = 2.0 * pi * f, dt = 1.0 / (400.0 * f);
   ImportedSeries s;
   for (int i = 0; i < 400 * 12; ++i) {
     const double t = i * dt;
@@ -88,14 +88,14 @@ TEST(FivExact, DamperPowerOfASineIsHalfCOmegaSquaredASquared) {
   const SeriesAnalysis r = analyseSeries(s, c, 998.2, 2.2, 1.0, 0.09);
   EXPECT_NEAR(r.amplitude, a, 1e-12);
   EXPECT_NEAR(r.power_damper / sinusoidDamperPower(c, w, a), 1.0, 1e-9);
-  EXPECT_NEAR(sinusoidDamperPower(c, w, a), 2.0 * kPi * kPi * c * f * f * a * a, 1e-12);
+  EXPECT_NEAR(sinusoidDamperPower(c, w, a), 2.0 * pi * pi * c * f * f * a * a, 1e-12);
   EXPECT_NEAR(r.frequency, f, 1e-9);
 }
 
 TEST(FivExact, EfficiencyOfCaseC5MatchesTheWorkedNumbers) {
   // Hand calculation from the paper's definitions (3–4 digits): C5, U = 2.2 m/s, A = 0.25 m, f = 0.48828 Hz,
   // c = 30 N·s/m, L = 1 m, ρ = 998.2 kg/m³: P = 8.82 W, P_fluid = 3135.5 W, η = 0.475 % (± 0.5 %).
-  const double power = sinusoidDamperPower(30.0, 2.0 * kPi * 0.48828, 0.25);
+  const double power = sinusoidDamperPower(30.0, 2.0 * pi * 0.48828, 0.25);
   const double fluid = sweptFluidPower(998.2, 2.2, 1.0, 0.09, 0.25);
   EXPECT_NEAR(power, 8.82, 0.005 * 8.82);
   EXPECT_NEAR(fluid, 3135.5, 0.05);
@@ -109,8 +109,8 @@ ImportedSeries paperRecord(double f1, double f2) {
   for (int i = 0; i < 8192; ++i) {
     const double t = i * 0.005;
     s.time.push_back(t);
-    s.y.push_back(0.25 * std::sin(2.0 * kPi * f1 * t));
-    s.lift.push_back(40.0 * std::sin(2.0 * kPi * f1 * t) + 15.0 * std::sin(2.0 * kPi * f2 * t));
+    s.y.push_back(0.25 * std::sin(2.0 * pi * f1 * t));
+    s.lift.push_back(40.0 * std::sin(2.0 * pi * f1 * t) + 15.0 * std::sin(2.0 * pi * f2 * t));
   }
   return s;
 }

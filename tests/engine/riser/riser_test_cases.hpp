@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "core/resources.hpp"
@@ -10,8 +11,6 @@
 #include "riser/riser_parameters.hpp"
 
 namespace maris::riser::test {
-
-inline constexpr double kPi = 3.14159265358979323846;
 
 // The parameters of a built-in scenario as the CLI and GUI run it ("scenarios/riser/<id>.json").
 inline RiserParameters builtinParameters(const std::string& path) {
@@ -89,8 +88,8 @@ inline RiserParameters tensionedBeam(int n) {
   p.outer_diameter = 0.1;
   p.inner_diameter = 0.0;
   p.added_mass_coefficient = 0.0;
-  p.density = 1.0 / (kPi / 4 * 0.01);             // m* = 1 kg/m
-  p.youngs_modulus = 1000.0 / (kPi / 64 * 1e-4);  // EI = 1000 N·m²
+  p.density = 1.0 / (std::numbers::pi / 4 * 0.01);             // m* = 1 kg/m
+  p.youngs_modulus = 1000.0 / (std::numbers::pi / 64 * 1e-4);  // EI = 1000 N·m²
   p.torsion = false;
   p.gravity = 0.0;
   p.top_condition = "tensioner";
@@ -152,7 +151,7 @@ inline RiserParameters inclinedTensionedRiser(int n, const std::string& formulat
 }
 
 inline double bendingStiffness(const RiserParameters& p) {
-  return p.youngs_modulus * kPi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
+  return p.youngs_modulus * std::numbers::pi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
 }
 
 }  // namespace maris::riser::test

@@ -10,14 +10,13 @@
 
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
+#include "riser_test_support.hpp"
 #include "engine/release_only.hpp"
 
 namespace maris::riser {
 namespace {
 
-const std::vector<double>& column(const Results& r, const std::string& table, const std::string& name) {
-  return r.findTable(table)->find(name)->values;
-}
+using test::column;
 
 // A 20 m water-filled steel pipe hanging straight down from a pinned top that moves vertically by
 // A(1 − cos ωt) (starts at rest, no ramp), weightless (g = 0: no weight, no buoyancy), no drag, free bottom:

@@ -11,14 +11,12 @@
 #include "riser/riser_integration.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
+#include "riser_test_support.hpp"
 
 namespace maris::riser {
 namespace {
 
-Results run(const RiserParameters& p) {
-  RunContext context;
-  return solveRiser(p, context);
-}
+using test::run;
 
 struct ProbePath {
   std::vector<double> t, x, y, z;  // time [s] and displacement of the probe at L/2 from its start [m]

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <vector>
 
 #include <Eigen/Core>
@@ -21,10 +22,12 @@
 namespace maris::riser {
 namespace {
 
+using std::numbers::pi;
+
 RiserParameters fixedHeight() { return test::builtinParameters("scenarios/riser/riser_peer_fixed_height.json"); }
 
 double axialRigidity(const RiserParameters& p) {
-  return p.youngs_modulus * test::kPi / 4 * (p.outer_diameter * p.outer_diameter - p.inner_diameter * p.inner_diameter);
+  return p.youngs_modulus * pi / 4 * (p.outer_diameter * p.outer_diameter - p.inner_diameter * p.inner_diameter);
 }
 
 // Tension at the top and the bottom of the static shape (table profile_static).
@@ -60,7 +63,7 @@ TEST(RiserAxialSpring, StaticTensionIsEaTimesStretchOverLength) {
   p.segment_count = 20;
   const double stretch = 0.003, ea_strain = axialRigidity(p) * stretch / p.length;
   p.water_level = 10.0;  // all of it under water (the top stands 3 mm above z = 0)
-  const double a_out = test::kPi / 4 * 0.5 * 0.5, a_inn = test::kPi / 4 * 0.46 * 0.46;
+  const double a_out = pi / 4 * 0.5 * 0.5, a_inn = pi / 4 * 0.46 * 0.46;
   const double weight =
       (p.density * (a_out - a_inn) + p.internal_fluid_density * a_inn - p.water_density * a_out) * p.gravity * p.length;
   const auto [top, bottom] = staticEndTensions(p);
@@ -83,11 +86,11 @@ TEST(RiserAxialSpring, StaticTensionIsEaTimesStretchOverLength) {
 class LumpedMassRiser {
  public:
   LumpedMassRiser(const RiserParameters& p, const RiserModel& m, int elements) : m_(m), n_(elements) {
-    const double a_out = test::kPi / 4 * p.outer_diameter * p.outer_diameter;
-    const double a_inn = test::kPi / 4 * p.inner_diameter * p.inner_diameter;
+    const double a_out = pi / 4 * p.outer_diameter * p.outer_diameter;
+    const double a_inn = pi / 4 * p.inner_diameter * p.inner_diameter;
     l_ = p.length / n_;
     ea_ = p.youngs_modulus * (a_out - a_inn);
-    ei_ = p.youngs_modulus * test::kPi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
+    ei_ = p.youngs_modulus * pi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
     mass_ = (p.density * (a_out - a_inn) + p.internal_fluid_density * a_inn) * l_;
     added_ = p.added_mass_coefficient * p.water_density * a_out * l_;
     weight_ = (mass_ / l_ - p.water_density * a_out) * p.gravity * l_;
@@ -171,7 +174,7 @@ class LumpedMassRiser {
       f[e + 1] += 0.5 * drag;
     }
     for (int j = 1; j < n_; ++j) {
-      const double moment = ei_ / l_ * std::remainder(theta[j] - theta[j - 1], 2 * test::kPi);
+      const double moment = ei_ / l_ * std::remainder(theta[j] - theta[j - 1], 2 * pi);
       f[j + 1] -= moment * g[j];
       f[j] += moment * (g[j] + g[j - 1]);
       f[j - 1] -= moment * g[j - 1];

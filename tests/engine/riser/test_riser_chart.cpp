@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "riser/riser_chart_maps.hpp"
@@ -13,7 +14,7 @@
 namespace maris::riser {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 
 Mat3 chartTurn(ChartKind kind, const Vec3& theta) { return chartMaps(kind, theta).turn; }
 Mat3 chartRateMap(ChartKind kind, const Vec3& theta) { return chartMaps(kind, theta).rate_map; }
@@ -72,12 +73,12 @@ TEST(RiserChart, CoordinatesInvertTheTurn) {
   for (ChartKind kind : {ChartKind::RotationVector, ChartKind::SwingTwist}) {
     EXPECT_EQ(chartCoordinates(kind, Mat3::Identity()), Vec3::Zero());
     for (int k = 0; k < 200; ++k) {
-      Vec3 theta(0.95 * kPi * u(rng), u(rng), u(rng));
+      Vec3 theta(0.95 * pi * u(rng), u(rng), u(rng));
       if (kind == ChartKind::SwingTwist) {
         const Vec3 swing(0, theta.y(), theta.z());
-        theta.tail<2>() *= 0.95 * kPi * std::abs(u(rng)) / swing.norm();
+        theta.tail<2>() *= 0.95 * pi * std::abs(u(rng)) / swing.norm();
       } else {
-        theta *= 0.95 * kPi * std::abs(u(rng)) / theta.norm();
+        theta *= 0.95 * pi * std::abs(u(rng)) / theta.norm();
       }
       const Mat3 turn = chartTurn(kind, theta);
       EXPECT_LT((chartTurn(kind, chartCoordinates(kind, turn)) - turn).norm(), 1e-13) << k;

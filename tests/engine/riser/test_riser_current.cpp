@@ -15,16 +15,13 @@
 #include "riser/riser_plausibility.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
+#include "riser_test_support.hpp"
 #include "engine/release_only.hpp"
-
-namespace maris {
-SceneDefinition makeRiserScene();
-}
 
 namespace maris::riser {
 namespace {
 
-constexpr double kPiValue = std::numbers::pi;
+using std::numbers::pi;
 
 RiserParameters linearCurrent() {
   RiserParameters p;
@@ -42,7 +39,7 @@ Vec3 linearFormula(const RiserParameters& p, double z) {
   const double depth = p.water_level - p.seabed_level;
   const double f = depth > 0 ? std::clamp((p.water_level - z) / depth, 0.0, 1.0) : 0.0;
   const double speed = p.current_speed_surface + f * (p.current_speed_seabed - p.current_speed_surface);
-  const double direction = p.current_direction_deg * (kPiValue / 180.0);
+  const double direction = p.current_direction_deg * (pi / 180.0);
   return speed * Vec3(std::cos(direction), std::sin(direction), 0.0);
 }
 
@@ -77,7 +74,7 @@ TEST(RiserCurrent, TableInterpolatesSpeedAndHeadingBetweenRows) {
   p.current_profile = {{0.0, 1.0, 350.0}, {100.0, 0.5, 10.0}, {200.0, 0.0, 10.0}};
   EXPECT_TRUE(checkRiserParameters(p).empty());
   const CurrentProfile c = buildCurrentProfile(p);
-  const double d = kPiValue / 180;
+  const double d = pi / 180;
   auto towards = [&](double speed, double deg) { return Vec3(speed * std::cos(deg * d), speed * std::sin(deg * d), 0); };
   EXPECT_LT((c.at(-50.0) - towards(0.75, 0.0)).norm(), 1e-15);
   EXPECT_LT((c.at(-25.0) - towards(0.875, 355.0)).norm(), 1e-15);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "riser/riser_dynamics.hpp"
 #include "core/angles.hpp"
@@ -11,7 +12,7 @@
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
 // A free-free chain in zero gravity: no external loads at all, only the internal springs and reactions.
 // Added mass C_a = 1 across the axes and `tangential` along them.

@@ -4,31 +4,27 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 
 #include "core/errors.hpp"
 #include "riser/riser_dynamics.hpp"
 #include "riser/riser_loads.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
+#include "riser_test_support.hpp"
 
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
 Mat3 rotation(const Vec3& axis_angle) {
   const double a = axis_angle.norm();
   return a > 0 ? Mat3(Eigen::AngleAxisd(a, axis_angle / a)) : Mat3::Identity();
 }
 
-Results run(const RiserParameters& p) {
-  RunContext context;
-  return solveRiser(p, context);
-}
-
-const std::vector<double>& column(const Results& r, const std::string& name) {
-  return r.findTable("history")->find(name)->values;
-}
+using test::run;
+using test::column;
 
 double maxAbsDifference(const std::vector<double>& a, const std::vector<double>& b) {
   double d = 0;
@@ -179,7 +175,7 @@ TEST(RiserDynamics, HorizontalCableSinksAtTerminalVelocity) {
   const auto& z = column(r, "end_z");
   const std::size_t k = t.size() - 1;
   const double speed = -(z[k] - z[k - 1]) / (t[k] - t[k - 1]);
-  const double area = kPi / 4 * 0.05 * 0.05;
+  const double area = pi / 4 * 0.05 * 0.05;
   const double w = (p.density - p.water_density) * area * p.gravity;
   const double expected = std::sqrt(2 * w / (p.water_density * 0.05 * 1.0));
   EXPECT_NEAR(speed, expected, 1e-6 * expected);

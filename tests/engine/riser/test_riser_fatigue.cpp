@@ -15,7 +15,7 @@
 namespace maris::riser {
 namespace {
 
-constexpr double kPiValue = std::numbers::pi;
+using std::numbers::pi;
 constexpr double kYear = 365.25 * 24 * 3600;
 
 // One joint: tension T0, bending σ_xy = S cos(2π t/T) and σ_xz = S_z sin(2π t/T), 20 samples a period, K periods.
@@ -33,8 +33,8 @@ SyntheticJoint syntheticJoint(double s, double s_z, int periods, double thicknes
     const double t = i * period / 20;
     j.time.push_back(t);
     j.series.tension.push_back(1e6);
-    j.series.stress_xy.push_back(s * std::cos(2 * kPiValue * t / period));
-    j.series.stress_xz.push_back(s_z * std::sin(2 * kPiValue * t / period));
+    j.series.stress_xy.push_back(s * std::cos(2 * pi * t / period));
+    j.series.stress_xz.push_back(s_z * std::sin(2 * pi * t / period));
   }
   return j;
 }
@@ -102,7 +102,7 @@ TEST(RiserFatigue, RunInAnAiryWaveRecordsElevationFatigueAndClosesItsEnergyBalan
   for (std::size_t k = 0; k < time->values.size(); ++k) {
     const double t = time->values[k];
     const double tau = std::min(t / 4.0, 1.0), ramp = tau * tau * tau * (10 - 15 * tau + 6 * tau * tau);
-    EXPECT_NEAR(eta->values[k], ramp * 2.0 * std::cos(-2 * kPiValue / 8.0 * t + kPiValue / 6), 1e-12) << t;
+    EXPECT_NEAR(eta->values[k], ramp * 2.0 * std::cos(-2 * pi / 8.0 * t + pi / 6), 1e-12) << t;
   }
   // Fatigue: one row per joint, the scalar is the table's shortest life.
   const Table* fatigue = r.findTable("fatigue");

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "riser/riser_loads.hpp"
 #include "riser/riser_scene.hpp"
@@ -11,7 +12,7 @@
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
 // A pipe with flow speed u and only the flow loads switched on (no gravity, drag, current).
 RiserParameters flowingPipe(int n, double u) {
@@ -146,7 +147,7 @@ TEST(RiserInternalFlow, FlowLowersTheEffectiveTensionOfATautString) {
     const StaticSolution s = solveStatics(m, context);
     Vec3 r = s.top;
     for (int i = 0; i <= m.n / 2; ++i) r += m.segments[i].length * s.orientation[i].toRotationMatrix().col(0);
-    return std::pair{r.x(), 1000.0 * kPi / 4 * 0.08 * 0.08 * u * u};
+    return std::pair{r.x(), 1000.0 * pi / 4 * 0.08 * 0.08 * u * u};
   };
   const auto [still, zero] = midSpanDeflection(0.0);
   const auto [flowing, reduction] = midSpanDeflection(60.0);

@@ -9,10 +9,6 @@
 #include "riser/riser_frequency_sweep.hpp"
 #include "riser_test_cases.hpp"
 
-namespace maris {
-SceneDefinition makeRiserScene();
-}
-
 namespace maris::riser {
 namespace {
 
@@ -24,7 +20,7 @@ RiserParameters caseThree() {
   return p;
 }
 
-const Column& column(const Results& r, const std::string& table, const std::string& name) {
+const Column& sweepColumn(const Results& r, const std::string& table, const std::string& name) {
   const Table* t = r.findTable(table);
   EXPECT_NE(t, nullptr) << table;
   const Column* c = t->find(name);
@@ -59,10 +55,10 @@ TEST(RiserFrequencySweep, CaseThreeFrequenciesRiseWithPretensionAndMatchGalerkin
   Results r;
   RunContext context;
   addFrequencySweeps(p, r, context);
-  const Column& w1 = column(r, "frequency_vs_pretension", "omega_1");
-  const Column& w2 = column(r, "frequency_vs_pretension", "omega_2");
-  const Column& d1 = column(r, "frequency_vs_pretension", "difference_1");
-  const Column& d2 = column(r, "frequency_vs_pretension", "difference_2");
+  const Column& w1 = sweepColumn(r, "frequency_vs_pretension", "omega_1");
+  const Column& w2 = sweepColumn(r, "frequency_vs_pretension", "omega_2");
+  const Column& d1 = sweepColumn(r, "frequency_vs_pretension", "difference_1");
+  const Column& d2 = sweepColumn(r, "frequency_vs_pretension", "difference_2");
   ASSERT_EQ(w1.values.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_LT(std::abs(d1.values[k]), 1e-3) << "row " << k;
@@ -74,7 +70,7 @@ TEST(RiserFrequencySweep, CaseThreeFrequenciesRiseWithPretensionAndMatchGalerkin
     }
   }
   // The top tension of a row is i_T g m′ with m′ the submerged mass: the scenario's T is the i_T = 2 row.
-  EXPECT_NEAR(column(r, "frequency_vs_pretension", "top_tension").values[1], p.top_tension, 1e-6 * p.top_tension);
+  EXPECT_NEAR(sweepColumn(r, "frequency_vs_pretension", "top_tension").values[1], p.top_tension, 1e-6 * p.top_tension);
   ASSERT_NE(r.findScalar("sweep_max_difference"), nullptr);
 }
 
@@ -87,8 +83,8 @@ TEST(RiserFrequencySweep, CaseThreeConvergesAtSecondOrderInSegmentCount) {
   Results r;
   RunContext context;
   addFrequencySweeps(p, r, context);
-  const Column& e1 = column(r, "frequency_vs_segments", "error_1");
-  const Column& e2 = column(r, "frequency_vs_segments", "error_2");
+  const Column& e1 = sweepColumn(r, "frequency_vs_segments", "error_1");
+  const Column& e2 = sweepColumn(r, "frequency_vs_segments", "error_2");
   ASSERT_EQ(e1.values.size(), 2u);
   EXPECT_NEAR(e1.values[0] / e1.values[1], 4.0, 1.0);
   EXPECT_NEAR(e2.values[0] / e2.values[1], 4.0, 1.0);
@@ -106,11 +102,11 @@ TEST(RiserFrequencySweep, CoarseChainWithFastFlowKeepsItsRowAndNamesTheSlowGrowt
   Results r;
   RunContext context;
   addFrequencySweeps(p, r, context);
-  const Column& n = column(r, "frequency_vs_segments", "segment_count");
+  const Column& n = sweepColumn(r, "frequency_vs_segments", "segment_count");
   ASSERT_EQ(n.values.size(), 2u);
   EXPECT_EQ(n.values[0], 10.0);
-  EXPECT_LT(column(r, "frequency_vs_segments", "error_1").values[0], 1.5e-2);
-  EXPECT_LT(column(r, "frequency_vs_segments", "error_2").values[0], 1.5e-2);
+  EXPECT_LT(sweepColumn(r, "frequency_vs_segments", "error_1").values[0], 1.5e-2);
+  EXPECT_LT(sweepColumn(r, "frequency_vs_segments", "error_2").values[0], 1.5e-2);
   bool warned = false;
   for (const std::string& w : context.warnings())
     warned = warned || (w.find("n = 10") != std::string::npos && w.find("grow slowly") != std::string::npos);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -14,17 +15,15 @@
 #include "riser/riser_scene.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser_test_cases.hpp"
+#include "riser_test_support.hpp"
 #include "engine/release_only.hpp"
 
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
-Results run(const RiserParameters& p) {
-  RunContext context;
-  return solveRiser(p, context);
-}
+using test::run;
 
 double scalar(const Results& r, const std::string& name) { return r.findScalar(name)->value; }
 
@@ -32,7 +31,7 @@ double scalar(const Results& r, const std::string& name) { return r.findScalar(n
 // falls, snaps taut below the support (≈ 1.6 s) and whips its free end.
 RiserParameters fallingChain() {
   RiserParameters p = test::chainInAir(10);
-  p.initial_inclination_deg = degreesFromRadians(kPi - 0.3);
+  p.initial_inclination_deg = degreesFromRadians(pi - 0.3);
   p.solve_statics = false;
   p.end_time = 2.5;
   return p;
@@ -104,12 +103,12 @@ TEST(RiserHardCases, SlackChainInAbsoluteCoordinatesConservesEnergyAtFourthOrder
 // folding chain's joint there, see above) keeps |det G| = 1e-6, so the spring couple −R G⁻ᵀ M̄ stays finite;
 // 1e-3 rad away it is the exact matrix (det G = cos θ to 1e-15).
 TEST(RiserHardCases, SpringLawRateMatrixStaysInvertibleAtANinetyDegreeBend) {
-  const double at = zyxRateMatrix(Vec3(0.3, kPi / 2, 0.2)).determinant();
+  const double at = zyxRateMatrix(Vec3(0.3, pi / 2, 0.2)).determinant();
   EXPECT_NEAR(std::abs(at), 1e-6, 1e-12);
   const Vec3 mbar(0.0, 1.0, 1.0);
-  EXPECT_TRUE(zyxRateMatrix(Vec3(0.3, kPi / 2, 0.2)).transpose().lu().solve(mbar).allFinite());
-  const double near = zyxRateMatrix(Vec3(0.3, kPi / 2 - 1e-3, 0.2)).determinant();
-  EXPECT_NEAR(near, std::cos(kPi / 2 - 1e-3), 1e-15);
+  EXPECT_TRUE(zyxRateMatrix(Vec3(0.3, pi / 2, 0.2)).transpose().lu().solve(mbar).allFinite());
+  const double near = zyxRateMatrix(Vec3(0.3, pi / 2 - 1e-3, 0.2)).determinant();
+  EXPECT_NEAR(near, std::cos(pi / 2 - 1e-3), 1e-15);
 }
 
 // The same falling, snapping and whipping chain without torsion, integrated implicitly in both formulations:
@@ -203,10 +202,10 @@ TEST_P(CantileverDirection, TipDeflectionIsExactAlongEveryAxis) {
 }
 INSTANTIATE_TEST_SUITE_P(Axes, CantileverDirection,
                          ::testing::Values(std::make_tuple(0.0, 0.0),         // -z (hanging)
-                                           std::make_tuple(kPi, 0.0),         // +z (standing)
-                                           std::make_tuple(kPi / 2, kPi / 2), // +y
-                                           std::make_tuple(kPi / 2, -kPi / 2),// -y
-                                           std::make_tuple(kPi / 2, kPi)));   // -x
+                                           std::make_tuple(pi, 0.0),         // +z (standing)
+                                           std::make_tuple(pi / 2, pi / 2), // +y
+                                           std::make_tuple(pi / 2, -pi / 2),// -y
+                                           std::make_tuple(pi / 2, pi)));   // -x
 
 // Very stiff torsion with a coarse step: a steel tube whose highest torsion mode 2√(G/ρ)/Δ ≈ 6400 rad/s (Δ = 1 m) far
 // exceeds RK4's limit 2.83/h at h = 2 ms, twisted by an end torque of 100 N·m from t = 0.
@@ -257,7 +256,7 @@ TEST(RiserHardCases, StiffTorsionWithCoarseRk4StepReportsSolverError) {
 TEST(RiserHardCases, StiffTorsionWithCoarseImplicitStepStaysStable) {
   const RiserParameters base = stiffTorsion();
   const double section_modulus =
-      kPi * (std::pow(base.outer_diameter, 4) - std::pow(base.inner_diameter, 4)) / (16 * base.outer_diameter);
+      pi * (std::pow(base.outer_diameter, 4) - std::pow(base.inner_diameter, 4)) / (16 * base.outer_diameter);
   const double static_stress = base.point_loads[0].moment_z / section_modulus;
   for (double step : {0.002, 0.02}) {
     RiserParameters p = base;
@@ -317,7 +316,7 @@ TEST(RiserHardCases, SlowTopMotionGivesLinearDisplacementEnvelope) {
   p.outer_diameter = 0.1;
   p.inner_diameter = 0.0;
   p.added_mass_coefficient = 0.0;
-  p.density = 1.0 / (kPi / 4 * 0.01);  // μ = 1 kg/m: ω₁ = π rad/s at T = 100 N
+  p.density = 1.0 / (pi / 4 * 0.01);  // μ = 1 kg/m: ω₁ = π rad/s at T = 100 N
   p.youngs_modulus = 1e-6;
   p.torsion = false;
   p.gravity = 0.0;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -12,21 +13,16 @@
 #include "riser/riser_results.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
+#include "riser_test_support.hpp"
 #include "engine/release_only.hpp"
 
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
-Results run(const RiserParameters& p) {
-  RunContext context;
-  return solveRiser(p, context);
-}
-
-const std::vector<double>& column(const Results& r, const std::string& name) {
-  return r.findTable("history")->find(name)->values;
-}
+using test::run;
+using test::column;
 
 // Largest difference of a history column between two runs at the times both sampled.
 double maxDifferenceAtCommonTimes(const Results& a, const Results& b, const std::string& name) {
@@ -238,7 +234,7 @@ TEST(RiserIntegrators, AutoPicksRk4UnlessTheExplicitStepCountExplodes) {
 // spline assumes): errors within the Hall–Meyer bounds 5/384 h⁴, 1/24 h³, 3/8 h² times max|x''''| = Aω⁴.
 // Before and after the table the first and last rows hold.
 TEST(RiserTopMotion, TableSplineIsFourthOrderAccurate) {
-  const double a = 2.0, period = 8.0, w = 2 * kPi / period, h = period / 32;
+  const double a = 2.0, period = 8.0, w = 2 * pi / period, h = period / 32;
   std::vector<TopMotionRow> rows;
   for (int k = 0; k <= 32; ++k) rows.push_back({k * h, a * (1 - std::cos(w * k * h)), 0.0, 0.0});
   const TopMotionSpline s = buildTopMotionSpline(rows, false);
@@ -272,7 +268,7 @@ TEST(RiserTopMotion, TableReproducesTheHarmonicRunAtSecondOrder) {
   p.motion_amplitude_y = 0.0;
   const Results harmonic = run(p);
   p.top_motion = "table";
-  const double w = 2 * kPi / p.motion_period, a = p.motion_amplitude_x;
+  const double w = 2 * pi / p.motion_period, a = p.motion_amplitude_x;
   double probe[2];
   for (int k = 0; k < 2; ++k) {
     const int rows = k == 0 ? 20 : 40;

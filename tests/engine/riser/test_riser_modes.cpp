@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <utility>
 #include <vector>
 
@@ -17,7 +18,7 @@
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
 // Distinct frequencies: in 3D every planar bending mode appears twice (two transverse planes).
 std::vector<double> distinctFrequencies(const RiserParameters& p, int count,
@@ -85,7 +86,7 @@ TEST(RiserModes, CantileverMatchesEulerBernoulli) {
   p.internal_fluid_density = 0.0;
   const std::vector<double> w = distinctFrequencies(p, 3);
   const double beta[3] = {1.875104, 4.694091, 7.854757};
-  const double area = kPi / 4 * (0.01 - 0.0064);
+  const double area = pi / 4 * (0.01 - 0.0064);
   const double mu = p.density * area, ei = test::bendingStiffness(p);
   ASSERT_EQ(w.size(), 3u);
   for (int k = 0; k < 3; ++k) {
@@ -107,7 +108,7 @@ TEST(RiserModes, StringLimitMatchesTautStringFrequencies) {
     p.outer_diameter = 0.1;
     p.inner_diameter = 0.0;
     p.added_mass_coefficient = 0.0;
-    p.density = 1.0 / (kPi / 4 * 0.01);  // μ = 1 kg/m
+    p.density = 1.0 / (pi / 4 * 0.01);  // μ = 1 kg/m
     p.youngs_modulus = 1e-6;              // EI ≈ 5e-12 N·m²: a string
     p.torsion = false;
     p.gravity = 0.0;
@@ -118,9 +119,9 @@ TEST(RiserModes, StringLimitMatchesTautStringFrequencies) {
     const std::vector<double> w = distinctFrequencies(p, 3);
     ASSERT_EQ(w.size(), 3u);
     for (int k = 0; k < 3; ++k) {
-      const double exact = (k + 1) * kPi / p.length * std::sqrt(p.top_tension / 1.0);
+      const double exact = (k + 1) * pi / p.length * std::sqrt(p.top_tension / 1.0);
       const double error = (w[k] - exact) / exact;
-      EXPECT_LT(std::abs(error), 1.2 * std::pow((k + 1) * kPi / n, 2) / 24) << "mode " << k + 1 << " n = " << n;
+      EXPECT_LT(std::abs(error), 1.2 * std::pow((k + 1) * pi / n, 2) / 24) << "mode " << k + 1 << " n = " << n;
       if (previous[k] != 0) {
         EXPECT_NEAR(previous[k] / error, 4.0, 1.0) << "mode " << k + 1;
       }
@@ -154,9 +155,9 @@ TEST(RiserModes, FixedFreeTorsionMatchesClosedForm) {
     ASSERT_GE(torsion.size(), 2u) << "n = " << n;
     const double wave_speed = std::sqrt(p.shear_modulus / p.density);  // √(GJ/ι) for a tube: J = polar moment
     for (int k = 0; k < 2; ++k) {
-      const double exact = (2 * k + 1) * kPi / (2 * p.length) * wave_speed;
+      const double exact = (2 * k + 1) * pi / (2 * p.length) * wave_speed;
       const double error = (torsion[k] - exact) / exact;
-      EXPECT_LT(std::abs(error), 1.2 * std::pow((2 * k + 1) * kPi / (2 * n), 2) / 24)
+      EXPECT_LT(std::abs(error), 1.2 * std::pow((2 * k + 1) * pi / (2 * n), 2) / 24)
           << "torsion mode " << k + 1 << " n = " << n;
       if (previous[k] != 0) {
         EXPECT_NEAR(previous[k] / error, 4.0, 1.0) << "torsion mode " << k + 1;
@@ -218,7 +219,7 @@ TEST(RiserModes, HeavyRiserMatchesFiniteDifferenceSturmLiouville) {
   p.top_condition = "tensioner";
   p.bottom_condition = "pinned";
   p.bottom_z = -100.0;
-  const double a_out = kPi / 4 * 0.09, a_inn = kPi / 4 * 0.26 * 0.26;
+  const double a_out = pi / 4 * 0.09, a_inn = pi / 4 * 0.26 * 0.26;
   const double wall = p.density * (a_out - a_inn), contents = p.internal_fluid_density * a_inn;
   const double mu = wall + contents + p.water_density * p.added_mass_coefficient * a_out;
   const double weight = (wall + contents - p.water_density * a_out) * p.gravity;
@@ -239,8 +240,8 @@ TEST(RiserModes, HeavyRiserMatchesFiniteDifferenceSturmLiouville) {
 // not eigenfunctions when T varies; measured differences with 24 modes ≤ 2.3e-8 (the FD solution's own
 // error is ≈ 1e-8): tolerance 1e-6.
 TEST(RiserModes, DepthVaryingGalerkinMatchesFiniteDifferenceSturmLiouville) {
-  const double ei = 2.07e11 * kPi / 64 * (std::pow(0.3, 4) - std::pow(0.26, 4));
-  const double a_out = kPi / 4 * 0.09, a_inn = kPi / 4 * 0.26 * 0.26;
+  const double ei = 2.07e11 * pi / 64 * (std::pow(0.3, 4) - std::pow(0.26, 4));
+  const double a_out = pi / 4 * 0.09, a_inn = pi / 4 * 0.26 * 0.26;
   const double wall = 7850.0 * (a_out - a_inn), contents = 1025.0 * a_inn;
   const double mu = wall + contents + 1025.0 * a_out;
   const double weight = (wall + contents - 1025.0 * a_out) * 9.81;
@@ -364,8 +365,8 @@ TEST(RiserModes, PipeConveyingFluidDivergesAtTheClosedFormSpeed) {
     double previous = 0;
     for (int n : {20, 40}) {
       RiserParameters p = fluidConveyingPipe(n, tension);
-      const double fluid = p.internal_fluid_density * kPi / 4 * 0.0064;
-      const double ei = test::bendingStiffness(p), k1 = kPi / p.length;
+      const double fluid = p.internal_fluid_density * pi / 4 * 0.0064;
+      const double ei = test::bendingStiffness(p), k1 = pi / p.length;
       const double exact = std::sqrt((tension + ei * k1 * k1) / fluid);
       const RiserModel m = buildRiserModel(p);
       RunContext context;
@@ -396,7 +397,7 @@ TEST(RiserModes, PipeConveyingFluidDivergesAtTheClosedFormSpeed) {
       const RiserModes modes = computeModes(beyond, solveStatics(beyond, context), 4);
       EXPECT_EQ(modes.unstable_count, 2) << "one diverging mode per bending plane, T = " << tension;
       ASSERT_FALSE(modes.frequencies.empty());
-      const double second = pipeGalerkin(p.length, fluid + p.density * kPi / 4 * 0.0036, fluid, ei, tension,
+      const double second = pipeGalerkin(p.length, fluid + p.density * pi / 4 * 0.0036, fluid, ei, tension,
                                          0.0, 8, 2)[1];
       EXPECT_GT(modes.frequencies[0], 0.3 * second) << "the lowest remaining mode is not the first one";
     }
@@ -411,9 +412,9 @@ TEST(RiserModes, PipeConveyingFluidDivergesAtTheClosedFormSpeed) {
 TEST(RiserModes, PipeConveyingFluidMatchesGyroscopicGalerkin) {
   for (int n : {20, 40}) {
     RiserParameters p = fluidConveyingPipe(n, 0.0);
-    const double fluid = p.internal_fluid_density * kPi / 4 * 0.0064;
-    const double mass = fluid + p.density * kPi / 4 * 0.0036;
-    const double ei = test::bendingStiffness(p), k1 = kPi / p.length;
+    const double fluid = p.internal_fluid_density * pi / 4 * 0.0064;
+    const double mass = fluid + p.density * pi / 4 * 0.0036;
+    const double ei = test::bendingStiffness(p), k1 = pi / p.length;
     const double critical = k1 * std::sqrt(ei / fluid);
     const double tolerance = n == 20 ? 5e-3 : 1.2e-3;
     for (double ratio : {0.5, 0.8}) {

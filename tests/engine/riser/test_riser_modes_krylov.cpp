@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <numbers>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
@@ -19,7 +20,7 @@
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
 struct Solved {
   RiserModel model;
@@ -163,7 +164,7 @@ TEST(RiserModesKrylov, ConvergesAtSecondOrderInTheSegmentCount) {
   }
   EXPECT_NEAR((w[0] - w[1]) / (w[1] - w[2]), 4.0, 0.01);
   EXPECT_NEAR((w[1] - w[2]) / (w[2] - w[3]), 4.0, 0.01);
-  const double k = kPi / 10.0, exact = k * std::sqrt(100.0 + k * k * 1000.0);
+  const double k = pi / 10.0, exact = k * std::sqrt(100.0 + k * k * 1000.0);
   EXPECT_NEAR(w[3], exact, 1e-4 * exact);
 }
 

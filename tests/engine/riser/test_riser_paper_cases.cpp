@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -14,14 +15,15 @@
 #include "riser/riser_scene.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser_test_cases.hpp"
+#include "riser_test_support.hpp"
 #include "engine/release_only.hpp"
 
 namespace maris::riser {
 namespace {
 
-const std::vector<double>& column(const Results& r, const char* table, const char* name) {
-  return r.findTable(table)->find(name)->values;
-}
+using std::numbers::pi;
+
+using test::column;
 
 // Euler–Bernoulli cantilever (clamped at x = 0, free at L), linear modal superposition: the deflection at x of box
 // pulses of force F [N] on [0, τ] at the points `at` [m]. Modes φ_k = cosh βx − cos βx − σ_k (sinh βx − sin βx),
@@ -30,7 +32,7 @@ double cantileverPulseResponse(double x, double t, const std::vector<double>& at
                                double ei, double mass_per_length, int modes) {
   double w = 0;
   for (int k = 1; k <= modes; ++k) {
-    double lo = (k - 0.5) * test::kPi - 0.5, hi = lo + 1.0;  // cos βL + 1/cosh βL changes sign once in here
+    double lo = (k - 0.5) * pi - 0.5, hi = lo + 1.0;  // cos βL + 1/cosh βL changes sign once in here
     auto f = [](double b) { return std::cos(b) + 1 / std::cosh(b); };
     for (int i = 0; i < 100; ++i) ((f(0.5 * (lo + hi)) > 0) == (f(lo) > 0) ? lo : hi) = 0.5 * (lo + hi);
     const double bl = 0.5 * (lo + hi), b = bl / length;
@@ -64,8 +66,8 @@ PulseRun caseOne(const char* scenario, int n) {
   p.stress_times.clear();
   RunContext context;
   const Results r = solveRiser(p, context);
-  const double ei = p.youngs_modulus * test::kPi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
-  const double mass = p.density * test::kPi / 4 * (std::pow(p.outer_diameter, 2) - std::pow(p.inner_diameter, 2));
+  const double ei = p.youngs_modulus * pi / 64 * (std::pow(p.outer_diameter, 4) - std::pow(p.inner_diameter, 4));
+  const double mass = p.density * pi / 4 * (std::pow(p.outer_diameter, 2) - std::pow(p.inner_diameter, 2));
   const double half = 0.5 * p.length / n, force = p.point_loads[0].force_z, tau = p.point_loads[0].end_time;
   const std::vector<double>& time = column(r, "history", "time");
   const std::vector<double>& dz = column(r, "history", "probe_dz");
@@ -177,7 +179,7 @@ TEST(RiserPaperCases, CaseFourEnvelopesHaveTheSecondModesShape) {
   EXPECT_NEAR(s[upper], length / 4, length / 10);
   EXPECT_NEAR(s[lower], 3 * length / 4, length / 10);
   const double ratio = *std::max_element(kappa.begin(), kappa.end()) / *std::max_element(w.begin(), w.end());
-  EXPECT_NEAR(ratio / std::pow(2 * test::kPi / length, 2), 1.0, 0.1) << ratio;
+  EXPECT_NEAR(ratio / std::pow(2 * pi / length, 2), 1.0, 0.1) << ratio;
 }
 
 // §9, case 5 in its four variants (the built-in scenarios, to 24 s, implicit at T/400 instead of RK4 at 2 ms): the

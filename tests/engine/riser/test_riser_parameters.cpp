@@ -7,21 +7,14 @@
 #include "core/resources.hpp"
 #include "core/scene.hpp"
 #include "riser/riser_parameters.hpp"
-
-namespace maris {
-SceneDefinition makeRiserScene();
-}
+#include "riser_test_support.hpp"
 
 namespace maris::riser {
 namespace {
 
 Json defaults() { return riserBinder().write(RiserParameters{}); }
 
-bool hasErrorAt(const std::vector<FieldError>& errors, const std::string& path) {
-  for (const auto& e : errors)
-    if (e.path == path) return true;
-  return false;
-}
+using test::hasErrorAt;
 
 std::string describe(const std::vector<FieldError>& errors) { return describeErrors(errors); }
 

@@ -11,10 +11,7 @@
 #include "riser/riser_model.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
-
-namespace maris {
-SceneDefinition makeRiserScene();
-}
+#include "riser_test_support.hpp"
 
 namespace maris::riser {
 namespace {
@@ -25,11 +22,7 @@ const Column& historyColumn(const Results& r, const std::string& name) {
   return *c;
 }
 
-bool hasErrorAt(const std::vector<FieldError>& errors, const std::string& path) {
-  for (const auto& e : errors)
-    if (e.path == path) return true;
-  return false;
-}
+using test::hasErrorAt;
 
 // Position at arc length s by linear interpolation between the stored nodes of one frame (the
 // segments are rigid and straight, so this is exact). `first` is the frame's first row in node_positions.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 #include "core/scene.hpp"
 #include "riser/riser_buoyancy.hpp"
@@ -10,15 +11,12 @@
 #include "riser/riser_scene.hpp"
 #include "riser/riser_statics.hpp"
 #include "riser_test_cases.hpp"
-
-namespace maris {
-SceneDefinition makeRiserScene();
-}
+#include "riser_test_support.hpp"
 
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
 // A chain (EI ≈ 0, w = 100 N/m in air, D = 0.1 m) pinned at the origin and at an anchor on a flat bed 50 m below
 // the top, 120 m away horizontally; 150 m long, so part of it rests on the bed.
@@ -30,7 +28,7 @@ RiserParameters chainOnTheBed(int n, double stiffness) {
   p.inner_diameter = 0.0;
   p.youngs_modulus = 1.0;  // EI ≈ 5e-6 N·m²: a chain
   p.torsion = false;
-  p.density = 100.0 / (9.81 * kPi / 4 * 0.01);
+  p.density = 100.0 / (9.81 * pi / 4 * 0.01);
   p.seabed_level = -50.0;
   p.seabed_contact = true;
   p.seabed_normal_stiffness = stiffness;
@@ -140,7 +138,7 @@ TEST(RiserSeabed, RodOnTheBedSlidesWhenThePullExceedsTheFriction) {
   auto pulled = [](double ratio) {
     RiserParameters p = rodOnTheBed();
     p.initial_inclination_deg = 90.0;  // lying along +x
-    const double w = p.density * kPi / 4 * 0.05 * 0.05 * p.gravity;
+    const double w = p.density * pi / 4 * 0.05 * 0.05 * p.gravity;
     p.top_z = -10.0 + 0.025 - w / p.seabed_normal_stiffness;  // resting
     PointLoadRow pull;
     pull.node = 0;
@@ -165,7 +163,7 @@ TEST(RiserSeabed, RodOnASlopedBedCreepsAtTheSpeedWhereFrictionHoldsItsWeight) {
   RiserParameters p = rodOnTheBed();
   p.seabed_slope_deg = 10.0;
   p.seabed_slope_direction_deg = 0.0;
-  const double alpha = 10.0 * kPi / 180, w = p.density * kPi / 4 * 0.05 * 0.05 * p.gravity;
+  const double alpha = 10.0 * pi / 180, w = p.density * pi / 4 * 0.05 * 0.05 * p.gravity;
   p.initial_inclination_deg = 80.0;  // down the slope, towards −x
   p.initial_azimuth_deg = 180.0;
   const RiserModel bare = buildRiserModel(p);
@@ -252,7 +250,7 @@ TEST(RiserSeabed, BuoyancyModulesAddTheirBuoyancyAndMassWhereverTheyEnd) {
   p.segment_count = 17;  // joints at (k − ½)·5.88 m: no module end on a joint
   p.buoyancy_modules = {{12.3, 41.7, 0.8, 150.0, 1.2, 1.0}, {60.0, 71.1, 0.7, 80.0, 1.0, 1.0}};
   const RiserModel m = buildRiserModel(p);
-  const double g = p.gravity, a_out = kPi / 4 * 0.25, a_inn = kPi / 4 * 0.45 * 0.45;
+  const double g = p.gravity, a_out = pi / 4 * 0.25, a_inn = pi / 4 * 0.45 * 0.45;
   const double bare_weight = (p.density * (a_out - a_inn) + p.internal_fluid_density * a_inn) * g * p.length;
   double weight = 0, buoyancy = 0;
   for (const Segment& s : m.segments) {
@@ -260,7 +258,7 @@ TEST(RiserSeabed, BuoyancyModulesAddTheirBuoyancyAndMassWhereverTheyEnd) {
     buoyancy += s.buoyancy_per_length * s.length;
   }
   const double module_mass = 150.0 * 29.4 + 80.0 * 11.1;
-  const double module_area_length = kPi / 4 * (0.64 * 29.4 + 0.49 * 11.1), bare_area_length = a_out * (100 - 40.5);
+  const double module_area_length = pi / 4 * (0.64 * 29.4 + 0.49 * 11.1), bare_area_length = a_out * (100 - 40.5);
   EXPECT_NEAR(weight, bare_weight + module_mass * g, 1e-9 * weight);
   EXPECT_NEAR(buoyancy, p.water_density * g * (bare_area_length + module_area_length), 1e-9 * buoyancy);
   p.top_z = 0.0;

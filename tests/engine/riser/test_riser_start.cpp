@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -12,21 +13,15 @@
 #include "engine/results_identity.hpp"
 #include "riser/riser_scene.hpp"
 #include "riser_test_cases.hpp"
-
-namespace maris {
-SceneDefinition makeRiserScene();
-}
+#include "riser_test_support.hpp"
 
 namespace maris::riser {
 namespace {
 
-const std::vector<double>& column(const Results& r, const std::string& table, const std::string& name) {
-  return r.findTable(table)->find(name)->values;
-}
+using std::numbers::pi;
 
-std::vector<FieldError> errorsOf(const RiserParameters& p) {
-  return validateParameters(makeRiserScene(), riserBinder().write(p));
-}
+using test::column;
+using test::errorsOf;
 
 // Harmonic top motion with top.motion_ramp_time = 0 starting at speed A ω |cos φ| ≠ 0: an input error naming
 // top.motion_ramp_time and the speed (2 m · 2π/10 s = 1.25664 m/s); at φ = ±90° (start at rest) it is accepted,
@@ -42,7 +37,7 @@ TEST(RiserStart, TopJumpingFromRestToFullSpeedIsRefused) {
   ASSERT_EQ(errors.size(), 1u) << describeErrors(errors);
   EXPECT_EQ(errors[0].path, "parameters.top.motion_ramp_time");
   EXPECT_NE(errors[0].message.find("1.25664 m/s"), std::string::npos) << errors[0].message;
-  EXPECT_NEAR(initialTopSpeed(p), 2.0 * 2 * test::kPi / 10.0, 1e-15);
+  EXPECT_NEAR(initialTopSpeed(p), 2.0 * 2 * pi / 10.0, 1e-15);
 
   p.motion_phase_x_deg = -90.0;
   EXPECT_TRUE(errorsOf(p).empty()) << describeErrors(errorsOf(p));

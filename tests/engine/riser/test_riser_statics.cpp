@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "riser/riser_results.hpp"
 #include "riser/riser_statics.hpp"
@@ -10,7 +11,7 @@
 namespace maris::riser {
 namespace {
 
-using test::kPi;
+using std::numbers::pi;
 
 struct StaticShape {
   RiserModel model;
@@ -98,7 +99,7 @@ TEST(RiserStatics, CantileverUnderOwnWeightConvergesAtSecondOrder) {
     p.density = 10.0;  // light: q L⁴/(8 EI) ≈ 1e-4 L keeps the response linear
     p.internal_fluid_density = 0.0;
     const StaticShape s = solveShape(p);
-    const double q = p.density * kPi / 4 * (0.1 * 0.1 - 0.08 * 0.08) * p.gravity;
+    const double q = p.density * pi / 4 * (0.1 * 0.1 - 0.08 * 0.08) * p.gravity;
     const double expected = q * std::pow(10.0, 4) / (8 * test::bendingStiffness(p));
     const double error = std::abs(-s.pose.end_position.z() - expected) / expected;
     EXPECT_LT(error, 2.0 / (n * n)) << "n = " << n;
@@ -120,7 +121,7 @@ TEST(RiserStatics, HangingChainMatchesCatenary) {
   p.inner_diameter = 0.0;
   p.youngs_modulus = 1.0;  // EI ≈ 5e-6 N·m²: a chain
   p.torsion = false;
-  p.density = 100.0 / (9.81 * kPi / 4 * 0.01);
+  p.density = 100.0 / (9.81 * pi / 4 * 0.01);
   p.bottom_condition = "pinned";
   p.bottom_x = 80.0;
   p.bottom_z = 0.0;
@@ -141,7 +142,7 @@ TEST(RiserStatics, EndTorqueTwistsByTLOverGJ) {
   p.inner_diameter = 0.08;
   p.gravity = 0.0;
   p.top_condition = "clamped";
-  const double gj = p.shear_modulus * kPi / 32 * (std::pow(0.1, 4) - std::pow(0.08, 4));
+  const double gj = p.shear_modulus * pi / 32 * (std::pow(0.1, 4) - std::pow(0.08, 4));
   const double torque = 0.3 * gj / p.length;  // 0.3 rad of twist
   PointLoadRow l;
   l.node = p.segment_count + 1;
@@ -196,7 +197,7 @@ TEST(RiserStatics, CantileverStressesFollowTheBendingMomentOfTheTipLoad) {
   const double ei = test::bendingStiffness(p), tip = 1e-4 * ei / (p.length * p.length);
   p = test::tipLoadedCantilever(n, tip);
   const StaticShape s = solveShape(p);
-  const double wb = kPi * (std::pow(0.1, 4) - std::pow(0.08, 4)) / (32 * 0.1);
+  const double wb = pi * (std::pow(0.1, 4) - std::pow(0.08, 4)) / (32 * 0.1);
   for (int k = 1; k <= n; ++k) {
     const double expected = tip * (p.length - s.profile.arc_length[k]) / wb;
     EXPECT_NEAR(s.profile.bending_stress[k], expected, 1e-6 * expected) << "joint " << k;

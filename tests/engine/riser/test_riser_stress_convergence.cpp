@@ -13,11 +13,8 @@
 #include "riser/riser_scene.hpp"
 #include "riser/riser_stress_convergence.hpp"
 #include "riser_test_cases.hpp"
+#include "riser_test_support.hpp"
 #include "engine/release_only.hpp"
-
-namespace maris {
-SceneDefinition makeRiserScene();
-}
 
 namespace maris::riser {
 namespace {
@@ -36,9 +33,7 @@ Results caseFiveStudy(const char* variant, std::vector<double> n) {
   return results;
 }
 
-const std::vector<double>& column(const Results& r, const char* table, const char* name) {
-  return r.findTable(table)->find(name)->values;
-}
+using test::column;
 
 // Second order in n: the segment method's bending moment at a joint is O(Δ²) (paper: errors of eq (66) ≈ 0.2 % at
 // n = 10, O(1/n²)), and the probe's value is interpolated between the joints around L/2, also O(Δ²). Successive

@@ -13,10 +13,7 @@
 #include "core/scene.hpp"
 #include "riser/riser_model.hpp"
 #include "riser/riser_parameters.hpp"
-
-namespace maris {
-SceneDefinition makeRiserScene();
-}
+#include "riser_test_support.hpp"
 
 namespace maris::riser {
 namespace {

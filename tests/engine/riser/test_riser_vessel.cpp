@@ -27,7 +27,7 @@
 namespace maris::riser {
 namespace {
 
-constexpr double kPiValue = std::numbers::pi;
+using std::numbers::pi;
 constexpr const char* kHeader =
     "heading,omega,surge_amplitude,surge_phase,sway_amplitude,sway_phase,heave_amplitude,heave_phase,"
     "roll_amplitude,roll_phase,pitch_amplitude,pitch_phase,yaw_amplitude,yaw_phase\n";
@@ -90,7 +90,7 @@ TEST(RiserVessel, UnitHeaveRaoMakesTheTopFollowTheWaveElevationAtTheRaoOrigin) {
   EXPECT_TRUE(m.vessel->warnings.empty());
   EXPECT_NEAR(m.top_mean.x(), 7.0, 1e-15);  // top.x + the static offset
   const Vec3 origin = m.vessel->reference;
-  const Vec3 expected_origin = m.top_mean - Eigen::AngleAxisd(kPiValue / 6, Vec3::UnitZ()) * Vec3(25.0, -8.0, 12.0);
+  const Vec3 expected_origin = m.top_mean - Eigen::AngleAxisd(pi / 6, Vec3::UnitZ()) * Vec3(25.0, -8.0, 12.0);
   EXPECT_LT((origin - expected_origin).norm(), 1e-12);
   double largest = 0.0;
   for (int j = 0; j <= 600; ++j) {
@@ -139,12 +139,12 @@ TEST(RiserVessel, PitchRaoWithAnOffsetHangOffGivesTheLeverArmMotion) {
   const RiserModel m = buildRiserModel(p);
   ASSERT_TRUE(m.vessel);
   const Vec3 origin = m.vessel->reference;
-  const double omega = 2 * kPiValue / p.wave_period, k = ocean::waveNumber(omega, 100.0, p.gravity);
+  const double omega = 2 * pi / p.wave_period, k = ocean::waveNumber(omega, 100.0, p.gravity);
   double largest_heave = 0.0;
   for (int j = 0; j <= 400; ++j) {
     const double t = 0.1 * j;
-    const double theta = m.sea->ramp(t) * 1.0 * pitch_deg_per_m * kPiValue / 180 *
-                         std::cos(k * origin.x() - omega * t + lag_deg * kPiValue / 180);
+    const double theta = m.sea->ramp(t) * 1.0 * pitch_deg_per_m * pi / 180 *
+                         std::cos(k * origin.x() - omega * t + lag_deg * pi / 180);
     const Vec3 closed(40.0 * std::cos(theta) + 15.0 * std::sin(theta) - 40.0, 0.0,
                       -40.0 * std::sin(theta) + 15.0 * std::cos(theta) - 15.0);
     const Vec3 d = m.topAt(t).position - m.top_mean;
@@ -277,21 +277,21 @@ TEST(RiserVessel, InterpolationInFrequencyAndHeading) {
   const RaoTable t = raoTableFromText(by_omega, spec(), false, false, errors);
   ASSERT_TRUE(errors.empty());
   // Periods must increase down a heading's rows (6.28 after 12.57 is refused); increasing ones are read and reversed.
-  std::string decreasing = std::string(kHeader) + row(0, 4 * kPiValue, a0) + row(0, 2 * kPiValue, a1);
+  std::string decreasing = std::string(kHeader) + row(0, 4 * pi, a0) + row(0, 2 * pi, a1);
   decreasing.replace(decreasing.find("omega"), 5, "period");
   EXPECT_NE(errorsOf(decreasing).find("must be greater than the previous row's"), std::string::npos);
-  const std::string increasing_periods = std::string(kHeader) + row(0, 2 * kPiValue, a1) + row(0, 4 * kPiValue, a0) +
-                                         row(180, 2 * kPiValue, b1) + row(180, 4 * kPiValue, b0);
+  const std::string increasing_periods = std::string(kHeader) + row(0, 2 * pi, a1) + row(0, 4 * pi, a0) +
+                                         row(180, 2 * pi, b1) + row(180, 4 * pi, b0);
   std::string periods = increasing_periods;
   periods.replace(periods.find("omega"), 5, "period");
   const RaoTable tp = raoTableFromText(periods, spec(), false, false, errors);
   ASSERT_TRUE(errors.empty()) << errors.front().message;
-  const double degree = kPiValue / 180;
+  const double degree = pi / 180;
   for (const RaoTable* table : {&t, &tp}) {
     // Halfway in frequency at heading 0: surge 2 m/m, phase 0 (350° and 10° along the shorter arc); heave 3, 20°.
     const RaoValue mid = interpolateRao(*table, 0.0, 0.75);
     EXPECT_NEAR(mid.amplitude[0], 2.0, 1e-12);
-    EXPECT_NEAR(std::remainder(mid.phase_lag[0], 2 * kPiValue), 0.0, 1e-12);
+    EXPECT_NEAR(std::remainder(mid.phase_lag[0], 2 * pi), 0.0, 1e-12);
     EXPECT_NEAR(mid.amplitude[2], 3.0, 1e-12);
     EXPECT_NEAR(mid.phase_lag[2], 20 * degree, 1e-12);
     // Heading 90 (halfway between 0 and 180) at ω = 1: surge (3 + 7)/2, heave (4 + 8)/2 with phase 20°.
@@ -344,7 +344,7 @@ TEST(RiserVessel, AutomaticImplicitStepResolvesTheMeanWavePeriod) {
     m0 += 0.5 * c.amplitude * c.amplitude;
     m1 += 0.5 * c.amplitude * c.amplitude * c.omega;
   }
-  const double mean_period = 2 * kPiValue * m0 / m1;
+  const double mean_period = 2 * pi * m0 / m1;
   EXPECT_NEAR(m.vessel->mean_period, mean_period, 1e-12 * mean_period);
   EXPECT_GT(mean_period, 7.0);  // JONSWAP Tp = 11 s, γ = 3.3: T_m01 ≈ 0.77 Tp
   EXPECT_LT(mean_period, 10.0);

@@ -16,7 +16,7 @@
 namespace maris::riser {
 namespace {
 
-constexpr double kPiValue = std::numbers::pi;
+using std::numbers::pi;
 
 // Default riser (100 m, n = 20: interior segments 5 m) in 100 m of water with a 4 m, 8 s Airy wave along +x and a
 // uniform current U along +x.
@@ -53,7 +53,7 @@ RiserPose fixedVerticalSegment(const RiserModel& m, int i, double top_z, double 
 // where |U+u|(U+u) = |V|V cosh² for U = 0, and (U+u)² for U = 1 m/s (U + u > 0 below 20 m: |u| ≤ 0.44 m/s there),
 // dz = (h + η)/h dz', ∫ cosh k(z'+h) dz' = sinh k(z'+h)/k, ∫ cosh² k(z'+h) dz' = (z'+h)/2 + sinh 2k(z'+h)/(4k).
 double handMorisonForce(const RiserParameters& p, double z_bottom, double z_top, double t, double current) {
-  const double h = p.water_level - p.seabed_level, a = 0.5 * p.wave_height, omega = 2 * kPiValue / p.wave_period;
+  const double h = p.water_level - p.seabed_level, a = 0.5 * p.wave_height, omega = 2 * pi / p.wave_period;
   const double k = ocean::waveNumber(omega, h, p.gravity);
   const double eta = a * std::cos(omega * t);
   const double jacobian = (h + eta) / h;
@@ -63,7 +63,7 @@ double handMorisonForce(const RiserParameters& p, double z_bottom, double z_top,
   const double i2 = jacobian * ((s2 - s1) / 2 + (std::sinh(2 * k * s2) - std::sinh(2 * k * s1)) / (4 * k));
   const double velocity = a * omega / std::sinh(k * h) * std::cos(omega * t);
   const double acceleration = -a * omega * omega / std::sinh(k * h) * std::sin(omega * t);
-  const double area = kPiValue / 4 * p.outer_diameter * p.outer_diameter;
+  const double area = pi / 4 * p.outer_diameter * p.outer_diameter;
   const double drag = 0.5 * p.water_density * p.outer_diameter * p.normal_drag_coefficient *
                       (current * current * (z_top - z_bottom) + 2 * current * velocity * i1 +
                        (current == 0.0 ? std::abs(velocity) : velocity) * velocity * i2);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
+#include <vector>
 
 #include "seismic/fe_drive.hpp"
 #include "seismic/fe_solver.hpp"
@@ -26,6 +28,9 @@ inline SeismicParameters boxParameters(bool water, double cutoff_hz, double half
   p.cutoff_frequency = cutoff_hz;
   return p;
 }
+
+inline double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
+inline double meanOf(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
 
 inline double peakAbs(const std::vector<double>& v) {
   double m = 0.0;

@@ -9,17 +9,12 @@
 
 #include "core/errors.hpp"
 #include "seismic/free_field.hpp"
+#include "free_field_test_setup.hpp"
 
 namespace maris::seismic {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-// The paper's verification material (§3.4): vp 4500, vs 1800, ρ 2700; water 1025 kg/m³, 1450 m/s, 600 m.
-const ElasticMaterial kSeabed{2700.0, 4500.0, 1800.0};
-const WaterLayer kWater{1025.0, 1450.0, 600.0};
-const WaterLayer kNoWater{1025.0, 1450.0, 0.0};
-
-Complex omegaOf(double f_hz) { return Complex(2.0 * std::numbers::pi * f_hz, 0.0); }
+using testing::kDeg, testing::kSeabed, testing::kWater, testing::kNoWater, testing::omegaOf;
 
 // Aki & Richards (2002) eq 5.32, free-surface reflection of an incident P wave: displacement ratios.
 struct FreeSurfaceCoefficients {

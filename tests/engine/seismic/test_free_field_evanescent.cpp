@@ -16,12 +16,7 @@
 namespace maris::seismic {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-const ElasticMaterial kSeabed{2700.0, 4500.0, 1800.0};  // the paper's verification seabed, critical 23.578°
-const WaterLayer kWater{1025.0, 1450.0, 600.0};
-const WaterLayer kNoWater{1025.0, 1450.0, 0.0};
-
-Complex omegaOf(double f_hz) { return Complex(2.0 * std::numbers::pi * f_hz, 0.0); }
+using testing::kDeg, testing::kSeabed, testing::kWater, testing::kNoWater, testing::omegaOf;
 
 // Aki & Richards free-surface coefficients for an incident SV (displacement ratios S̀Ś and S̀Ṕ).
 struct SvCoefficients {
@@ -139,6 +134,7 @@ TEST(FreeFieldEvanescent, SynthesisMatchesFourierQuadratureIncludingThePrecursor
 
 #include "fe_test_support.hpp"
 #include "seismic/fe_mesh.hpp"
+#include "free_field_test_setup.hpp"
 
 namespace maris::seismic {
 namespace {

@@ -7,12 +7,12 @@
 
 #include "seismic/free_field_synthesis.hpp"
 #include "seismic/seismic_inputs.hpp"
+#include "free_field_test_setup.hpp"
 
 namespace maris::seismic {
 namespace {
 
-const ElasticMaterial kSeabed{2700.0, 4500.0, 1800.0};
-const WaterLayer kWater{1025.0, 1450.0, 600.0};
+using testing::kSeabed, testing::kWater;
 constexpr double kDt = 0.001;        // [s]
 constexpr double kPulseStart = 1.0;  // [s] the incident pulse leaves zero at the origin here
 constexpr double kPulseLength = 0.2; // [s] the paper's pulse

@@ -11,8 +11,7 @@
 namespace maris::seismic {
 namespace {
 
-double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
-double meanOf(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
+using testing::maxOf, testing::meanOf;
 
 TEST(ReefConvergence, HalvingTheElementSizeChangesTheFlatAmplificationByLessThanTwoPercent) {
   // Placeholder reef with water, Ricker 0.5 Hz P at 30° (content up to ≈ 1.3 Hz: ≥ 12 cells per

@@ -13,8 +13,7 @@
 namespace maris::seismic {
 namespace {
 
-double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
-double meanOf(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
+using testing::maxOf, testing::meanOf;
 
 PeakRatios reefRatios(const std::string& wave, double angle_deg) {
   SeismicParameters p;  // placeholder reef with water

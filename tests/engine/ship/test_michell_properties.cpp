@@ -7,12 +7,13 @@
 #include "ship/hull_form.hpp"
 #include "ship/michell_quadrature.hpp"
 #include "ship/michell_resistance.hpp"
+#include "michell_test_water.hpp"
 
 using namespace maris::ship;
 
 namespace {
 
-constexpr double kG = 9.81, kRho = 1000.0;
+using maris::ship::test_data::kG, maris::ship::test_data::kRho;
 
 WaveResistance onGrid(const HullGrid& grid, double speed, double rtol = 1e-6) {
   GridKochin k(grid, false);

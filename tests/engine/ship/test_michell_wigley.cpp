@@ -6,13 +6,14 @@
 
 #include "ship/hull_form.hpp"
 #include "ship/michell_resistance.hpp"
+#include "michell_test_water.hpp"
 
 using namespace maris::ship;
 
 namespace {
 
 constexpr double kL = 1.0, kB = 0.1, kT = 0.0625;  // [m] B/L = 0.1, T/L = 0.0625
-constexpr double kG = 9.81, kRho = 1000.0;
+using maris::ship::test_data::kG, maris::ship::test_data::kRho;
 constexpr double kWettedSurface = 0.1487906;       // [m²] S/L² of the Wigley hull (exact surface integral)
 
 double speedAt(double fn) { return fn * std::sqrt(kG * kL); }

@@ -5,16 +5,13 @@
 
 namespace maris::study::test {
 
-namespace {
-
+// Outside the anonymous namespace: its TEST_F classes have external linkage (GCC -Wsubobject-linkage).
 class StudyCases : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!findBuiltin("ship_default")) GTEST_SKIP() << "needs the ship scene";
   }
 };
-
-}  // namespace
 
 TEST_F(StudyCases, CaseIdsAndRanges) {
   EXPECT_EQ(caseId(0, 12), "0001");

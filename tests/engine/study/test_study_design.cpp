@@ -8,9 +8,8 @@
 
 namespace maris::study::test {
 
-namespace {
-
 // The ship scene's built-in scenario is the base: fields of every kind (number, integer, choice).
+// Outside the anonymous namespace: its TEST_F classes have external linkage (GCC -Wsubobject-linkage).
 class StudyDesign : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -18,8 +17,6 @@ class StudyDesign : public ::testing::Test {
   }
   static Study read(const Json& document) { return studyFromJson(document, std::filesystem::temp_directory_path()); }
 };
-
-}  // namespace
 
 TEST_F(StudyDesign, GridIsTheFullFactorialWithTheLastParameterFastest) {
   const Study study = read(studyOver("ship_default", "grid",

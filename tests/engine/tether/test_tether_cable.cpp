@@ -5,11 +5,12 @@
 #include <cmath>
 
 #include "tether/tether_cable.hpp"
+#include "tether_test_constants.hpp"
 
 namespace maris::tether {
 namespace {
 
-constexpr double kL = 1.5;  // [m]
+using test::kL;
 
 double maxVerticalDeviation(double span, double rise, int n) {
   const StaticChain chain = staticChainProfile(span, rise, kL, n);

@@ -7,11 +7,12 @@
 #include <vector>
 
 #include "tether/tether_catenary.hpp"
+#include "tether_test_constants.hpp"
 
 namespace maris::tether {
 namespace {
 
-constexpr double kL = 1.5;  // [m] tether length of the paper (simulation and experiment)
+using test::kL;
 
 struct GridPoint {
   double sag, rise;

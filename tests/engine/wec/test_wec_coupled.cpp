@@ -25,20 +25,8 @@ using namespace maris::wec;
 namespace fs = std::filesystem;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using wec_test::kDeg, wec_test::num, wec_test::scratch;
 constexpr double kCoupling = 0.3;  // c
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("maris_wec_coupled_" + std::to_string(::getpid())) / name;
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, " %.17g", v);
-  return buf;
-}
 
 // One frequency row of a multi-body file: A, B (2N×2N over surge/heave of every body) and X (2N, e^{+iωt}).
 struct BodyRow {

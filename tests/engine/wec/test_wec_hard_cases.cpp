@@ -17,7 +17,7 @@
 using namespace maris::wec;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using wec_test::kDeg;
 // |TD/FD − 1| of the pitch RAO and the phase difference at ω.
 void expectTdMatchesFd(const WecModel& m, double w, double amp_tol, double phase_tol_deg,
                        const TimeDomainOptions& o = {}) {

@@ -11,13 +11,12 @@
 #include "wec/wec_model.hpp"
 #include "wec/wec_wamit.hpp"
 #include "source_tree.hpp"
+#include "wec_test_models.hpp"
 
 using namespace maris::wec;
 
 namespace {
-constexpr double kRho = 1025.0;
-constexpr double kWamitG = 9.80665;  // gravity of the WAMIT run
-const std::string kSphere = maris::test::sourceDir() + "/tests/engine/wec/data/sphere";
+using wec_test::kRho, wec_test::kWamitG, wec_test::kSphere;
 double volume(double a) { return 2.0 / 3.0 * std::numbers::pi * a * a * a; }
 }  // namespace
 

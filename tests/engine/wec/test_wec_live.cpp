@@ -10,12 +10,13 @@
 #include "catalog.hpp"
 #include "core/errors.hpp"
 #include "engine/results_identity.hpp"
+#include "wec_test_models.hpp"
 
 using namespace maris;
 
 namespace {
 
-const SceneDefinition& scene() { return requireScene("wec"); }
+using wec_test::scene;
 
 // A built-in scenario made coarse: 20 s of simulated time, 24 frequencies, few check points and frames.
 Scenario coarse(const std::string& id) {

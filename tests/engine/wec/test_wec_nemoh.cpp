@@ -25,22 +25,7 @@ using namespace maris::wec;
 namespace fs = std::filesystem;
 
 namespace {
-constexpr double kRho = 1025.0;
-constexpr double kWamitG = 9.80665;  // gravity of the WAMIT run
-const std::string kSphere = maris::test::sourceDir() + "/tests/engine/wec/data/sphere";
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, " %.17g", v);
-  return buf;
-}
-
-// A scratch directory per test process.
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("maris_wec_nemoh_" + std::to_string(::getpid())) / name;
-  fs::create_directories(dir);
-  return dir;
-}
+using wec_test::kRho, wec_test::kWamitG, wec_test::kSphere, wec_test::num, wec_test::scratch;
 
 // Writes RadiationCoefficients.tec and ExcitationForce.tec in Nemoh's layout: 6 radiating-DoF zones with (A, B)
 // pairs over 6 force DoFs, one heading zone with (|F|, angle) pairs, e^{−iωt} phases. Off-diagonal and unused

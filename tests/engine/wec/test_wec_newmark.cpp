@@ -16,7 +16,7 @@
 using namespace maris::wec;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using wec_test::kDeg;
 using wec_test::defaultModel;
 TimeDomainOptions newmark(double h, double duration) {
   TimeDomainOptions o;

@@ -6,11 +6,13 @@
 
 #include "wec/wec_hydro.hpp"
 #include "wec/wec_radiation.hpp"
+#include "wec_test_models.hpp"
 
 using namespace maris::wec;
 
 namespace {
-constexpr double kRho = 1025.0, kG = 9.81, kA = 3.0;
+using wec_test::kRho;
+constexpr double kG = 9.81, kA = 3.0;
 const HemisphereHydro& hemisphere() {
   static const HemisphereHydro h(kA, kRho, kG);
   return h;

@@ -6,11 +6,12 @@
 
 #include "catalog.hpp"
 #include "core/errors.hpp"
+#include "wec_test_models.hpp"
 
 using namespace maris;
 
 namespace {
-const SceneDefinition& scene() { return requireScene("wec"); }
+using wec_test::scene;
 Scenario builtin(const std::string& id) {
   const BuiltinScenario* b = findBuiltin(id);
   EXPECT_NE(b, nullptr) << id;

@@ -13,7 +13,7 @@
 using namespace maris::wec;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using wec_test::kDeg;
 using wec_test::defaultModel;
 IncidentWaves calm() {
   IncidentWaves w;

@@ -2,12 +2,42 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <numbers>
+#include <string>
 
+#include <unistd.h>
+
+#include "catalog.hpp"
+#include "source_tree.hpp"
 #include "wec/wec_model.hpp"
 #include "wec/wec_parameters.hpp"
 
 namespace wec_test {
+
+inline constexpr double kDeg = std::numbers::pi / 180.0;
+inline constexpr double kRho = 1025.0;     // [kg/m³] sea water
+inline constexpr double kWamitG = 9.80665; // [m/s²] gravity of the WAMIT run of the sphere
+// The WAMIT files of a floating sphere (tests/engine/wec/data).
+inline const std::string kSphere = maris::test::sourceDir() + "/tests/engine/wec/data/sphere";
+
+inline const maris::SceneDefinition& scene() { return maris::requireScene("wec"); }
+
+// A scratch folder per test process (CTest runs every test case in a process of its own).
+inline std::filesystem::path scratch(const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("maris_wec_test_" + std::to_string(::getpid())) / name;
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// A number as a field of a hydrodynamic data file: a space, then all 17 significant digits.
+inline std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, " %.17g", v);
+  return buf;
+}
 
 // The default single float (L = 10 m, θ0 = −30°, a = 3 m, B_PTO = 3.52e6 N·m·s) with radiation kernels of
 // 40 s sampled at `dt`.
