@@ -92,11 +92,13 @@ struct StoppedOrphans {
   }
 };
 
-// Runs `study_file` into `out` with two jobs, stops the study and its cases once both cases hold their run-folder
-// locks, and kills the study alone.
-void stopStudyLeavingOrphans(const fs::path& study_file, const fs::path& out, const fs::path& dir,
-                             StoppedOrphans& stopped) {
-  const fs::path cases = out / "cases";
+// Runs the study `dir`/slow.json (written here: two cases of 4 and 5 s of dynamics, about a second of work each)
+// into `dir`/out with two jobs, stops the study and its cases once both cases hold their run-folder locks, and kills
+// the study alone.
+void stopStudyLeavingOrphans(const fs::path& dir, StoppedOrphans& stopped) {
+  writeText(dir / "slow.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
+    "grid": {"solver.end_time": [4, 5]}})");
+  const fs::path study_file = dir / "slow.json", out = dir / "out", cases = out / "cases";
   // The orphans are held stopped. Were they re-parented to init, their process group would be orphaned with
   // stopped members, and the kernel would send it SIGHUP and SIGCONT (POSIX), killing them. This test process
   // adopts them instead (a subreaper in another process group of the same session), so the group stays
@@ -154,12 +156,9 @@ void reapAdoptedOrphans() {
 }
 
 TEST_F(CliStudyOrphans, ResumeWaitsForACaseProcessThatOutlivedItsStudyAndDoesNotRunItAgain) {
-  // Two cases of 4 and 5 s of dynamics (about a second of work each), both running at once.
-  writeText(dir_ / "slow.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
-    "grid": {"solver.end_time": [4, 5]}})");
-  const fs::path out = dir_ / "out", cases = out / "cases";
   StoppedOrphans stopped;
-  ASSERT_NO_FATAL_FAILURE(stopStudyLeavingOrphans(dir_ / "slow.json", out, dir_, stopped));
+  ASSERT_NO_FATAL_FAILURE(stopStudyLeavingOrphans(dir_, stopped));
+  const fs::path out = dir_ / "out", cases = out / "cases";
   const auto& orphans = stopped.orphans;
   const pid_t study = stopped.group;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
@@ -200,11 +199,9 @@ TEST_F(CliStudyOrphans, ResumeWaitsForACaseProcessThatOutlivedItsStudyAndDoesNot
 // and that process is left alone (it is not the resumed study's); when it later completes the case, the next
 // --resume keeps its results instead of running the case again.
 TEST_F(CliStudyOrphans, ResumeWithATimeoutRecordsACaseLockedElsewhereTooLongAndLeavesItsProcessAlone) {
-  writeText(dir_ / "slow.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
-    "grid": {"solver.end_time": [4, 5]}})");
-  const fs::path out = dir_ / "out", cases = out / "cases";
   StoppedOrphans stopped;
-  ASSERT_NO_FATAL_FAILURE(stopStudyLeavingOrphans(dir_ / "slow.json", out, dir_, stopped));
+  ASSERT_NO_FATAL_FAILURE(stopStudyLeavingOrphans(dir_, stopped));
+  const fs::path out = dir_ / "out", cases = out / "cases";
   // Both cases took their locks before the study was stopped, and a second of work is left in each.
   ASSERT_EQ(stopped.orphans.size(), 2u);
 
