@@ -20,6 +20,7 @@
 #include <algorithm>
 
 #include "browser/scenario_browser.hpp"
+#include "counted.hpp"
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
 #include "plots/display_units.hpp"
@@ -319,11 +320,12 @@ void MainWindow::updateRunEnabled() {
   if (document_->isEmpty())
     validity_->setText(tr("No scenario"));
   else if (valid && !document_->warnings().empty() && !running)
-    validity_->setText(tr("Ready, %n plausibility warning(s)", nullptr, static_cast<int>(document_->warnings().size())));
+    validity_->setText(tr("Ready, %1").arg(counted(static_cast<int>(document_->warnings().size()),
+                                                           tr("plausibility warning"), tr("plausibility warnings"))));
   else if (valid)
     validity_->setText(running ? tr("Running…") : tr("Ready"));
   else
-    validity_->setText(tr("%n invalid value(s)", nullptr, problems));
+    validity_->setText(counted(problems, tr("invalid value"), tr("invalid values")));
   const bool doubtful = valid && !document_->warnings().empty();
   validity_->setStyleSheet(!valid && !document_->isEmpty() ? QStringLiteral("color: #d62728;")
                            : doubtful                     ? QStringLiteral("color: #a86400;")

@@ -9,6 +9,7 @@
 #include <QStandardPaths>
 
 #include "browser/scenario_browser.hpp"
+#include "counted.hpp"
 #include "document/scenario_document.hpp"
 #include "main_window.hpp"
 #include "plots/plot_export.hpp"
@@ -52,8 +53,9 @@ bool MainWindow::loadScenario(const Scenario& scenario, const QString& path, con
   updateRunEnabled();
   const QString what = path.isEmpty() ? example_id : path;
   if (!document_->isValid())
-    run_panel_->log(RunPanel::Level::Warning, tr("Opened %1 with %n invalid value(s); see the parameter editor.", nullptr,
-                                                 static_cast<int>(document_->errors().size())).arg(what));
+    run_panel_->log(RunPanel::Level::Warning, tr("Opened %1 with %2; see the parameter editor.")
+                                                 .arg(what, counted(static_cast<int>(document_->errors().size()),
+                                                                    tr("invalid value"), tr("invalid values"))));
   status(tr("Opened %1").arg(what));
   return true;
 }
@@ -129,8 +131,9 @@ bool MainWindow::writeReport(const QString& dir) {
   try {
     const QImage image = view_->renderImage(1600, 1000);
     const auto files = writeReportFolder(dir.toStdString(), record->scenario, *record->results, record->started_at, image);
-    run_panel_->log(RunPanel::Level::Info, tr("Report of %1 written to %2 (%n file(s))", nullptr,
-                                              static_cast<int>(files.size())).arg(record->label, dir));
+    run_panel_->log(RunPanel::Level::Info, tr("Report of %1 written to %2 (%3)")
+                                              .arg(record->label, dir,
+                                                   counted(static_cast<int>(files.size()), tr("file"), tr("files"))));
     status(tr("Report written to %1").arg(dir));
     return true;
   } catch (const std::exception& e) {

@@ -84,6 +84,9 @@ void addFatigueResults(const std::vector<JointFatigue>& joints, const fatigue::S
   out.addScalar("min_fatigue_life", worst->life, "yr",
                 "Shortest fatigue life over the joints (damage over " + std::to_string(window) +
                     " s scaled to a year; capped at 1e12 yr)", "Minimum fatigue life");
+  // Not capped like the life: a scatter-diagram study adds these, weighted by each sea state's probability.
+  out.addScalar("max_fatigue_damage_per_year", worst->damage_per_year, "1/yr",
+                "Annual fatigue damage at the critical hot spot (this sea state held all year)", "Max. damage per year");
   out.addScalar("fatigue_hot_spot_arc_length", worst->arc_length, "m", "Arc length of the critical hot spot", "Hot spot s");
   out.addScalar("fatigue_hot_spot_angle", 45.0 * worst->worst_point, "deg",
                 "Angle of the critical hot spot around the circumference, from the segment's y' axis towards z'", "Hot-spot angle");

@@ -85,7 +85,7 @@ std::vector<StudyCase> expandStudy(const Study& study) {
     k.scenario.name = (study.name.empty() ? study.base.name : study.name) + ", case " + k.id;
     std::string description = "Case " + k.id + " of " + std::to_string(count) + ":";
     for (std::size_t p = 0; p < study.parameters.size(); ++p) {
-      setAtPath(k.scenario.parameters, study.parameters[p].path, k.values[p]);
+      detail::setParameter(k.scenario.parameters, study.parameters[p].path, k.values[p]);
       description += (p ? ", " : " ") + study.parameters[p].path + " = " + jsonSnippet(k.values[p]);
     }
     k.scenario.description = description + ". " + study.base.description;

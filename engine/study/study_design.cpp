@@ -156,9 +156,13 @@ std::uint64_t uniformBelow(std::mt19937_64& engine, std::uint64_t n) {
 
 }  // namespace
 
-const ParamSpec* lookupParameter(const SceneDefinition& scene, const std::string& raw, const std::string& where,
-                                 std::vector<FieldError>& errors, bool whole_tables) {
+std::optional<ParamSpec> lookupParameter(const SceneDefinition& scene, const Json& base, const std::string& raw,
+                                         const std::string& where, std::vector<FieldError>& errors,
+                                         bool whole_tables) {
   const std::string path = raw.rfind("parameters.", 0) == 0 ? raw.substr(11) : raw;
+  bool is_cell = false;
+  auto cell = lookupTableCell(scene, base, path, where, errors, is_cell);
+  if (is_cell) return cell;
   const ParamSpec* spec = scene.schema.find(path);
   if (!spec) {
     std::vector<std::string> paths;
@@ -167,13 +171,15 @@ const ParamSpec* lookupParameter(const SceneDefinition& scene, const std::string
     errors.push_back({where, "", "is not a parameter of scene '" + scene.name + "'" +
                                      (guess.empty() ? std::string() : "; did you mean '" + guess + "'?") +
                                      " (see `maris-cli schema " + scene.name + "`)"});
-    return nullptr;
+    return std::nullopt;
   }
   if (spec->kind == ParamKind::Table && !whole_tables) {
-    errors.push_back({where, "", "is a table; a design varies single values (set the whole table in \"set\")"});
-    return nullptr;
+    errors.push_back({where, "", "is a table; a design varies single values, such as one cell (" + spec->path +
+                                     "[0]." + (spec->columns.empty() ? std::string("COLUMN") : spec->columns[0].key()) +
+                                     "), or \"set\" replaces the whole table"});
+    return std::nullopt;
   }
-  return spec;
+  return *spec;
 }
 
 StudyParameter studyParameter(const ParamSpec& spec) {
@@ -199,7 +205,7 @@ void readGrid(const Json& grid, const SceneDefinition& scene, Study& study, std:
   }
   for (auto it = grid.begin(); it != grid.end(); ++it) {
     const std::string where = "grid." + it.key();
-    const ParamSpec* spec = lookupParameter(scene, it.key(), where, errors);
+    const auto spec = lookupParameter(scene, study.base.parameters, it.key(), where, errors);
     if (!spec) continue;
     std::vector<Json> values;
     if (it->is_array()) {
@@ -243,7 +249,7 @@ void readLatinHypercube(const Json& design, const SceneDefinition& scene, Study&
   }
   for (auto it = bounds->begin(); it != bounds->end(); ++it) {
     const std::string at = where + ".bounds." + it.key();
-    const ParamSpec* spec = lookupParameter(scene, it.key(), at, errors);
+    const auto spec = lookupParameter(scene, study.base.parameters, it.key(), at, errors);
     if (!spec) continue;
     if (!isNumeric(spec->kind)) {
       errors.push_back({at, "", "is not a number parameter; a Latin hypercube samples numbers"});

@@ -1,6 +1,7 @@
 // Inside the study library: reading and expanding the three designs (grid, table, Latin hypercube).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,18 @@
 
 namespace maris::study::detail {
 
-// The parameter at `raw` ("geometry.length" or "parameters.geometry.length") of `scene`, or nullptr after
+// The parameter at `raw` ("geometry.length" or "parameters.geometry.length") of `scene`, or nothing after
 // adding an error at `where` (with a did-you-mean). A table field is refused unless `whole_tables` (a
-// study's "set" may replace a table; a design varies single values).
-const ParamSpec* lookupParameter(const SceneDefinition& scene, const std::string& raw, const std::string& where,
-                                 std::vector<FieldError>& errors, bool whole_tables = false);
+// study's "set" may replace a table; a design varies single values). A cell of a table, "current.profile[1].speed"
+// (rows from 0), is its column's spec with that path as `path`; its row must be in `base` (the base's parameters).
+std::optional<ParamSpec> lookupParameter(const SceneDefinition& scene, const Json& base, const std::string& raw,
+                                         const std::string& where, std::vector<FieldError>& errors,
+                                         bool whole_tables = false);
+// The cell part of lookupParameter (study_cell_paths.cpp): `is_cell` tells whether `path` names a cell at all.
+std::optional<ParamSpec> lookupTableCell(const SceneDefinition& scene, const Json& base, const std::string& path,
+                                         const std::string& where, std::vector<FieldError>& errors, bool& is_cell);
+// Writes `value` at `path` of a scenario's parameters: a dotted path, or a cell whose row lookupParameter checked.
+void setParameter(Json& parameters, const std::string& path, Json value);
 
 // The parameter of `spec` as a study varies it.
 StudyParameter studyParameter(const ParamSpec& spec);

@@ -93,8 +93,8 @@ void applySet(const Json& set, const SceneDefinition& scene, Study& study, std::
   }
   for (auto it = set.begin(); it != set.end(); ++it) {
     const std::string where = "set." + it.key();
-    const ParamSpec* spec = detail::lookupParameter(scene, it.key(), where, errors, true);
-    if (spec) setAtPath(study.base.parameters, spec->path, it.value());
+    const auto spec = detail::lookupParameter(scene, study.base.parameters, it.key(), where, errors, true);
+    if (spec) detail::setParameter(study.base.parameters, spec->path, it.value());
   }
 }
 

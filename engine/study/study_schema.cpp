@@ -25,7 +25,8 @@ Json rangeSchema(bool with_count) {
 Json studySchemaJson() {
   const Json parameter_map_note =
       "keys are parameter paths of the base scenario's scene (see `maris-cli schema SCENE`), with or without "
-      "the \"parameters.\" prefix; they are taken in alphabetical order";
+      "the \"parameters.\" prefix, or one cell of a table field, TABLE[ROW].COLUMN with rows from 0 "
+      "(\"current.profile[1].speed\"; the row must be in the base); they are taken in alphabetical order";
   Json grid = {{"type", "object"},
                {"minProperties", 1},
                {"description", "full-factorial grid: every combination of the values; the last parameter (in "
@@ -93,7 +94,8 @@ std::string describeStudySchema() {
   table            "cases.csv": header of parameter paths, optional units row, one row per case
   latin_hypercube  {"count": n, "seed": s, "bounds": {"path": [low, high] | {"from", "to", "spacing"}, ...}}
   results          ["scalar", ...]: what study.csv collects (optional; default every scalar)
-Paths are parameter paths of the base's scene (`maris-cli schema SCENE`). Relative file paths, also data
+Paths are parameter paths of the base's scene (`maris-cli schema SCENE`), or one cell of a table field,
+TABLE[ROW].COLUMN with rows from 0 ("current.profile[1].speed"). Relative file paths, also data
 files in the base and in the values, resolve against the study file's folder. At most )" +
          std::to_string(StudyLimits::kCases) + " cases.\n";
 }

@@ -97,7 +97,7 @@ void readTable(const Json& table, const SceneDefinition& scene, Study& study, st
   bool all_numeric = true;
   for (std::size_t c = 0; c < names.size(); ++c) {
     const std::string where = "table column " + std::to_string(c + 1) + " (" + echoText(names[c]) + ")";
-    const ParamSpec* spec = lookupParameter(scene, names[c], where, errors);
+    const auto spec = lookupParameter(scene, study.base.parameters, names[c], where, errors);
     if (!spec) continue;
     for (const auto& p : study.parameters)
       if (p.path == spec->path) errors.push_back({where, "", "varies " + spec->path + " a second time"});

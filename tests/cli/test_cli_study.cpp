@@ -264,6 +264,31 @@ TEST_F(CliStudy, FailedAndTimedOutCasesAreRecordedAndTheStudyGoesOn) {
   EXPECT_TRUE(contains(resume.err, "case 0002 differs")) << resume.err;
 }
 
+// A fatigue scatter diagram is a table study over sea states: study.csv holds each case's annual damage at its
+// critical hot spot, the quantity whose probability-weighted sum is the year's damage (docs/studies.md).
+TEST_F(CliStudy, AFatigueScatterStudyCollectsEachSeaStatesAnnualDamage) {
+  if (!findBuiltin("riser_jonswap_sea")) GTEST_SKIP() << "needs the riser sea scenario";
+  writeText(dir_ / "seas.csv", "waves.significant_height,waves.peak_period\nm,s\n2.0,8.0\n6.0,11.0\n");
+  // 20 s of sea counted after the 20 s ramp: enough cycles for the comparison below, short under the sanitizers.
+  writeText(dir_ / "scatter.json", R"({"format": "maris-study/1", "base": "riser_jonswap_sea",
+    "set": {"solver.end_time": 40}, "table": "seas.csv", "results": ["max_fatigue_damage_per_year", "min_fatigue_life"]})");
+  const auto run = runCli({"study", "run", "scatter.json", "--out", "scatter", "--jobs", "2", "--no-plots"}, dir_.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto rows = csvRows(slurp(dir_ / "scatter" / "study.csv"));
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(cell(rows, 1, "max_fatigue_damage_per_year"), "1/yr");
+  double damage[2] = {0, 0};
+  for (std::size_t r = 2; r < 4; ++r) {
+    damage[r - 2] = std::stod(cell(rows, r, "max_fatigue_damage_per_year"));
+    const double life = std::stod(cell(rows, r, "min_fatigue_life"));
+    EXPECT_GT(damage[r - 2], 0.0);
+    EXPECT_NEAR(damage[r - 2] * life, 1.0, 1e-12) << r;  // the same hot spot: life = 1 / damage per year (uncapped)
+  }
+  // Miner damage grows as a power (3 to 5, the S-N slopes) of the stress range, which grows with Hs: three times
+  // the wave height gives far more than ten times the damage.
+  EXPECT_GT(damage[1], 10.0 * damage[0]);
+}
+
 // The examples in resources/studies are valid wherever they are checked from (their table and base resolve
 // against their folder); the riser grid runs and draws a heat map per result.
 TEST_F(CliStudy, TheExampleStudiesAreValidAndTheGridRuns) {

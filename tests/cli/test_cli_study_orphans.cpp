@@ -79,26 +79,35 @@ TEST_F(CliStudyOrphans, OldVersionStagingFoldersAreRemovedByResumeAndCollectNotB
   EXPECT_FALSE(fs::exists(cases / ".0004.partial-6"));
 }
 
-// Resumes the group `group` (stopped) when the test ends, however it ends: its processes are never left stopped.
-struct ContinueOnExit {
-  pid_t group;
-  ~ContinueOnExit() { ::kill(-group, SIGCONT); }
+// A study of two slow cases killed alone while its case processes live on, held stopped: the orphans of a study
+// that the out-of-memory killer ended. When it goes out of scope, the orphans are continued, however the test ended.
+struct StoppedOrphans {
+  pid_t group = 0;                   // the killed study's process group, which holds its case processes
+  std::vector<std::string> orphans;  // the cases whose run-folder lock an orphaned case process holds
+  StoppedOrphans() = default;
+  StoppedOrphans(const StoppedOrphans&) = delete;
+  StoppedOrphans& operator=(const StoppedOrphans&) = delete;
+  ~StoppedOrphans() {
+    if (group > 0) ::kill(-group, SIGCONT);
+  }
 };
 
-TEST_F(CliStudyOrphans, ResumeWaitsForACaseProcessThatOutlivedItsStudyAndDoesNotRunItAgain) {
-  // Two cases of 4 and 5 s of dynamics (about a second of work each), both running at once.
-  writeText(dir_ / "slow.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
+// Runs the study `dir`/slow.json (written here: two cases of 4 and 5 s of dynamics, about a second of work each)
+// into `dir`/out with two jobs, stops the study and its cases once both cases hold their run-folder locks, and kills
+// the study alone.
+void stopStudyLeavingOrphans(const fs::path& dir, StoppedOrphans& stopped) {
+  writeText(dir / "slow.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
     "grid": {"solver.end_time": [4, 5]}})");
-  const fs::path out = dir_ / "out", cases = out / "cases";
-  // The orphans are held stopped below. Were they re-parented to init, their process group would be orphaned
-  // with stopped members, and the kernel would send it SIGHUP and SIGCONT (POSIX), killing them. This test
-  // process adopts them instead (a subreaper in another process group of the same session), so the group stays
+  const fs::path study_file = dir / "slow.json", out = dir / "out", cases = out / "cases";
+  // The orphans are held stopped. Were they re-parented to init, their process group would be orphaned with
+  // stopped members, and the kernel would send it SIGHUP and SIGCONT (POSIX), killing them. This test process
+  // adopts them instead (a subreaper in another process group of the same session), so the group stays
   // unorphaned, as it does for case processes that are running, not stopped, when their study is killed.
   ASSERT_EQ(::prctl(PR_SET_CHILD_SUBREAPER, 1), 0);
-  const pid_t study = startCli({"study", "run", (dir_ / "slow.json").string(), "--out", out.string(), "--jobs", "2",
-                                "--no-plots"}, dir_, true);
+  const pid_t study =
+      startCli({"study", "run", study_file.string(), "--out", out.string(), "--jobs", "2", "--no-plots"}, dir, true);
   ASSERT_GT(study, 0);
-  const ContinueOnExit continue_on_exit{study};
+  stopped.group = study;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (!(runFolderBusy(cases / "0001") && runFolderBusy(cases / "0002")) &&
          std::chrono::steady_clock::now() < deadline)
@@ -110,23 +119,57 @@ TEST_F(CliStudyOrphans, ResumeWaitsForACaseProcessThatOutlivedItsStudyAndDoesNot
   int status = 0;
   ::waitpid(study, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status));
-  std::vector<std::string> orphans;
   for (const std::string id : {"0001", "0002"})
-    if (runFolderBusy(cases / id)) orphans.push_back(id);
-  ASSERT_FALSE(orphans.empty()) << "both cases ended before the study was stopped";
+    if (runFolderBusy(cases / id)) stopped.orphans.push_back(id);
+  ASSERT_FALSE(stopped.orphans.empty()) << "both cases ended before the study was stopped";
   ASSERT_TRUE(completeCases(cases).empty());
+}
+
+// True when the resumed study's messages (err.txt in `dir`) say it found every orphaned case locked.
+bool notedEveryOrphan(const fs::path& dir, const std::vector<std::string>& orphans) {
+  const std::string err = slurp(dir / "err.txt");
+  for (const auto& id : orphans)
+    if (!contains(err, "case " + id + " is being run by another process")) return false;
+  return true;
+}
+
+// The exit code of `pid` (a process group's leader, started by startCli), or -1 when it has not ended within
+// `limit_s`; then its group is killed, so a test that fails does not hang.
+int exitCodeWithin(pid_t pid, double limit_s) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit_s);
+  int status = 0;
+  while (::waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() >= deadline) {
+      ::kill(-pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// Reaps the adopted orphans that have ended.
+void reapAdoptedOrphans() {
+  while (::waitpid(-1, nullptr, WNOHANG) > 0) {
+  }
+}
+
+TEST_F(CliStudyOrphans, ResumeWaitsForACaseProcessThatOutlivedItsStudyAndDoesNotRunItAgain) {
+  StoppedOrphans stopped;
+  ASSERT_NO_FATAL_FAILURE(stopStudyLeavingOrphans(dir_, stopped));
+  const fs::path out = dir_ / "out", cases = out / "cases";
+  const auto& orphans = stopped.orphans;
+  const pid_t study = stopped.group;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  int status = 0;
 
   // --resume while the orphans are stopped: it must wait for them, not fail them nor run them beside them.
   fs::create_directories(dir_ / "resume");
   const pid_t resume = startCli({"study", "run", (dir_ / "slow.json").string(), "--out", out.string(), "--resume",
                                  "--jobs", "2", "--no-plots"}, dir_ / "resume", true);
   ASSERT_GT(resume, 0);
-  const auto all_noted = [&] {
-    const std::string err = slurp(dir_ / "resume" / "err.txt");
-    for (const auto& id : orphans)
-      if (!contains(err, "case " + id + " is being run by another process")) return false;
-    return true;
-  };
+  const auto all_noted = [&] { return notedEveryOrphan(dir_ / "resume", orphans); };
   while (!all_noted() && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_TRUE(all_noted()) << slurp(dir_ / "resume" / "err.txt");
@@ -149,8 +192,59 @@ TEST_F(CliStudyOrphans, ResumeWaitsForACaseProcessThatOutlivedItsStudyAndDoesNot
   }
   const Json manifest = Json::parse(slurp(out / "study.json"));
   EXPECT_EQ(manifest["collected"]["ok"], 2);
-  while (::waitpid(-1, nullptr, WNOHANG) > 0) {  // the adopted orphans, ended by now
+  reapAdoptedOrphans();  // ended by now
+}
+
+// --resume --timeout S: a case that an orphaned case process still holds after S seconds is recorded as timed out,
+// and that process is left alone (it is not the resumed study's); when it later completes the case, the next
+// --resume keeps its results instead of running the case again.
+TEST_F(CliStudyOrphans, ResumeWithATimeoutRecordsACaseLockedElsewhereTooLongAndLeavesItsProcessAlone) {
+  StoppedOrphans stopped;
+  ASSERT_NO_FATAL_FAILURE(stopStudyLeavingOrphans(dir_, stopped));
+  const fs::path out = dir_ / "out", cases = out / "cases";
+  // Both cases took their locks before the study was stopped, and a second of work is left in each.
+  ASSERT_EQ(stopped.orphans.size(), 2u);
+
+  // Without the timeout it would wait for the stopped orphans for ever; with it, it ends after about 1 s.
+  fs::create_directories(dir_ / "resume");
+  const pid_t resume = startCli({"study", "run", (dir_ / "slow.json").string(), "--out", out.string(), "--resume",
+                                 "--jobs", "2", "--timeout", "1", "--no-plots"}, dir_ / "resume", true);
+  ASSERT_GT(resume, 0);
+  const int exit_code = exitCodeWithin(resume, 60.0);
+  const std::string err = slurp(dir_ / "resume" / "err.txt");
+  ASSERT_NE(exit_code, -1) << "--resume --timeout 1 still waited after 60 s: " << err;
+  EXPECT_EQ(exit_code, 3) << err;  // the study's code for cases that did not succeed
+  EXPECT_TRUE(notedEveryOrphan(dir_ / "resume", stopped.orphans)) << err;
+  for (const std::string id : {"0001", "0002"}) {
+    const std::string outcome = slurp(cases / (id + ".outcome.json"));
+    EXPECT_TRUE(contains(outcome, "\"timeout\"")) << id << ": " << outcome;
+    EXPECT_TRUE(contains(outcome, "kept the case's run folder locked for longer than the timeout of 1 s"))
+        << id << ": " << outcome;
+    // The orphan was neither stopped nor run beside: it still holds the lock, and nothing was written.
+    EXPECT_TRUE(runFolderBusy(cases / id)) << id;
   }
+  EXPECT_TRUE(completeCases(cases).empty());
+  const Json manifest = Json::parse(slurp(out / "study.json"));
+  EXPECT_EQ(manifest["collected"]["timeout"], 2);
+  EXPECT_EQ(manifest["collected"]["ok"], 0);
+  EXPECT_TRUE(contains(slurp(out / "study.csv"), "\n0001,timeout,")) << slurp(out / "study.csv");
+
+  // The orphans go on, complete their cases and end.
+  ::kill(-stopped.group, SIGCONT);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while ((runFolderBusy(cases / "0001") || runFolderBusy(cases / "0002")) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  reapAdoptedOrphans();
+  const auto completed = completeCases(cases);
+  ASSERT_EQ(completed.size(), 2u);
+
+  // The next --resume keeps both (no case runs again) and the study succeeds.
+  const auto again = runCli({"study", "run", (dir_ / "slow.json").string(), "--out", out.string(), "--resume",
+                             "--timeout", "1", "--no-plots"}, (dir_ / "resume").string());
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(completeCases(cases), completed);
+  EXPECT_EQ(Json::parse(slurp(out / "study.json"))["collected"]["ok"], 2);
 }
 
 }  // namespace

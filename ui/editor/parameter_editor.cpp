@@ -19,6 +19,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include "counted.hpp"
 #include "document/scenario_document.hpp"
 #include "editor/field_text.hpp"
 #include "themed_icon.hpp"
@@ -342,12 +343,13 @@ void ParameterEditor::refreshErrors() {
   }
   QString text;
   if (!errors.empty())
-    text = tr("%n invalid value(s): Run is disabled until they are fixed.", nullptr, static_cast<int>(errors.size()));
+    text = errors.size() == 1 ? tr("1 invalid value: Run is disabled until it is fixed.")
+                              : tr("%1 invalid values: Run is disabled until they are fixed.").arg(errors.size());
   if (!loose.isEmpty()) text += QStringLiteral("\n") + loose.join('\n');
   const auto& warnings = document_->warnings();
   if (errors.empty() && !warnings.empty())
-    text = tr("%n plausibility warning(s), marked in amber: the scenario runs, but check the values.", nullptr,
-              static_cast<int>(warnings.size()));
+    text = tr("%1, marked in amber: the scenario runs, but check the values.")
+               .arg(counted(static_cast<int>(warnings.size()), tr("plausibility warning"), tr("plausibility warnings")));
   problems_->setText(text);
   problems_->setStyleSheet(QString::fromLatin1(errors.empty() ? kWarningTextStyle : kErrorTextStyle));
   problems_->setVisible(!text.isEmpty());

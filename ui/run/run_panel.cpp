@@ -11,6 +11,7 @@
 #include <QScrollBar>
 #include <QToolButton>
 
+#include "counted.hpp"
 #include "run/run_controller.hpp"
 #include "study/study_runner.hpp"
 
@@ -73,7 +74,7 @@ void RunPanel::follow(StudyRunner* study) {
   connect(study, &StudyRunner::progressed, this, &RunPanel::onProgress);
   connect(study, &StudyRunner::started, this, [this](int cases) {
     progress_->setValue(0);
-    stage_->setText(tr("Starting a study of %n case(s)…", nullptr, cases));
+    stage_->setText(tr("Starting a study of %1…").arg(counted(cases, tr("case"), tr("cases"))));
     time_->clear();
   });
   connect(study, &StudyRunner::finished, this, [this](int succeeded, int failed) {

@@ -22,6 +22,7 @@
 #include <QVBoxLayout>
 
 #include "core/errors.hpp"
+#include "counted.hpp"
 #include "document/scenario_document.hpp"
 #include "scene_library.hpp"
 #include "start_folder.hpp"
@@ -35,10 +36,6 @@ namespace {
 
 enum Column { kParameter, kFrom, kTo, kValues, kSpacing, kColumnCount };
 
-// "1 case", "5 cases" (the application loads no translation, whose plural forms %n would need).
-QString counted(int n, const QString& one, const QString& many) {
-  return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
-}
 
 // A file dialog's folder, remembered per purpose.
 QString askFile(QWidget* parent, bool save, const QString& title, const QString& key, const QString& name,

@@ -7,6 +7,8 @@
 #include <QMetaObject>
 #include <QRunnable>
 
+#include "counted.hpp"
+
 namespace maris::ui {
 
 StudyRunner::StudyRunner(QObject* parent) : QObject(parent) {
@@ -36,7 +38,7 @@ bool StudyRunner::start(const SceneDefinition& scene, std::vector<Scenario> case
   running_ = true;
   emit runningChanged(true);
   emit started(static_cast<int>(cases.size()));
-  emitProgress(tr("Starting %n case(s)…", nullptr, static_cast<int>(cases.size())));
+  emitProgress(tr("Starting %1…").arg(counted(static_cast<int>(cases.size()), tr("case"), tr("cases"))));
   // Shared by the tasks; each copies nothing but its index.
   auto shared_scene = std::make_shared<const SceneDefinition>(scene);
   auto shared_cases = std::make_shared<const std::vector<Scenario>>(std::move(cases));

@@ -24,7 +24,9 @@ QString StudySession::caseLabel(int index) const {
   const auto& parameters = impl_->study.parameters;
   for (std::size_t p = 0; p < parameters.size() && p < c.values.size(); ++p) {
     const auto& param = parameters[p];
-    std::string name = param.path.substr(param.path.rfind('.') == std::string::npos ? 0 : param.path.rfind('.') + 1);
+    // The last part of the path; for a table's cell the cell with its table ("profile[1].speed").
+    const auto cut = param.path.rfind('.', param.path.find('['));
+    std::string name = param.path.substr(cut == std::string::npos ? 0 : cut + 1);
     std::replace(name.begin(), name.end(), '_', ' ');
     QString value = c.values[p].is_number() ? QString::number(c.values[p].get<double>(), 'g', 6)
                     : c.values[p].is_string() ? QString::fromStdString(c.values[p].get<std::string>())

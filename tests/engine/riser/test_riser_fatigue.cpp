@@ -112,6 +112,11 @@ TEST(RiserFatigue, RunInAnAiryWaveRecordsElevationFatigueAndClosesItsEnergyBalan
   ASSERT_NE(r.findScalar("min_fatigue_life"), nullptr);
   EXPECT_EQ(r.findScalar("min_fatigue_life")->value, *std::min_element(life.begin(), life.end()));
   for (double l : life) EXPECT_GT(l, 0.0);
+  // ... and the annual damage there is the table's largest (what a scatter-diagram study adds up).
+  const auto& per_year = fatigue->find("damage_per_year")->values;
+  ASSERT_NE(r.findScalar("max_fatigue_damage_per_year"), nullptr);
+  EXPECT_EQ(r.findScalar("max_fatigue_damage_per_year")->value, *std::max_element(per_year.begin(), per_year.end()));
+  EXPECT_GT(r.findScalar("max_fatigue_damage_per_year")->value, 0.0);
   // The wave loads do work on the riser (their power is in work_drag): the balance must still close.
   const Scalar* balance = r.findScalar("energy_balance_error");
   ASSERT_NE(balance, nullptr);

@@ -1,0 +1,100 @@
+// One cell of a table field as a varied parameter: "current.profile[1].speed" is the speed of the second row
+// of the current profile (rows counted from 0, as the schema's messages count them). The row must exist in the
+// base scenario (after "set"); a study changes that one value and leaves the table's other cells as they are.
+#include <charconv>
+
+#include "study/study_design.hpp"
+
+namespace maris::study::detail {
+
+namespace {
+
+struct CellPath {
+  std::string table;   // "current.profile"
+  std::size_t row = 0;
+  std::string column;  // "speed"
+};
+
+// Splits "TABLE[ROW].COLUMN"; nothing when `path` has no '[' (a plain field) or is malformed (`malformed` set).
+std::optional<CellPath> splitCellPath(const std::string& path, bool& malformed) {
+  malformed = false;
+  const auto open = path.find('[');
+  if (open == std::string::npos) return std::nullopt;
+  const auto close = path.find(']', open);
+  CellPath cell;
+  cell.table = path.substr(0, open);
+  const char* first = path.data() + open + 1;
+  const char* last = path.data() + (close == std::string::npos ? path.size() : close);
+  const auto [end, error] = std::from_chars(first, last, cell.row);
+  malformed = cell.table.empty() || close == std::string::npos || first == last || error != std::errc() ||
+              end != last || close + 1 >= path.size() || path[close + 1] != '.';
+  if (malformed) return std::nullopt;
+  cell.column = path.substr(close + 2);
+  return cell;
+}
+
+}  // namespace
+
+std::optional<ParamSpec> lookupTableCell(const SceneDefinition& scene, const Json& base, const std::string& path,
+                                         const std::string& where, std::vector<FieldError>& errors, bool& is_cell) {
+  bool malformed = false;
+  const auto cell = splitCellPath(path, malformed);
+  is_cell = cell.has_value() || malformed;
+  if (malformed) {
+    errors.push_back({where, "", "a cell of a table is written TABLE[ROW].COLUMN, rows counted from 0 "
+                                 "(\"current.profile[1].speed\")"});
+    return std::nullopt;
+  }
+  if (!cell) return std::nullopt;
+  const ParamSpec* table = scene.schema.find(cell->table);
+  if (!table || table->kind != ParamKind::Table) {
+    std::vector<std::string> tables;
+    for (const auto& f : scene.schema.fields)
+      if (f.kind == ParamKind::Table) tables.push_back(f.path);
+    const auto guess = didYouMean(cell->table, tables);
+    errors.push_back({where, "", cell->table + " is not a table of scene '" + scene.name + "'" +
+                                     (guess.empty() ? std::string() : "; did you mean '" + guess + "'?")});
+    return std::nullopt;
+  }
+  const ParamSpec* column = nullptr;
+  std::vector<std::string> keys;
+  for (const auto& c : table->columns) {
+    keys.push_back(c.key());
+    if (c.key() == cell->column) column = &c;
+  }
+  if (!column) {
+    const auto guess = didYouMean(cell->column, keys);
+    errors.push_back({where, "", cell->column + " is not a column of " + cell->table +
+                                     (guess.empty() ? std::string() : "; did you mean '" + guess + "'?")});
+    return std::nullopt;
+  }
+  const Json* rows = findAtPath(base, cell->table);
+  const std::size_t count = rows && rows->is_array() ? rows->size() : 0;
+  if (cell->row >= count) {
+    errors.push_back({where, "", "row " + std::to_string(cell->row) + " is not in the base scenario's " + cell->table +
+                                     ", which has " + std::to_string(count) + (count == 1 ? " row" : " rows") +
+                                     " (counted from 0; \"set\" may give the table more)"});
+    return std::nullopt;
+  }
+  ParamSpec spec = *column;
+  spec.path = cell->table + "[" + std::to_string(cell->row) + "]." + cell->column;
+  return spec;
+}
+
+void setParameter(Json& parameters, const std::string& path, Json value) {
+  bool malformed = false;
+  const auto cell = splitCellPath(path, malformed);
+  if (!cell) {
+    setAtPath(parameters, path, std::move(value));
+    return;
+  }
+  std::string pointer;  // "/current/profile": parameter paths are snake_case, nothing to escape
+  for (char c : "." + cell->table) pointer += c == '.' ? '/' : c;
+  const Json::json_pointer table(pointer);
+  if (!parameters.contains(table) || !parameters.at(table).is_array() || cell->row >= parameters.at(table).size() ||
+      !parameters.at(table)[cell->row].is_object())
+    throw InputError(path, "", "the table has no such row");  // checked when the study was read
+  parameters.at(table)[cell->row][cell->column] = std::move(value);
+}
+
+}  // namespace maris::study::detail
