@@ -10,6 +10,9 @@ namespace {
 // The riser in a sea with a four-row current profile (depth 0, 50, 150, 300 m; speed 0.8, 0.6, 0.3, 0.1 m/s).
 constexpr const char* kBase = "riser_vessel_rao_sea";
 
+}  // namespace
+
+// Outside the anonymous namespace: its TEST_F classes have external linkage (GCC -Wsubobject-linkage).
 class StudyTableCells : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -18,8 +21,6 @@ class StudyTableCells : public ::testing::Test {
   static Study read(const Json& document) { return studyFromJson(document, std::filesystem::temp_directory_path()); }
   static const Json& profile(const StudyCase& c) { return c.scenario.parameters["current"]["profile"]; }
 };
-
-}  // namespace
 
 TEST_F(StudyTableCells, AGridOverOneCellSetsThatCellAndKeepsTheOthers) {
   const Json base_profile = findBuiltin(kBase)->scenario.parameters["current"]["profile"];
