@@ -40,12 +40,24 @@ std::string probeLabel(std::size_t k, double s) {
 
 }  // namespace
 
-RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
-  Eigen::VectorXd dy(y.size());
+namespace {
+
+// Which quantities of the profile a caller reads: every history sample needs the tensions and stresses (their
+// maxima, the probes, fatigue); positions, arc lengths and curvatures only frames, profile tables and the first
+// sample do.
+struct ProfileParts {
+  bool shape = true;      // arc_length, position
+  bool curvature = true;  // curvature
+};
+
+// Fills `p` (buffers reused from sample to sample; the right-hand side's derivative goes to `dy`) with the parts
+// asked for, by the same arithmetic as evaluateProfile.
+void fillProfile(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy,
+                 ProfileParts parts, RiserProfile& p) {
+  dy.resize(y.size());
   evaluateRhs(m, ws, t, y, dy);
   const RiserPose& pose = ws.pose;
   const int nodes = m.n + 2;
-  RiserProfile p;
   p.arc_length.resize(nodes);
   p.position.resize(nodes);
   p.tension.assign(nodes, 0.0);
@@ -54,10 +66,11 @@ RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, 
   p.stress_xz.assign(nodes, 0.0);
   p.torsional_stress.assign(nodes, 0.0);
   p.curvature.assign(nodes, 0.0);
-  for (int k = 0; k < nodes; ++k) {
-    p.arc_length[k] = k <= m.n ? m.segments[k].arc_start : m.length;
-    p.position[k] = pose.node(k);
-  }
+  if (parts.shape)
+    for (int k = 0; k < nodes; ++k) {
+      p.arc_length[k] = k <= m.n ? m.segments[k].arc_start : m.length;
+      p.position[k] = pose.node(k);
+    }
   // Tension from the joint reactions F_k (force on segment k from above): T = -F_k · t_k.
   const int f = m.first_dynamic, last = m.last_dynamic;
   for (int k = f; k <= last + 1; ++k) p.tension[k] = -ws.reaction[k].dot(pose.tangent(std::min(k, m.n)));
@@ -73,9 +86,30 @@ RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, 
     p.stress_xy[k] = mb.z() / j.bending_modulus;
     p.stress_xz[k] = mb.y() / j.bending_modulus;
     p.torsional_stress[k] = mb.x() / j.torsion_modulus;
-    const Vec3& a = ws.loads.relative_angle[k];
-    p.curvature[k] = std::hypot(a.y(), a.z()) / m.element_length;
+    if (parts.curvature) {
+      const Vec3& a = ws.loads.relative_angle[k];
+      p.curvature[k] = std::hypot(a.y(), a.z()) / m.element_length;
+    }
   }
+}
+
+// springEnergy(m, pose) from the joint angles the right-hand side just computed (loads.relative_angle holds the
+// same ZYX angles of R_{i-1}^T R_i): the same sum, without a second pass of 3×3 products over the riser.
+double springEnergyOfAngles(const RiserModel& m, const SegmentLoads& loads) {
+  double e = 0;
+  for (int i = 1; i <= m.n; ++i) {
+    const Vec3& a = loads.relative_angle[i];
+    e += 0.5 * a.dot(m.joints[i].stiffness.cwiseProduct(a));
+  }
+  return e;
+}
+
+}  // namespace
+
+RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
+  Eigen::VectorXd dy;
+  RiserProfile p;
+  fillProfile(m, ws, t, y, dy, ProfileParts{}, p);
   return p;
 }
 
@@ -175,12 +209,14 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
 }
 
 void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name) {
-  const RiserProfile prof = evaluateProfile(m_, ws_, t, y);
+  const bool shape = first_ || frame || profile_name.has_value();
+  fillProfile(m_, ws_, t, y, dy_, ProfileParts{shape, profile_name.has_value()}, profile_);
+  const RiserProfile& prof = profile_;
   const RiserPose& pose = ws_.pose;
   const int nodes = m_.n + 2;
   if (first_) initial_nodes_ = prof.position;
   // Energies and the work balance E(t) - E(0) = W_drag + W_damping + W_boundary.
-  const double kin = kineticEnergy(m_, pose), spr = springEnergy(m_, pose);
+  const double kin = kineticEnergy(m_, pose), spr = springEnergyOfAngles(m_, ws_.loads);
   const double grav = gravityPotential(m_, pose) + anchorSpringEnergy(m_, pose) + seabedContactEnergy(m_, pose);
   const double total = kin + spr + grav;
   const Eigen::Index ow = workIntegralOffset(m_);
@@ -194,7 +230,8 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   // Probe displacements from their first sample and stresses interpolated between their bracketing joints.
   Vec3 first_d = Vec3::Zero();
   double first_bending = 0.0, first_torsion = 0.0;
-  std::vector<double> extra;  // columns of probes 2, 3, ... (dx, dy, dz, bending, torsional)
+  std::vector<double>& extra = extra_;  // columns of probes 2, 3, ... (dx, dy, dz, bending, torsional)
+  extra.clear();
   for (std::size_t k = 0; k < probes_.size(); ++k) {
     Probe& probe = probes_[k];
     const Vec3 at = probePoint(m_, pose, probe.arc_length);
@@ -221,11 +258,12 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   const int f = m_.first_dynamic, last = m_.last_dynamic;
   const Vec3 bottom = (m_.bottom == BottomCondition::Free || m_.bottom == BottomCondition::Spring)
                           ? Vec3(-ws_.loads.support_force) : ws_.reaction[last + 1];
-  std::vector<double> row = {t, first_d.x(), first_d.y(), first_d.z(), pose.node(0).x(), pose.node(0).y(), pose.node(0).z(),
-                             pose.end_position.x(), pose.end_position.y(), pose.end_position.z(),
-                             ws_.reaction[f].x(), ws_.reaction[f].y(), ws_.reaction[f].z(),
-                             bottom.x(), bottom.y(), bottom.z(), kin, spr, grav, total, wd, wdamp, wb, wf, balance,
-                             ws_.constraint_drift, first_bending, first_torsion};
+  std::vector<double>& row = row_;
+  row = {t, first_d.x(), first_d.y(), first_d.z(), pose.node(0).x(), pose.node(0).y(), pose.node(0).z(),
+         pose.end_position.x(), pose.end_position.y(), pose.end_position.z(),
+         ws_.reaction[f].x(), ws_.reaction[f].y(), ws_.reaction[f].z(),
+         bottom.x(), bottom.y(), bottom.z(), kin, spr, grav, total, wd, wdamp, wb, wf, balance,
+         ws_.constraint_drift, first_bending, first_torsion};
   row.insert(row.end(), extra.begin(), extra.end());
   if (m_.sea) row.push_back(m_.sea->elevation(m_.sea->elevation_x, m_.sea->elevation_y, t));
   SeabedContactState contact;

@@ -56,7 +56,10 @@ class RiserRecorder {
   const RiserModel& m_;
   const RiserParameters& p_;
   RiserWorkspace ws_;
+  // Buffers of sample(), reused from sample to sample (a run records thousands).
   Eigen::VectorXd dy_;
+  RiserProfile profile_;
+  std::vector<double> row_, extra_;
   Results r_;
   Table history_, nodes_;
   std::vector<Vec3> initial_nodes_;
