@@ -282,7 +282,7 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     frame.shapes.push_back(std::move(s));
     // The caption says what the pattern leaves out, so the calm water ahead of the bow and along the hull is not
     // read as a result: only the waves are drawn, not the local disturbance at the hull.
-    frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s, around and behind the hull\n"
+    frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s\n"
                              "wave elevation drawn × %g; hull at its real proportions\n"
                              "waves only: the local disturbance at the hull\n(bow wave heap, side draw-down) is not drawn",
                              c.froude[d], c.speed[d], kElevationScale);
