@@ -280,8 +280,11 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     s.color = {0.2, 0.4, 0.8};
     s.opacity = 0.75;  // the hull, below the waterline and inside the pattern now, shows through the water
     frame.shapes.push_back(std::move(s));
-    frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s, around and behind the hull\n"
-                             "wave elevation drawn × %g; hull at its real proportions",
+    // The caption says what the pattern leaves out, so the calm water ahead of the bow and along the hull is not
+    // read as a result: only the waves are drawn, not the local disturbance at the hull.
+    frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s\n"
+                             "wave elevation drawn × %g; hull at its real proportions\n"
+                             "waves only: the local disturbance at the hull\n(bow wave heap, side draw-down) is not drawn",
                              c.froude[d], c.speed[d], kElevationScale);
     r.view.scalar_name = "wave elevation";
     r.view.scalar_unit = "m";

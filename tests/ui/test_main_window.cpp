@@ -1,15 +1,19 @@
 // The main window driven as a user would: open scenarios, edit through the parameter editor with
 // undo/redo shortcuts, run, cancel with Esc, see a failing run's message, overlay runs, save and
 // reopen, drop a file, write a report. Runs under xvfb-run (the 3D view needs OpenGL).
+#include <QAbstractButton>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPlainTextEdit>
 #include <QProgressBar>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
-#include <QToolBar>
+#include <QSlider>
 #include <QToolButton>
 #include <qcustomplot.h>
 #include <QTemporaryDir>
@@ -23,6 +27,7 @@
 #include "run/run_controller.hpp"
 #include "run/run_history.hpp"
 #include "run/run_panel.hpp"
+#include "scene_library.hpp"
 #include "test_scene.hpp"
 #include "ui_test_support.hpp"
 #include "view3d/scene_view.hpp"
@@ -135,23 +140,60 @@ class MainWindowTest : public QObject {
     QCOMPARE(defaultWindowSize(QSize(2560, 1400)), QSize(1600, 1000));
   }
 
-  void everyPlotToolbarButtonIsShownAt1366x768() {
-    for (const QSize size : {QSize(1366, 768), defaultWindowSize(QSize(1366, 768 - 28))}) {
-      window_->resize(size);
-      QTRY_COMPARE(window_->size(), size);
-      QCoreApplication::processEvents();
-      QToolBar* bar = window_->plots()->toolBar();
-      auto* export_button = window_->plots()->findChild<QToolButton*>(QStringLiteral("plotExportButton"));
-      QVERIFY(export_button);
-      QVERIFY(export_button->isVisible());
-      QVERIFY2(bar->rect().contains(export_button->geometry()),
-               qPrintable(QStringLiteral("window %1x%2: toolbar %3 px wide, Export button ends at %4")
-                              .arg(size.width()).arg(size.height()).arg(bar->width())
-                              .arg(export_button->geometry().right())));
-      // The toolbar's overflow "»" button is not needed.
-      auto* overflow = bar->findChild<QToolButton*>(QStringLiteral("qt_toolbar_ext_button"));
-      QVERIFY(!overflow || !overflow->isVisible());
+  // On a 1366 × 768 screen (the window at that size, and at the size it opens with there), for every scene's main
+  // example: every button and chooser of the plot panel and of the 3D view is shown whole inside the window (none
+  // hidden behind an overflow arrow or clipped by its row), and the parameter column is at least
+  // ParameterEditor::kMinimumWidth wide and wide enough for its fields (no sideways scrolling).
+  void everyControlIsReachableAndTheParameterColumnUsableAt1366x768() {
+    window_.reset();
+    window_ = std::make_unique<MainWindow>(SceneLibrary::fromEngine());
+    window_->setUnsavedPrompt([] { return QMessageBox::Discard; });
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    const auto library = SceneLibrary::fromEngine();
+    int scenes = 0;
+    for (const SceneDefinition& scene : library->scenes) {
+      const QString id = QString::fromStdString(scene.name + "_default");
+      if (!library->findExample(id.toStdString())) continue;
+      QVERIFY2(window_->openExample(id), qPrintable(id));
+      ++scenes;
+      for (const QSize size : {QSize(1366, 768), defaultWindowSize(QSize(1366, 768 - 28))}) {
+        window_->resize(size);
+        QTRY_COMPARE(window_->size(), size);
+        QCoreApplication::processEvents();
+        const QString where = QStringLiteral("%1, window %2x%3").arg(id).arg(size.width()).arg(size.height());
+        int controls = 0;
+        for (QWidget* bar : {window_->plots()->toolBar(), static_cast<QWidget*>(window_->sceneView())}) {
+          for (QWidget* w : bar->findChildren<QWidget*>()) {
+            if (!qobject_cast<QAbstractButton*>(w) && !qobject_cast<QComboBox*>(w) && !qobject_cast<QSlider*>(w)) continue;
+            if (!w->isVisibleTo(window_.get()) || w->window() != window_.get()) continue;  // menus' own widgets
+            ++controls;
+            const QRect in_window(w->mapTo(window_.get(), QPoint(0, 0)), w->size());
+            QVERIFY2(window_->rect().contains(in_window),
+                     qPrintable(QStringLiteral("%1: %2 \"%3\" at %4,%5 %6x%7 is outside the window")
+                                    .arg(where, w->metaObject()->className(), w->property("text").toString())
+                                    .arg(in_window.x()).arg(in_window.y()).arg(in_window.width()).arg(in_window.height())));
+            QVERIFY2(w->parentWidget()->rect().contains(w->geometry()),
+                     qPrintable(QStringLiteral("%1: %2 \"%3\" is clipped by its row").arg(where, w->metaObject()->className(),
+                                                                                  w->property("text").toString())));
+            QVERIFY2(w->width() >= w->minimumSizeHint().width(),
+                     qPrintable(QStringLiteral("%1: %2 \"%3\" is %4 px wide, narrower than its %5 px")
+                                    .arg(where, w->metaObject()->className(), w->property("text").toString())
+                                    .arg(w->width()).arg(w->minimumSizeHint().width())));
+          }
+        }
+        QVERIFY2(controls >= 12, qPrintable(QStringLiteral("%1: %2 controls found").arg(where).arg(controls)));
+        auto* export_button = window_->plots()->findChild<QToolButton*>(QStringLiteral("plotExportButton"));
+        QVERIFY(export_button && export_button->isVisible());
+        ParameterEditor* editor = window_->editor();
+        QVERIFY2(editor->width() >= ParameterEditor::kMinimumWidth && editor->width() >= editor->minimumSizeHint().width(),
+                 qPrintable(QStringLiteral("%1: parameter column %2 px wide (its fields need %3)")
+                                .arg(where).arg(editor->width()).arg(editor->minimumSizeHint().width())));
+        for (QScrollArea* area : editor->findChildren<QScrollArea*>())
+          QVERIFY2(!area->horizontalScrollBar()->isVisible(), qPrintable(where + ": the parameter fields scroll sideways"));
+      }
     }
+    QVERIFY(scenes >= 6);
   }
 
   void invalidValueIsExplainedAndDisablesRun() {

@@ -219,6 +219,15 @@ void ParameterEditor::rebuild() {
   for (QLabel* l : labels) l->setMinimumWidth(label_width);
   for (QLabel* u : units) u->setMinimumWidth(unit_width);
   refreshErrors();
+  updateGeometry();  // the new fields' minimum width
+}
+
+QSize ParameterEditor::minimumSizeHint() const {
+  const QSize own = QWidget::minimumSizeHint();
+  const QMargins m = layout() ? layout()->contentsMargins() : QMargins();
+  const int scroll_bar = style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, this);
+  const int fields = fields_host_->minimumSizeHint().width() + scroll_bar + m.left() + m.right() + 4;
+  return {std::max({own.width(), fields, kMinimumWidth}), own.height()};
 }
 
 QWidget* ParameterEditor::makeEditor(const ParamSpec& spec) {

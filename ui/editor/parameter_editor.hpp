@@ -37,6 +37,10 @@ class ParameterEditor : public QWidget {
   // The context menu of a field (its editor's own actions, then "Sweep this parameter…" for a real
   // or integer field); the caller owns it. nullptr for an unknown path.
   QMenu* fieldMenu(const std::string& path, QWidget* parent = nullptr);
+  // Never narrower than the fields' own minimum (labels, editors, units, reset buttons) beside a vertical scroll
+  // bar, nor than kMinimumWidth: the column holding the editor keeps its fields whole, with no sideways scrolling.
+  QSize minimumSizeHint() const override;
+  static constexpr int kMinimumWidth = 300;  // [px]
 
  signals:
   // "Sweep this parameter…" was chosen for the field at `path` (below "parameters").

@@ -9,7 +9,6 @@
 #include <QMenu>
 #include <QResizeEvent>
 #include <QTabWidget>
-#include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -19,27 +18,42 @@
 #include "core/resources.hpp"
 #include "plots/plot_export.hpp"
 #include "plots/reference_data.hpp"
+#include "widgets/flow_layout.hpp"
 
 namespace maris::ui {
 
 PlotPanel::PlotPanel(QWidget* parent)
-    : QWidget(parent), toolbar_(new QToolBar(this)), tabs_(new PlotTabs(this)), group_box_(new QComboBox(this)),
+    : QWidget(parent), toolbar_(new QWidget(this)), tabs_(new PlotTabs(this)), group_box_(new QComboBox(this)),
       plot_list_(new PlotList(this)), overlay_menu_(new QMenu(tr("Overlay runs"), this)) {
-  toolbar_->setIconSize(QSize(16, 16));
-  toolbar_->setToolButtonStyle(Qt::ToolButtonTextOnly);
-  log_x_ = toolbar_->addAction(tr("Log x"));
+  // The buttons wrap onto a second row in a narrow panel (a 1366-pixel screen) rather than hide behind an
+  // overflow arrow; each is a flat tool button as in a toolbar.
+  toolbar_->setObjectName(QStringLiteral("plotToolbar"));
+  auto* buttons = new FlowLayout(toolbar_, 2);
+  buttons->setContentsMargins(2, 2, 2, 2);
+  auto button = [this, buttons](QAction* action) {
+    auto* b = new QToolButton(toolbar_);
+    b->setAutoRaise(true);
+    if (action) b->setDefaultAction(action);
+    buttons->addWidget(b);
+    return b;
+  };
+  log_x_ = new QAction(tr("Log x"), this);
   log_x_->setCheckable(true);
-  log_y_ = toolbar_->addAction(tr("Log y"));
+  button(log_x_);
+  log_y_ = new QAction(tr("Log y"), this);
   log_y_->setCheckable(true);
-  toolbar_->addAction(tr("Fit"), this, [this] {
+  button(log_y_);
+  auto* fit = new QAction(tr("Fit"), this);
+  connect(fit, &QAction::triggered, this, [this] {
     if (auto* v = currentView()) v->resetZoom();
-  })->setToolTip(tr("Fit the axes to the data (or double-click the plot)"));
-  auto* overlay_button = new QToolButton(toolbar_);
+  });
+  fit->setToolTip(tr("Fit the axes to the data (or double-click the plot)"));
+  button(fit);
+  auto* overlay_button = button(nullptr);
   overlay_button->setText(tr("Overlay runs"));
   overlay_button->setMenu(overlay_menu_);
   overlay_button->setPopupMode(QToolButton::InstantPopup);
   overlay_button->setToolTip(tr("Draw earlier runs of this scene on the same axes"));
-  toolbar_->addWidget(overlay_button);
   auto* reference_menu = new QMenu(tr("Reference data"), this);
   add_reference_ = reference_menu->addAction(tr("Add reference data…"), this, [this] {
     const QString file = QFileDialog::getOpenFileName(this, tr("Add reference data"), QDir::homePath(),
@@ -48,23 +62,21 @@ PlotPanel::PlotPanel(QWidget* parent)
   });
   add_reference_->setToolTip(tr("Draw points from a CSV file (names row, optional units row, numbers) on this plot"));
   clear_reference_ = reference_menu->addAction(tr("Remove reference data"), this, [this] { clearReferences(); });
-  auto* reference_button = new QToolButton(toolbar_);
+  auto* reference_button = button(nullptr);
   reference_button->setText(tr("Reference data"));
   reference_button->setMenu(reference_menu);
   reference_button->setPopupMode(QToolButton::InstantPopup);
-  toolbar_->addWidget(reference_button);
   export_menu_ = new QMenu(tr("Export"), this);
   export_menu_->addAction(tr("Plot as PNG…"), this, [this] { exportCurrent(QStringLiteral("png")); });
   export_menu_->addAction(tr("Plot as PDF…"), this, [this] { exportCurrent(QStringLiteral("pdf")); });
   export_menu_->addAction(tr("Plot as SVG…"), this, [this] { exportCurrent(QStringLiteral("svg")); });
   export_menu_->addAction(tr("Data as CSV…"), this, [this] { exportCurrent(QStringLiteral("csv")); });
   export_menu_->addAction(tr("Data of all kept runs as CSV…"), this, [this] { exportCurrent(QStringLiteral("all.csv")); });
-  auto* export_button = new QToolButton(toolbar_);
+  auto* export_button = button(nullptr);
   export_button->setObjectName(QStringLiteral("plotExportButton"));
   export_button->setText(tr("Export"));
   export_button->setMenu(export_menu_);
   export_button->setPopupMode(QToolButton::InstantPopup);
-  toolbar_->addWidget(export_button);
   tabs_->setDocumentMode(true);
   // Titles that do not fit are shortened (the tooltip has the whole), before the bar needs scroll arrows.
   tabs_->setElideMode(Qt::ElideRight);
@@ -102,11 +114,6 @@ PlotPanel::PlotPanel(QWidget* parent)
     syncToolbar();
   });
   syncToolbar();
-}
-
-QSize PlotPanel::minimumSizeHint() const {
-  const QSize own = QWidget::minimumSizeHint();
-  return {std::max(own.width(), toolbar_->sizeHint().width()), own.height()};
 }
 
 PlotView* PlotPanel::currentView() const {

@@ -23,7 +23,6 @@ class QAction;
 class QComboBox;
 class QMenu;
 class QTabWidget;
-class QToolBar;
 
 namespace maris::ui {
 
@@ -68,10 +67,8 @@ class PlotPanel : public QWidget {
   QAction* addReferenceAction() const { return add_reference_; }
   QAction* clearReferenceAction() const { return clear_reference_; }
   QMenu* exportMenu() const { return export_menu_; }
-  QToolBar* toolBar() const { return toolbar_; }
-
-  // Never narrower than the whole toolbar: no button may hide behind the toolbar's overflow "»".
-  QSize minimumSizeHint() const override;
+  // The row of buttons above the plots (log axes, fit, overlay, reference data, export); it wraps when narrow.
+  QWidget* toolBar() const { return toolbar_; }
 
  protected:
   void resizeEvent(QResizeEvent* event) override;
@@ -94,7 +91,7 @@ class PlotPanel : public QWidget {
   void syncToolbar();
   void exportCurrent(const QString& suffix);
 
-  QToolBar* toolbar_;
+  QWidget* toolbar_;
   PlotTabs* tabs_;
   QComboBox* group_box_;
   PlotList* plot_list_;

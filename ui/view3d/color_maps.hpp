@@ -34,7 +34,9 @@ struct ColorSettings {
   bool automatic = true;  // range from the data; else [min, max]
   double min = 0.0;       // [unit of the quantity] used when !automatic
   double max = 1.0;
-  bool per_frame = false;  // automatic: the shown frame's min … max, else all frames'
+  // Automatic: the shown frame's min … max, else all frames'. Per frame by default: the frame shown (a run's last,
+  // as it opens) uses the whole colour map, where the range of the run can leave it one colour.
+  bool per_frame = true;
   bool operator==(const ColorSettings&) const = default;
 };
 

@@ -39,6 +39,7 @@
 #include "view3d/section_view.hpp"
 #include "view3d/shape_actors.hpp"
 #include "view3d/vtk_gl_widget.hpp"
+#include "widgets/flow_layout.hpp"
 
 namespace maris::ui {
 
@@ -136,19 +137,24 @@ SceneView::SceneView(QWidget* parent)
   magnify_->setToolTip(tr("Draw the motion from the static shape (the faint ghost) magnified"));
   magnify_->setEnabled(false);
 
-  auto* controls = new QHBoxLayout;
-  controls->addWidget(play_);
-  controls->addWidget(slider_, 1);
-  controls->addWidget(time_);
-  controls->addWidget(magnify_);
-  controls->addWidget(color_control_);
-  controls->addWidget(reset);
-  controls->addWidget(save);
+  // The time line on one row (the slider takes the width), the view's settings below it on rows that wrap in a
+  // narrow view (a 1366-pixel screen) rather than push the window wider or hide a button.
+  auto* timeline = new QHBoxLayout;
+  timeline->addWidget(play_);
+  timeline->addWidget(slider_, 1);
+  timeline->addWidget(time_);
+  auto* settings = new FlowLayout(nullptr, 4);
+  settings->setObjectName(QStringLiteral("viewSettings"));
+  settings->addWidget(magnify_);
+  settings->addWidget(color_control_);
+  settings->addWidget(reset);
+  settings->addWidget(save);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(empty_);
   layout->addWidget(gl_, 1);
-  layout->addLayout(controls);
+  layout->addLayout(timeline);
+  layout->addLayout(settings);
   gl_->hide();
 
   timer_->setInterval(50);
@@ -252,9 +258,10 @@ void SceneView::rebuildStatic() {
   static_actors_.clear();
   const View3D& view = results_->view;
   const Bounds3D bounds = viewBounds(view);
-  // Thin members (a 0.5 m riser in a 1 km scene) are drawn at least 0.4 % of the scene size thick; the
-  // caption says by how much the thinnest tube is drawn thicker than it is.
-  min_tube_radius_ = 0.004 * bounds.diagonal();
+  // Thin members (a 0.5 m riser in a 1 km scene) are drawn at least 2 % of the scene size thick (1 % radius):
+  // thick enough to see, and to see their colour, in a view a few hundred pixels high. The caption says by how
+  // much the thinnest tube is drawn thicker than it is.
+  min_tube_radius_ = 0.01 * bounds.diagonal();
   double thinnest = 0;
   for (const auto& frame : view.frames)
     for (const auto& shape : frame.shapes)
