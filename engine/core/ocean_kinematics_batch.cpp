@@ -32,6 +32,9 @@ constexpr double kLn2Head = 0x1.62e42fefp-1, kLn2Tail = 0x1.473de6af278edp-34;
 constexpr double kLargestExpArgument = 708.0;  // e^±708 is a normal double
 constexpr double kLargestSinArgument = 1e5;    // |q| < 2^17: q·(π/2 head) exact with room
 constexpr double kLargestTimePhase = 6e6;      // |n| < 2^20 turns: n·(2π head) exact
+// A point whose phases differ from the anchor's by at most this much (|k_max d| ≤ 0.2 rad) takes them by rotation;
+// the series of rotatedPhasesAndElevation then stop below 0.2^13/13! = 1.3e-19 (sine) and 0.2^14/14! (cosine).
+constexpr double kRotationLimit = 0.2;
 
 // Taylor coefficients 1/k!, k = 0…17.
 constexpr double inverseFactorial(int k) {
@@ -83,6 +86,27 @@ constexpr double inverseFactorial(int k) {
   return p * std::bit_cast<double>(static_cast<std::uint64_t>(power + 1023) << 52);
 }
 
+// e^x and e^−x from one reduction: x = n ln 2 + r, e^{±r} = E(r²) ± r O(r²) with E the even and r O the odd part of
+// the Taylor series to r^13 (as expKernel), times 2^{±n}. Both within a few units in the last place of std::exp;
+// for |x| ≤ 708 both are normal doubles.
+[[gnu::always_inline]] inline void expPairKernel(double x, double& plus, double& minus) {
+  x = x < -kLargestExpArgument ? -kLargestExpArgument : x;
+  x = x > kLargestExpArgument ? kLargestExpArgument : x;
+  const double shifted = x * kLog2E + kShifter;
+  const double n = shifted - kShifter;
+  const std::int64_t power = std::bit_cast<std::int64_t>(shifted) - std::bit_cast<std::int64_t>(kShifter);
+  const double r = (x - n * kLn2Head) - n * kLn2Tail;
+  const double r2 = r * r;
+  constexpr double e2 = inverseFactorial(2), e4 = inverseFactorial(4), e6 = inverseFactorial(6),
+                   e8 = inverseFactorial(8), e10 = inverseFactorial(10), e12 = inverseFactorial(12);
+  constexpr double o3 = inverseFactorial(3), o5 = inverseFactorial(5), o7 = inverseFactorial(7),
+                   o9 = inverseFactorial(9), o11 = inverseFactorial(11), o13 = inverseFactorial(13);
+  const double even = 1.0 + r2 * (e2 + r2 * (e4 + r2 * (e6 + r2 * (e8 + r2 * (e10 + r2 * e12)))));
+  const double odd = r * (1.0 + r2 * (o3 + r2 * (o5 + r2 * (o7 + r2 * (o9 + r2 * (o11 + r2 * o13))))));
+  plus = (even + odd) * std::bit_cast<double>(static_cast<std::uint64_t>(power + 1023) << 52);
+  minus = (even - odd) * std::bit_cast<double>(static_cast<std::uint64_t>(1023 - power) << 52);
+}
+
 // The per-point sums, vectorised over the components (AVX-512 and AVX2 + FMA clones on processors that have them).
 struct PointSums {
   double eta = 0.0, u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
@@ -110,6 +134,33 @@ MARIS_SIMD_CLONES double phasesAndElevation(std::size_t n, double s, const doubl
   return eta;
 }
 
+// cos ψ_j, sin ψ_j of a point a distance d further along the waves than an anchor point whose cos, sin are
+// given (ψ_j = ψ_j,anchor + k_j d, |k_j d| ≤ kRotationLimit), and η = Σ a_j cos ψ_j (unramped): the angle addition
+// with cos and sin of k_j d from their Taylor series.
+MARIS_SIMD_CLONES double rotatedPhasesAndElevation(std::size_t n, double d, const double* __restrict k,
+                                                   const double* __restrict amplitude,
+                                                   const double* __restrict anchor_cos,
+                                                   const double* __restrict anchor_sin, double* __restrict cos_psi,
+                                                   double* __restrict sin_psi) {
+  constexpr double s3 = -inverseFactorial(3), s5 = inverseFactorial(5), s7 = -inverseFactorial(7),
+                   s9 = inverseFactorial(9), s11 = -inverseFactorial(11);
+  constexpr double c2 = -inverseFactorial(2), c4 = inverseFactorial(4), c6 = -inverseFactorial(6),
+                   c8 = inverseFactorial(8), c10 = -inverseFactorial(10), c12 = inverseFactorial(12);
+  double eta = 0.0;
+#pragma omp simd reduction(+ : eta)
+  for (std::size_t j = 0; j < n; ++j) {
+    const double x = k[j] * d, x2 = x * x;
+    const double sine = x + x * x2 * (s3 + x2 * (s5 + x2 * (s7 + x2 * (s9 + x2 * s11))));
+    const double cosine_minus_one = x2 * (c2 + x2 * (c4 + x2 * (c6 + x2 * (c8 + x2 * (c10 + x2 * c12)))));
+    const double ca = anchor_cos[j], sa = anchor_sin[j];
+    const double cs = ca + (ca * cosine_minus_one - sa * sine);
+    cos_psi[j] = cs;
+    sin_psi[j] = sa + (sa * cosine_minus_one + ca * sine);
+    eta += amplitude[j] * cs;
+  }
+  return eta;
+}
+
 // The linear kinematics sums at the stretched height z'.
 MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restrict k, const double* __restrict a_omega,
                                  const double* __restrict a_omega2, const double* __restrict depth_scale,
@@ -118,9 +169,11 @@ MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restri
   double u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
 #pragma omp simd reduction(+ : u, w, du, dw)
   for (std::size_t j = 0; j < n; ++j) {
-    const double e1 = expKernel(k[j] * z);
-    // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300).
-    const double e2 = mirror[j] / (e1 > 1e-300 ? e1 : 1e-300);
+    // e^{−k(z+2h)} = e^{−2kh} e^{−kz}, e^{±kz} from one reduction (no division); wherever e^{−2kh} is kept
+    // (kh ≤ 300) z ≥ −h bounds e^{−kz} by e^{300}, and where it is 0 the product is 0 (e^{−kz} ≤ e^{708}).
+    double e1, e_minus;
+    expPairKernel(k[j] * z, e1, e_minus);
+    const double e2 = mirror[j] * e_minus;
     const double ch = (e1 + e2) * depth_scale[j], sh = (e1 - e2) * depth_scale[j];
     u += a_omega[j] * ch * cos_psi[j];
     w += a_omega[j] * sh * sin_psi[j];
@@ -164,6 +217,8 @@ void harmonicPhases(std::size_t n, const double* phase, const double* omega, dou
 void fastSinCos(double x, double& sine, double& cosine) { sinCosKernel(x, sine, cosine); }
 
 double fastExp(double x) { return expKernel(x); }
+
+void fastExpPair(double x, double& plus, double& minus) { expPairKernel(x, plus, minus); }
 
 WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double direction_rad, double gravity,
                                          double truncation)
@@ -234,6 +289,7 @@ std::size_t WaveKinematicsBatch::keptComponents(double z) const {
 void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp,
                                    double ramp_rate, Scratch& scratch, FluidKinematics* out) const {
   const std::size_t n = k_.size();
+  evaluations_.fetch_add(1, std::memory_order_relaxed);
   if (scratch.theta.size() != n || !(scratch.time == t)) {
     scratch.theta.resize(n);
     scratch.cos_psi.resize(n);
@@ -248,6 +304,14 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
     }
     scratch.time = t;
   }
+  scratch.anchor_cos.resize(n);
+  scratch.anchor_sin.resize(n);
+  // anchor_cos, anchor_sin hold the exact phases at s = anchor_s. A new anchor is placed 0.9 of the rotation's
+  // reach ahead of the point that needs it, in the direction the points have been moving along s, so that it
+  // serves the points on both sides of it.
+  bool anchored = false;
+  double anchor_s = 0.0, anchor_eta = 0.0, previous_s = 0.0;
+  const double reach = largest_k_ > 0.0 ? kRotationLimit / largest_k_ : 0.0;
   for (std::size_t i = 0; i < count; ++i) {
     const Eigen::Vector3d& p = points[i];
     const double s = p.x() * cos_dir_ + p.y() * sin_dir_;
@@ -256,9 +320,27 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
       continue;
     }
     FluidKinematics& f = out[i];
-    const double eta =
-        ramp * phasesAndElevation(n, s, k_.data(), scratch.theta.data(), amplitude_.data(), scratch.cos_psi.data(),
-                                  scratch.sin_psi.data());
+    if (!anchored || !(std::abs(s - anchor_s) * largest_k_ <= kRotationLimit)) {
+      const double ahead = anchored ? s + std::copysign(0.9 * reach, s - previous_s) : s;
+      anchor_s = std::abs(ahead) * largest_k_ < kLargestSinArgument ? ahead : s;
+      anchor_eta = phasesAndElevation(n, anchor_s, k_.data(), scratch.theta.data(), amplitude_.data(),
+                                      scratch.anchor_cos.data(), scratch.anchor_sin.data());
+      anchored = true;
+    }
+    previous_s = s;
+    const bool rotate = s != anchor_s;
+    const double* cos_psi = rotate ? scratch.cos_psi.data() : scratch.anchor_cos.data();
+    const double* sin_psi = rotate ? scratch.sin_psi.data() : scratch.anchor_sin.data();
+    double unramped_eta;
+    if (rotate) {
+      unramped_eta = rotatedPhasesAndElevation(n, s - anchor_s, k_.data(), amplitude_.data(), scratch.anchor_cos.data(),
+                                               scratch.anchor_sin.data(), scratch.cos_psi.data(),
+                                               scratch.sin_psi.data());
+      ++scratch.rotated_points;
+    } else {
+      unramped_eta = anchor_eta;
+    }
+    const double eta = ramp * unramped_eta;
     f.elevation = eta;
     f.wet = p.z() <= eta;
     f.velocity.setZero();
@@ -267,7 +349,7 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
     const double z = stretchedZ(p.z(), eta, depth_, field_.stretching());
     PointSums sums;
     depthSums(keptComponents(z), z, k_.data(), a_omega_.data(), a_omega2_.data(), depth_scale_.data(), mirror_.data(),
-              scratch.cos_psi.data(), scratch.sin_psi.data(), sums);
+              cos_psi, sin_psi, sums);
     const Eigen::Vector3d velocity(sums.u * cos_dir_, sums.u * sin_dir_, sums.w);
     const Eigen::Vector3d acceleration(sums.du * cos_dir_, sums.du * sin_dir_, sums.dw);
     f.velocity = ramp * velocity;
