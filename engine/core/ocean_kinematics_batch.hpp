@@ -5,7 +5,7 @@
 // Per time: the components' time phases θ_j = φ_j − ω_j t, reduced to [−π, π] (once per time, not per point).
 // Per point, with s = x cos β + y sin β the distance along the waves' direction (a one-directional sea):
 //   ψ_j = k_j s + θ_j,  η = r Σ a_j cos ψ_j,  z' by the field's stretching,
-//   e_j = e^{k_j z'},   e'_j = e^{−k_j (z' + 2h)} = e^{−2 k_j h} e^{−k_j z'}  (e^{±k_j z'} from one reduction),
+//   e_j = e^{k_j z'},   e'_j = e^{−k_j (z' + 2h)} = e^{−2 k_j h} / e_j  (one exponential per component),
 //   C_j = (e_j + e'_j)/(1 − e^{−2 k_j h}),  S_j = (e_j − e'_j)/(1 − e^{−2 k_j h}).
 // Phase rotation: cos ψ_j, sin ψ_j are computed by the sine-cosine kernel at "anchor" positions s_a only: at the
 // first point of a call, and where a point lies farther than 0.2/k_max from the last anchor, 0.9 × 0.2/k_max ahead
@@ -86,8 +86,6 @@ class WaveKinematicsBatch {
 // units in the last place of std::sin, std::cos, std::exp.
 void fastSinCos(double x, double& sine, double& cosine);
 double fastExp(double x);
-// e^x and e^−x from one argument reduction, for |x| ≤ 708 (the depth sums' e^{±k z'}).
-void fastExpPair(double x, double& plus, double& minus);
 
 // cos ψ_i and sin ψ_i of ψ_i = phase_i − ω_i t, i < n, in SIMD lanes: each ψ_i is first reduced to [−π, π] with 2π
 // in two parts (as the batch's time phases: no error beyond the rounding of ω_i t itself), then the kernels above
