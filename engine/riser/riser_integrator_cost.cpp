@@ -10,20 +10,21 @@
 namespace maris::riser {
 namespace {
 
-// Measured weights (bench_riser_auto_cost: case 5 and the peer riser, J3 and A3, n = 20…400, minimum of 3 repeats;
-// the table in docs/riser_work_precision.md), in right-hand sides: a chart residual is one evaluation plus the chart
-// maps (1.37–1.46); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
-// coordinates, the twin's solve and the map back (A 1.05–1.16, J 1.08–1.19); a refresh's work beside its balance
-// evaluations (colouring, the band's assembly and factorisation: 3.7–8.8, median 5).
+// Measured weights (bench_riser_auto_cost: case 5 and the peer riser, J3 and A3, n = 20 and 100, minimum of 3
+// repeats; the table in docs/riser.md), in right-hand sides: a chart residual is one evaluation plus the chart
+// maps (1.40–1.43); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
+// coordinates, the twin's solve and the map back (A 0.62–0.67, J 0.65–0.69); a refresh's work beside its balance
+// evaluations (colouring, the band's assembly and factorisation: 3.1–5.0, median 3.8).
 constexpr double kResidualCost = 1.4;
-constexpr double kAbsoluteSolveCost = 1.1;
-constexpr double kJointSolveCost = 1.15;
-constexpr double kFactorisationCost = 5.0;
-// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.34–0.36 µs from n = 20 to 400), for the per-step
-// times of the method line only.
-constexpr double kRhsMicrosecondsPerSegment = 0.35;
+constexpr double kAbsoluteSolveCost = 0.65;
+constexpr double kJointSolveCost = 0.68;
+constexpr double kFactorisationCost = 3.8;
+// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.33–0.36 µs at n = 20 and 100), for the per-step
+// times of the method line and the wave weight's conversion.
+constexpr double kRhsMicrosecondsPerSegment = 0.34;
 // The wave kinematics per Gauss point and wave component [ns] (bench_riser_auto_cost: the batch of the riser's sea,
-// phases at every component, depth sums truncated where the short waves have died out), in the same units.
+// phases at every component, depth sums truncated where the short waves have died out: 2.03 ns at n = 100, 2.40 at
+// n = 20), converted to right-hand sides by the one above.
 constexpr double kWaveNanosecondsPerPointComponent = 2.2;
 // History samples of a run (riser_integration), each of which evaluates the loads, so the waves, once more.
 constexpr double kHistorySamples = 2000;
@@ -80,7 +81,9 @@ IntegratorCost predictImplicitCost(const RiserModel& m, const RiserParameters& p
   const double iterations = newtonIterationsPerStep(newton_tolerance);
   const double waves = waveEvaluationCost(m);
   const double per_step = iterations * (kResidualCost + bandedSolveCost(m)) + waves;
-  const double per_run = chunks * matrixRefreshCost(m) + std::min<double>(kHistorySamples, c.steps) * waves;
+  // The history is sampled between the steps (by interpolation of the state), at all 2000 samples however few
+  // the steps are.
+  const double per_run = chunks * matrixRefreshCost(m) + kHistorySamples * waves;
   c.evaluations_per_step = c.steps > 0 ? per_step + per_run / c.steps : 0.0;
   return c;
 }
