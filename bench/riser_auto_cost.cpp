@@ -9,6 +9,9 @@
 // right-hand side's, and the balance evaluations per refresh the twin Newton matrix counted.
 // The prediction's form (riser_integrator_cost.cpp): implicit step = ν (residual + solve), refresh = balances +
 // factorisation; factorisation = refresh − balances (in right-hand sides) is printed for that constant.
+// Then the wave weight: the riser's batch of wave kinematics (core/ocean_kinematics_batch, with the riser's
+// truncation) at the 3(n + 1) Gauss points of the static shape of riser_vessel_rao_sea (100 m in 100 m of water,
+// JONSWAP Hs 6 m, Tp 10 s, 200 components), a new time at each call as in a run, in ns per point and component.
 // Times are thread CPU seconds; on a shared machine they are upper bounds.
 #include <algorithm>
 #include <cmath>
@@ -20,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ocean_kinematics_batch.hpp"
 #include "core/resources.hpp"
 #include "core/scenario.hpp"
 #include "riser/riser_dynamics.hpp"
@@ -27,6 +31,7 @@
 #include "riser/riser_joint_newton.hpp"
 #include "riser/riser_newton.hpp"
 #include "riser/riser_statics.hpp"
+#include "riser/riser_waves.hpp"
 #include "bench_clock.hpp"
 #include "riser_moving_state.hpp"
 
@@ -61,6 +66,47 @@ std::vector<int> segmentCounts(const char* text) {
   while (std::getline(s, item, ','))
     if (std::atoi(item.c_str()) > 0) out.push_back(std::atoi(item.c_str()));
   return out;
+}
+
+// ns per Gauss point and wave component of the riser's batch (minimum over the repeats) and the spread.
+void timeWaves(int repeats, const std::vector<int>& counts) {
+  std::printf("\n| sea | n | Gauss points | components | kinematics [us] | ns per point and component | spread |\n"
+              "|---|---|---|---|---|---|---|\n");
+  for (const int n : counts) {
+    const std::string path = "scenarios/riser/riser_vessel_rao_sea.json";
+    RiserParameters p = riserBinder().read(scenarioFromText(std::string(*builtinResource(path)), path).parameters);
+    p.segment_count = n;
+    p.length = 100.0;
+    p.seabed_level = -100.0;
+    p.bottom_z = -100.0;
+    p.wave_peak_period = 10.0;
+    p.wave_component_count = 200;
+    const RiserModel m = buildRiserModel(p);
+    RunContext ctx;
+    const StaticSolution st = solveStatics(m, ctx);
+    const Eigen::VectorXd y = restState(m, st.orientation, st.top);
+    RiserWorkspace ws = makeWorkspace(m, 0.0);
+    poseFromState(m, 30.0, y, ws.pose);
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i <= m.n; ++i)
+      for (int q = 0; q < 3; ++q)
+        points.push_back(ws.pose.position[i] + kGaussX[q] * m.segments[i].length * ws.pose.rotation[i].col(0) -
+                         Eigen::Vector3d(0.0, 0.0, m.sea->water_level));
+    std::vector<ocean::FluidKinematics> out(points.size());
+    ocean::WaveKinematicsBatch::Scratch scratch;
+    const long calls = std::max(50L, 200000L / (n + 1));
+    long k = 0;
+    double sink = 0.0;
+    const Cost c = timeCalls(repeats, calls, [&] {
+      m.sea->batch->evaluate(points.data(), points.size(), 30.0 + 0.01 * static_cast<double>(k++), 1.0, 0.0, scratch,
+                             out.data());
+      sink += out[0].velocity.x();
+    });
+    const double per = 1e9 * c.best / (static_cast<double>(points.size()) * static_cast<double>(m.sea->field.size()));
+    std::printf("| vessel_rao_sea | %d | %zu | %zu | %.1f | %.2f | %.2f |%s\n", n, points.size(), m.sea->field.size(),
+                1e6 * c.best, per, c.worst / c.best, std::isfinite(sink) ? "" : " non-finite");
+    std::fflush(stdout);
+  }
 }
 
 }  // namespace
@@ -132,5 +178,6 @@ int main(int argc, char** argv) {
                     residual.best / unit, solved.best / unit, refresh_units, balances, refresh_units - balances);
         std::fflush(stdout);
       }
+  timeWaves(repeats, counts);
   return 0;
 }

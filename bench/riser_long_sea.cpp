@@ -15,6 +15,11 @@
 //       Gauss points point by point (WaveField::kinematics, what the loads called before the batch), batched
 //       (WaveKinematicsBatch) with every component and with the riser's truncation (the sea's own batch), and one
 //       whole right-hand side (evaluateRhs, with the sea's batch).
+//   bench_riser_long_sea halfstep [duration = 10800] [step = 0.06]
+//       the run at STEP against the same run at STEP/2 (both at the product's Newton tolerance; the half-step run
+//       cached in /tmp/riser_long_sea_half_<duration>_<step>.csv): the error at L/2 / range of STEP against STEP/2,
+//       e(h) − e(h/2), and the second-order (Richardson) estimate of STEP's own error, 4/3 of it. With the tight
+//       reference of the default mode cached (/tmp/riser_long_sea_<duration>_<step/3>.csv), also both against it.
 //   bench_riser_long_sea rk4 DURATION STEP
 //       RK4 at STEP against the cached reference of that duration (checks the reference on a short run).
 // Times are thread CPU seconds; on a shared machine they are upper bounds. Not a pass/fail test.
@@ -143,9 +148,41 @@ void timeKinematics(int repeats) {
               direct, batched, direct / batched, batched_truncated, direct / batched_truncated, rhs, sink * 0.0);
 }
 
+// STEP against STEP/2 over DURATION (the 3-hour error of the speed target).
+void halfStep(double duration, double step) {
+  std::ostringstream name;
+  name << "/tmp/riser_long_sea_half_" << duration << "_" << step << ".csv";
+  bench::ProbeHistory half = bench::readHistory(name.str(), duration);
+  if (half.t.empty()) {
+    RiserParameters p = targetCase(duration);
+    p.time_step = step / 2;
+    const bench::RiserRun o = bench::runRiser(p);
+    printRow("half step", step / 2, o, duration, 0.0);
+    bench::writeHistory(name.str(), o.history);
+    half = o.history;
+  }
+  RiserParameters p = targetCase(duration);
+  p.time_step = step;
+  const bench::RiserRun o = bench::runRiser(p);
+  const double difference = probeError(o.history, half);
+  printRow("against h/2", step, o, duration, difference);
+  std::printf("error at L/2 / range over %g s: h = %g against h/2: %.3e; second-order estimate of h's own error "
+              "(4/3 of it): %.3e\n", duration, step, difference, 4.0 / 3.0 * difference);
+  std::ostringstream tight;
+  tight << "/tmp/riser_long_sea_" << duration << "_" << step / 3 << ".csv";
+  const bench::ProbeHistory reference = bench::readHistory(tight.str(), duration);
+  if (!reference.t.empty())
+    std::printf("against the tight reference at h/3 (%s): h %.3e, h/2 %.3e\n", tight.str().c_str(),
+                probeError(o.history, reference), probeError(half, reference));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "halfstep") {
+    halfStep(argc > 2 ? std::atof(argv[2]) : 10800.0, argc > 3 ? std::atof(argv[3]) : 0.06);
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "kinematics") {
     timeKinematics(argc > 2 ? std::atoi(argv[2]) : 2000);
     return 0;

@@ -32,6 +32,9 @@ constexpr double kLn2Head = 0x1.62e42fefp-1, kLn2Tail = 0x1.473de6af278edp-34;
 constexpr double kLargestExpArgument = 708.0;  // e^±708 is a normal double
 constexpr double kLargestSinArgument = 1e5;    // |q| < 2^17: q·(π/2 head) exact with room
 constexpr double kLargestTimePhase = 6e6;      // |n| < 2^20 turns: n·(2π head) exact
+// A point whose phases differ from the anchor's by at most this much (|k_max d| ≤ 0.2 rad) takes them by rotation;
+// the series of rotatedPhasesAndElevation then stop below 0.2^13/13! = 1.3e-19 (sine) and 0.2^14/14! (cosine).
+constexpr double kRotationLimit = 0.2;
 
 // Taylor coefficients 1/k!, k = 0…17.
 constexpr double inverseFactorial(int k) {
@@ -110,6 +113,33 @@ MARIS_SIMD_CLONES double phasesAndElevation(std::size_t n, double s, const doubl
   return eta;
 }
 
+// cos ψ_j, sin ψ_j of a point a distance d further along the waves than an anchor point whose cos, sin are
+// given (ψ_j = ψ_j,anchor + k_j d, |k_j d| ≤ kRotationLimit), and η = Σ a_j cos ψ_j (unramped): the angle addition
+// with cos and sin of k_j d from their Taylor series.
+MARIS_SIMD_CLONES double rotatedPhasesAndElevation(std::size_t n, double d, const double* __restrict k,
+                                                   const double* __restrict amplitude,
+                                                   const double* __restrict anchor_cos,
+                                                   const double* __restrict anchor_sin, double* __restrict cos_psi,
+                                                   double* __restrict sin_psi) {
+  constexpr double s3 = -inverseFactorial(3), s5 = inverseFactorial(5), s7 = -inverseFactorial(7),
+                   s9 = inverseFactorial(9), s11 = -inverseFactorial(11);
+  constexpr double c2 = -inverseFactorial(2), c4 = inverseFactorial(4), c6 = -inverseFactorial(6),
+                   c8 = inverseFactorial(8), c10 = -inverseFactorial(10), c12 = inverseFactorial(12);
+  double eta = 0.0;
+#pragma omp simd reduction(+ : eta)
+  for (std::size_t j = 0; j < n; ++j) {
+    const double x = k[j] * d, x2 = x * x;
+    const double sine = x + x * x2 * (s3 + x2 * (s5 + x2 * (s7 + x2 * (s9 + x2 * s11))));
+    const double cosine_minus_one = x2 * (c2 + x2 * (c4 + x2 * (c6 + x2 * (c8 + x2 * (c10 + x2 * c12)))));
+    const double ca = anchor_cos[j], sa = anchor_sin[j];
+    const double cs = ca + (ca * cosine_minus_one - sa * sine);
+    cos_psi[j] = cs;
+    sin_psi[j] = sa + (sa * cosine_minus_one + ca * sine);
+    eta += amplitude[j] * cs;
+  }
+  return eta;
+}
+
 // The linear kinematics sums at the stretched height z'.
 MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restrict k, const double* __restrict a_omega,
                                  const double* __restrict a_omega2, const double* __restrict depth_scale,
@@ -119,7 +149,9 @@ MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restri
 #pragma omp simd reduction(+ : u, w, du, dw)
   for (std::size_t j = 0; j < n; ++j) {
     const double e1 = expKernel(k[j] * z);
-    // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300).
+    // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300). (e^{−kz} from
+    // e^{kz}'s own reduction instead of the division rounds the two terms independently: near the sea bed, where
+    // they cancel in sinh, that exceeded the 1e-13 of the tests.)
     const double e2 = mirror[j] / (e1 > 1e-300 ? e1 : 1e-300);
     const double ch = (e1 + e2) * depth_scale[j], sh = (e1 - e2) * depth_scale[j];
     u += a_omega[j] * ch * cos_psi[j];
@@ -234,6 +266,7 @@ std::size_t WaveKinematicsBatch::keptComponents(double z) const {
 void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp,
                                    double ramp_rate, Scratch& scratch, FluidKinematics* out) const {
   const std::size_t n = k_.size();
+  evaluations_.fetch_add(1, std::memory_order_relaxed);
   if (scratch.theta.size() != n || !(scratch.time == t)) {
     scratch.theta.resize(n);
     scratch.cos_psi.resize(n);
@@ -248,6 +281,14 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
     }
     scratch.time = t;
   }
+  scratch.anchor_cos.resize(n);
+  scratch.anchor_sin.resize(n);
+  // anchor_cos, anchor_sin hold the exact phases at s = anchor_s. A new anchor is placed 0.9 of the rotation's
+  // reach ahead of the point that needs it, in the direction the points have been moving along s, so that it
+  // serves the points on both sides of it.
+  bool anchored = false;
+  double anchor_s = 0.0, anchor_eta = 0.0, previous_s = 0.0;
+  const double reach = largest_k_ > 0.0 ? kRotationLimit / largest_k_ : 0.0;
   for (std::size_t i = 0; i < count; ++i) {
     const Eigen::Vector3d& p = points[i];
     const double s = p.x() * cos_dir_ + p.y() * sin_dir_;
@@ -256,9 +297,27 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
       continue;
     }
     FluidKinematics& f = out[i];
-    const double eta =
-        ramp * phasesAndElevation(n, s, k_.data(), scratch.theta.data(), amplitude_.data(), scratch.cos_psi.data(),
-                                  scratch.sin_psi.data());
+    if (!anchored || !(std::abs(s - anchor_s) * largest_k_ <= kRotationLimit)) {
+      const double ahead = anchored ? s + std::copysign(0.9 * reach, s - previous_s) : s;
+      anchor_s = std::abs(ahead) * largest_k_ < kLargestSinArgument ? ahead : s;
+      anchor_eta = phasesAndElevation(n, anchor_s, k_.data(), scratch.theta.data(), amplitude_.data(),
+                                      scratch.anchor_cos.data(), scratch.anchor_sin.data());
+      anchored = true;
+    }
+    previous_s = s;
+    const bool rotate = s != anchor_s;
+    const double* cos_psi = rotate ? scratch.cos_psi.data() : scratch.anchor_cos.data();
+    const double* sin_psi = rotate ? scratch.sin_psi.data() : scratch.anchor_sin.data();
+    double unramped_eta;
+    if (rotate) {
+      unramped_eta = rotatedPhasesAndElevation(n, s - anchor_s, k_.data(), amplitude_.data(), scratch.anchor_cos.data(),
+                                               scratch.anchor_sin.data(), scratch.cos_psi.data(),
+                                               scratch.sin_psi.data());
+      ++scratch.rotated_points;
+    } else {
+      unramped_eta = anchor_eta;
+    }
+    const double eta = ramp * unramped_eta;
     f.elevation = eta;
     f.wet = p.z() <= eta;
     f.velocity.setZero();
@@ -267,7 +326,7 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
     const double z = stretchedZ(p.z(), eta, depth_, field_.stretching());
     PointSums sums;
     depthSums(keptComponents(z), z, k_.data(), a_omega_.data(), a_omega2_.data(), depth_scale_.data(), mirror_.data(),
-              scratch.cos_psi.data(), scratch.sin_psi.data(), sums);
+              cos_psi, sin_psi, sums);
     const Eigen::Vector3d velocity(sums.u * cos_dir_, sums.u * sin_dir_, sums.w);
     const Eigen::Vector3d acceleration(sums.du * cos_dir_, sums.du * sin_dir_, sums.dw);
     f.velocity = ramp * velocity;

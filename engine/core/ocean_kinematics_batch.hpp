@@ -7,11 +7,19 @@
 //   ψ_j = k_j s + θ_j,  η = r Σ a_j cos ψ_j,  z' by the field's stretching,
 //   e_j = e^{k_j z'},   e'_j = e^{−k_j (z' + 2h)} = e^{−2 k_j h} / e_j  (one exponential per component),
 //   C_j = (e_j + e'_j)/(1 − e^{−2 k_j h}),  S_j = (e_j − e'_j)/(1 − e^{−2 k_j h}).
+// Phase rotation: cos ψ_j, sin ψ_j are computed by the sine-cosine kernel at "anchor" positions s_a only: at the
+// first point of a call, and where a point lies farther than 0.2/k_max from the last anchor, 0.9 × 0.2/k_max ahead
+// of that point in the direction the points move along s (so the anchor serves points on both sides). Every
+// other point takes them from the anchor's by angle addition, cos and sin of k_j (s − s_a) (≤ 0.2 rad) from
+// Taylor series to x^12 (remainder ≤ 1.3e-19), each rotated from the exact anchor (no accumulation from point to
+// point): within a few units in the last place of 1 of the kernel's values. Points along a riser, a cable or a
+// pile are ordered and close together, so most of them rotate.
 // Sine, cosine and exponential are polynomial kernels without branches (Cody–Waite reduction, Taylor series to
 // below the double's rounding; ocean_kinematics_batch.cpp) instead of the library's calls, which do not vectorise.
 // Agreement with WaveField::kinematics: ≤ 1e-13 of each quantity's scale (the sum of the components' magnitudes),
-// tested at the surface, at depth, at crest and trough with Wheeler and vertical stretching; on x86-64 the loop
-// runs in AVX-512 or AVX2 lanes where the processor has them (function multi-versioning), SSE2 otherwise.
+// tested at the surface, at depth, at crest and trough with Wheeler and vertical stretching, and along inclined
+// lines of rotated points; on x86-64 the loop runs in AVX-512 or AVX2 lanes where the processor has them (function
+// multi-versioning), SSE2 otherwise.
 // Truncation (optional, `truncation` ε > 0): the components are kept sorted by k, and at a point with z' < 0 the
 // depth sums stop at the first component m with C_m(z') Σ_{j≥m} a_j ω_j ≤ ε Σ_j a_j ω_j and
 // C_m(z') Σ_{j≥m} a_j ω_j² ≤ ε Σ_j a_j ω_j². C_j(z') = cosh k_j(z'+h)/sinh k_j h falls with k
@@ -23,6 +31,7 @@
 // |ω_j t| > 6e6 rad takes WaveField::kinematics itself, point by point.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -40,6 +49,8 @@ class WaveKinematicsBatch {
     double time = std::numeric_limits<double>::quiet_NaN();
     bool time_reduced = false;  // θ_j in [−π, π] (else the point-by-point fallback)
     std::vector<double> theta, cos_psi, sin_psi;
+    std::vector<double> anchor_cos, anchor_sin;  // the exact phases of the last anchor point
+    long rotated_points = 0;  // points whose phases were rotated from an anchor's (a count, for tests and benches)
   };
 
   WaveKinematicsBatch() = default;
@@ -52,11 +63,15 @@ class WaveKinematicsBatch {
                 Scratch& scratch, FluidKinematics* out) const;
 
   const WaveField& field() const { return field_; }
+  // Calls of evaluate so far (from any thread): what the waves cost a run, counted for the riser's integrator
+  // choice (riser_integrator_cost) and its test.
+  long evaluations() const { return evaluations_.load(std::memory_order_relaxed); }
 
  private:
   WaveField field_;
   double cos_dir_ = 1.0, sin_dir_ = 0.0, depth_ = kDeepWater, largest_k_ = 0.0;
   double truncation_ = 0.0;
+  mutable std::atomic<long> evaluations_{0};
   // Per component, in increasing k: k, a, a ω, a ω², 1/(1 − e^{−2kh}), e^{−2kh} (0 in deep water or where it
   // underflows), ω, φ; and the tail sums Σ_{j≥m} a_j ω_j, Σ_{j≥m} a_j ω_j² (n + 1 entries, the last 0).
   std::vector<double> k_, amplitude_, a_omega_, a_omega2_, depth_scale_, mirror_, omega_, phase_;

@@ -249,7 +249,7 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
     const double h_whole = wholeStepsPerFrame(p, h_implicit);
     const double expected = harmonic_top ? implicitErrorModel(m.formulation) * std::pow(h_whole / p.motion_period, 2) : 0.0;
     const IntegratorCost implicit_cost = predictImplicitCost(m, p, h_whole, newtonTolerance(p, expected));
-    const IntegratorCost rk4_cost = predictRk4Cost(p, h_rk4_run);
+    const IntegratorCost rk4_cost = predictRk4Cost(m, p, h_rk4_run);
     const bool stiff = rk4_cost.steps > kExplicitStepBudget;
     const bool implicit = stiff || implicit_cost.total() < rk4_cost.total();
     plan.method = implicit ? Integrator::Implicit : Integrator::Rk4;

@@ -5,21 +5,29 @@
 #include <numbers>
 #include <sstream>
 
+#include "riser/riser_waves.hpp"
+
 namespace maris::riser {
 namespace {
 
-// Measured weights (bench_riser_auto_cost: case 5 and the peer riser, J3 and A3, n = 20…400, minimum of 3 repeats;
-// the table in docs/riser_work_precision.md), in right-hand sides: a chart residual is one evaluation plus the chart
-// maps (1.37–1.46); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
-// coordinates, the twin's solve and the map back (A 1.05–1.16, J 1.08–1.19); a refresh's work beside its balance
-// evaluations (colouring, the band's assembly and factorisation: 3.7–8.8, median 5).
+// Measured weights (bench_riser_auto_cost: case 5 and the peer riser, J3 and A3, n = 20 and 100, minimum of 3
+// repeats; the table in docs/riser.md), in right-hand sides: a chart residual is one evaluation plus the chart
+// maps (1.40–1.43); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
+// coordinates, the twin's solve and the map back (A 0.62–0.67, J 0.65–0.69); a refresh's work beside its balance
+// evaluations (colouring, the band's assembly and factorisation: 3.1–5.0, median 3.8).
 constexpr double kResidualCost = 1.4;
-constexpr double kAbsoluteSolveCost = 1.1;
-constexpr double kJointSolveCost = 1.15;
-constexpr double kFactorisationCost = 5.0;
-// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.34–0.36 µs from n = 20 to 400), for the per-step
-// times of the method line only.
-constexpr double kRhsMicrosecondsPerSegment = 0.35;
+constexpr double kAbsoluteSolveCost = 0.65;
+constexpr double kJointSolveCost = 0.68;
+constexpr double kFactorisationCost = 3.8;
+// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.33–0.36 µs at n = 20 and 100), for the per-step
+// times of the method line and the wave weight's conversion.
+constexpr double kRhsMicrosecondsPerSegment = 0.34;
+// The wave kinematics per Gauss point and wave component [ns] (bench_riser_auto_cost: the batch of the riser's sea,
+// phases at every component, depth sums truncated where the short waves have died out: 2.03 ns at n = 100, 2.40 at
+// n = 20), converted to right-hand sides by the one above.
+constexpr double kWaveNanosecondsPerPointComponent = 2.2;
+// History samples of a run (riser_integration), each of which evaluates the loads, so the waves, once more.
+constexpr double kHistorySamples = 2000;
 
 std::string grouped(double value) {
   const long v = std::lround(value);
@@ -46,6 +54,13 @@ double newtonIterationsPerStep(double newton_tolerance) {
   return 2.5 + 0.5 * decades;
 }
 
+double waveEvaluationCost(const RiserModel& m) {
+  if (!m.sea) return 0.0;
+  const double points = 3.0 * m.segmentCount(), components = static_cast<double>(m.sea->field.size());
+  return points * components * kWaveNanosecondsPerPointComponent * 1e-3 /
+         (kRhsMicrosecondsPerSegment * m.segmentCount());
+}
+
 double bandedSolveCost(const RiserModel& m) {
   return m.formulation == Formulation::Absolute ? kAbsoluteSolveCost : kJointSolveCost;
 }
@@ -64,16 +79,22 @@ IntegratorCost predictImplicitCost(const RiserModel& m, const RiserParameters& p
   c.steps = step > 0 ? p.end_time / step : 0.0;
   const double chunks = std::max(1, p.frame_count) + static_cast<double>(p.stress_times.size());
   const double iterations = newtonIterationsPerStep(newton_tolerance);
-  const double per_step = iterations * (kResidualCost + bandedSolveCost(m));
-  c.evaluations_per_step = c.steps > 0 ? per_step + chunks * matrixRefreshCost(m) / c.steps : 0.0;
+  const double waves = waveEvaluationCost(m);
+  const double per_step = iterations * (kResidualCost + bandedSolveCost(m)) + waves;
+  // The history is sampled between the steps (by interpolation of the state), at all 2000 samples however few
+  // the steps are.
+  const double per_run = chunks * matrixRefreshCost(m) + kHistorySamples * waves;
+  c.evaluations_per_step = c.steps > 0 ? per_step + per_run / c.steps : 0.0;
   return c;
 }
 
-IntegratorCost predictRk4Cost(const RiserParameters& p, double step) {
+IntegratorCost predictRk4Cost(const RiserModel& m, const RiserParameters& p, double step) {
   IntegratorCost c;
   c.step = step;
   c.steps = step > 0 ? p.end_time / step : 0.0;
-  c.evaluations_per_step = 4.0;
+  const double waves = waveEvaluationCost(m);
+  const double per_run = std::min<double>(kHistorySamples, c.steps) * waves;
+  c.evaluations_per_step = c.steps > 0 ? 4.0 * (1.0 + waves) + per_run / c.steps : 0.0;
   return c;
 }
 
@@ -83,12 +104,15 @@ double rk4AccuracyStep(double period, double end_time, double tolerance) {
   return std::pow(120.0 * std::max(tolerance, 1e-14) / phase, 0.25) / omega;
 }
 
-double implicitCostOfRun(const RiserModel& m, const RiserSolverStats& stats) {
+double implicitCostOfRun(const RiserModel& m, const RiserSolverStats& stats, long wave_evaluations) {
   return static_cast<double>(stats.rhs_evaluations) * (kResidualCost + bandedSolveCost(m)) +
-         static_cast<double>(stats.matrix_refreshes) * matrixRefreshCost(m);
+         static_cast<double>(stats.matrix_refreshes) * matrixRefreshCost(m) +
+         static_cast<double>(wave_evaluations) * waveEvaluationCost(m);
 }
 
-double explicitCostOfRun(const RiserSolverStats& stats) { return static_cast<double>(stats.rhs_evaluations); }
+double explicitCostOfRun(const RiserModel& m, const RiserSolverStats& stats, long wave_evaluations) {
+  return static_cast<double>(stats.rhs_evaluations) + static_cast<double>(wave_evaluations) * waveEvaluationCost(m);
+}
 
 std::string explainAutoChoice(const RiserModel& m, bool implicit, const IntegratorCost& implicit_cost,
                               const IntegratorCost& rk4_cost) {
@@ -99,7 +123,12 @@ std::string explainAutoChoice(const RiserModel& m, bool implicit, const Integrat
   const std::string rk4 = "RK4 " + grouped(rk4_cost.steps) + " steps × " + milliseconds(rk4_cost.evaluations_per_step, m);
   s << "auto → " << (implicit ? "implicit generalized-α" : "RK4") << ": predicted " << (implicit ? gen : rk4)
     << " against " << (implicit ? rk4 : gen) << " (" << grouped(implicit_cost.total()) << " against "
-    << grouped(rk4_cost.total()) << " right-hand-side evaluations; DOPRI5 ≈ 2.7 × RK4's, stability-bound)";
+    << grouped(rk4_cost.total()) << " right-hand-side evaluations; DOPRI5 ≈ 2.7 × RK4's, stability-bound";
+  if (m.sea)
+    s << "; waves: " << m.sea->field.size() << " components at " << 3 * m.segmentCount()
+      << " Gauss points ≈ " << waveEvaluationCost(m)
+      << " right-hand sides per evaluation, at each of RK4's 4 evaluations per step, once per implicit step";
+  s << ")";
   return s.str();
 }
 

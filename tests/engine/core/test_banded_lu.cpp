@@ -31,7 +31,7 @@ TEST(BandedLu, SolvesLikeDenseLuWithAndWithoutPivoting) {
   // diagonal forces interchanges; it is only used with both bandwidths ≥ 1 (a triangular band with a
   // small diagonal is nearly singular by construction).
   for (double diagonal : {10.0, 1e-3}) {
-    for (auto [kl, ku] : {std::pair<Eigen::Index, Eigen::Index>{1, 1}, {2, 3}, {0, 2}, {4, 0}}) {
+    for (auto [kl, ku] : {std::pair<Eigen::Index, Eigen::Index>{1, 1}, {2, 3}, {0, 2}, {4, 0}, {14, 14}}) {
       if (diagonal < 1.0 && (kl == 0 || ku == 0)) continue;
       BandedLu banded;
       Eigen::MatrixXd dense;
