@@ -22,7 +22,6 @@ constexpr double kExplicitStepBudget = 2.0e6;
 constexpr double kLooseNewtonTolerance = 1e-6;
 constexpr double kTightNewtonTolerance = 1e-10;
 constexpr double kNewtonShare = 1e-3;
-constexpr long kHistorySamples = 2000;
 // RK4 is stable for ωh up to 2√2 ≈ 2.83 on the imaginary axis; with ω_max an estimate, 2.8 is taken as its limit.
 constexpr double kRk4StabilityLimit = 2.8;
 

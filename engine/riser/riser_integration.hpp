@@ -27,6 +27,9 @@
 
 namespace maris::riser {
 
+// Samples of a run's history (the output interval is the simulated time over this); each evaluates the loads.
+inline constexpr long kHistorySamples = 2000;
+
 enum class Integrator { Rk4, Dopri5, Implicit };
 
 // Predicted cost of one integrator over a run (riser_integrator_cost), in right-hand-side evaluations.

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "riser/riser_integration.hpp"
 #include "riser/riser_waves.hpp"
 
 namespace maris::riser {
@@ -26,8 +27,6 @@ constexpr double kRhsMicrosecondsPerSegment = 0.34;
 // phases at every component, depth sums truncated where the short waves have died out: 2.03 ns at n = 100, 2.40 at
 // n = 20), converted to right-hand sides by the one above.
 constexpr double kWaveNanosecondsPerPointComponent = 2.2;
-// History samples of a run (riser_integration), each of which evaluates the loads, so the waves, once more.
-constexpr double kHistorySamples = 2000;
 
 std::string grouped(double value) {
   const long v = std::lround(value);
@@ -83,7 +82,7 @@ IntegratorCost predictImplicitCost(const RiserModel& m, const RiserParameters& p
   const double per_step = iterations * (kResidualCost + bandedSolveCost(m)) + waves;
   // The history is sampled between the steps (by interpolation of the state), at all 2000 samples however few
   // the steps are.
-  const double per_run = chunks * matrixRefreshCost(m) + kHistorySamples * waves;
+  const double per_run = chunks * matrixRefreshCost(m) + static_cast<double>(kHistorySamples) * waves;
   c.evaluations_per_step = c.steps > 0 ? per_step + per_run / c.steps : 0.0;
   return c;
 }
