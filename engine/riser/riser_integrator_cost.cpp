@@ -13,18 +13,18 @@ namespace {
 
 // Measured weights (bench_riser_auto_cost: case 5 and the peer riser, J3 and A3, n = 20 and 100, minimum of 3
 // repeats; the table in docs/riser.md), in right-hand sides: a chart residual is one evaluation plus the chart
-// maps (1.40–1.43); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
-// coordinates, the twin's solve and the map back (A 0.62–0.67, J 0.65–0.69); a refresh's work beside its balance
-// evaluations (colouring, the band's assembly and factorisation: 3.1–5.0, median 3.8).
-constexpr double kResidualCost = 1.4;
-constexpr double kAbsoluteSolveCost = 0.65;
-constexpr double kJointSolveCost = 0.68;
-constexpr double kFactorisationCost = 3.8;
-// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.33–0.36 µs at n = 20 and 100), for the per-step
+// maps (1.46–1.51); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
+// coordinates, the twin's solve and the map back (A 0.70–0.72, J 0.74–0.78); a refresh's work beside its balance
+// evaluations (colouring, the band's assembly and factorisation: 5.2–7.6, median 7.0).
+constexpr double kResidualCost = 1.48;
+constexpr double kAbsoluteSolveCost = 0.71;
+constexpr double kJointSolveCost = 0.75;
+constexpr double kFactorisationCost = 7.0;
+// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.30–0.32 µs at n = 20 and 100), for the per-step
 // times of the method line and the wave weight's conversion.
-constexpr double kRhsMicrosecondsPerSegment = 0.34;
+constexpr double kRhsMicrosecondsPerSegment = 0.30;
 // The wave kinematics per Gauss point and wave component [ns] (bench_riser_auto_cost: the batch of the riser's sea,
-// phases at every component, depth sums truncated where the short waves have died out: 2.03 ns at n = 100, 2.40 at
+// phases at every component, depth sums truncated where the short waves have died out: 2.05 ns at n = 100, 2.45 at
 // n = 20), converted to right-hand sides by the one above.
 constexpr double kWaveNanosecondsPerPointComponent = 2.2;
 
