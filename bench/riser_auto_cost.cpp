@@ -33,6 +33,7 @@
 #include "riser/riser_statics.hpp"
 #include "riser/riser_waves.hpp"
 #include "bench_clock.hpp"
+#include "riser_bench_run.hpp"
 #include "riser_moving_state.hpp"
 
 using namespace maris;
@@ -82,16 +83,7 @@ void timeWaves(int repeats, const std::vector<int>& counts) {
     p.wave_peak_period = 10.0;
     p.wave_component_count = 200;
     const RiserModel m = buildRiserModel(p);
-    RunContext ctx;
-    const StaticSolution st = solveStatics(m, ctx);
-    const Eigen::VectorXd y = restState(m, st.orientation, st.top);
-    RiserWorkspace ws = makeWorkspace(m, 0.0);
-    poseFromState(m, 30.0, y, ws.pose);
-    std::vector<Eigen::Vector3d> points;
-    for (int i = 0; i <= m.n; ++i)
-      for (int q = 0; q < 3; ++q)
-        points.push_back(ws.pose.position[i] + kGaussX[q] * m.segments[i].length * ws.pose.rotation[i].col(0) -
-                         Eigen::Vector3d(0.0, 0.0, m.sea->water_level));
+    const std::vector<Eigen::Vector3d> points = bench::staticGaussPointsBelowWaterLevel(m);
     std::vector<ocean::FluidKinematics> out(points.size());
     ocean::WaveKinematicsBatch::Scratch scratch;
     const long calls = std::max(50L, 200000L / (n + 1));

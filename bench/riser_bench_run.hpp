@@ -1,6 +1,7 @@
 // The riser benches' common run (bench_riser_long_sea, bench_riser_implicit_cost, bench_riser_peer): statics, the
 // scene's integration timed in thread CPU seconds, and the history of the probe (and of the top force), with the
-// probe error against a reference history and a CSV cache for references that take long to compute.
+// probe error against a reference history and a CSV cache for references that take long to compute; and the
+// points where a riser samples the sea (also for bench_riser_auto_cost).
 #pragma once
 
 #include <algorithm>
@@ -17,6 +18,23 @@
 #include "riser/riser_statics.hpp"
 
 namespace maris::bench {
+
+// The Gauss points of the drag and inertia loads on the static shape of m (model at rest, pose at t = 30 s, after the
+// sea's ramp), relative to the still water level: the points where the riser samples the wave kinematics.
+inline std::vector<Eigen::Vector3d> staticGaussPointsBelowWaterLevel(const riser::RiserModel& m) {
+  using namespace riser;
+  RunContext ctx;
+  const StaticSolution st = solveStatics(m, ctx);
+  const Eigen::VectorXd y = restState(m, st.orientation, st.top);
+  RiserWorkspace ws = makeWorkspace(m, 0.0);
+  poseFromState(m, 30.0, y, ws.pose);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i <= m.n; ++i)
+    for (int q = 0; q < 3; ++q)
+      points.push_back(ws.pose.position[i] + kGaussX[q] * m.segments[i].length * ws.pose.rotation[i].col(0) -
+                       Eigen::Vector3d(0.0, 0.0, m.sea->water_level));
+  return points;
+}
 
 struct ProbeHistory {
   std::vector<double> t;

@@ -109,11 +109,7 @@ void timeKinematics(int repeats) {
   RiserWorkspace ws = makeWorkspace(m, 0.0);
   Eigen::VectorXd dy(y.size());
   poseFromState(m, 30.0, y, ws.pose);
-  std::vector<Eigen::Vector3d> points;
-  for (int i = 0; i <= m.n; ++i)
-    for (int q = 0; q < 3; ++q)
-      points.push_back(ws.pose.position[i] + kGaussX[q] * m.segments[i].length * ws.pose.rotation[i].col(0) -
-                       Eigen::Vector3d(0.0, 0.0, m.sea->water_level));
+  const std::vector<Eigen::Vector3d> points = bench::staticGaussPointsBelowWaterLevel(m);
   const ocean::WaveKinematicsBatch batch(m.sea->field, p.wave_direction_deg * std::numbers::pi / 180.0, p.gravity);
   const ocean::WaveKinematicsBatch& truncated = *m.sea->batch;
   std::vector<ocean::FluidKinematics> out(points.size());
