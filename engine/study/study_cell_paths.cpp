@@ -88,13 +88,12 @@ void setParameter(Json& parameters, const std::string& path, Json value) {
     setAtPath(parameters, path, std::move(value));
     return;
   }
-  std::string pointer;  // "/current/profile": parameter paths are snake_case, nothing to escape
-  for (char c : "." + cell->table) pointer += c == '.' ? '/' : c;
-  const Json::json_pointer table(pointer);
-  if (!parameters.contains(table) || !parameters.at(table).is_array() || cell->row >= parameters.at(table).size() ||
-      !parameters.at(table)[cell->row].is_object())
+  const Json* rows = findAtPath(parameters, cell->table);
+  if (!rows || !rows->is_array() || cell->row >= rows->size() || !(*rows)[cell->row].is_object())
     throw InputError(path, "", "the table has no such row");  // checked when the study was read
-  parameters.at(table)[cell->row][cell->column] = std::move(value);
+  Json table = *rows;
+  table[cell->row][cell->column] = std::move(value);
+  setAtPath(parameters, cell->table, std::move(table));
 }
 
 }  // namespace maris::study::detail
