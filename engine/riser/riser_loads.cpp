@@ -216,12 +216,24 @@ void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, Seg
   if (m.seabed) addSeabedContact(m, pose, loads);
 }
 
+namespace {
+
+double jointSpringEnergy(const Joint& joint, const Vec3& angles) {
+  return 0.5 * angles.dot(joint.stiffness.cwiseProduct(angles));
+}
+
+}  // namespace
+
 double springEnergy(const RiserModel& m, const RiserPose& pose) {
   double e = 0;
-  for (int i = 1; i <= m.n; ++i) {
-    const Vec3 a = zyxAngles(pose.rotation[i - 1].transpose() * pose.rotation[i]);
-    e += 0.5 * a.dot(m.joints[i].stiffness.cwiseProduct(a));
-  }
+  for (int i = 1; i <= m.n; ++i)
+    e += jointSpringEnergy(m.joints[i], zyxAngles(pose.rotation[i - 1].transpose() * pose.rotation[i]));
+  return e;
+}
+
+double springEnergy(const RiserModel& m, const SegmentLoads& loads) {
+  double e = 0;
+  for (int i = 1; i <= m.n; ++i) e += jointSpringEnergy(m.joints[i], loads.relative_angle[i]);
   return e;
 }
 

@@ -78,6 +78,9 @@ void computeLoads(const RiserModel& m, const RiserPose& pose, double factor, Seg
 
 // Energies of the conservative part: rotary springs, weight and buoyancy, anchor spring [J].
 double springEnergy(const RiserModel& m, const RiserPose& pose);
+// The same from the joint angles computeLoads left in loads.relative_angle (the ZYX angles of R_{i-1}^T R_i): no
+// second pass of 3×3 products over the riser (the recorder, at every history sample).
+double springEnergy(const RiserModel& m, const SegmentLoads& loads);
 double gravityPotential(const RiserModel& m, const RiserPose& pose);
 double anchorSpringEnergy(const RiserModel& m, const RiserPose& pose);
 double kineticEnergy(const RiserModel& m, const RiserPose& pose);

@@ -93,17 +93,6 @@ void fillProfile(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
   }
 }
 
-// springEnergy(m, pose) from the joint angles the right-hand side just computed (loads.relative_angle holds the
-// same ZYX angles of R_{i-1}^T R_i): the same sum, without a second pass of 3×3 products over the riser.
-double springEnergyOfAngles(const RiserModel& m, const SegmentLoads& loads) {
-  double e = 0;
-  for (int i = 1; i <= m.n; ++i) {
-    const Vec3& a = loads.relative_angle[i];
-    e += 0.5 * a.dot(m.joints[i].stiffness.cwiseProduct(a));
-  }
-  return e;
-}
-
 }  // namespace
 
 RiserProfile evaluateProfile(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
@@ -216,7 +205,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
   const int nodes = m_.n + 2;
   if (first_) initial_nodes_ = prof.position;
   // Energies and the work balance E(t) - E(0) = W_drag + W_damping + W_boundary.
-  const double kin = kineticEnergy(m_, pose), spr = springEnergyOfAngles(m_, ws_.loads);
+  const double kin = kineticEnergy(m_, pose), spr = springEnergy(m_, ws_.loads);
   const double grav = gravityPotential(m_, pose) + anchorSpringEnergy(m_, pose) + seabedContactEnergy(m_, pose);
   const double total = kin + spr + grav;
   const Eigen::Index ow = workIntegralOffset(m_);
