@@ -489,12 +489,26 @@ class StudyTest : public QObject {
       QVERIFY(!again.addButton()->isEnabled());
     }
 
-    panel()->setParameterPrompt([](const SceneDefinition& scene, const Json& parameters, const std::vector<std::string>& taken) {
-      AddParameterDialog dialog(scene, parameters, taken);
-      return dialog.chooseCell("sections", 1, "outer_diameter") ? dialog.path() : std::string();
-    });
+    // The dock's button opens the real dialog (answered as a user would); the range comes from the sweep prompt.
     panel()->setSweepPrompt(answer({"", 0.2, 0.8, 4, false}, true));
-    QVERIFY2(panel()->addParameterDialog(), qPrintable(panel()->lastError()));
+    QPushButton* add = nullptr;
+    for (QPushButton* b : panel()->findChildren<QPushButton*>())
+      if (b->text() == QStringLiteral("Add parameter…")) add = b;
+    QVERIFY(add);
+    bool chose = false;
+    QTimer::singleShot(0, this, [&] {
+      for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* d = qobject_cast<AddParameterDialog*>(w); d && d->isVisible()) {
+          chose = d->chooseCell("sections", 1, "outer_diameter");
+          d->addButton()->click();
+        }
+    });
+    QTimer::singleShot(20000, this, [&] {  // never hang on a dialog left open
+      for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* d = qobject_cast<AddParameterDialog*>(w); d && d->isVisible()) d->reject();
+    });
+    add->click();
+    QVERIFY(chose);
     QCOMPARE(panel()->parameters().size(), std::size_t(1));
     QTableWidget* table = panel()->parameterTable();
     const QString label = QStringLiteral("outer diameter of sections[1] [m]");
