@@ -5,6 +5,7 @@
 // relative data paths resolve against the file that names them.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -303,6 +304,23 @@ TEST_F(CliStudy, AFatigueScatterStudyCollectsEachSeaStatesAnnualDamage) {
   const double year = 0.75 * damage[0] + 0.25 * damage[1];
   EXPECT_NEAR(sums[0].at("value").get<double>(), year, 1e-15 * year);
   EXPECT_TRUE(contains(run.out, "weighted sum of max_fatigue_damage_per_year over probability: ")) << run.out;
+}
+
+// A study over a table cell writes its plot under a portable file name (the cell's "[0]" as "_0"), and no file
+// name in plots/ holds a character outside [A-Za-z0-9._-].
+TEST_F(CliStudy, APlotAgainstATableCellHasAPortableFileName) {
+  writeText(dir_ / "cell.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
+    "grid": {"output.probes[0].arc_length": [2, 8]}, "results": ["tip_deflection"]})");
+  const auto run = runCli({"study", "run", "cell.json", "--out", "cell", "--jobs", "2"}, dir_.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(dir_ / "cell" / "plots" / "tip_deflection_vs_output.probes_0.arc_length.png")) << run.out;
+  std::size_t pngs = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "cell" / "plots")) {
+    ++pngs;
+    for (const char c : e.path().filename().string())
+      EXPECT_TRUE(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-') << e.path();
+  }
+  EXPECT_EQ(pngs, 1u);
 }
 
 // The examples in resources/studies are valid wherever they are checked from (their table and base resolve
