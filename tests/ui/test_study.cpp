@@ -28,6 +28,7 @@
 
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
+#include "editor/table_editor.hpp"
 #include "main_window.hpp"
 #include "plots/display_units.hpp"
 #include "plots/study_plot.hpp"
@@ -551,6 +552,32 @@ class StudyTest : public QObject {
     QVERIFY(r >= 0);
     view->resultBox()->setCurrentIndex(r);
     QCOMPARE(view->plot()->xAxis->label(), label);  // the plot names the cell the same way
+  }
+
+  // "Sweep this cell…" in a number cell's context menu of the editor's table sweeps that cell (its study path)
+  // and runs it; a row the table lacks has no menu.
+  void sweepThisCellInTheEditorsTableRunsAStudyOfTheCell() {
+    auto* sections = window_->editor()->findChild<TableEditor*>(QStringLiteral("field:sections"));
+    QVERIFY(sections);
+    QVERIFY(!sections->cellMenu(5, 1));  // no such row
+    std::unique_ptr<QMenu> menu(sections->cellMenu(0, 1));
+    QVERIFY(menu);
+    QAction* sweep = nullptr;
+    for (QAction* a : menu->actions())
+      if (a->objectName() == QLatin1String("sweepCellAction")) sweep = a;
+    QVERIFY(sweep);
+    panel()->setSweepPrompt(answer({"", 0.3, 0.6, 4, false}));
+    QSignalSpy finished(panel(), &StudyPanel::studyFinished);
+    sweep->trigger();
+    QCOMPARE(panel()->parameters().size(), std::size_t(1));
+    QCOMPARE(panel()->parameters()[0].path, std::string("sections[0].outer_diameter"));
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.first().at(0).toInt(), 4);
+    for (int c = 0; c < 4; ++c) {
+      const double expected = 0.3 + 0.1 * c;
+      const double value = panel()->session().caseScenario(c).parameters["sections"][0]["outer_diameter"].get<double>();
+      QVERIFY2(std::abs(value - expected) <= 1e-12, qPrintable(QString::number(value)));
+    }
   }
 
   void aWindowTooNarrowForTheStudyDockBesideTheViewsGetsItFloatingAndKeepsItsWidth() {
