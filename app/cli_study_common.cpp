@@ -98,6 +98,16 @@ int collectAndReport(const StudyFolder& folder, StudyManifest& manifest, bool no
   std::printf("%zu cases: %zu ok, %zu failed, %zu timed out, %zu not run\n", collected.cases.size(),
               collected.count(CaseStatus::Ok), collected.count(CaseStatus::Failed),
               collected.count(CaseStatus::Timeout), missing.size());
+  for (const auto& sum : collected.weighted_sums) {
+    std::string ids;
+    for (const auto& id : sum.missing) ids += (ids.empty() ? "" : ", ") + id;
+    if (sum.value)
+      std::printf("weighted sum of %s over %s: %.6g %s (weights add up to %.6g)\n", sum.result.c_str(),
+                  manifest.weight_column.c_str(), *sum.value, sum.unit.c_str(), sum.weight_total);
+    else
+      std::printf("weighted sum of %s over %s: not yet; cases %s have weight but no value\n", sum.result.c_str(),
+                  manifest.weight_column.c_str(), echoText(ids, 400).c_str());
+  }
   std::printf("study.csv written to %s (%zu results per case)%s\n", folder.csv().c_str(),
               collected.result_names.size(),
               pngs ? (", PNG plots: " + std::to_string(pngs) + " in " + folder.plots().string()).c_str() : "");

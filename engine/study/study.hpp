@@ -7,7 +7,8 @@
 //    "grid": {"path": [v1, v2, ...] | {"from": a, "to": b, "count": n, "spacing": "linear"|"log"}, ...}
 //    "table": "cases.csv"                                      one column per parameter path, one row per case
 //    "latin_hypercube": {"count": n, "seed": s, "bounds": {"path": [low, high] | {"from", "to", "spacing"}}}
-//    "results": ["scalar", ...]                                what to collect (optional; default all scalars)}
+//    "results": ["scalar", ...]                                what to collect (optional; default all scalars)
+//    "weighted_sum": {"weight": "column", "results": [...]}     table only: a column of case weights (optional)}
 //
 // A study knows no scene by name: it reaches the scene of its base scenario through the catalog
 // (catalog.hpp) and checks every case with the scene's schema, checks and work estimate, as `maris-cli
@@ -19,6 +20,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,6 +81,11 @@ struct Study {
   std::uint64_t seed = 0;                    // LatinHypercube
   std::vector<SampleBounds> bounds;          // LatinHypercube: one per parameter
   std::vector<std::string> results;          // scalars to collect; empty: every scalar of summary.json
+  // Table: a column of the table that is no parameter but each case's weight (a sea state's probability);
+  // collecting writes the weighted sum of each of `weighted_results` over the cases.
+  std::string weight_column;                 // empty: none
+  std::vector<double> weights;               // one per row (case), finite and >= 0
+  std::vector<std::string> weighted_results;
 };
 
 // One case: the base with the case's values set.
@@ -108,6 +115,27 @@ std::vector<StudyCase> expandStudy(const Study& study);
 // Every problem of every case (schema, the scene's cross-field checks and, unless `allow_large`, the work
 // limits), each named "case 0003: parameters.x", led by one line listing all bad cases. Empty: all can run.
 std::vector<FieldError> caseErrors(const Study& study, const std::vector<StudyCase>& cases, bool allow_large);
+
+// A cell of a table field as a varied parameter, "TABLE[ROW].COLUMN": "current.profile[1].speed" is the speed of
+// the current profile's second row (rows counted from 0, as the schema's messages count them).
+struct TableCell {
+  std::string table;  // "current.profile"
+  std::size_t row = 0;
+  std::string column;  // "speed"
+};
+// The cell `path` names; nothing for a plain field or a malformed cell path.
+std::optional<TableCell> tableCell(const std::string& path);
+// "current.profile[1].speed" from its parts.
+std::string tableCellPath(const std::string& table, std::size_t row, const std::string& column);
+
+// What a study may vary at `path` ("geometry.length", "current.profile[1].speed", with or without
+// "parameters.") of `scene` over a base scenario's `parameters` (a cell's row must be in them): the field's
+// spec, or for a cell its column's spec with the cell's path as `path`. Nothing, with the reason in `why`
+// (if given), for anything else — the check a study file's parameters get.
+std::optional<ParamSpec> findStudyParameter(const SceneDefinition& scene, const Json& parameters,
+                                            const std::string& path, std::string* why = nullptr);
+// The value at `path` (a dotted path or a cell) of a scenario's parameters; nullptr if there is none.
+const Json* findParameterValue(const Json& parameters, const std::string& path);
 
 // "0001" for index 0 of up to 9999 cases; more digits for larger studies.
 std::string caseId(std::size_t index, std::size_t count);

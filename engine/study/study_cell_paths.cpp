@@ -7,21 +7,12 @@
 
 namespace maris::study::detail {
 
-namespace {
-
-struct CellPath {
-  std::string table;   // "current.profile"
-  std::size_t row = 0;
-  std::string column;  // "speed"
-};
-
-// Splits "TABLE[ROW].COLUMN"; nothing when `path` has no '[' (a plain field) or is malformed (`malformed` set).
-std::optional<CellPath> splitCellPath(const std::string& path, bool& malformed) {
+std::optional<TableCell> splitTableCell(const std::string& path, bool& malformed) {
   malformed = false;
   const auto open = path.find('[');
   if (open == std::string::npos) return std::nullopt;
   const auto close = path.find(']', open);
-  CellPath cell;
+  TableCell cell;
   cell.table = path.substr(0, open);
   const char* first = path.data() + open + 1;
   const char* last = path.data() + (close == std::string::npos ? path.size() : close);
@@ -33,12 +24,10 @@ std::optional<CellPath> splitCellPath(const std::string& path, bool& malformed) 
   return cell;
 }
 
-}  // namespace
-
 std::optional<ParamSpec> lookupTableCell(const SceneDefinition& scene, const Json& base, const std::string& path,
                                          const std::string& where, std::vector<FieldError>& errors, bool& is_cell) {
   bool malformed = false;
-  const auto cell = splitCellPath(path, malformed);
+  const auto cell = splitTableCell(path, malformed);
   is_cell = cell.has_value() || malformed;
   if (malformed) {
     errors.push_back({where, "", "a cell of a table is written TABLE[ROW].COLUMN, rows counted from 0 "
@@ -77,13 +66,13 @@ std::optional<ParamSpec> lookupTableCell(const SceneDefinition& scene, const Jso
     return std::nullopt;
   }
   ParamSpec spec = *column;
-  spec.path = cell->table + "[" + std::to_string(cell->row) + "]." + cell->column;
+  spec.path = tableCellPath(cell->table, cell->row, cell->column);
   return spec;
 }
 
 void setParameter(Json& parameters, const std::string& path, Json value) {
   bool malformed = false;
-  const auto cell = splitCellPath(path, malformed);
+  const auto cell = splitTableCell(path, malformed);
   if (!cell) {
     setAtPath(parameters, path, std::move(value));
     return;
@@ -97,3 +86,33 @@ void setParameter(Json& parameters, const std::string& path, Json value) {
 }
 
 }  // namespace maris::study::detail
+
+namespace maris::study {
+
+std::optional<TableCell> tableCell(const std::string& path) {
+  bool malformed = false;
+  return detail::splitTableCell(path, malformed);
+}
+
+std::string tableCellPath(const std::string& table, std::size_t row, const std::string& column) {
+  return table + "[" + std::to_string(row) + "]." + column;
+}
+
+std::optional<ParamSpec> findStudyParameter(const SceneDefinition& scene, const Json& parameters,
+                                            const std::string& path, std::string* why) {
+  std::vector<FieldError> errors;
+  auto spec = detail::lookupParameter(scene, parameters, path, path, errors);
+  if (why) *why = errors.empty() ? std::string() : errors.front().message;
+  return spec;
+}
+
+const Json* findParameterValue(const Json& parameters, const std::string& path) {
+  const auto cell = tableCell(path);
+  if (!cell) return findAtPath(parameters, path);
+  const Json* rows = findAtPath(parameters, cell->table);
+  if (!rows || !rows->is_array() || cell->row >= rows->size() || !(*rows)[cell->row].is_object()) return nullptr;
+  const auto value = (*rows)[cell->row].find(cell->column);
+  return value == (*rows)[cell->row].end() ? nullptr : &*value;
+}
+
+}  // namespace maris::study

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <set>
@@ -63,7 +64,37 @@ CollectedStudy collectStudy(const StudyFolder& folder, const StudyManifest& mani
     }
     cases.push_back(std::move(c));
   }
-  return collectScalars(manifest.parameters, manifest.results, std::move(cases), scalars);
+  CollectedStudy collected = collectScalars(manifest.parameters, manifest.results, std::move(cases), scalars);
+  if (!manifest.weight_column.empty())
+    collected.weighted_sums = weightedSums(manifest.weighted_results, manifest.weights, collected.cases, scalars);
+  return collected;
+}
+
+std::vector<WeightedSum> weightedSums(const std::vector<std::string>& results, const std::vector<double>& weights,
+                                      const std::vector<CollectedCase>& cases, const std::vector<CaseScalars>& scalars) {
+  std::vector<WeightedSum> sums;
+  for (const auto& name : results) {
+    WeightedSum sum;
+    sum.result = name;
+    sum.unit = "-";
+    double total = 0.0;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const double weight = i < weights.size() ? weights[i] : 0.0;
+      sum.weight_total += weight;
+      const std::pair<double, std::string>* value = nullptr;  // (value, unit)
+      if (cases[i].status == CaseStatus::Ok && i < scalars.size())
+        if (const auto it = scalars[i].find(name); it != scalars[i].end()) value = &it->second;
+      if (value) sum.unit = value->second;
+      if (weight == 0.0) continue;
+      if (value)
+        total += weight * value->first;
+      else
+        sum.missing.push_back(cases[i].id);
+    }
+    if (sum.missing.empty()) sum.value = total;
+    sums.push_back(std::move(sum));
+  }
+  return sums;
 }
 
 CollectedStudy collectScalars(std::vector<StudyParameter> parameters, const std::vector<std::string>& requested,
@@ -142,8 +173,59 @@ void writeCollected(const StudyFolder& folder, StudyManifest& manifest, const Co
                                 {"results", collected.result_names},
                                 {"warnings", collected.warnings},
                                 {"cases", cases}};
+  if (!collected.weighted_sums.empty()) {
+    Json sums = Json::array();
+    for (const auto& sum : collected.weighted_sums)
+      sums.push_back({{"result", sum.result},
+                      {"weight", manifest.weight_column},
+                      {"value", sum.value ? Json(*sum.value) : Json()},
+                      {"unit", sum.unit},
+                      {"weight_total", sum.weight_total},
+                      {"missing", sum.missing}});
+    manifest.json["collected"]["weighted_sums"] = std::move(sums);
+  }
   writeFileAtomic(folder.manifest(), manifest.json.dump(1) + "\n");
 }
+
+namespace {
+
+// `name` as a file name every file system and shell takes: a cell's "[ROW]" becomes "_ROW" and any other
+// character outside [A-Za-z0-9._-] a '_'; a leading '.' or '-' (a hidden file, an option) gets a '_' before it.
+std::string portableStem(const std::string& name) {
+  std::string stem;
+  for (const char c : name) {
+    if (c == ']') continue;
+    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '.' ||
+                       c == '_' || c == '-';
+    stem += plain ? c : '_';
+  }
+  if (stem.empty() || stem.front() == '.' || stem.front() == '-') stem.insert(stem.begin(), '_');
+  return stem;
+}
+
+// Makes every plot's file stem unique, ignoring case (two stems that differ only in case are one file on
+// macOS and Windows): a later repeat gets "-2", "-3", … in the order of the plots.
+void makeStemsUnique(std::vector<StudyPlot>& plots) {
+  const auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  std::set<std::string> taken;
+  for (const auto& plot : plots) taken.insert(lower(plot.file_stem));
+  std::set<std::string> used;
+  for (auto& plot : plots) {
+    if (used.insert(lower(plot.file_stem)).second) continue;
+    for (int n = 2;; ++n) {
+      const std::string candidate = plot.file_stem + "-" + std::to_string(n);
+      if (taken.count(lower(candidate)) || used.count(lower(candidate))) continue;
+      plot.file_stem = candidate;
+      used.insert(lower(candidate));
+      break;
+    }
+  }
+}
+
+}  // namespace
 
 std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyManifest& manifest) {
   std::vector<StudyPlot> plots;
@@ -154,12 +236,13 @@ std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyMa
   for (std::size_t r = 0; r < collected.result_names.size(); ++r) {
     const std::string& result = collected.result_names[r];
     if (map)
-      plots.push_back({result + "_map", result + " over " + collected.parameters[0].path + " and " +
+      plots.push_back({portableStem(result + "_map"), result + " over " + collected.parameters[0].path + " and " +
                                             collected.parameters[1].path, r, 1, true});
     for (const auto p : numeric)
-      plots.push_back({result + "_vs_" + collected.parameters[p].path,
+      plots.push_back({portableStem(result + "_vs_" + collected.parameters[p].path),
                        result + " against " + collected.parameters[p].path, r, p, false});
   }
+  makeStemsUnique(plots);
   return plots;
 }
 

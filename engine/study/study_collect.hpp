@@ -20,12 +20,23 @@ struct CollectedCase {
   CaseOutcome outcome;                         // exit code, message and wall time of the last attempt
 };
 
+// A table study's weighted sum ("weighted_sum"): sum_i weight_i * result_i over its cases, e.g. a scatter
+// diagram's yearly fatigue damage from each sea state's probability and its damage per year.
+struct WeightedSum {
+  std::string result;
+  std::string unit;                  // the result's ("-" when no case has it)
+  std::optional<double> value;       // none while a case of weight > 0 is not complete or lacks the result
+  double weight_total = 0.0;         // sum of all cases' weights (1 for probabilities covering every case)
+  std::vector<std::string> missing;  // cases of weight > 0 that are not complete or lack the result
+};
+
 struct CollectedStudy {
   std::vector<StudyParameter> parameters;
   std::vector<std::string> result_names;  // the requested scalars, or every scalar of the complete cases (sorted)
   std::vector<std::string> result_units;
   std::vector<CollectedCase> cases;
   std::vector<std::string> warnings;      // requested results that no complete case has
+  std::vector<WeightedSum> weighted_sums; // a table study's "weighted_sum", one per listed result
   std::size_t count(CaseStatus status) const;
 };
 
@@ -39,12 +50,17 @@ using CaseScalars = std::map<std::string, std::pair<double, std::string>>;
 CollectedStudy collectScalars(std::vector<StudyParameter> parameters, const std::vector<std::string>& requested,
                               std::vector<CollectedCase> cases, const std::vector<CaseScalars>& scalars);
 
+// Each of `results` summed over the cases with the cases' `weights` (one per case), in case order. A case
+// counts when it is Ok and has the result; a case of weight 0 is not needed.
+std::vector<WeightedSum> weightedSums(const std::vector<std::string>& results, const std::vector<double>& weights,
+                                      const std::vector<CollectedCase>& cases, const std::vector<CaseScalars>& scalars);
+
 // study.csv: a row of names (case, status, each varied parameter, each result), a row of units (SI; "-"
 // where none), one row per case; numbers with 17 significant digits (a double round-trips), empty cells
 // for results a case does not have. Nothing in it depends on timing or on the order cases finished.
 std::string studyCsv(const CollectedStudy& collected);
 
-// Writes study.csv and records the cases' status in study.json ("collected").
+// Writes study.csv and records the cases' status in study.json ("collected", with its "weighted_sums").
 void writeCollected(const StudyFolder& folder, StudyManifest& manifest, const CollectedStudy& collected);
 
 // One PNG of a collected study: result `result` against the number parameter `x` (a line per combination
@@ -53,7 +69,8 @@ void writeCollected(const StudyFolder& folder, StudyManifest& manifest, const Co
 // both (`x` across). Indices are into CollectedStudy::parameters and ::result_names; the desktop
 // application's study plot draws it (the same picture as its Study panel).
 struct StudyPlot {
-  std::string file_stem;  // "c_total_vs_hull.length", "c_total_map"
+  std::string file_stem;  // "c_total_vs_hull.length", "c_total_map", "drag_vs_current.profile_1.speed" for the
+                          // cell current.profile[1].speed: only [A-Za-z0-9._-], unique in the study (ignoring case)
   std::string title;
   std::size_t result = 0;
   std::size_t x = 0;

@@ -21,6 +21,8 @@ std::optional<ParamSpec> lookupParameter(const SceneDefinition& scene, const Jso
 // The cell part of lookupParameter (study_cell_paths.cpp): `is_cell` tells whether `path` names a cell at all.
 std::optional<ParamSpec> lookupTableCell(const SceneDefinition& scene, const Json& base, const std::string& path,
                                          const std::string& where, std::vector<FieldError>& errors, bool& is_cell);
+// Splits "TABLE[ROW].COLUMN"; nothing when `path` has no '[' (a plain field) or is malformed (`malformed` set).
+std::optional<TableCell> splitTableCell(const std::string& path, bool& malformed);
 // Writes `value` at `path` of a scenario's parameters: a dotted path, or a cell whose row lookupParameter checked.
 void setParameter(Json& parameters, const std::string& path, Json value);
 

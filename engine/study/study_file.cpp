@@ -14,7 +14,7 @@ namespace {
 
 const std::vector<std::string> kDesigns = {"grid", "table", "latin_hypercube"};
 const std::vector<std::string> kFields = {"format", "name", "description", "base", "set", "results",
-                                          "grid", "table", "latin_hypercube"};
+                                          "grid", "table", "latin_hypercube", "weighted_sum"};
 
 void prefixErrors(const std::vector<FieldError>& from, const std::string& prefix, std::vector<FieldError>& to) {
   for (auto e : from) {
@@ -117,6 +117,44 @@ void readResults(const Json& results, Study& study, std::vector<FieldError>& err
   }
 }
 
+// "weighted_sum": {"weight": COLUMN, "results": [...]}, for a table study (its column is read with the table).
+void readWeightedSum(const Json& sum, bool table, Study& study, std::vector<FieldError>& errors) {
+  if (!table) {
+    errors.push_back({"weighted_sum", jsonSnippet(sum), "needs a \"table\" design (the weights are a column of it)"});
+    return;
+  }
+  if (!sum.is_object()) {
+    errors.push_back({"weighted_sum", jsonSnippet(sum), "must be {\"weight\": COLUMN, \"results\": [scalar, ...]}"});
+    return;
+  }
+  for (auto it = sum.begin(); it != sum.end(); ++it)
+    if (it.key() != "weight" && it.key() != "results")
+      errors.push_back({"weighted_sum." + it.key(), jsonSnippet(it.value()), "unknown field; expected weight, results"});
+  const auto weight = sum.find("weight");
+  if (weight == sum.end() || !weight->is_string() || weight->get<std::string>().empty())
+    errors.push_back({"weighted_sum.weight", weight == sum.end() ? "" : jsonSnippet(*weight),
+                      "must name a column of the table (its header) that holds each case's weight"});
+  else
+    study.weight_column = weight->get<std::string>();
+  const auto results = sum.find("results");
+  if (results == sum.end() || !results->is_array() || results->empty()) {
+    errors.push_back({"weighted_sum.results", results == sum.end() ? "" : jsonSnippet(*results),
+                      "must list the scalar results to sum (names as in a run's summary.json)"});
+    return;
+  }
+  for (std::size_t i = 0; i < results->size(); ++i) {
+    const Json& r = (*results)[i];
+    const std::string where = "weighted_sum.results[" + std::to_string(i) + "]";
+    if (!r.is_string() || r.get<std::string>().empty())
+      errors.push_back({where, jsonSnippet(r), "must be a scalar result's name"});
+    else if (std::find(study.weighted_results.begin(), study.weighted_results.end(), r.get<std::string>()) !=
+             study.weighted_results.end())
+      errors.push_back({where, jsonSnippet(r), "is listed twice"});
+    else
+      study.weighted_results.push_back(r.get<std::string>());
+  }
+}
+
 }  // namespace
 
 const char* toString(DesignKind kind) {
@@ -200,6 +238,8 @@ Study studyFromJson(const Json& document, const std::filesystem::path& folder, c
     if (study.base_origin == "inline") resolveDataPaths(scene->schema, study.base.parameters, study.folder);
     if (const auto it = document.find("set"); it != document.end()) applySet(*it, *scene, study, errors);
     resolveDataPaths(scene->schema, study.base.parameters, study.folder);  // paths given in "set"
+    if (const auto it = document.find("weighted_sum"); it != document.end())
+      readWeightedSum(*it, designs.size() == 1 && designs[0] == "table", study, errors);
     if (designs.size() == 1) {
       const Json& design = document.at(designs[0]);
       if (designs[0] == "grid") detail::readGrid(design, *scene, study, errors);

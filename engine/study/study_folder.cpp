@@ -90,8 +90,12 @@ Json manifestJson(const Study& study, const std::vector<StudyCase>& cases, const
   for (const auto& p : study.parameters)
     parameters.push_back({{"path", p.path}, {"unit", p.unit}, {"kind", toString(p.kind)}});
   Json list = Json::array();
-  for (const auto& c : cases) list.push_back({{"id", c.id}, {"values", c.values}});
-  return {{"format", kStudyRunFormat},
+  const bool weighted = !study.weight_column.empty() && study.weights.size() == cases.size();
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    list.push_back({{"id", cases[i].id}, {"values", cases[i].values}});
+    if (weighted) list.back()["weight"] = study.weights[i];
+  }
+  Json manifest = {{"format", kStudyRunFormat},
           {"study_file", std::filesystem::absolute(study_file).lexically_normal().string()},
           {"name", study.name},
           {"description", study.description},
@@ -107,6 +111,8 @@ Json manifestJson(const Study& study, const std::vector<StudyCase>& cases, const
           {"commit", commitId()},
           {"prepared_at", isoUtc(std::chrono::system_clock::now())},
           {"runs", Json::array()}};
+  if (weighted) manifest["weighted_sum"] = {{"weight", study.weight_column}, {"results", study.weighted_results}};
+  return manifest;
 }
 
 StudyManifest readManifest(const StudyFolder& folder) {
@@ -124,7 +130,12 @@ StudyManifest readManifest(const StudyFolder& folder) {
       m.parameters.push_back({p.at("path").get<std::string>(), p.at("unit").get<std::string>(),
                               kindFromText(p.at("kind").get<std::string>())});
     m.results = m.json.at("results").get<std::vector<std::string>>();
+    if (const auto sum = m.json.find("weighted_sum"); sum != m.json.end()) {
+      m.weight_column = sum->at("weight").get<std::string>();
+      m.weighted_results = sum->at("results").get<std::vector<std::string>>();
+    }
     for (const auto& c : m.json.at("cases")) {
+      if (!m.weight_column.empty()) m.weights.push_back(c.at("weight").get<double>());
       m.ids.push_back(c.at("id").get<std::string>());
       m.values.push_back(c.at("values").get<std::vector<Json>>());
       if (m.values.back().size() != m.parameters.size() || m.ids.back().find('/') != std::string::npos)

@@ -71,6 +71,9 @@ struct StudyManifest {
   std::vector<std::string> results;           // requested scalars (empty: all)
   std::vector<std::string> ids;               // every case, in order
   std::vector<std::vector<Json>> values;      // per case, one value per parameter
+  std::string weight_column;                  // a table study's "weighted_sum": the weights' column, or empty
+  std::vector<double> weights;                // per case (when weight_column is set)
+  std::vector<std::string> weighted_results;  // the scalars to sum, weighted
 };
 
 Json manifestJson(const Study& study, const std::vector<StudyCase>& cases, const std::filesystem::path& study_file);

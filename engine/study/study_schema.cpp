@@ -78,7 +78,18 @@ Json studySchemaJson() {
                          {"items", {{"type", "string"}}},
                          {"uniqueItems", true},
                          {"description", "scalar results to collect into study.csv (names as in a run's "
-                                         "summary.json); default: every scalar"}}}}}};
+                                         "summary.json); default: every scalar"}}},
+            {"weighted_sum",
+             {{"type", "object"},
+              {"additionalProperties", false},
+              {"required", {"weight", "results"}},
+              {"description", "table studies: a column of the table (not a parameter) holding each case's weight, "
+                              "e.g. a sea state's probability; `study collect` writes sum_i weight_i * result_i "
+                              "of each listed scalar into study.json"},
+              {"properties",
+               {{"weight", {{"type", "string"}, {"description", "the weight column's name in the table's header"}}},
+                {"results", {{"type", "array"}, {"items", {{"type", "string"}}}, {"uniqueItems", true},
+                             {"minItems", 1}}}}}}}}}};
 }
 
 std::string describeStudySchema() {
@@ -94,6 +105,8 @@ std::string describeStudySchema() {
   table            "cases.csv": header of parameter paths, optional units row, one row per case
   latin_hypercube  {"count": n, "seed": s, "bounds": {"path": [low, high] | {"from", "to", "spacing"}, ...}}
   results          ["scalar", ...]: what study.csv collects (optional; default every scalar)
+  weighted_sum     {"weight": "probability", "results": ["scalar", ...]}: a table study's column of case
+                   weights (not a parameter, numbers >= 0); collect writes sum of weight * scalar
 Paths are parameter paths of the base's scene (`maris-cli schema SCENE`), or one cell of a table field,
 TABLE[ROW].COLUMN with rows from 0 ("current.profile[1].speed"). Relative file paths, also data
 files in the base and in the values, resolve against the study file's folder. At most )" +

@@ -1,5 +1,6 @@
 // A study's "table" design: a CSV file with one column per parameter path and one row per case (a
-// load-case table, or a design of experiments made elsewhere), read through the data-file gate.
+// load-case table, or a design of experiments made elsewhere), read through the data-file gate; with
+// "weighted_sum", one more column holds each case's weight.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -95,8 +96,17 @@ void readTable(const Json& table, const SceneDefinition& scene, Study& study, st
   std::vector<ParamKind> kinds;
   std::vector<std::string> units;
   bool all_numeric = true;
+  // The weight column ("weighted_sum"): a dimensionless number per case, no parameter.
+  std::size_t weight_index = names.size();
   for (std::size_t c = 0; c < names.size(); ++c) {
     const std::string where = "table column " + std::to_string(c + 1) + " (" + echoText(names[c]) + ")";
+    if (!study.weight_column.empty() && names[c] == study.weight_column) {
+      if (weight_index < names.size()) errors.push_back({where, "", "is the weight column a second time"});
+      weight_index = c;
+      kinds.push_back(ParamKind::Real);
+      units.push_back("-");
+      continue;
+    }
     const auto spec = lookupParameter(scene, study.base.parameters, names[c], where, errors);
     if (!spec) continue;
     for (const auto& p : study.parameters)
@@ -105,6 +115,11 @@ void readTable(const Json& table, const SceneDefinition& scene, Study& study, st
     kinds.push_back(spec->kind);
     units.push_back(spec->unit);
     all_numeric = all_numeric && (spec->kind == ParamKind::Real || spec->kind == ParamKind::Integer);
+  }
+  if (!study.weight_column.empty() && weight_index == names.size()) {
+    const auto guess = didYouMean(study.weight_column, names);
+    errors.push_back({"weighted_sum.weight", "\"" + echoText(study.weight_column) + "\"",
+                      "is not a column of the table" + (guess.empty() ? std::string() : "; did you mean '" + guess + "'?")});
   }
   if (kinds.size() != names.size()) return;  // unknown columns: the rows cannot be read
 
@@ -146,6 +161,13 @@ void readTable(const Json& table, const SceneDefinition& scene, Study& study, st
     std::vector<Json> row;
     for (std::size_t c = 0; c < cells.size(); ++c) {
       if (cells[c].empty()) errors.push_back({where + ", column " + names[c], "", "is empty"});
+      if (c == weight_index) {
+        const auto weight = parseNumber(cells[c]);
+        if (!cells[c].empty() && !(weight && *weight >= 0.0))
+          errors.push_back({where + ", column " + names[c], echoText(cells[c]), "must be a weight: a finite number >= 0"});
+        study.weights.push_back(weight.value_or(0.0));
+        continue;
+      }
       row.push_back(cellValue(cells[c], kinds[c]));
     }
     study.rows.push_back(std::move(row));

@@ -5,6 +5,7 @@
 // relative data paths resolve against the file that names them.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -265,13 +266,15 @@ TEST_F(CliStudy, FailedAndTimedOutCasesAreRecordedAndTheStudyGoesOn) {
 }
 
 // A fatigue scatter diagram is a table study over sea states: study.csv holds each case's annual damage at its
-// critical hot spot, the quantity whose probability-weighted sum is the year's damage (docs/studies.md).
+// critical hot spot, and the table's probability column weights them into the year's damage, which `study
+// collect` writes into study.json (docs/studies.md).
 TEST_F(CliStudy, AFatigueScatterStudyCollectsEachSeaStatesAnnualDamage) {
   if (!findBuiltin("riser_jonswap_sea")) GTEST_SKIP() << "needs the riser sea scenario";
-  writeText(dir_ / "seas.csv", "waves.significant_height,waves.peak_period\nm,s\n2.0,8.0\n6.0,11.0\n");
+  writeText(dir_ / "seas.csv", "waves.significant_height,probability,waves.peak_period\nm,-,s\n2.0,0.75,8.0\n6.0,0.25,11.0\n");
   // 20 s of sea counted after the 20 s ramp: enough cycles for the comparison below, short under the sanitizers.
   writeText(dir_ / "scatter.json", R"({"format": "maris-study/1", "base": "riser_jonswap_sea",
-    "set": {"solver.end_time": 40}, "table": "seas.csv", "results": ["max_fatigue_damage_per_year", "min_fatigue_life"]})");
+    "set": {"solver.end_time": 40}, "table": "seas.csv", "results": ["max_fatigue_damage_per_year", "min_fatigue_life"],
+    "weighted_sum": {"weight": "probability", "results": ["max_fatigue_damage_per_year"]}})");
   const auto run = runCli({"study", "run", "scatter.json", "--out", "scatter", "--jobs", "2", "--no-plots"}, dir_.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto rows = csvRows(slurp(dir_ / "scatter" / "study.csv"));
@@ -287,6 +290,37 @@ TEST_F(CliStudy, AFatigueScatterStudyCollectsEachSeaStatesAnnualDamage) {
   // Miner damage grows as a power (3 to 5, the S-N slopes) of the stress range, which grows with Hs: three times
   // the wave height gives far more than ten times the damage.
   EXPECT_GT(damage[1], 10.0 * damage[0]);
+  EXPECT_EQ(rows[0].size(), 6u);  // case, status, the two parameters, the two results: the weight is no parameter
+
+  // The year's damage: 0.75 d_1 + 0.25 d_2 by hand from study.csv (17 digits: each d_i read back exactly; the
+  // weights are exact in binary, so the sums agree to the last bit but for the order of rounding, 1e-15).
+  const Json manifest = Json::parse(slurp(dir_ / "scatter" / "study.json"));
+  const Json& sums = manifest.at("collected").at("weighted_sums");
+  ASSERT_EQ(sums.size(), 1u);
+  EXPECT_EQ(sums[0].at("result"), "max_fatigue_damage_per_year");
+  EXPECT_EQ(sums[0].at("weight"), "probability");
+  EXPECT_EQ(sums[0].at("unit"), "1/yr");
+  EXPECT_EQ(sums[0].at("weight_total").get<double>(), 1.0);
+  const double year = 0.75 * damage[0] + 0.25 * damage[1];
+  EXPECT_NEAR(sums[0].at("value").get<double>(), year, 1e-15 * year);
+  EXPECT_TRUE(contains(run.out, "weighted sum of max_fatigue_damage_per_year over probability: ")) << run.out;
+}
+
+// A study over a table cell writes its plot under a portable file name (the cell's "[0]" as "_0"), and no file
+// name in plots/ holds a character outside [A-Za-z0-9._-].
+TEST_F(CliStudy, APlotAgainstATableCellHasAPortableFileName) {
+  writeText(dir_ / "cell.json", R"({"format": "maris-study/1", "base": "riser_cantilever_tip_load",
+    "grid": {"output.probes[0].arc_length": [2, 8]}, "results": ["tip_deflection"]})");
+  const auto run = runCli({"study", "run", "cell.json", "--out", "cell", "--jobs", "2"}, dir_.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(dir_ / "cell" / "plots" / "tip_deflection_vs_output.probes_0.arc_length.png")) << run.out;
+  std::size_t pngs = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "cell" / "plots")) {
+    ++pngs;
+    for (const char c : e.path().filename().string())
+      EXPECT_TRUE(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-') << e.path();
+  }
+  EXPECT_EQ(pngs, 1u);
 }
 
 // The examples in resources/studies are valid wherever they are checked from (their table and base resolve

@@ -4,13 +4,16 @@
 // clicked case in the results view, writes study.csv and the plot; two parameters give a line per
 // value and a heat map; Cancel stops the pool; a study file saves and reopens; a study with a bad
 // case runs nothing; a load-case table runs its rows; a Latin hypercube built in its dialog samples
-// every stratum.
+// every stratum; a table cell is added, edited, saved and reopened as a parameter.
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRadioButton>
+#include <QSpinBox>
+#include <QTableWidget>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -25,12 +28,14 @@
 
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
+#include "editor/table_editor.hpp"
 #include "main_window.hpp"
 #include "plots/display_units.hpp"
 #include "plots/study_plot.hpp"
 #include "run/run_controller.hpp"
 #include "run/run_history.hpp"
 #include "run/results_summary.hpp"
+#include "study/add_parameter_dialog.hpp"
 #include "study/latin_hypercube_dialog.hpp"
 #include "study/study_panel.hpp"
 #include "study/study_plot_view.hpp"
@@ -456,6 +461,123 @@ class StudyTest : public QObject {
     QCOMPARE(panel()->parameters().size(), std::size_t(1));
     QCOMPARE(panel()->parameters()[0].from, 20.0);
     QVERIFY(!panel()->isRunning());  // Add to study: nothing runs
+  }
+
+  // A cell of a table as a varied parameter, through "Add parameter…": its dialog picks the table, a row the
+  // base has and a number column; the dock shows the cell by its column, table and row with its unit (the path
+  // in the tooltip); its range is edited in the grid; the study saves and reopens with the cell still a
+  // parameter; and every case changes that cell alone, the base's other cells kept (the rod's sections: two
+  // rows, 50 m / 0.5 m and 50 m / 0.4 m).
+  void aTableCellIsAddedEditedSavedAndReopened() {
+    const ScenarioDocument* document = window_->document();
+    const Json base_sections = document->value("sections");
+    QCOMPARE(base_sections.size(), std::size_t(2));
+    {
+      AddParameterDialog dialog(*document->scene(), document->scenario().parameters, {});
+      QVERIFY(dialog.cellButton()->isEnabled());
+      QVERIFY(!dialog.chooseCell("sections", 2, "outer_diameter"));  // the base has rows 0 and 1
+      QVERIFY(!dialog.chooseCell("geometry", 0, "length"));           // not a table
+      QVERIFY(dialog.chooseCell("sections", 1, "outer_diameter"));
+      QCOMPARE(dialog.path(), std::string("sections[1].outer_diameter"));
+      QVERIFY(dialog.addButton()->isEnabled());
+      QVERIFY2(dialog.summaryLabel()->text().endsWith(QStringLiteral("now 0.4")), qPrintable(dialog.summaryLabel()->text()));
+      QVERIFY(dialog.chooseField("geometry.radius"));
+      QCOMPARE(dialog.path(), std::string("geometry.radius"));
+      AddParameterDialog again(*document->scene(), document->scenario().parameters, {"sections[1].outer_diameter"});
+      QVERIFY(again.chooseCell("sections", 0, "outer_diameter"));
+      again.rowBox()->setValue(1);
+      QCOMPARE(again.path(), std::string());  // varied already
+      QVERIFY(!again.addButton()->isEnabled());
+    }
+
+    // The dock's button opens the real dialog (answered as a user would); the range comes from the sweep prompt.
+    panel()->setSweepPrompt(answer({"", 0.2, 0.8, 4, false}, true));
+    QPushButton* add = nullptr;
+    for (QPushButton* b : panel()->findChildren<QPushButton*>())
+      if (b->text() == QStringLiteral("Add parameter…")) add = b;
+    QVERIFY(add);
+    bool chose = false;
+    QTimer::singleShot(0, this, [&] {
+      for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* d = qobject_cast<AddParameterDialog*>(w); d && d->isVisible()) {
+          chose = d->chooseCell("sections", 1, "outer_diameter");
+          d->addButton()->click();
+        }
+    });
+    QTimer::singleShot(20000, this, [&] {  // never hang on a dialog left open
+      for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* d = qobject_cast<AddParameterDialog*>(w); d && d->isVisible()) d->reject();
+    });
+    add->click();
+    QVERIFY(chose);
+    QCOMPARE(panel()->parameters().size(), std::size_t(1));
+    QTableWidget* table = panel()->parameterTable();
+    const QString label = QStringLiteral("outer diameter of sections[1] [m]");
+    QCOMPARE(table->item(0, 0)->text(), label);
+    QCOMPARE(table->item(0, 0)->toolTip(), QStringLiteral("sections[1].outer_diameter"));  // no problem
+    table->item(0, 2)->setText(QStringLiteral("0.6"));  // To
+    table->item(0, 3)->setText(QStringLiteral("3"));    // Values
+    QCOMPARE(panel()->parameters()[0].to, 0.6);
+    QCOMPARE(panel()->parameters()[0].count, 3);
+
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("cell.study.json"));
+    QVERIFY2(panel()->saveStudy(file), qPrintable(panel()->lastError()));
+    window_->document()->edit("geometry.length", Json(300.0));
+    panel()->clearParameters();
+    QVERIFY2(panel()->openStudy(file), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->parameters().size(), std::size_t(1));
+    QCOMPARE(panel()->parameters()[0].path, std::string("sections[1].outer_diameter"));
+    QCOMPARE(panel()->parameters()[0].from, 0.2);
+    QCOMPARE(panel()->parameters()[0].to, 0.6);
+    QCOMPARE(panel()->parameters()[0].count, 3);
+    QCOMPARE(table->item(0, 0)->text(), label);
+    QCOMPARE(table->item(0, 0)->toolTip(), QStringLiteral("sections[1].outer_diameter"));
+    table->item(0, 3)->setText(QStringLiteral("5"));  // the reopened grid is edited too: 0.2, 0.3, … 0.6 m
+
+    QVERIFY2(panel()->startStudy(), qPrintable(panel()->lastError()));
+    QVERIFY(runAndWait());
+    QCOMPARE(panel()->session().caseCount(), 5);
+    for (int c = 0; c < 5; ++c) {
+      const Json& sections = panel()->session().caseScenario(c).parameters["sections"];
+      QCOMPARE(sections.size(), std::size_t(2));
+      QCOMPARE(sections[0], base_sections[0]);
+      QCOMPARE(sections[1]["length"], base_sections[1]["length"]);
+      const double expected = 0.2 + 0.1 * c;  // linear from 0.2 to 0.6 m in 4 steps
+      QVERIFY2(std::abs(sections[1]["outer_diameter"].get<double>() - expected) <= 1e-12, qPrintable(QString::number(c)));
+      QVERIFY(panel()->session().outcome(c).status == StudySession::Status::Finished);
+    }
+    StudyPlotView* view = panel()->plotView();
+    const int r = view->resultBox()->findData(QStringLiteral("rod_volume"));
+    QVERIFY(r >= 0);
+    view->resultBox()->setCurrentIndex(r);
+    QCOMPARE(view->plot()->xAxis->label(), label);  // the plot names the cell the same way
+  }
+
+  // "Sweep this cell…" in a number cell's context menu of the editor's table sweeps that cell (its study path)
+  // and runs it; a row the table lacks has no menu.
+  void sweepThisCellInTheEditorsTableRunsAStudyOfTheCell() {
+    auto* sections = window_->editor()->findChild<TableEditor*>(QStringLiteral("field:sections"));
+    QVERIFY(sections);
+    QVERIFY(!sections->cellMenu(5, 1));  // no such row
+    std::unique_ptr<QMenu> menu(sections->cellMenu(0, 1));
+    QVERIFY(menu);
+    QAction* sweep = nullptr;
+    for (QAction* a : menu->actions())
+      if (a->objectName() == QLatin1String("sweepCellAction")) sweep = a;
+    QVERIFY(sweep);
+    panel()->setSweepPrompt(answer({"", 0.3, 0.6, 4, false}));
+    QSignalSpy finished(panel(), &StudyPanel::studyFinished);
+    sweep->trigger();
+    QCOMPARE(panel()->parameters().size(), std::size_t(1));
+    QCOMPARE(panel()->parameters()[0].path, std::string("sections[0].outer_diameter"));
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.first().at(0).toInt(), 4);
+    for (int c = 0; c < 4; ++c) {
+      const double expected = 0.3 + 0.1 * c;
+      const double value = panel()->session().caseScenario(c).parameters["sections"][0]["outer_diameter"].get<double>();
+      QVERIFY2(std::abs(value - expected) <= 1e-12, qPrintable(QString::number(value)));
+    }
   }
 
   void aWindowTooNarrowForTheStudyDockBesideTheViewsGetsItFloatingAndKeepsItsWidth() {

@@ -24,6 +24,7 @@
 #include "editor/field_text.hpp"
 #include "themed_icon.hpp"
 #include "editor/table_editor.hpp"
+#include "study/study.hpp"
 
 namespace maris::ui {
 
@@ -251,6 +252,10 @@ QWidget* ParameterEditor::makeEditor(const ParamSpec& spec) {
     case ParamKind::Table: {
       auto* table = new TableEditor(spec, fields_host_);
       connect(table, &TableEditor::edited, this, [this, &spec](const Json& rows) { document_->edit(spec.path, rows); });
+      // A cell is swept by its study path, TABLE[ROW].COLUMN.
+      connect(table, &TableEditor::sweepRequested, this, [this, &spec](int r, const QString& column) {
+        emit sweepRequested(QString::fromStdString(study::tableCellPath(spec.path, static_cast<std::size_t>(r), column.toStdString())));
+      });
       return table;
     }
     case ParamKind::Real:

@@ -43,7 +43,8 @@ class ParameterEditor : public QWidget {
   static constexpr int kMinimumWidth = 300;  // [px]
 
  signals:
-  // "Sweep this parameter…" was chosen for the field at `path` (below "parameters").
+  // "Sweep this parameter…" was chosen for the field at `path` (below "parameters"), or "Sweep this cell…" in a
+  // table's cell ("sections[1].outer_diameter").
   void sweepRequested(const QString& path);
 
  protected:

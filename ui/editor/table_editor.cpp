@@ -5,6 +5,7 @@
 
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QMenu>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QTableWidget>
@@ -43,9 +44,29 @@ TableEditor::TableEditor(const ParamSpec& spec, QWidget* parent)
   layout->addWidget(grid_);
   layout->addLayout(buttons);
 
+  grid_->setContextMenuPolicy(Qt::CustomContextMenu);
+  connect(grid_, &QWidget::customContextMenuRequested, this, [this](const QPoint& at) {
+    const QModelIndex index = grid_->indexAt(at);
+    QMenu* menu = index.isValid() ? cellMenu(index.row(), index.column(), this) : nullptr;
+    if (!menu) return;
+    menu->setAttribute(Qt::WA_DeleteOnClose);
+    menu->popup(grid_->viewport()->mapToGlobal(at));
+  });
   connect(grid_, &QTableWidget::cellChanged, this, &TableEditor::onCellChanged);
   connect(add_, &QPushButton::clicked, this, &TableEditor::addRow);
   connect(remove_, &QPushButton::clicked, this, &TableEditor::removeRows);
+}
+
+QMenu* TableEditor::cellMenu(int row, int column, QWidget* parent) {
+  if (row < 0 || row >= grid_->rowCount() || column < 0 || column >= static_cast<int>(spec_.columns.size())) return nullptr;
+  const ParamSpec& spec = spec_.columns[column];
+  if (spec.kind != ParamKind::Real && spec.kind != ParamKind::Integer) return nullptr;
+  auto* menu = new QMenu(parent);
+  QAction* sweep = menu->addAction(tr("Sweep this cell…"));
+  sweep->setObjectName(QStringLiteral("sweepCellAction"));
+  connect(sweep, &QAction::triggered, this,
+          [this, row, key = QString::fromStdString(spec.key())] { emit sweepRequested(row, key); });
+  return menu;
 }
 
 void TableEditor::setValue(const Json& rows) {

@@ -16,10 +16,22 @@ namespace maris::ui {
 
 namespace {
 
-std::string shortName(const std::string& path) {
-  std::string name = path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1);
+std::string readable(std::string name) {
   std::replace(name.begin(), name.end(), '_', ' ');
   return name;
+}
+
+// The last part of a path made readable: "length" from "geometry.length". A table cell, "TABLE[ROW].COLUMN",
+// keeps its table and row: "speed of profile[1]" from "current.profile[1].speed".
+std::string shortName(const std::string& path) {
+  const auto open = path.find('[');
+  const auto close = open == std::string::npos ? std::string::npos : path.find("].", open);
+  if (close != std::string::npos) {
+    const auto dot = path.rfind('.', open);
+    const std::size_t start = dot == std::string::npos ? 0 : dot + 1;
+    return readable(path.substr(close + 2)) + " of " + readable(path.substr(start, close + 1 - start));
+  }
+  return readable(path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1));
 }
 
 std::vector<double> distinctValues(const std::vector<double>& values) {

@@ -29,7 +29,7 @@ struct DrawnStudyPlot {
 };
 
 // The label of a parameter or result for people, in its display unit (plots/display_units.hpp): "length [m]" from
-// "geometry.length".
+// "geometry.length", "speed of profile[1] [m/s]" from the table cell "current.profile[1].speed".
 QString studyAxisLabel(const std::string& name, const std::string& unit);
 
 // True when parameters `a` and `b` form a full grid (every pair of their distinct values occurs in

@@ -26,8 +26,11 @@
 #include "document/scenario_document.hpp"
 #include "scene_library.hpp"
 #include "start_folder.hpp"
+#include "plots/study_plot.hpp"
 #include "study/study_plot_view.hpp"
 #include "study/study_runner.hpp"
+#include "study/add_parameter_dialog.hpp"
+#include "study/study.hpp"
 #include "study/study_cell_text.hpp"
 
 namespace maris::ui {
@@ -68,6 +71,11 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
     });
     if (dialog.exec() != QDialog::Accepted) return std::nullopt;
     return std::make_pair(dialog.range(), dialog.addOnly());
+  };
+  parameter_prompt_ = [this](const SceneDefinition& scene, const Json& parameters,
+                             const std::vector<std::string>& taken) -> std::string {
+    AddParameterDialog dialog(scene, parameters, taken, this);
+    return dialog.exec() == QDialog::Accepted ? dialog.path() : std::string();
   };
   base_->setWordWrap(true);
   summary_->setWordWrap(true);
@@ -146,7 +154,7 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(split);
 
-  connect(add_, &QPushButton::clicked, this, &StudyPanel::addParameterDialog);
+  connect(add_, &QPushButton::clicked, this, [this] { addParameterDialog(); });
   connect(remove_, &QPushButton::clicked, this, [this] {
     const int row = table_->currentRow();
     if (row >= 0 && row < static_cast<int>(grid_.size())) removeParameter(grid_[row].path);
@@ -201,12 +209,27 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
 
 StudyPanel::~StudyPanel() = default;
 
-bool StudyPanel::sweep(const QString& path) {
+std::optional<ParamSpec> StudyPanel::parameterSpec(const std::string& path, QString* why) const {
   const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
-  const ParamSpec* spec = scene ? scene->schema.find(path.toStdString()) : nullptr;
+  if (!scene) {
+    if (why) *why = tr("no scenario is open");
+    return std::nullopt;
+  }
+  std::string reason;
+  auto spec = study::findStudyParameter(*scene, baseParameters(), path, &reason);
+  if (!spec && why) *why = QString::fromStdString(reason);
+  return spec;
+}
+
+const Json& StudyPanel::baseParameters() const {
+  return from_file_ && session_.isDefined() ? session_.base().parameters : document_->scenario().parameters;
+}
+
+bool StudyPanel::sweep(const QString& path) {
+  const auto spec = parameterSpec(path.toStdString());
   if (!spec) return false;
-  const Json current = from_file_ ? Json() : document_->value(spec->path);
-  const auto answer = sweep_prompt_(*spec, proposedSweep(*spec, current));
+  const Json* current = study::findParameterValue(baseParameters(), spec->path);
+  const auto answer = sweep_prompt_(*spec, proposedSweep(*spec, current ? *current : Json()));
   if (!answer) return false;
   if (!answer->second) grid_.clear();
   addParameter(answer->first);
@@ -254,9 +277,9 @@ QString StudyPanel::gridProblem(std::vector<SweepRange> grid) const {
   const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
   if (!scene || (!from_file_ && !document_->isValid())) return {};  // startStudy says what to fix
   for (const SweepRange& r : grid) {
-    const ParamSpec* spec = scene->schema.find(r.path);
-    if (!spec) return tr("%1: not a parameter of the scene %2").arg(QString::fromStdString(r.path),
-                                                                     QString::fromStdString(scene->name));
+    QString why;
+    const auto spec = parameterSpec(r.path, &why);
+    if (!spec) return tr("%1: %2").arg(QString::fromStdString(r.path), why);
     if (const QString problem = sweepProblem(*spec, r); !problem.isEmpty())
       return tr("%1: %2").arg(QString::fromStdString(r.path), problem);
   }
@@ -292,9 +315,8 @@ bool StudyPanel::startStudy() {
       return false;
     }
     for (const SweepRange& r : grid_) {
-      const ParamSpec* spec = document_->scene()->schema.find(r.path);
-      const QString problem = spec ? sweepProblem(*spec, r)
-                                   : tr("not a parameter of the scene %1").arg(QString::fromStdString(document_->scene()->name));
+      QString problem;
+      if (const auto spec = parameterSpec(r.path, &problem)) problem = sweepProblem(*spec, r);
       if (!problem.isEmpty()) {
         fail(tr("%1: %2").arg(QString::fromStdString(r.path), problem));
         return false;
@@ -448,21 +470,24 @@ bool StudyPanel::replaceSession(const QString& failure, const std::function<void
   return true;
 }
 
-void StudyPanel::addParameterDialog() {
+bool StudyPanel::addParameterDialog() {
   const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
-  if (!scene) return;
-  QStringList paths;
-  for (const ParamSpec& spec : scene->schema.fields)
-    if ((spec.kind == ParamKind::Real || spec.kind == ParamKind::Integer) &&
-        std::none_of(grid_.begin(), grid_.end(), [&](const SweepRange& r) { return r.path == spec.path; }))
-      paths << QString::fromStdString(spec.path);
-  if (paths.isEmpty()) return;
-  bool ok = false;
-  const QString path = QInputDialog::getItem(this, tr("Add parameter"), tr("Parameter"), paths, 0, false, &ok);
-  if (!ok) return;
-  const ParamSpec* spec = scene->schema.find(path.toStdString());
-  const auto answer = sweep_prompt_(*spec, proposedSweep(*spec, from_file_ ? Json() : document_->value(spec->path)));
-  if (answer) addParameter(answer->first);
+  if (!scene || runner_->isRunning()) return false;
+  std::vector<std::string> taken;
+  for (const SweepRange& r : grid_) taken.push_back(r.path);
+  const std::string path = parameter_prompt_(*scene, baseParameters(), taken);
+  if (path.empty()) return false;
+  QString why;
+  const auto spec = parameterSpec(path, &why);
+  if (!spec) {
+    fail(tr("%1: %2").arg(QString::fromStdString(path), why));
+    return false;
+  }
+  const Json* current = study::findParameterValue(baseParameters(), spec->path);
+  const auto answer = sweep_prompt_(*spec, proposedSweep(*spec, current ? *current : Json()));
+  if (!answer) return false;
+  addParameter(answer->first);
+  return true;
 }
 
 void StudyPanel::rebuildTable() {
@@ -484,9 +509,14 @@ void StudyPanel::rebuildTable() {
   table_->setRowCount(static_cast<int>(grid_.size()));
   for (int row = 0; row < static_cast<int>(grid_.size()); ++row) {
     const SweepRange& r = grid_[row];
-    const ParamSpec* spec = scene ? scene->schema.find(r.path) : nullptr;
-    const QString unit = spec && spec->unit != "-" ? QStringLiteral(" [%1]").arg(QString::fromStdString(spec->unit)) : QString();
-    auto* name = new QTableWidgetItem(QString::fromStdString(r.path) + unit);
+    QString problem;
+    const auto spec = parameterSpec(r.path, &problem);
+    if (spec) problem = sweepProblem(*spec, r);
+    // A field by its path, a table cell by its column, table and row ("speed of profile[1]"): the path in the
+    // tooltip either way.
+    const bool cell = study::tableCell(r.path).has_value();
+    const QString unit = spec && !spec->unit.empty() && spec->unit != "-" ? QStringLiteral(" [%1]").arg(QString::fromStdString(spec->unit)) : QString();
+    auto* name = new QTableWidgetItem((cell ? studyAxisLabel(r.path, "") : QString::fromStdString(r.path)) + unit);
     name->setFlags(name->flags() & ~Qt::ItemIsEditable);
     table_->setItem(row, kParameter, name);
     table_->setItem(row, kFrom, new QTableWidgetItem(cellText(r.from)));
@@ -501,8 +531,8 @@ void StudyPanel::rebuildTable() {
       rebuildTable();
     });
     table_->setCellWidget(row, kSpacing, spacing);
-    const QString problem = spec ? sweepProblem(*spec, r) : tr("not a parameter of this scene");
-    name->setToolTip(problem);
+    name->setToolTip(problem.isEmpty() ? QString::fromStdString(r.path)
+                                       : tr("%1: %2").arg(QString::fromStdString(r.path), problem));
     if (!problem.isEmpty()) name->setForeground(QColor(0xd6, 0x27, 0x28));
   }
   updateButtons();

@@ -75,6 +75,17 @@ class StudyPanel : public QWidget {
   // bool is true for "Add to study" (no run).
   using SweepPrompt = std::function<std::optional<std::pair<SweepRange, bool>>(const ParamSpec&, const SweepRange&)>;
   void setSweepPrompt(SweepPrompt prompt) { sweep_prompt_ = std::move(prompt); }
+  // How "Add parameter…" asks what to vary (tests replace the dialog, AddParameterDialog): the path of a
+  // number field or a table cell of `scene` over the base's `parameters`, not one of `taken`; "" to cancel.
+  using ParameterPrompt =
+      std::function<std::string(const SceneDefinition& scene, const Json& parameters, const std::vector<std::string>& taken)>;
+  void setParameterPrompt(ParameterPrompt prompt) { parameter_prompt_ = std::move(prompt); }
+  // "Add parameter…": asks what to vary, then its range; false if nothing was added.
+  bool addParameterDialog();
+
+  // What the study may vary at `path` (a number field or a table cell whose row is in the base), or nothing
+  // with the reason in `why`: the engine's check of a study file's parameters.
+  std::optional<ParamSpec> parameterSpec(const std::string& path, QString* why = nullptr) const;
 
  signals:
   void caseOpened(int index);              // a plot point was clicked
@@ -86,9 +97,10 @@ class StudyPanel : public QWidget {
  private:
   void rebuildTable();
   void updateButtons();
+  // The parameters of the study's base: the study's own when it came from a file, else the open scenario's.
+  const Json& baseParameters() const;
   void onCaseFinished(int index, ResultsPtr results, double wall_time_s);
   void onCaseFailed(int index, const QString& message);
-  void addParameterDialog();
   void fail(const QString& text);
   // Why the grid `grid` over the study's base cannot run (its first invalid cases), or "" (sweep dialog).
   QString gridProblem(std::vector<SweepRange> grid) const;
@@ -113,6 +125,7 @@ class StudyPanel : public QWidget {
   QTimer* refresh_timer_;
   QString last_error_;
   SweepPrompt sweep_prompt_;
+  ParameterPrompt parameter_prompt_;
 };
 
 }  // namespace maris::ui

@@ -133,4 +133,39 @@ TEST_F(StudyDesign, TableRowsAreCasesAndItsPathIsRelativeToTheStudy) {
   EXPECT_NE(missing.find("table"), std::string::npos) << missing;
 }
 
+// A table study's weight column ("weighted_sum"): read per case, not a parameter (no column in the cases'
+// values, nothing set in the scenarios); a weight that is no number >= 0, a weight column the table lacks and a
+// weighted sum without a table are refused by name.
+TEST_F(StudyDesign, ATablesWeightColumnIsReadPerCaseAndIsNoParameter) {
+  ScratchFolder folder("maris_study_weights");
+  folder.write("seas.csv", "hull.length,probability\nm,-\n2.5,0.7\n3.5,0.3\n");
+  folder.write("negative.csv", "hull.length,probability\n2.5,-0.1\n3.5,x\n");
+  Json document = studyOver("ship_default", "table", "seas.csv");
+  document["weighted_sum"] = {{"weight", "probability"}, {"results", {"c_total"}}};
+  const Study study = studyFromJson(document, folder.path);
+  ASSERT_EQ(study.parameters.size(), 1u);
+  EXPECT_EQ(study.parameters[0].path, "hull.length");
+  EXPECT_EQ(study.weight_column, "probability");
+  EXPECT_EQ(study.weights, (std::vector<double>{0.7, 0.3}));
+  EXPECT_EQ(study.weighted_results, (std::vector<std::string>{"c_total"}));
+  const auto cases = expandStudy(study);
+  ASSERT_EQ(cases.size(), 2u);
+  EXPECT_EQ(cases[1].values, (std::vector<Json>{Json(3.5)}));
+
+  Json negative = document;
+  negative["table"] = "negative.csv";
+  const auto bad = inputErrorText([&] { studyFromJson(negative, folder.path); });
+  EXPECT_NE(bad.find("table line 2, column probability = -0.1"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("table line 3, column probability = x: must be a weight"), std::string::npos) << bad;
+  Json other = document;
+  other["weighted_sum"]["weight"] = "probabilty";
+  const auto misspelt = inputErrorText([&] { studyFromJson(other, folder.path); });
+  EXPECT_NE(misspelt.find("is not a column of the table; did you mean 'probability'?"), std::string::npos) << misspelt;
+  Json grid = studyOver("ship_default", "grid", {{"hull.length", {2.5, 3.5}}});
+  grid["weighted_sum"] = document["weighted_sum"];
+  const auto no_table = inputErrorText([&] { studyFromJson(grid, folder.path); });
+  EXPECT_NE(no_table.find("weighted_sum"), std::string::npos) << no_table;
+  EXPECT_NE(no_table.find("needs a \"table\""), std::string::npos) << no_table;
+}
+
 }  // namespace maris::study::test
