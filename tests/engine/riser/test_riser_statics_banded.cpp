@@ -28,6 +28,13 @@ std::vector<Vec3> jointPositions(const RiserModel& m, const StaticSolution& s) {
   return out;
 }
 
+// Largest distance between corresponding joints of two solutions [m].
+double largestJointDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  double largest = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) largest = std::max(largest, (a[k] - b[k]).norm());
+  return largest;
+}
+
 // No built-in scenario may need the dense O(n³) fallback (it warns when taken). Before the natural
 // monotonicity test and the at-rest model, riser_catenary and riser_top_motion_table fell back.
 TEST(RiserStaticsBanded, EveryBuiltInScenarioSolvesStaticsOnTheOrderNPath) {
@@ -153,8 +160,7 @@ TEST(RiserStaticsBanded, SlackCableHeldAtBothEndsIsFoundByDynamicRelaxation) {
     if (n == 50 && !::maris::test::kSanitizedBuild) {
       RunContext dense_context;
       const auto dense = jointPositions(m, solveStatics(m, dense_context, StaticMethod::Dense));
-      double largest = 0.0;
-      for (std::size_t k = 0; k < joints.size(); ++k) largest = std::max(largest, (joints[k] - dense[k]).norm());
+      const double largest = largestJointDistance(joints, dense);
       EXPECT_LT(largest, 1e-8);
     }
   }
@@ -193,17 +199,11 @@ TEST(RiserStaticsBanded, CableWithoutTorsionIsFoundByNewton) {
     EXPECT_LT(s.residual, 1e-11);
     joints[torsion] = jointPositions(m, s);
   }
-  double largest = 0.0;
-  for (std::size_t k = 0; k < joints[0].size(); ++k) largest = std::max(largest, (joints[0][k] - joints[1][k]).norm());
+  const double largest = largestJointDistance(joints[0], joints[1]);
   EXPECT_LT(largest, 5e-8);
   EXPECT_GT((joints[0].back() - joints[0].front()).norm(), 20.0);  // a hanging 30 m cable, not a trivial shape
 }
 
-}  // namespace
-}  // namespace maris::riser
-
-namespace maris::riser {
-namespace {
 
 // riser_default at n = 200 and 300 (current-bent, torsion on): the O(n) Newton reaches its round-off floor at 2.0
 // and 1.4 (n+1)²ε (scaled residual 1.8e-11 and 2.7e-11 measured, above the 1e-11 and 2.0e-11 asked) where its full
@@ -230,8 +230,7 @@ TEST(RiserStaticsBanded, DefaultRiserStopsAtItsRoundOffFloorWithoutRelaxation) {
       RunContext dense_context;
       const auto dense = jointPositions(m, solveStatics(m, dense_context, StaticMethod::Dense));
       const auto joints = jointPositions(m, s);
-      double largest = 0.0;
-      for (std::size_t k = 0; k < joints.size(); ++k) largest = std::max(largest, (joints[k] - dense[k]).norm());
+      const double largest = largestJointDistance(joints, dense);
       EXPECT_LT(largest, 1e-7) << n;
       std::printf("[ measured ] n = %d: residual %.3g, %d iterations, dense path differs by %.3g m\n", n, s.residual,
                   s.iterations, largest);
