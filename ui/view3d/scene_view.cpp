@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <QComboBox>
 #include <QEvent>
@@ -24,7 +25,6 @@
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkRenderer.h>
-#include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTextRenderer.h>
@@ -34,6 +34,7 @@
 #include "plots/result_plot.hpp"
 #include "theme.hpp"
 #include "themed_icon.hpp"
+#include "view3d/color_bar_actor.hpp"
 #include "view3d/color_bar_scale.hpp"
 #include "view3d/color_map_control.hpp"
 #include "view3d/section_view.hpp"
@@ -72,7 +73,7 @@ SceneView::SceneView(QWidget* parent)
       color_control_(new ColorMapControl(this)),
       colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
       bar_colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
-      scalar_bar_(vtkSmartPointer<vtkScalarBarActor>::New()), caption_(vtkSmartPointer<vtkTextActor>::New()),
+      scalar_bar_(vtkSmartPointer<ColorBarActor>::New()), caption_(vtkSmartPointer<vtkTextActor>::New()),
       triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
   vtkRenderer* renderer = gl_->renderer();
   renderer->GradientBackgroundOn();
@@ -98,6 +99,10 @@ SceneView::SceneView(QWidget* parent)
   scalar_bar_->SetTextPositionToSucceedScalarBar();
   scalar_bar_->UnconstrainedFontSizeOn();
   scalar_bar_->SetTextPad(4);
+  // The strip starts this far below the title: VTK raises the title by 3/4 of a label's height over the strip's top
+  // and puts it TextPad and a frame line above that, so the top label (half a height above the top) keeps the
+  // labels' gap from the title.
+  scalar_bar_->SetVerticalTitleSeparation(static_cast<int>(ColorBarActor::kLabelGap) + 4 + 1);
   for (vtkTextProperty* text : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
     text->ShadowOff();
     text->ItalicOff();
@@ -359,18 +364,30 @@ void SceneView::applyColorSettings() {
 
 void SceneView::placeColorBar() {
   // VTK centres the title over the bar's strip (0.15 of the view, at most 150 px) and lets a title wider than the
-  // strip overhang both sides: measured here, the strip moves left until the title keeps 8 px from the right edge.
+  // strip overhang both sides; the tick labels start beside the colours (a quarter of the strip) and may reach
+  // past the strip in a narrow view. Both measured here, the strip moves left until they keep 8 px from the right
+  // edge.
   constexpr double kPreferredLeft = 0.80, kStripFraction = 0.15, kMaxStripPx = 150, kMarginPx = 8;
   const double view_px = gl_->width() * gl_->devicePixelRatioF();
+  const int dpi = gl_->renderWindow()->GetDPI();
+  auto textWidth = [&](vtkTextProperty* property, const std::string& text) {
+    int box[4] = {0, 0, 0, 0};
+    if (text.empty() || !vtkTextRenderer::GetInstance()->GetBoundingBox(property, text, box, dpi)) return 0.0;
+    return static_cast<double>(box[1] - box[0]);
+  };
   const char* title = scalar_bar_->GetTitle();
-  int box[4] = {0, 0, 0, 0};
-  double title_px = 0;
-  if (title && *title &&
-      vtkTextRenderer::GetInstance()->GetBoundingBox(scalar_bar_->GetTitleTextProperty(), std::string(title), box,
-                                                     gl_->renderWindow()->GetDPI()))
-    title_px = box[1] - box[0] + 2.0 * scalar_bar_->GetTextPad();
+  double title_px = title && *title ? textWidth(scalar_bar_->GetTitleTextProperty(), title) : 0.0;
+  if (title_px > 0) title_px += 2.0 * scalar_bar_->GetTextPad();
+  double label_px = 0;
+  if (vtkDoubleArray* ticks = scalar_bar_->GetCustomLabels())
+    for (vtkIdType i = 0; i < ticks->GetNumberOfTuples(); ++i) {
+      char text[64];
+      std::snprintf(text, sizeof text, scalar_bar_->GetLabelFormat(), ticks->GetValue(i));
+      label_px = std::max(label_px, textWidth(scalar_bar_->GetLabelTextProperty(), text));
+    }
   const double strip_px = std::min(kStripFraction * view_px, kMaxStripPx);
-  const double left = colorBarLeft(view_px, strip_px, title_px, kMarginPx, kPreferredLeft);
+  const double labels_px = std::ceil(strip_px * scalar_bar_->GetBarRatio()) + ColorBarActor::kLabelGap + label_px;
+  const double left = colorBarLeft(view_px, strip_px, title_px, labels_px, kMarginPx, kPreferredLeft);
   scalar_bar_->GetPositionCoordinate()->SetValue(left, 0.12);
   gl_->requestRender();
 }
