@@ -46,6 +46,9 @@ namespace maris::ui {
 
 namespace {
 
+// The caption's top-left corner, as fractions of the view's width and height.
+constexpr double kCaptionLeft = 0.015, kCaptionTop = 0.98;
+
 // A water or sea-bed plane more than one model size away from the model is not drawn: a scene
 // "in air" may put its water level kilometres below, which would shrink the model to a dot.
 bool nearModel(double z, const Bounds3D& model) {
@@ -113,7 +116,7 @@ SceneView::SceneView(QWidget* parent)
   caption_->GetTextProperty()->SetFontSize(14);
   caption_->GetTextProperty()->SetVerticalJustificationToTop();
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  caption_->GetPositionCoordinate()->SetValue(0.015, 0.98);
+  caption_->GetPositionCoordinate()->SetValue(kCaptionLeft, kCaptionTop);
   renderer->AddViewProp(caption_);
 
   auto axes = vtkSmartPointer<vtkAxesActor>::New();
@@ -368,6 +371,7 @@ void SceneView::placeColorBar() {
   // past the strip in a narrow view. Both measured here, the strip moves left until they keep 8 px from the right
   // edge.
   constexpr double kPreferredLeft = 0.80, kStripFraction = 0.15, kMaxStripPx = 150, kMarginPx = 8;
+  constexpr double kBarBottom = 0.12, kBarHeight = 0.72;  // of the view's height, where nothing is in the way
   const double view_px = gl_->width() * gl_->devicePixelRatioF();
   const int dpi = gl_->renderWindow()->GetDPI();
   auto textWidth = [&](vtkTextProperty* property, const std::string& text) {
@@ -388,7 +392,21 @@ void SceneView::placeColorBar() {
   const double strip_px = std::min(kStripFraction * view_px, kMaxStripPx);
   const double labels_px = std::ceil(strip_px * scalar_bar_->GetBarRatio()) + ColorBarActor::kLabelGap + label_px;
   const double left = colorBarLeft(view_px, strip_px, title_px, labels_px, kMarginPx, kPreferredLeft);
-  scalar_bar_->GetPositionCoordinate()->SetValue(left, 0.12);
+  scalar_bar_->GetPositionCoordinate()->SetValue(left, kBarBottom);
+  // The caption (top left; four lines over a ship's wave pattern) and the bar's title (top right) share the top of
+  // a narrow view: where the caption reaches over to the title's left edge, the bar ends two margins below it.
+  double top = kBarBottom + kBarHeight;
+  const double view_h = gl_->height() * gl_->devicePixelRatioF();
+  const char* caption = caption_->GetInput();
+  int box[4] = {0, 0, 0, 0};
+  if (view_h > 0 && caption && *caption &&
+      vtkTextRenderer::GetInstance()->GetBoundingBox(caption_->GetTextProperty(), std::string(caption), box, dpi)) {
+    const double caption_right = kCaptionLeft * view_px + (box[1] - box[0]);
+    const double caption_bottom = kCaptionTop * view_h - (box[3] - box[2]);
+    const double title_left = left * view_px + 0.5 * strip_px - 0.5 * std::max(strip_px, title_px);
+    if (caption_right + kMarginPx > title_left) top = std::min(top, (caption_bottom - 2 * kMarginPx) / view_h);
+  }
+  scalar_bar_->SetHeight(std::max(kBarHeight / 2, top - kBarBottom));
   gl_->requestRender();
 }
 
@@ -449,6 +467,7 @@ void SceneView::updateTimeLabel() {
   const QString notes = drawingNotes();
   if (!notes.isEmpty()) lines << notes;
   caption_->SetInput(lines.join('\n').toStdString().c_str());
+  placeColorBar();  // a longer caption may reach the bar's title
 }
 
 QString SceneView::captionText() const {
