@@ -211,6 +211,12 @@ class RunTest : public QObject {
     plot.resize(800, 600);
     QVERIFY(fillPlot(plot, r, spec));
     QCOMPARE(plot.yAxis->label(), QStringLiteral("Two lines [N]"));
+    // A title's closing aside is left to the title: the axis label stays short enough for the axis.
+    PlotSpec aside = spec;
+    aside.title = "Two lines (curve: model, markers: measured)";
+    QCustomPlot aside_plot;
+    QVERIFY(fillPlot(aside_plot, r, aside));
+    QCOMPARE(aside_plot.yAxis->label(), QStringLiteral("Two lines [N]"));
     QCPLayoutInset* inset = plot.axisRect()->insetLayout();
     QCOMPARE(inset->elementCount(), 1);
     QVERIFY(qobject_cast<QCPLegend*>(inset->elementAt(0)));

@@ -26,6 +26,7 @@
 #include "theme.hpp"
 #include "view3d/color_map_control.hpp"
 #include "ui_test_support.hpp"
+#include "view3d/color_bar_actor.hpp"
 #include "view3d/scene_view.hpp"
 #include "view3d/vtk_gl_widget.hpp"
 
@@ -502,6 +503,50 @@ class View3dTest : public QObject {
       QVERIFY2(bar.top() >= 3, qPrintable(where));
       if (width == 1000) QVERIFY2(bar.left() >= 0.78 * w, qPrintable(where));
     }
+  }
+
+  // The colour bar's tick labels never touch its strip or one another, at any size: each starts a gap right of the
+  // colours and is centred on its colour, and labels that would crowd are not drawn (the lowest and the highest
+  // kept first). The guide's wave-energy picture had "-500" written over the strip; small views overlapped labels.
+  void colourBarLabelsKeepClearOfTheStripAndEachOther() {
+    const std::vector<std::pair<double, std::string>> ranges = {{50.0, "-"}, {1.25e-3, "-"}, {1e4, "N"}, {0.37, "m"}};
+    for (auto [width, height] : std::vector<std::pair<int, int>>{{260, 160}, {420, 300}, {630, 500}, {1000, 800}})
+      for (const auto& [factor, unit] : ranges) {
+        SceneView view;
+        view.resize(width, height);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        // The tube's scalars 0 … 20 as −10 … 10 × factor: negative labels, wider than the positive ones.
+        auto tube = std::make_shared<Results>(test::verticalTubeResults(100.0, 1.5));
+        for (auto& frame : tube->view.frames)
+          for (auto& shape : frame.shapes)
+            for (double& v : shape.scalars) v = (v - 10.0) * factor;
+        tube->view.scalar_name = "wave elevation";
+        tube->view.scalar_unit = unit;
+        view.showResults(tube);
+        QCoreApplication::processEvents();
+        view.glWidget()->grabFramebuffer();  // laid out by a render
+        ColorBarActor* bar = nullptr;
+        vtkPropCollection* props = view.glWidget()->renderer()->GetViewProps();
+        props->InitTraversal();
+        while (vtkProp* prop = props->GetNextProp())
+          if (auto* b = ColorBarActor::SafeDownCast(prop)) bar = b;
+        QVERIFY(bar);
+        const ColorBarActor::PixelBox strip = bar->stripBox();
+        const auto& labels = bar->labelBoxes();
+        QString where = QStringLiteral("%1×%2 px, −10…10 × %3 %4: strip x %5..%6, y %7..%8; labels")
+                            .arg(width).arg(height).arg(factor).arg(QString::fromStdString(unit))
+                            .arg(strip.left).arg(strip.right()).arg(strip.bottom).arg(strip.top());
+        for (const auto& l : labels) where += QStringLiteral(" [x %1..%2, y %3..%4]").arg(l.left).arg(l.right()).arg(l.bottom).arg(l.top());
+        // Both ends of a bar taller than two labels are labelled (the ends −10 and 10 × factor lie on the grid).
+        QVERIFY2(labels.size() >= 2 || strip.height < 2 * 20, qPrintable(where));
+        const double gap = ColorBarActor::kLabelGap - 0.5;  // the boxes are in whole and half pixels
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+          QVERIFY2(labels[i].width > 0 && labels[i].height > 0, qPrintable(where));
+          QVERIFY2(labels[i].left >= strip.right() + gap, qPrintable(where));
+          if (i > 0) QVERIFY2(labels[i].bottom >= labels[i - 1].top() + gap, qPrintable(where));
+        }
+      }
   }
 
   // The ship's wave pattern is drawn around the hull, not only behind it: seen from above, pixels beside the hull

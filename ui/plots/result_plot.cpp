@@ -114,6 +114,12 @@ QString severalColumnsLabel(const Table& table, const std::vector<std::string>& 
     if (y) labels << QString::fromStdString(displayLabel(*y));
   }
   QString label = title.empty() ? labels.join(QStringLiteral(", ")) : QString::fromStdString(title);
+  // A title's closing aside ("Pitch RAO (curve: frequency domain, markers: time domain)") stays above the plot: on
+  // the axis it made the label longer than the axis, clipped at both ends.
+  if (!title.empty() && label.endsWith(QLatin1Char(')'))) {
+    const qsizetype open = label.lastIndexOf(QStringLiteral(" ("));
+    if (open > 0) label.truncate(open);
+  }
   if (!units.isEmpty()) label += QStringLiteral("%1[%2]").arg(label.isEmpty() ? "" : " ", units.join(", "));
   return label;
 }

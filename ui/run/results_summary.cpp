@@ -8,6 +8,7 @@
 #include <QFileDialog>
 #include <QHeaderView>
 #include <QLabel>
+#include <QScrollArea>
 #include <QSet>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -55,10 +56,24 @@ ResultsSummary::ResultsSummary(QWidget* parent)
   table_->setContextMenuPolicy(Qt::ActionsContextMenu);
   stats_->setWordWrap(true);
   stats_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  stats_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+  // The method line scrolls beyond three lines: a long one (the riser's automatic integrator explains its choice
+  // in five) took the dock's height in a 768-pixel-high window, left the table one row and was cut off itself.
+  auto* stats_area = new QScrollArea(this);
+  stats_area->setWidget(stats_);
+  stats_area->setWidgetResizable(true);
+  stats_area->setFrameShape(QFrame::NoFrame);
+  stats_area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  stats_area->setMaximumHeight(3 * stats_->fontMetrics().lineSpacing() + 2 * stats_->margin() + 2);
+  stats_area->viewport()->setAutoFillBackground(false);
+  stats_->setAutoFillBackground(false);
+  // The header and at least three quantities stay in view.
+  table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() +
+                           3 * table_->verticalHeader()->defaultSectionSize() + 2 * table_->frameWidth());
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(heading_);
   layout->addWidget(table_, 1);
-  layout->addWidget(stats_);
+  layout->addWidget(stats_area);
   clear();
 }
 

@@ -91,9 +91,11 @@ ColorBarScale colorBarScaleIn(double lo, double hi, double factor, const std::st
   return scale;
 }
 
-double colorBarLeft(double view_px, double strip_px, double title_px, double margin_px, double preferred) {
+double colorBarLeft(double view_px, double strip_px, double title_px, double labels_px, double margin_px,
+                    double preferred) {
   if (view_px <= 0) return preferred;
-  const double right_of_left = 0.5 * strip_px + 0.5 * std::max(strip_px, title_px);  // strip's left to its rightmost ink
+  // From the strip's left to its rightmost ink.
+  const double right_of_left = std::max(0.5 * strip_px + 0.5 * std::max(strip_px, title_px), labels_px);
   const double left_px = std::min(preferred * view_px, view_px - margin_px - right_of_left);
   return std::max(0.0, left_px / view_px);
 }

@@ -40,9 +40,11 @@ ColorBarScale colorBarScale(double lo, double hi, const std::string& si_unit, in
 // The same in a unit the user chose (View ▸ Units): display value = SI value × `factor`, written as `unit`.
 ColorBarScale colorBarScaleIn(double lo, double hi, double factor, const std::string& unit, int target_ticks = 5);
 
-// Where the colour bar's strip starts, as a fraction of the view's width: at `preferred` unless its title, centred
-// over the strip and wider than it (a long quantity name), would come nearer than `margin_px` to the view's right
-// edge; then as far left as that margin needs (never left of the view). Widths in pixels.
-double colorBarLeft(double view_px, double strip_px, double title_px, double margin_px, double preferred);
+// Where the colour bar's strip starts, as a fraction of the view's width: at `preferred` unless its ink would come
+// nearer than `margin_px` to the view's right edge; then as far left as that margin needs (never left of the view).
+// The ink is the title, centred over the strip and wider than it for a long quantity name, and the tick labels,
+// which end `labels_px` right of the strip's left edge. Widths in pixels.
+double colorBarLeft(double view_px, double strip_px, double title_px, double labels_px, double margin_px,
+                    double preferred);
 
 }  // namespace maris::ui

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <QComboBox>
 #include <QEvent>
@@ -24,7 +25,6 @@
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkRenderer.h>
-#include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTextRenderer.h>
@@ -34,6 +34,7 @@
 #include "plots/result_plot.hpp"
 #include "theme.hpp"
 #include "themed_icon.hpp"
+#include "view3d/color_bar_actor.hpp"
 #include "view3d/color_bar_scale.hpp"
 #include "view3d/color_map_control.hpp"
 #include "view3d/section_view.hpp"
@@ -44,6 +45,9 @@
 namespace maris::ui {
 
 namespace {
+
+// The caption's top-left corner, as fractions of the view's width and height.
+constexpr double kCaptionLeft = 0.015, kCaptionTop = 0.98;
 
 // A water or sea-bed plane more than one model size away from the model is not drawn: a scene
 // "in air" may put its water level kilometres below, which would shrink the model to a dot.
@@ -72,7 +76,7 @@ SceneView::SceneView(QWidget* parent)
       color_control_(new ColorMapControl(this)),
       colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
       bar_colors_(vtkSmartPointer<vtkColorTransferFunction>::New()),
-      scalar_bar_(vtkSmartPointer<vtkScalarBarActor>::New()), caption_(vtkSmartPointer<vtkTextActor>::New()),
+      scalar_bar_(vtkSmartPointer<ColorBarActor>::New()), caption_(vtkSmartPointer<vtkTextActor>::New()),
       triad_(vtkSmartPointer<vtkOrientationMarkerWidget>::New()) {
   vtkRenderer* renderer = gl_->renderer();
   renderer->GradientBackgroundOn();
@@ -98,6 +102,10 @@ SceneView::SceneView(QWidget* parent)
   scalar_bar_->SetTextPositionToSucceedScalarBar();
   scalar_bar_->UnconstrainedFontSizeOn();
   scalar_bar_->SetTextPad(4);
+  // The strip starts this far below the title: VTK raises the title by 3/4 of a label's height over the strip's top
+  // and puts it TextPad and a frame line above that, so the top label (half a height above the top) keeps the
+  // labels' gap from the title.
+  scalar_bar_->SetVerticalTitleSeparation(static_cast<int>(ColorBarActor::kLabelGap) + 4 + 1);
   for (vtkTextProperty* text : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
     text->ShadowOff();
     text->ItalicOff();
@@ -108,7 +116,7 @@ SceneView::SceneView(QWidget* parent)
   caption_->GetTextProperty()->SetFontSize(14);
   caption_->GetTextProperty()->SetVerticalJustificationToTop();
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  caption_->GetPositionCoordinate()->SetValue(0.015, 0.98);
+  caption_->GetPositionCoordinate()->SetValue(kCaptionLeft, kCaptionTop);
   renderer->AddViewProp(caption_);
 
   auto axes = vtkSmartPointer<vtkAxesActor>::New();
@@ -359,19 +367,46 @@ void SceneView::applyColorSettings() {
 
 void SceneView::placeColorBar() {
   // VTK centres the title over the bar's strip (0.15 of the view, at most 150 px) and lets a title wider than the
-  // strip overhang both sides: measured here, the strip moves left until the title keeps 8 px from the right edge.
+  // strip overhang both sides; the tick labels start beside the colours (a quarter of the strip) and may reach
+  // past the strip in a narrow view. Both measured here, the strip moves left until they keep 8 px from the right
+  // edge.
   constexpr double kPreferredLeft = 0.80, kStripFraction = 0.15, kMaxStripPx = 150, kMarginPx = 8;
+  constexpr double kBarBottom = 0.12, kBarHeight = 0.72;  // of the view's height, where nothing is in the way
   const double view_px = gl_->width() * gl_->devicePixelRatioF();
+  const int dpi = gl_->renderWindow()->GetDPI();
+  auto textWidth = [&](vtkTextProperty* property, const std::string& text) {
+    int box[4] = {0, 0, 0, 0};
+    if (text.empty() || !vtkTextRenderer::GetInstance()->GetBoundingBox(property, text, box, dpi)) return 0.0;
+    return static_cast<double>(box[1] - box[0]);
+  };
   const char* title = scalar_bar_->GetTitle();
-  int box[4] = {0, 0, 0, 0};
-  double title_px = 0;
-  if (title && *title &&
-      vtkTextRenderer::GetInstance()->GetBoundingBox(scalar_bar_->GetTitleTextProperty(), std::string(title), box,
-                                                     gl_->renderWindow()->GetDPI()))
-    title_px = box[1] - box[0] + 2.0 * scalar_bar_->GetTextPad();
+  double title_px = title && *title ? textWidth(scalar_bar_->GetTitleTextProperty(), title) : 0.0;
+  if (title_px > 0) title_px += 2.0 * scalar_bar_->GetTextPad();
+  double label_px = 0;
+  if (vtkDoubleArray* ticks = scalar_bar_->GetCustomLabels())
+    for (vtkIdType i = 0; i < ticks->GetNumberOfTuples(); ++i) {
+      char text[64];
+      std::snprintf(text, sizeof text, scalar_bar_->GetLabelFormat(), ticks->GetValue(i));
+      label_px = std::max(label_px, textWidth(scalar_bar_->GetLabelTextProperty(), text));
+    }
   const double strip_px = std::min(kStripFraction * view_px, kMaxStripPx);
-  const double left = colorBarLeft(view_px, strip_px, title_px, kMarginPx, kPreferredLeft);
-  scalar_bar_->GetPositionCoordinate()->SetValue(left, 0.12);
+  const double labels_px = std::ceil(strip_px * scalar_bar_->GetBarRatio()) + ColorBarActor::kLabelGap + label_px;
+  const double left = colorBarLeft(view_px, strip_px, title_px, labels_px, kMarginPx, kPreferredLeft);
+  scalar_bar_->GetPositionCoordinate()->SetValue(left, kBarBottom);
+  // The caption (top left; four lines over a ship's wave pattern) and the bar's title (top right) share the top of
+  // a narrow view: where the caption reaches over to the title's left edge, the bar ends two margins below it.
+  double top = kBarBottom + kBarHeight;
+  const double view_h = gl_->height() * gl_->devicePixelRatioF();
+  const char* caption = caption_->GetInput();
+  int box[4] = {0, 0, 0, 0};
+  if (view_h > 0 && caption && *caption &&
+      vtkTextRenderer::GetInstance()->GetBoundingBox(caption_->GetTextProperty(), std::string(caption), box, dpi)) {
+    const double caption_right = kCaptionLeft * view_px + (box[1] - box[0]);
+    const double caption_bottom = kCaptionTop * view_h - (box[3] - box[2]);
+    const double title_left = left * view_px + 0.5 * strip_px - 0.5 * std::max(strip_px, title_px);
+    if (caption_right + kMarginPx > title_left) top = std::min(top, (caption_bottom - 2 * kMarginPx) / view_h);
+  }
+  scalar_bar_->SetHeight(std::max(kBarHeight / 2, top - kBarBottom));
   gl_->requestRender();
 }
 
@@ -432,6 +467,7 @@ void SceneView::updateTimeLabel() {
   const QString notes = drawingNotes();
   if (!notes.isEmpty()) lines << notes;
   caption_->SetInput(lines.join('\n').toStdString().c_str());
+  placeColorBar();  // a longer caption may reach the bar's title
 }
 
 QString SceneView::captionText() const {

@@ -31,11 +31,11 @@ class QToolButton;
 class vtkActor;
 class vtkColorTransferFunction;
 class vtkOrientationMarkerWidget;
-class vtkScalarBarActor;
 class vtkTextActor;
 
 namespace maris::ui {
 
+class ColorBarActor;
 class ColorMapControl;
 class VtkGlWidget;
 
@@ -97,7 +97,7 @@ class SceneView : public QWidget {
   void applyPaletteColors();
   void rebuildStatic();
   void applyColorSettings();
-  void placeColorBar();  // keeps the bar's title inside the view with a margin
+  void placeColorBar();  // keeps the bar's title and labels inside the view with a margin
   void drawFrame();
   void updateTimeLabel();
   Bounds3D framingBounds() const;  // the model and the water and sea-bed planes drawn with it
@@ -117,7 +117,7 @@ class SceneView : public QWidget {
   Bounds3D framed_bounds_;          // what the camera was last framed for
   vtkSmartPointer<vtkColorTransferFunction> colors_;      // SI values to colours (the model)
   vtkSmartPointer<vtkColorTransferFunction> bar_colors_;  // the same in the colour bar's display unit
-  vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
+  vtkSmartPointer<ColorBarActor> scalar_bar_;
   vtkSmartPointer<vtkTextActor> caption_;
   vtkSmartPointer<vtkOrientationMarkerWidget> triad_;
   std::vector<vtkSmartPointer<vtkActor>> static_actors_;
