@@ -285,6 +285,22 @@ void assembleReactionMatrix(const RiserModel& m, const std::vector<SegmentInvers
 // nb−1 … p+1 upwards (F_k = z_k − E_k F_{k−1}), the two meeting in row p. Each sweep is a chain of dependent 3×3
 // solves whose latency, not its arithmetic, sets the time; two independent chains of half the length run side by
 // side in the processor, the same work in about half the time. Pivots by SmallLu3 (LU with partial pivoting).
+// pivot −= A c and r −= A x, in scalars, each sum in the order of Eigen's 3×3 products (the same numbers): Eigen's
+// fixed-size products here mixed packet and scalar accesses of the same stack slots, which stalled the sweep.
+inline void subtractCoupling(const Mat3& a, const Mat3& c, const Vec3& x, Mat3& pivot, Vec3& r) {
+  for (int i = 0; i < 3; ++i) {
+    const double a0 = a(i, 0), a1 = a(i, 1), a2 = a(i, 2);
+    for (int j = 0; j < 3; ++j) pivot(i, j) -= a0 * c(0, j) + a1 * c(1, j) + a2 * c(2, j);
+    r(i) -= a0 * x(0) + a1 * x(1) + a2 * x(2);
+  }
+}
+
+// x −= c y in the same way.
+inline void subtractProduct(const Mat3& c, const Vec3& y, Vec3& x) {
+  const double y0 = y(0), y1 = y(1), y2 = y(2);
+  for (int i = 0; i < 3; ++i) x(i) -= c(i, 0) * y0 + c(i, 1) * y1 + c(i, 2) * y2;
+}
+
 void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
   const int f = m.first_dynamic, nb = m.last_dynamic - f + 2, p = nb / 2;
   std::vector<Mat3>& c = ws.pivot_upper;  // C_k above row p, E_k below it
@@ -292,10 +308,7 @@ void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
   auto down = [&](int k) {  // row k eliminated with the rows above it
     Mat3 pivot = ws.diag[k];
     Vec3 r = ws.rhs[k];
-    if (k > 0) {
-      pivot -= ws.lower[k] * c[k - 1];
-      r -= ws.lower[k] * x[k - 1];
-    }
+    if (k > 0) subtractCoupling(ws.lower[k], c[k - 1], x[k - 1], pivot, r);
     const SmallLu3 lu(pivot);
     c[k] = lu.solve(ws.upper[k]);
     x[k] = lu.solve(r);
@@ -303,10 +316,7 @@ void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
   auto up = [&](int k) {  // row k eliminated with the rows below it
     Mat3 pivot = ws.diag[k];
     Vec3 r = ws.rhs[k];
-    if (k < nb - 1) {
-      pivot -= ws.upper[k] * c[k + 1];
-      r -= ws.upper[k] * x[k + 1];
-    }
+    if (k < nb - 1) subtractCoupling(ws.upper[k], c[k + 1], x[k + 1], pivot, r);
     const SmallLu3 lu(pivot);
     c[k] = lu.solve(ws.lower[k]);
     x[k] = lu.solve(r);
@@ -317,17 +327,11 @@ void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
   }
   Mat3 pivot = ws.diag[p];
   Vec3 r = ws.rhs[p];
-  if (p > 0) {
-    pivot -= ws.lower[p] * c[p - 1];
-    r -= ws.lower[p] * x[p - 1];
-  }
-  if (p < nb - 1) {
-    pivot -= ws.upper[p] * c[p + 1];
-    r -= ws.upper[p] * x[p + 1];
-  }
+  if (p > 0) subtractCoupling(ws.lower[p], c[p - 1], x[p - 1], pivot, r);
+  if (p < nb - 1) subtractCoupling(ws.upper[p], c[p + 1], x[p + 1], pivot, r);
   x[p] = SmallLu3(pivot).solve(r);
-  for (int k = p - 1; k >= 0; --k) x[k] -= c[k] * x[k + 1];
-  for (int k = p + 1; k < nb; ++k) x[k] -= c[k] * x[k - 1];
+  for (int k = p - 1; k >= 0; --k) subtractProduct(c[k], x[k + 1], x[k]);
+  for (int k = p + 1; k < nb; ++k) subtractProduct(c[k], x[k - 1], x[k]);
 }
 
 // Baumgarte term 2αΦ̇ + α²Φ of row k (absolute coordinates; joint: only the bottom row).
