@@ -286,7 +286,7 @@ void assembleReactionMatrix(const RiserModel& m, const std::vector<SegmentInvers
 // solves whose latency, not its arithmetic, sets the time; two independent chains of half the length run side by
 // side in the processor, the same work in about half the time. Pivots by SmallLu3 (LU with partial pivoting).
 // pivot −= A c and r −= A x, in scalars, each sum in the order of Eigen's 3×3 products (the same numbers): Eigen's
-// fixed-size products here mixed packet and scalar accesses of the same stack slots, which stalled the sweep.
+// fixed-size products here mixed packet and scalar accesses of the same stack slots (riser_small_lu.hpp).
 inline void subtractCoupling(const Mat3& a, const Mat3& c, const Vec3& x, Mat3& pivot, Vec3& r) {
   for (int i = 0; i < 3; ++i) {
     const double a0 = a(i, 0), a1 = a(i, 1), a2 = a(i, 2);
