@@ -109,8 +109,9 @@ double knownTopForce(const RiserModel& m, int c, double t, const Vec3& top_posit
   return m.top == TopCondition::Tensioner && c == 2 ? load_factor * m.top_tension : 0.0;
 }
 
-void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, RiserPose& pose) {
-  const TopKinematics top = m.topAt(t);
+namespace {
+// poseFromState with the top's kinematics at t given (evaluateRhs needs them three times: looked up once).
+void poseFromTop(const RiserModel& m, const TopKinematics& top, double t, const Eigen::VectorXd& y, RiserPose& pose) {
   Vec3 rt = top.position, vt = top.velocity;
   for (int c = 0; c < 3; ++c)
     if (topForceKnown(m, c)) rt[c] = y[c], vt[c] = y[3 + c];
@@ -152,24 +153,34 @@ void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, Rise
   }
 }
 
-void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
+}  // namespace
+
+void poseFromState(const RiserModel& m, double t, const Eigen::VectorXd& y, RiserPose& pose) {
+  poseFromTop(m, m.topAt(t), t, y, pose);
+}
+
+namespace {
+void prepareSegmentsAt(const RiserModel& m, const TopKinematics& top, RiserWorkspace& ws, double t,
+                       const Eigen::VectorXd& y) {
   RiserPose& pose = ws.pose;
-  poseFromState(m, t, y, pose);
+  poseFromTop(m, top, t, y, pose);
   computeLoads(m, pose, 1.0, ws.loads);
   for (int i = m.first_dynamic; i <= m.last_dynamic; ++i) {
     const Segment& s = m.segments[i];
     const Mat3& r = pose.rotation[i];
     const Vec3& om = pose.omega[i];
-    const Vec3 c = 0.5 * s.length * r.col(0);
-    // ω × (I ω) with I = R I_local Rᵀ applied as R (I_local (Rᵀ ω)): three products with a vector, not two 3×3 ones.
-    const Vec3 inertia_omega = r * (s.mass_local.bottomRightCorner<3, 3>() * (r.transpose() * om));
-    ws.bias[i] << ws.loads.force[i] - s.mass * om.cross(om.cross(c)), ws.loads.moment[i] - om.cross(inertia_omega);
+    const Vec3 t = r.col(0);
+    const Vec3 c = 0.5 * s.length * t;
+    // ω × (I ω): the inertia about A_i is axisymmetric, I = a 1 + b t tᵀ in the global frame (riser_inverse_mass.hpp;
+    // symmetric, so no [t]× part), and ω × (I ω) = b (t·ω) ω × t: no product with R at all.
+    const double gyroscopic = axialBlockOf(s.mass_local.bottomRightCorner<3, 3>()).b * t.dot(om);
+    ws.bias[i] << ws.loads.force[i] - s.mass * om.cross(om.cross(c)), ws.loads.moment[i] - gyroscopic * om.cross(t);
     // Tangential added mass unlike the normal one (K = m 1 + δ t tᵀ, v the velocity of A_i): the velocity terms of
     // Kirchhoff's equations for the kinetic energy ½ vᵀ K v + ..., ω×(Kv) − K(ω×v) in the force and the Munk
     // moment v×(Kv), so that the energy balance still closes; they vanish for an isotropic added mass.
     const double delta = s.axial_mass - s.mass;
     if (delta != 0.0) {
-      const Vec3 t = r.col(0), &v = pose.velocity[i];
+      const Vec3& v = pose.velocity[i];
       const double axial_speed = t.dot(v);
       ws.bias[i].head<3>() -= delta * (axial_speed * om.cross(t) - t.dot(om.cross(v)) * t);
       ws.bias[i].tail<3>() -= delta * axial_speed * v.cross(t);
@@ -177,12 +188,22 @@ void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Ei
   }
 }
 
-ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& pose, double t) {
-  ConstraintViolation out;
+}  // namespace
+
+void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
+  prepareSegmentsAt(m, m.topAt(t), ws, t, y);
+}
+
+namespace {
+// constraintViolation into `out` (its vectors reused), the top's kinematics given. Without `inner_rows` the rows of
+// the inner joints are left zero: joint coordinates satisfy them exactly, and evaluateRhs uses only the end rows
+// there.
+void fillConstraintViolation(const RiserModel& m, const RiserPose& pose, const TopKinematics& top, bool inner_rows,
+                             ConstraintViolation& out) {
   const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
   out.position.assign(nb, Vec3::Zero());
   out.velocity.assign(nb, Vec3::Zero());
-  const TopKinematics top = m.topAt(t);
+  out.largest = 0.0;
   Vec3 hold = top.position, hold_v = top.velocity;
   if (f == 1) hold += m.segments[0].length * pose.rotation[0].col(0);
   for (int c = 0; c < 3; ++c) {
@@ -190,7 +211,7 @@ ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& po
     out.position[0][c] = pose.position[f][c] - hold[c];
     out.velocity[0][c] = pose.velocity[f][c] - hold_v[c];
   }
-  for (int k = 1; k < nb - 1; ++k) {
+  for (int k = 1; inner_rows && k < nb - 1; ++k) {
     const int j = f + k;
     const Vec3 dp = m.segments[j - 1].length * pose.rotation[j - 1].col(0);
     out.position[k] = pose.position[j - 1] + dp - pose.position[j];
@@ -202,6 +223,12 @@ ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& po
     out.velocity[nb - 1] = pose.velocity[last] + pose.omega[last].cross(dl);
   }
   for (const Vec3& p : out.position) out.largest = std::max(out.largest, p.lpNorm<Eigen::Infinity>());
+}
+}  // namespace
+
+ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& pose, double t) {
+  ConstraintViolation out;
+  fillConstraintViolation(m, pose, m.topAt(t), true, out);
   return out;
 }
 
@@ -258,6 +285,22 @@ void assembleReactionMatrix(const RiserModel& m, const std::vector<SegmentInvers
 // nb−1 … p+1 upwards (F_k = z_k − E_k F_{k−1}), the two meeting in row p. Each sweep is a chain of dependent 3×3
 // solves whose latency, not its arithmetic, sets the time; two independent chains of half the length run side by
 // side in the processor, the same work in about half the time. Pivots by SmallLu3 (LU with partial pivoting).
+// pivot −= A c and r −= A x, in scalars, each sum in the order of Eigen's 3×3 products (the same numbers): Eigen's
+// fixed-size products here mixed packet and scalar accesses of the same stack slots (riser_small_lu.hpp).
+inline void subtractCoupling(const Mat3& a, const Mat3& c, const Vec3& x, Mat3& pivot, Vec3& r) {
+  for (int i = 0; i < 3; ++i) {
+    const double a0 = a(i, 0), a1 = a(i, 1), a2 = a(i, 2);
+    for (int j = 0; j < 3; ++j) pivot(i, j) -= a0 * c(0, j) + a1 * c(1, j) + a2 * c(2, j);
+    r(i) -= a0 * x(0) + a1 * x(1) + a2 * x(2);
+  }
+}
+
+// x −= c y in the same way.
+inline void subtractProduct(const Mat3& c, const Vec3& y, Vec3& x) {
+  const double y0 = y(0), y1 = y(1), y2 = y(2);
+  for (int i = 0; i < 3; ++i) x(i) -= c(i, 0) * y0 + c(i, 1) * y1 + c(i, 2) * y2;
+}
+
 void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
   const int f = m.first_dynamic, nb = m.last_dynamic - f + 2, p = nb / 2;
   std::vector<Mat3>& c = ws.pivot_upper;  // C_k above row p, E_k below it
@@ -265,10 +308,7 @@ void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
   auto down = [&](int k) {  // row k eliminated with the rows above it
     Mat3 pivot = ws.diag[k];
     Vec3 r = ws.rhs[k];
-    if (k > 0) {
-      pivot -= ws.lower[k] * c[k - 1];
-      r -= ws.lower[k] * x[k - 1];
-    }
+    if (k > 0) subtractCoupling(ws.lower[k], c[k - 1], x[k - 1], pivot, r);
     const SmallLu3 lu(pivot);
     c[k] = lu.solve(ws.upper[k]);
     x[k] = lu.solve(r);
@@ -276,10 +316,7 @@ void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
   auto up = [&](int k) {  // row k eliminated with the rows below it
     Mat3 pivot = ws.diag[k];
     Vec3 r = ws.rhs[k];
-    if (k < nb - 1) {
-      pivot -= ws.upper[k] * c[k + 1];
-      r -= ws.upper[k] * x[k + 1];
-    }
+    if (k < nb - 1) subtractCoupling(ws.upper[k], c[k + 1], x[k + 1], pivot, r);
     const SmallLu3 lu(pivot);
     c[k] = lu.solve(ws.lower[k]);
     x[k] = lu.solve(r);
@@ -290,17 +327,11 @@ void solveReactionSystem(const RiserModel& m, RiserWorkspace& ws) {
   }
   Mat3 pivot = ws.diag[p];
   Vec3 r = ws.rhs[p];
-  if (p > 0) {
-    pivot -= ws.lower[p] * c[p - 1];
-    r -= ws.lower[p] * x[p - 1];
-  }
-  if (p < nb - 1) {
-    pivot -= ws.upper[p] * c[p + 1];
-    r -= ws.upper[p] * x[p + 1];
-  }
+  if (p > 0) subtractCoupling(ws.lower[p], c[p - 1], x[p - 1], pivot, r);
+  if (p < nb - 1) subtractCoupling(ws.upper[p], c[p + 1], x[p + 1], pivot, r);
   x[p] = SmallLu3(pivot).solve(r);
-  for (int k = p - 1; k >= 0; --k) x[k] -= c[k] * x[k + 1];
-  for (int k = p + 1; k < nb; ++k) x[k] -= c[k] * x[k - 1];
+  for (int k = p - 1; k >= 0; --k) subtractProduct(c[k], x[k + 1], x[k]);
+  for (int k = p + 1; k < nb; ++k) subtractProduct(c[k], x[k - 1], x[k]);
 }
 
 // Baumgarte term 2αΦ̇ + α²Φ of row k (absolute coordinates; joint: only the bottom row).
@@ -313,28 +344,31 @@ Vec3 stabilisation(const RiserModel& m, const ConstraintViolation& phi, int k, d
 }  // namespace
 
 void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
-  prepareSegments(m, ws, t, y);
+  const TopKinematics top = m.topAt(t);
+  prepareSegmentsAt(m, top, ws, t, y);
   const RiserPose& pose = ws.pose;
   const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
   const bool joint = m.formulation == Formulation::Joint;
   const double alpha = ws.stabilisation_rate;
-  const ConstraintViolation phi = constraintViolation(m, pose, t);
+  thread_local ConstraintViolation phi;  // per thread, so that nothing allocates per call
+  fillConstraintViolation(m, pose, top, !joint, phi);
   const std::vector<SegmentInverseMass>& w_blocks = inverseMassBlocks(m);
   assembleReactionMatrix(m, w_blocks, ws);
   auto d = [&](int i) -> Vec3 { return m.segments[i].length * pose.rotation[i].col(0); };
   auto kappa = [&](int i) -> Vec3 { return pose.omega[i].cross(pose.omega[i].cross(d(i))); };
-  auto wb = [&](int i) -> Vec6 { return w_blocks[i].apply(pose.rotation[i].col(0), ws.bias[i]); };
 
   // Right sides: top row (prescribed acceleration, or known force components), continuity, bottom.
-  const TopKinematics top = m.topAt(t);
-  ws.rhs[0] = top.acceleration - (joint ? Vec3::Zero() : stabilisation(m, phi, 0, alpha)) - wb(f).head<3>();
+  // W_i b_i of the segment above row k, each computed once (written out, not a lambda: GCC kept that a call).
+  Vec6 wb_above = w_blocks[f].apply(pose.rotation[f].col(0), ws.bias[f]);
+  ws.rhs[0] = top.acceleration - (joint ? Vec3::Zero() : stabilisation(m, phi, 0, alpha)) - wb_above.head<3>();
   for (int c = 0; c < 3; ++c)
     if (topForceKnown(m, c)) ws.rhs[0][c] = knownTopForce(m, c, t, pose.position[f], pose.velocity[f]);
-  Vec6 wb_above = wb(f);  // W_i b_i of the segment above row k, each computed once
   for (int k = 1; k < nb - 1; ++k) {
     const int j = f + k;
-    const Vec6 wb_below = wb(j);
-    ws.rhs[k] = kappa(j - 1) + stabilisation(m, phi, k, alpha) + farEnd(wb_above, d(j - 1)) - wb_below.head<3>();
+    const Vec6 wb_below = w_blocks[j].apply(pose.rotation[j].col(0), ws.bias[j]);
+    Vec3 row = kappa(j - 1);
+    if (!joint) row += stabilisation(m, phi, k, alpha);  // joint coordinates: zero (their inner rows hold exactly)
+    ws.rhs[k] = row + farEnd(wb_above, d(j - 1)) - wb_below.head<3>();
     wb_above = wb_below;
   }
   const bool held = bottomHeld(m);
@@ -346,7 +380,7 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
   ws.constraint_drift = drift;
 
   // Stage 6: accelerations x_i = W_i (E F_i - D'_i F_{i+1} + b_i) and the state derivative.
-  dy.setZero(y.size());
+  dy.resize(y.size());  // every entry is written below
   for (int i = f; i <= last; ++i) {
     Vec6 g = ws.bias[i];
     g.head<3>() += ws.reaction[i] - ws.reaction[i + 1];

@@ -13,16 +13,16 @@ namespace {
 
 // Measured weights (bench_riser_auto_cost: case 5 and the peer riser, J3 and A3, n = 20 and 100, minimum of 3
 // repeats; the table in docs/riser.md), in right-hand sides: a chart residual is one evaluation plus the chart
-// maps (1.46–1.51); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
-// coordinates, the twin's solve and the map back (A 0.70–0.72, J 0.74–0.78); a refresh's work beside its balance
-// evaluations (colouring, the band's assembly and factorisation: 5.2–7.6, median 7.0).
-constexpr double kResidualCost = 1.48;
-constexpr double kAbsoluteSolveCost = 0.71;
-constexpr double kJointSolveCost = 0.75;
-constexpr double kFactorisationCost = 7.0;
-// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.30–0.32 µs at n = 20 and 100), for the per-step
+// maps (1.69–1.75); a banded solve of the force-space Newton matrix (9(n + 1) unknowns, bandwidth 14) and, in joint
+// coordinates, the twin's solve and the map back (A 1.04–1.13, J 1.12–1.20); a refresh's work beside its balance
+// evaluations (colouring, the band's assembly and factorisation: 11.7–16.4, median 13.8).
+constexpr double kResidualCost = 1.72;
+constexpr double kAbsoluteSolveCost = 1.06;
+constexpr double kJointSolveCost = 1.12;
+constexpr double kFactorisationCost = 13.8;
+// One right-hand side per segment [µs] (bench_riser_auto_cost: 0.19–0.21 µs at n = 20 and 100), for the per-step
 // times of the method line and the wave weight's conversion.
-constexpr double kRhsMicrosecondsPerSegment = 0.30;
+constexpr double kRhsMicrosecondsPerSegment = 0.20;
 // The wave kinematics per Gauss point and wave component [ns] (bench_riser_auto_cost: the batch of the riser's sea,
 // phases at every component, depth sums truncated where the short waves have died out: 2.05 ns at n = 100, 2.45 at
 // n = 20), converted to right-hand sides by the one above.

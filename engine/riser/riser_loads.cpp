@@ -52,17 +52,21 @@ Mat3 zyxRateMatrix(const Vec3& a) {
 void addSpringMoments(const RiserModel& m, const RiserPose& pose, SegmentLoads& loads) {
   for (int i = 1; i <= m.n; ++i) {
     const Mat3& ra = pose.rotation[i - 1];
-    const Mat3 rel = ra.transpose() * pose.rotation[i];
-    const Vec3 angles = zyxAngles(rel);
+    const Mat3& rb = pose.rotation[i];
+    // The five entries of R_{i-1}ᵀ R_i that the angles and G need (of nine): entry (j, k) is column j of R_{i-1}
+    // dotted with column k of R_i, summed in the order of the 3×3 product, so the same numbers.
+    auto rel = [&](int j, int k) { return ra.col(j).dot(rb.col(k)); };
+    const double r00 = rel(0, 0), r10 = rel(1, 0), r20 = rel(2, 0), r21 = rel(2, 1), r22 = rel(2, 2);
+    const Vec3 angles(std::atan2(r21, r22), -std::asin(std::clamp(r20, -1.0, 1.0)), std::atan2(r10, r00));
     // G of zyxRateMatrix(angles) without its sines and cosines (the profile's second-largest item): sin θ, cos θ
     // and (cos ψ, sin ψ) are read off the matrix the angles came from, and G, G^T are solved in closed form (the
     // first two rows of G are a turn by ψ of (cos θ x_0, x_1)) instead of by two LU factorisations.
-    const double st = -std::clamp(rel(2, 0), -1.0, 1.0);
+    const double st = -std::clamp(r20, -1.0, 1.0);
     const double cos_pitch = std::sqrt((1 - st) * (1 + st));
     const double ct = std::max(cos_pitch, kLeastCosPitch);
-    const double heading_norm = std::sqrt(rel(0, 0) * rel(0, 0) + rel(1, 0) * rel(1, 0));
-    const double cp = heading_norm > 0 ? rel(0, 0) / heading_norm : 1.0;
-    const double sp = heading_norm > 0 ? rel(1, 0) / heading_norm : 0.0;
+    const double heading_norm = std::sqrt(r00 * r00 + r10 * r10);
+    const double cp = heading_norm > 0 ? r00 / heading_norm : 1.0;
+    const double sp = heading_norm > 0 ? r10 / heading_norm : 0.0;
     // Relative angle rates from the relative angular velocity seen in frame i-1: G rates = w.
     const Vec3 w = ra.transpose() * (pose.omega[i] - pose.omega[i - 1]);
     const double rate_x = (cp * w.x() + sp * w.y()) / ct;
@@ -105,31 +109,45 @@ void addDrag(const RiserModel& m, const RiserPose& pose, double factor, SegmentL
     const Segment& seg = m.segments[i];
     if (seg.normal_drag == 0.0 && seg.tangential_drag == 0.0) continue;
     const Mat3& r = pose.rotation[i];
-    const Vec3 t = r.col(0);
+    const Vec3 t = r.col(0), n1 = r.col(1), n2 = r.col(2);
     // In the segment's frame, where the Gauss point's arm is ξ e_x: its velocity R^T v + (R^T ω) × ξ e_x, the
     // force's moment ξ e_x × f, both summed over the points and turned to the global frame once (two products
-    // with R per segment instead of two per point: addDrag was the largest item of the profile).
-    const Vec3 velocity_local = r.transpose() * pose.velocity[i], omega_local = r.transpose() * pose.omega[i];
-    const Vec3 uniform_local = uniform ? Vec3(r.transpose() * uniform_current) : Vec3::Zero();
-    Vec3 force_local = Vec3::Zero(), moment_local = Vec3::Zero();
+    // with R per segment instead of two per point: addDrag was the largest item of the profile). Written in scalars
+    // with the terms that are zero left out (the x component of (R^T ω) × ξ e_x and of ξ e_x × f, and R^T ω's own x):
+    // the same operations in the same order on the rest, so bit for bit the loads of the vector form, in under a
+    // third of the time (Eigen's 3-vectors, built element by element and read two at a time, stalled on store
+    // forwarding by the annotated profile).
+    const Vec3& vg = pose.velocity[i];
+    const Vec3& wg = pose.omega[i];
+    const double vx = t.dot(vg), vy = n1.dot(vg), vz = n2.dot(vg);
+    const double wy = n1.dot(wg), wz = n2.dot(wg);
+    double ux = 0.0, uy = 0.0, uz = 0.0;
+    if (uniform) ux = t.dot(uniform_current), uy = n1.dot(uniform_current), uz = n2.dot(uniform_current);
+    const double length = seg.length, z0 = pose.position[i].z(), tz = t.z();
+    const double tangential = -seg.tangential_drag, normal = -seg.normal_drag;
+    double fx = 0.0, fy = 0.0, fz = 0.0, my = 0.0, mz = 0.0;
 #pragma GCC unroll 3
     for (int q = 0; q < 3; ++q) {  // unrolled: rolled, the loop was 14 % slower than the lookups it saves
-      const double xi = kGaussX[q] * seg.length, w = kGaussW[q] * seg.length;
-      const double z = pose.position[i].z() + xi * t.z();
+      const double xi = kGaussX[q] * length, w = kGaussW[q] * length;
+      const double z = z0 + xi * tz;
       if (z > m.water_level) continue;
-      const Vec3 v = velocity_local + xi * Vec3(0.0, omega_local.z(), -omega_local.y());
-      const Vec3 current_local = uniform ? uniform_local : Vec3(r.transpose() * m.currentAt(z));
-      const Vec3 local = v - current_local;
-      const double vn = std::sqrt(local.y() * local.y() + local.z() * local.z());
-      const Vec3 f = factor * w *
-                     Vec3(-seg.tangential_drag * std::abs(local.x()) * local.x(), -seg.normal_drag * vn * local.y(),
-                          -seg.normal_drag * vn * local.z());
-      force_local += f;
-      moment_local += xi * Vec3(0.0, -f.z(), f.y());
-      power += f.dot(v);
+      const double py = vy + xi * wz, pz = vz - xi * wy;  // the point's velocity in the segment's frame (x: vx)
+      if (!uniform) {
+        const Vec3 c = m.currentAt(z);
+        ux = t.dot(c), uy = n1.dot(c), uz = n2.dot(c);
+      }
+      const double lx = vx - ux, ly = py - uy, lz = pz - uz;
+      const double vn = std::sqrt(ly * ly + lz * lz);
+      const double scale = factor * w;
+      const double gx = scale * (tangential * std::abs(lx) * lx), gy = scale * (normal * vn * ly),
+                   gz = scale * (normal * vn * lz);
+      fx += gx, fy += gy, fz += gz;
+      my -= xi * gz;
+      mz += xi * gy;
+      power += gx * vx + gy * py + gz * pz;
     }
-    loads.force[i] += r * force_local;
-    loads.moment[i] += r * moment_local;
+    loads.force[i] += t * fx + n1 * fy + n2 * fz;
+    loads.moment[i] += n1 * my + n2 * mz;
   }
   loads.power_drag = power;
 }
