@@ -204,7 +204,6 @@ TEST(RiserStaticsBanded, CableWithoutTorsionIsFoundByNewton) {
   EXPECT_GT((joints[0].back() - joints[0].front()).norm(), 20.0);  // a hanging 30 m cable, not a trivial shape
 }
 
-
 // riser_default at n = 200 and 300 (current-bent, torsion on): the O(n) Newton reaches its round-off floor at 2.0
 // and 1.4 (n+1)²ε (scaled residual 1.8e-11 and 2.7e-11 measured, above the 1e-11 and 2.0e-11 asked) where its full
 // steps are 1e-15 … 1e-14 rad. It must stop there (within ten times the tolerance), not shrink its pseudo-time step
