@@ -270,9 +270,19 @@ double divergenceFlowSpeed(const RiserModel& model, const StaticSolution& static
   const Eigen::MatrixXd z = connectedBasis(m, statics, q);
   m.flow_speed = 0.0;
   const Eigen::MatrixXd k0 = z.transpose() * positionJacobian(m, statics, q) * z;
-  m.flow_speed = 1.0;
-  // The flow's shape-dependent force −m_f l u² k is quadratic in u: K(u) = K0 + u² K1 exactly.
-  const Eigen::MatrixXd k1 = z.transpose() * positionJacobian(m, statics, q) * z - k0;
+  // The flow's shape-dependent force −m_f l u² k is quadratic in u: K(u) = K0 + u² K1 exactly, so K1 may be
+  // differenced at any flow speed U. At U = 1 m/s the flow's part of a tensioned riser's stiffness is small
+  // beside K0, and (K(U) − K0) was then largely the differencing noise of the two Jacobians: the default riser's
+  // divergence speed read 91.8, 21.5 or 113.4 m/s as its water density moved by 1e-13 of itself (the pencil's
+  // noise gave spurious small positive u²). U is chosen so that U² K1 is as large as K0: 113.43 m/s then, to
+  // 1.1e-5 under the same changes (test DivergenceSpeedOfTheDefaultRiserIsNotDifferencingNoise).
+  const auto flowPart = [&](double u) -> Eigen::MatrixXd {
+    m.flow_speed = u;
+    return (z.transpose() * positionJacobian(m, statics, q) * z - k0) / (u * u);
+  };
+  Eigen::MatrixXd k1 = flowPart(1.0);
+  const double ratio = k0.cwiseAbs().maxCoeff() / std::max(k1.cwiseAbs().maxCoeff(), 1e-300);
+  if (ratio > 1.0 && std::isfinite(ratio)) k1 = flowPart(std::sqrt(ratio));
   Eigen::GeneralizedEigenSolver<Eigen::MatrixXd> eig(-k0, k1, false);
   double smallest = std::numeric_limits<double>::infinity();
   const double scale = k0.cwiseAbs().maxCoeff() / std::max(k1.cwiseAbs().maxCoeff(), 1e-300);
