@@ -481,6 +481,7 @@ class StudyTest : public QObject {
       QCOMPARE(dialog.path(), std::string("sections[1].outer_diameter"));
       QVERIFY(dialog.addButton()->isEnabled());
       QVERIFY2(dialog.summaryLabel()->text().endsWith(QStringLiteral("now 0.4")), qPrintable(dialog.summaryLabel()->text()));
+      QVERIFY2(dialog.summaryLabel()->text().contains(QStringLiteral("[m]")), qPrintable(dialog.summaryLabel()->text()));
       QVERIFY(dialog.chooseField("geometry.radius"));
       QCOMPARE(dialog.path(), std::string("geometry.radius"));
       AddParameterDialog again(*document->scene(), document->scenario().parameters, {"sections[1].outer_diameter"});

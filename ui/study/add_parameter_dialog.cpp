@@ -36,7 +36,7 @@ std::size_t rowCount(const Json& parameters, const std::string& table) {
 
 AddParameterDialog::AddParameterDialog(const SceneDefinition& scene, const Json& parameters,
                                        std::vector<std::string> taken, QWidget* parent)
-    : QDialog(parent), schema_(scene.schema), parameters_(parameters), taken_(std::move(taken)),
+    : QDialog(parent), scene_(&scene), schema_(scene.schema), parameters_(parameters), taken_(std::move(taken)),
       field_choice_(new QRadioButton(tr("A field"), this)),
       cell_choice_(new QRadioButton(tr("A cell of a table"), this)), field_(new QComboBox(this)),
       table_(new QComboBox(this)), row_(new QSpinBox(this)), column_(new QComboBox(this)), summary_(new QLabel(this)),
@@ -144,8 +144,10 @@ void AddParameterDialog::check() {
     summary_->setText(cell && !table_->currentData().isNull() ? tr("This cell is varied already.") : QString());
   } else {
     const Json* value = study::findParameterValue(parameters_, chosen);
+    const auto spec = study::findStudyParameter(*scene_, parameters_, chosen);
+    const std::string unit = spec && spec->unit != "-" ? spec->unit : std::string();
     summary_->setText(tr("%1 (%2), now %3")
-                          .arg(studyAxisLabel(chosen, ""), QString::fromStdString(chosen),
+                          .arg(studyAxisLabel(chosen, unit), QString::fromStdString(chosen),
                                value ? displayValue(*value) : tr("not set")));
   }
   add_->setEnabled(!chosen.empty());

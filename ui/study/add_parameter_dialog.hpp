@@ -46,6 +46,7 @@ class AddParameterDialog : public QDialog {
   void tableChosen();
   void check();
 
+  const SceneDefinition* scene_;  // the registry's entry: lives as long as the program
   Schema schema_;
   Json parameters_;
   std::vector<std::string> taken_;
