@@ -350,7 +350,7 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
   const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;
   const bool joint = m.formulation == Formulation::Joint;
   const double alpha = ws.stabilisation_rate;
-  thread_local ConstraintViolation phi;  // per thread, so that nothing allocates per call
+  ConstraintViolation& phi = ws.constraint_violation;  // its vectors reused: nothing allocates per call
   fillConstraintViolation(m, pose, top, !joint, phi);
   const std::vector<SegmentInverseMass>& w_blocks = inverseMassBlocks(m);
   assembleReactionMatrix(m, w_blocks, ws);

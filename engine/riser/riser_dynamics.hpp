@@ -27,6 +27,14 @@
 
 namespace maris::riser {
 
+// Constraint violations Φ and Φ̇ per row of the reaction system (row 0: top hold, k: joint A_{f+k},
+// last: bottom hold; zero where the force is known). Joint coordinates satisfy the inner rows exactly.
+struct ConstraintViolation {
+  std::vector<Vec3> position;  // [m] Φ_k
+  std::vector<Vec3> velocity;  // [m/s] Φ̇_k
+  double largest = 0.0;        // [m] max |Φ_k| (infinity norm)
+};
+
 // Scratch space of evaluateRhs, sized once by makeWorkspace (nothing allocates per call).
 struct RiserWorkspace {
   RiserPose pose;                 // written by poseFromState
@@ -36,6 +44,7 @@ struct RiserWorkspace {
   std::vector<Mat3> lower, diag, upper, pivot_upper;  // block-tridiagonal system (n+2)
   std::vector<Vec3> rhs, reaction;                    // right side and F_j (n+2, index j)
   std::vector<Vec6> acceleration;                     // x_i = (a_{A_i}, α_i) (n+1)
+  ConstraintViolation constraint_violation;           // Φ, Φ̇ of the last evaluation (joint: end rows only)
   double stabilisation_rate = 0.0;  // [1/s] Baumgarte α (= β)
   double constraint_drift = 0.0;    // [m] max |Φ| at the last evaluation
 };
@@ -76,13 +85,6 @@ void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen:
 // pose, loads, inverse masses W_i and biases b_i of the dynamic segments at (t, y).
 void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y);
 
-// Constraint violations Φ and Φ̇ per row of the reaction system (row 0: top hold, k: joint A_{f+k},
-// last: bottom hold; zero where the force is known). Joint coordinates satisfy the inner rows exactly.
-struct ConstraintViolation {
-  std::vector<Vec3> position;  // [m] Φ_k
-  std::vector<Vec3> velocity;  // [m/s] Φ̇_k
-  double largest = 0.0;        // [m] max |Φ_k| (infinity norm)
-};
 ConstraintViolation constraintViolation(const RiserModel& m, const RiserPose& pose, double t);
 
 // Residuals of the unreduced equations at the pose prepared in ws, for given accelerations x_i = (a_{A_i}, α_i)
