@@ -12,21 +12,29 @@ namespace {
 // DNVGL-RP-C203, Edition April 2016. Table 2-1 (in air): log a_1 for N ≤ 10^7 and log a_2 (m_2 = 5) beyond;
 // Table 2-2 (seawater with cathodic protection): log a_1 for N ≤ 10^6, the same log a_2 beyond. Thickness
 // exponents k and the fatigue limits at 10^7 cycles as the tables list them (the limit is a check of the
-// other columns: 10^((log a_2 − 7)/5)).
+// other columns: 10^((log a_2 − 7)/5)). Table 2-3 (seawater for free corrosion): one slope m = 3 for every curve,
+// log a and its own thickness exponent (the last two columns).
 struct DnvRow {
   const char* name;
   double m1, log_a1_air, log_a1_seawater_cp, log_a2, k, fatigue_limit_mpa;
+  double log_a_free_corrosion, k_free_corrosion;
 };
 constexpr DnvRow kDnvRows[] = {
-    {"B1", 4.0, 15.117, 14.917, 17.146, 0.00, 106.97}, {"B2", 4.0, 14.885, 14.685, 16.856, 0.00, 93.59},
-    {"C", 3.0, 12.592, 12.192, 16.320, 0.05, 73.10},   {"C1", 3.0, 12.449, 12.049, 16.081, 0.10, 65.50},
-    {"C2", 3.0, 12.301, 11.901, 15.835, 0.15, 58.48},  {"D", 3.0, 12.164, 11.764, 15.606, 0.20, 52.63},
-    {"E", 3.0, 12.010, 11.610, 15.350, 0.20, 46.78},   {"F", 3.0, 11.855, 11.455, 15.091, 0.25, 41.52},
-    {"F1", 3.0, 11.699, 11.299, 14.832, 0.25, 36.84},  {"F3", 3.0, 11.546, 11.146, 14.576, 0.25, 32.75},
-    {"G", 3.0, 11.398, 10.998, 14.330, 0.25, 29.24},   {"W1", 3.0, 11.261, 10.861, 14.101, 0.25, 26.32},
-    {"W2", 3.0, 11.107, 10.707, 13.845, 0.25, 23.39},  {"W3", 3.0, 10.970, 10.570, 13.617, 0.25, 21.05},
+    {"B1", 4.0, 15.117, 14.917, 17.146, 0.00, 106.97, 12.436, 0.00},
+    {"B2", 4.0, 14.885, 14.685, 16.856, 0.00, 93.59, 12.262, 0.00},
+    {"C", 3.0, 12.592, 12.192, 16.320, 0.05, 73.10, 12.115, 0.15},
+    {"C1", 3.0, 12.449, 12.049, 16.081, 0.10, 65.50, 11.972, 0.15},
+    {"C2", 3.0, 12.301, 11.901, 15.835, 0.15, 58.48, 11.824, 0.15},
+    {"D", 3.0, 12.164, 11.764, 15.606, 0.20, 52.63, 11.687, 0.20},
+    {"E", 3.0, 12.010, 11.610, 15.350, 0.20, 46.78, 11.533, 0.20},
+    {"F", 3.0, 11.855, 11.455, 15.091, 0.25, 41.52, 11.378, 0.25},
+    {"F1", 3.0, 11.699, 11.299, 14.832, 0.25, 36.84, 11.222, 0.25},
+    {"F3", 3.0, 11.546, 11.146, 14.576, 0.25, 32.75, 11.068, 0.25},
+    {"G", 3.0, 11.398, 10.998, 14.330, 0.25, 29.24, 10.921, 0.25},
+    {"W1", 3.0, 11.261, 10.861, 14.101, 0.25, 26.32, 10.784, 0.25},
+    {"W2", 3.0, 11.107, 10.707, 13.845, 0.25, 23.39, 10.630, 0.25},
+    {"W3", 3.0, 10.970, 10.570, 13.617, 0.25, 21.05, 10.493, 0.25},
 };
-
 const DnvRow& dnvRow(const std::string& name) {
   for (const auto& row : kDnvRows)
     if (name == row.name) return row;
@@ -80,6 +88,15 @@ double SnCurve::transitionRange() const {
 SnCurve dnvCurve(const std::string& name, SnEnvironment environment) {
   const DnvRow& row = dnvRow(name);
   SnCurve c;
+  c.reference_thickness = 25.0;
+  if (environment == SnEnvironment::SeawaterFreeCorrosion) {
+    c.name = std::string("DNVGL-RP-C203 ") + row.name + " in seawater for free corrosion";
+    c.m1 = 3.0;
+    c.log_a1 = row.log_a_free_corrosion;
+    c.m2 = 0.0;  // one slope at every N
+    c.thickness_exponent = row.k_free_corrosion;
+    return c;
+  }
   const bool air = environment == SnEnvironment::Air;
   c.name = std::string("DNVGL-RP-C203 ") + row.name + (air ? " in air" : " in seawater with cathodic protection");
   c.m1 = row.m1;
@@ -88,7 +105,6 @@ SnCurve dnvCurve(const std::string& name, SnEnvironment environment) {
   c.log_a2 = row.log_a2;
   c.transition_cycles = air ? 1e7 : 1e6;
   c.thickness_exponent = row.k;
-  c.reference_thickness = 25.0;
   return c;
 }
 

@@ -40,10 +40,11 @@ struct SnCurve {
   double transitionRange() const;
 };
 
-enum class SnEnvironment { Air, SeawaterCathodicProtection };
+enum class SnEnvironment { Air, SeawaterCathodicProtection, SeawaterFreeCorrosion };
 
-// The DNVGL-RP-C203 (2016) curve `name` (B1, B2, C, C1, C2, D, E, F, F1, F3, G, W1, W2, W3) in air (Table 2-1)
-// or in seawater with cathodic protection (Table 2-2), with its thickness exponent k and t_ref = 25 mm.
+// The DNVGL-RP-C203 (2016) curve `name` (B1, B2, C, C1, C2, D, E, F, F1, F3, G, W1, W2, W3) in air (Table 2-1),
+// in seawater with cathodic protection (Table 2-2) or in seawater for free corrosion (Table 2-3: one slope, m = 3),
+// with its thickness exponent k and t_ref = 25 mm.
 // Throws std::invalid_argument naming the curve and listing the valid names.
 SnCurve dnvCurve(const std::string& name, SnEnvironment environment);
 std::vector<std::string> dnvCurveNames();

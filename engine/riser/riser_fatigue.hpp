@@ -36,6 +36,13 @@ struct JointFatigue {
 // The `fatigue` section's fields (called by riserBinder) and the S–N curve they select.
 void bindFatigueParameters(SchemaBinder<RiserParameters>& b);
 fatigue::SnCurve fatigueCurve(const RiserParameters& p);
+// How often the joint stresses are sampled for fatigue [s]: fatigue.sample_interval, or (0) 1/40 of the shortest
+// forcing period (the harmonic top motion's, an Airy wave's period, half the peak period of a spectrum); 0 when
+// fatigue is off or no forcing period is known (the history's samples are used). The integration samples at the
+// finer of this and the history's spacing (riser_integration.cpp).
+double fatigueSampleInterval(const RiserParameters& p);
+// A user curve's slopes must meet at its transition (the field errors, appended to `errors`).
+void checkFatigueParameters(const RiserParameters& p, std::vector<FieldError>& errors);
 
 // The stress at point j (θ = 45° j) of one sample.
 inline double hotSpotStress(const JointStressSeries& s, std::size_t sample, int point, double scf) {

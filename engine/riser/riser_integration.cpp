@@ -1,5 +1,7 @@
 #include "riser/riser_integration.hpp"
 
+#include "riser/riser_fatigue.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -42,21 +44,24 @@ double newtonTolerance(const RiserParameters& p, double expected_error) {
                     kLooseNewtonTolerance);
 }
 
-// One recorder sample after the start: time, whether it is a 3D frame, and a profile table name.
+// One recorder sample after the start: time, whether it is a 3D frame, a profile table name, and whether it is a
+// history row (or only a sample of the joint stresses for fatigue).
 struct Sample {
   double t = 0.0;
   bool frame = false;
   std::optional<std::string> profile;
+  bool history = true;
 };
 
-// Frames at k·T/frames, profiles at the stress times, history in between: `grid` uniform points
-// (RK4: multiples of its step `snap`, so every sample is a step point).
-std::vector<Sample> sampleSchedule(const RiserParameters& p, long grid, double snap) {
+// Frames at k·T/frames, profiles at the stress times, `grid` uniform points in between of which every
+// `history_every`-th is a history row (the others sample the joint stresses for fatigue only). RK4: multiples of
+// its step `snap`, so every sample is a step point.
+std::vector<Sample> sampleSchedule(const RiserParameters& p, long grid, long history_every, double snap) {
   std::vector<Sample> out;
   const double end = p.end_time;
   const int frames = std::max(1, p.frame_count);
   auto snapped = [&](double t) { return snap > 0 ? std::round(t / snap) * snap : t; };
-  for (long j = 1; j <= grid; ++j) out.push_back({snapped(end * j / grid), false, std::nullopt});
+  for (long j = 1; j <= grid; ++j) out.push_back({snapped(end * j / grid), false, std::nullopt, j % history_every == 0});
   for (int k = 1; k <= frames; ++k) out.push_back({snapped(end * k / frames), true, std::nullopt});
   for (double ts : p.stress_times)
     if (ts > 0 && ts <= end) out.push_back({snapped(ts), false, "profile_t" + formatTime(ts)});
@@ -68,12 +73,16 @@ std::vector<Sample> sampleSchedule(const RiserParameters& p, long grid, double s
     if (s.t <= tol) continue;
     if (!merged.empty() && std::abs(merged.back().t - s.t) <= tol) {
       merged.back().frame = merged.back().frame || s.frame;
+      merged.back().history = merged.back().history || s.history;
       if (s.profile) merged.back().profile = s.profile;
     } else {
       merged.push_back(s);
     }
   }
-  if (!merged.empty()) merged.back().t = end;
+  if (!merged.empty()) {
+    merged.back().t = end;
+    merged.back().history = true;
+  }
   return merged;
 }
 
@@ -148,14 +157,14 @@ void integrateExplicit(const RiserModel& m, const RiserParameters& p, const Inte
     normaliseState(m, y);
     context.throwIfCancelled();
     t = s.t;
-    recorder.sample(t, y, s.frame, s.profile);
+    recorder.sample(t, y, s.frame, s.profile, s.history);
   }
 }
 
 // Implicit generalized-α in chunks between frames/profile times; the observer samples in between.
 void integrateImplicit(const RiserModel& m, const RiserParameters& p, const IntegrationPlan& plan,
-                       const std::vector<Sample>& samples, Eigen::VectorXd& y, RiserRecorder& recorder,
-                       RunContext& context, RiserSolverStats& stats) {
+                       const std::vector<Sample>& samples, long grid, long history_every, Eigen::VectorXd& y,
+                       RiserRecorder& recorder, RunContext& context, RiserSolverStats& stats) {
   ChartedGeneralizedAlpha integrator(m, plan.stabilisation_rate);
   OdeOptions options;
   // Newton tolerance: 1e-3 of the asked tolerance or of the step's expected error, whichever is larger, within
@@ -170,9 +179,19 @@ void integrateImplicit(const RiserModel& m, const RiserParameters& p, const Inte
   options.atol = options.rtol;
   options.step = plan.step;
   options.min_step = plan.step * 1e-6;
-  options.output_interval = p.end_time / kHistorySamples;
+  options.output_interval = p.end_time / static_cast<double>(grid);
   const GeneralizedAlphaOptions alpha;
   const double end = p.end_time;
+  // With finer fatigue samples, a history row at the first observer time at or past each history spacing (the
+  // observer's times start again at every frame, so they need not fall on the global grid).
+  const double history_spacing = options.output_interval * static_cast<double>(history_every);
+  double next_history = history_spacing;
+  auto is_history = [&](double to) {
+    if (history_every == 1) return true;
+    if (to < next_history - 0.5 * options.output_interval) return false;
+    next_history = (std::floor(to / history_spacing + 0.5) + 1.0) * history_spacing;
+    return true;
+  };
   double t = 0.0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const Sample& s = samples[k];
@@ -182,9 +201,12 @@ void integrateImplicit(const RiserModel& m, const RiserParameters& p, const Inte
     const OdeStats st = integrator.advance(
         y, options, alpha, context,
         [&](double f, const std::string& stage) { context.progress((t + f * (s.t - t)) / end, stage); },
-        [&](double to, const Eigen::VectorXd& state) { recorder.sample(to, state, false, std::nullopt); });
+        [&](double to, const Eigen::VectorXd& state) {
+          recorder.sample(to, state, false, std::nullopt, is_history(to));
+        });
     accumulate(stats, st);
     t = s.t;
+    is_history(t);  // a chunk ends on a frame, a profile time or the end: always a history row
     recorder.sample(t, y, s.frame, s.profile);
   }
 }
@@ -297,16 +319,23 @@ RiserSolverStats integrateRiser(const RiserModel& m, const RiserParameters& p, c
     return stats;
   }
   stats.method = methodName(m, plan, p);
-  long grid = kHistorySamples;
+  // The history's 2000 rows; fatigue may sample the joint stresses `history_every` times as often.
+  long history_every = 1;
+  if (const double fatigue = fatigueSampleInterval(p); fatigue > 0)
+    history_every = std::max(1L, static_cast<long>(std::ceil(p.end_time / kHistorySamples / fatigue - 1e-9)));
+  long grid = kHistorySamples * history_every;
   double snap = 0.0;
   if (plan.method == Integrator::Rk4) {
     const long steps = std::lround(p.end_time / plan.step);
-    grid = std::min(grid, steps);
+    if (steps < grid) {  // every step is a sample: a history row every so many steps
+      grid = steps;
+      history_every = std::max(1L, steps / kHistorySamples);
+    }
     snap = plan.step;
   }
-  const std::vector<Sample> samples = sampleSchedule(p, grid, snap);
+  const std::vector<Sample> samples = sampleSchedule(p, grid, history_every, snap);
   if (plan.method == Integrator::Implicit)
-    integrateImplicit(m, p, plan, samples, y, recorder, context, stats);
+    integrateImplicit(m, p, plan, samples, grid, history_every, y, recorder, context, stats);
   else
     integrateExplicit(m, p, plan, samples, y, recorder, context, stats);
   // Generalized-α's own estimate (sum of h²|β − 1/6||Δq̈| relative to the largest coordinate) is dominated by

@@ -323,6 +323,7 @@ std::vector<FieldError> checkRiserParameters(const RiserParameters& p) {
   checkBuoyancyModules(p, e);
   checkCurrentProfile(p, e);
   checkVesselParameters(p, e);
+  checkFatigueParameters(p, e);
   if (p.fatigue_enabled && p.fatigue_start_time >= p.end_time)
     e.push_back({"fatigue.start_time", num(p.fatigue_start_time),
                  "must be before solver.end_time = " + num(p.end_time) + " (no cycles would be counted)"});
@@ -446,6 +447,21 @@ std::vector<std::string> upgradeRiserParameters(Json& parameters) {
   if (!parameters.contains("fatigue")) {
     parameters["fatigue"] = riserBinder().write(RiserParameters{})["fatigue"];
     notes.push_back("fatigue added, off (new in the riser schema; save the scenario to keep it)");
+  }
+  // Files from before the fatigue sampling interval and the user S–N curve: those fields are added with their
+  // defaults (automatic sampling; the user curve is used only with sn_curve = user).
+  if (auto f = parameters.find("fatigue"); f != parameters.end() && f->is_object()) {
+    const Json defaults = riserBinder().write(RiserParameters{})["fatigue"];
+    std::string added;
+    for (const char* field : {"sample_interval", "user_log_a1", "user_m1", "user_log_a2", "user_m2",
+                              "user_transition_cycles", "user_thickness_exponent", "user_reference_thickness"})
+      if (!f->contains(field)) {
+        (*f)[field] = defaults[field];
+        added += std::string(added.empty() ? "" : ", ") + "fatigue." + field;
+      }
+    if (!added.empty())
+      notes.push_back(added + " added with defaults (new in the riser schema: automatic fatigue sampling, the user "
+                              "S-N curve; save the scenario to keep them)");
   }
   if (!parameters.contains("waves")) {
     parameters["waves"] = riserBinder().write(RiserParameters{})["waves"];

@@ -168,10 +168,22 @@ struct RiserParameters {
   double wave_elevation_y = 0.0;           // [m]
   // fatigue at the joints (riser_fatigue.hpp; bound there)
   bool fatigue_enabled = false;                  // rainflow + Miner at 8 points around every joint
-  std::string fatigue_sn_curve = "F1";           // DNVGL-RP-C203 (2016) curve name
-  std::string fatigue_environment = "seawater_cathodic_protection";  // air | seawater_cathodic_protection
+  std::string fatigue_sn_curve = "F1";           // DNVGL-RP-C203 (2016) curve name, or "user" (the fields below)
+  std::string fatigue_environment = "seawater_cathodic_protection";  // air | seawater_cathodic_protection |
+                                                                     // seawater_free_corrosion
+  // user S–N curve: log N = log a1 − m1 log(Δσ f_t) up to N_t, log a2 − m2 log(Δσ f_t) beyond (Δσ in MPa;
+  // f_t = (max(t, t_ref)/t_ref)^k); m2 = 0: one slope. Defaults: DNVGL-RP-C203 F1 in air.
+  double fatigue_user_log_a1 = 11.699;           // [-] log10 a1, Δσ in MPa
+  double fatigue_user_m1 = 3.0;                  // [-]
+  double fatigue_user_log_a2 = 14.832;           // [-]
+  double fatigue_user_m2 = 5.0;                  // [-] 0: one slope
+  double fatigue_user_transition_cycles = 1e7;   // [-] N_t
+  double fatigue_user_thickness_exponent = 0.25; // [-] k
+  double fatigue_user_reference_thickness = 25.0;  // [mm] t_ref
   double fatigue_stress_concentration_factor = 1.0;  // [-] SCF on the nominal stress
   double fatigue_start_time = 0.0;               // [s] count cycles from here on (skip start-up transients)
+  double fatigue_sample_interval = 0.0;          // [s] joint stresses sampled this often; 0: automatic
+                                                 // (riser_fatigue.hpp: fatigueSampleInterval)
   // sea-bed contact (riser_seabed.hpp; bound there): off leaves every run as before
   bool seabed_contact = false;
   double seabed_slope_deg = 0.0;                // [deg]

@@ -197,10 +197,26 @@ RiserRecorder::RiserRecorder(const RiserModel& model, const RiserParameters& par
   if (!m_.seabed || m_.seabed->normal.z() == 1.0) r_.view.seabed_z = m_.seabed_level;
 }
 
-void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name) {
+void RiserRecorder::recordFatigueSample(double t) {
+  if (fatigue_.empty()) return;
+  fatigue_time_.push_back(t);
+  for (int k = 1; k <= m_.n; ++k) {
+    JointStressSeries& s = fatigue_[static_cast<std::size_t>(k - 1)];
+    s.tension.push_back(profile_.tension[k]);
+    s.stress_xy.push_back(profile_.stress_xy[k]);
+    s.stress_xz.push_back(profile_.stress_xz[k]);
+  }
+}
+
+void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name,
+                           bool history) {
   const bool shape = first_ || frame || profile_name.has_value();
   fillProfile(m_, ws_, t, y, dy_, ProfileParts{shape, profile_name.has_value()}, profile_);
   const RiserProfile& prof = profile_;
+  if (!history && !first_ && !frame && !profile_name) {
+    recordFatigueSample(t);
+    return;
+  }
   const RiserPose& pose = ws_.pose;
   const int nodes = m_.n + 2;
   if (first_) initial_nodes_ = prof.position;
@@ -260,15 +276,7 @@ void RiserRecorder::sample(double t, const Eigen::VectorXd& y, bool frame, const
     contact = seabedContact(m_, pose);
     seabed_.sample(contact, row);
   }
-  if (!fatigue_.empty()) {
-    fatigue_time_.push_back(t);
-    for (int k = 1; k <= m_.n; ++k) {
-      JointStressSeries& s = fatigue_[static_cast<std::size_t>(k - 1)];
-      s.tension.push_back(prof.tension[k]);
-      s.stress_xy.push_back(prof.stress_xy[k]);
-      s.stress_xz.push_back(prof.stress_xz[k]);
-    }
-  }
+  recordFatigueSample(t);
   for (std::size_t c = 0; c < row.size(); ++c) history_.columns[c].values.push_back(row[c]);
   for (int k = 0; k < nodes; ++k) {
     max_bending_ = std::max(max_bending_, prof.bending_stress[k]);
@@ -402,6 +410,11 @@ Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& st
     auto first = std::lower_bound(fatigue_time_.begin(), fatigue_time_.end(), p_.fatigue_start_time);
     const double window = first == fatigue_time_.end() ? 0.0 : fatigue_time_.back() - *first;
     addFatigueResults(joints, fatigueCurve(p_), window, out);
+    if (fatigue_time_.size() > 1)
+      out.addScalar("fatigue_sample_interval",
+                    (fatigue_time_.back() - fatigue_time_.front()) / static_cast<double>(fatigue_time_.size() - 1), "s",
+                    "Mean spacing of the joint-stress samples that rainflow counts (fatigue.sample_interval)",
+                    "Fatigue sample spacing");
   }
   Table probes;
   probes.name = "probes";

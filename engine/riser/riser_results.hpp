@@ -41,8 +41,10 @@ class RiserRecorder {
   // J and A top reactions ~3e-8·T apart at any step (measured on the JointAndAbsolute test case).
   RiserRecorder(const RiserModel& model, const RiserParameters& parameters);
 
-  // Records state y at time t: always a history row; optionally a 3D frame and a profile table.
-  void sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name);
+  // Records state y at time t: a history row (or, with `history` false, only the joint stresses for fatigue);
+  // optionally a 3D frame and a profile table.
+  void sample(double t, const Eigen::VectorXd& y, bool frame, const std::optional<std::string>& profile_name,
+              bool history = true);
   // Publish partial results to `context` while recording (for live plots): at the context's throttled
   // rate, a copy of the history so far with its plots and the latest 3D frame. nullptr turns it off.
   void publishPartialsTo(RunContext* context) { live_ = context; }
@@ -53,6 +55,8 @@ class RiserRecorder {
   Results finish(const SolverStats& stats, const StaticSolution& statics);
 
  private:
+  // Appends the joint stresses of the profile just filled to the fatigue series (fatigue.enabled).
+  void recordFatigueSample(double t);
   const RiserModel& m_;
   const RiserParameters& p_;
   RiserWorkspace ws_;
