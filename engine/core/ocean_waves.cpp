@@ -127,6 +127,15 @@ double WaveField::variance() const {
   return v;
 }
 
+double WaveField::meanPeriod() const {
+  double m0 = 0.0, m1 = 0.0;
+  for (const auto& c : components_) {
+    m0 += 0.5 * c.amplitude * c.amplitude;
+    m1 += 0.5 * c.amplitude * c.amplitude * c.omega;
+  }
+  return m1 > 0 ? 2.0 * std::numbers::pi * m0 / m1 : 0.0;
+}
+
 void WaveField::linearAt(double z, const double* cos_psi, const double* sin_psi, FluidKinematics& out) const {
   const bool deep = std::isinf(depth_);
   double u = 0.0, w = 0.0, du = 0.0, dw = 0.0;

@@ -76,6 +76,7 @@ class WaveField {
   std::size_t size() const { return components_.size(); }
   double depth() const { return depth_; }
   double variance() const;  // [m²] Σ a_j²/2: the variance of η over a long record
+  double meanPeriod() const;  // [s] T_m01 = 2π Σa_j²/Σa_j²ω_j (0 without components)
   Stretching stretching() const { return stretching_; }
 
  private:

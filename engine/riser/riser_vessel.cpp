@@ -279,7 +279,7 @@ std::shared_ptr<const VesselMotion> buildVesselMotion(const RiserParameters& p, 
   m->cos_part_.setZero(6, n);
   m->sin_part_.setZero(6, n);
   bool outside = false, clamped = false;
-  double variance = 0.0, variance_outside = 0.0, first_moment = 0.0;
+  double variance = 0.0, variance_outside = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
     const ocean::WaveComponent& c = field.components()[static_cast<std::size_t>(i)];
     const double k = ocean::waveNumber(c.omega, field.depth(), p.gravity);  // as the field's own k
@@ -290,7 +290,6 @@ std::shared_ptr<const VesselMotion> buildVesselMotion(const RiserParameters& p, 
     bool this_outside = false;
     const RaoValue rao = interpolateRao(table, relative_deg, c.omega, &this_outside, &clamped);
     variance += 0.5 * c.amplitude * c.amplitude;
-    first_moment += 0.5 * c.amplitude * c.amplitude * c.omega;
     if (this_outside) variance_outside += 0.5 * c.amplitude * c.amplitude;
     outside = outside || this_outside;
     for (int d = 0; d < 6; ++d) {
@@ -298,7 +297,7 @@ std::shared_ptr<const VesselMotion> buildVesselMotion(const RiserParameters& p, 
       m->sin_part_(d, i) = c.amplitude * rao.amplitude[d] * std::sin(rao.phase_lag[d]);
     }
   }
-  m->mean_period = 2 * pi * variance / first_moment;
+  m->mean_period = field.meanPeriod();
   if (outside)
     m->warnings.push_back("vessel.rao_file: wave components outside the RAO frequencies [" + numberText(table.omega.front()) +
                           ", " + numberText(table.omega.back()) + "] rad/s (" + numberText(100.0 * variance_outside / variance) +
