@@ -12,8 +12,8 @@ namespace {
 // DNVGL-RP-C203, Edition April 2016. Table 2-1 (in air): log a_1 for N ≤ 10^7 and log a_2 (m_2 = 5) beyond;
 // Table 2-2 (seawater with cathodic protection): log a_1 for N ≤ 10^6, the same log a_2 beyond. Thickness
 // exponents k and the fatigue limits at 10^7 cycles as the tables list them (the limit is a check of the
-// other columns: 10^((log a_2 − 7)/5)). Table 2-3 (seawater for free corrosion): one slope m = 3 for every curve,
-// log a and its own thickness exponent (the last two columns).
+// other columns: 10^((log a_2 − 7)/5)). The table of curves in seawater for free corrosion: one slope m = 3 for every
+// curve, log a and its own thickness exponent (the last two columns).
 struct DnvRow {
   const char* name;
   double m1, log_a1_air, log_a1_seawater_cp, log_a2, k, fatigue_limit_mpa;

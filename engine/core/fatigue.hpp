@@ -43,7 +43,7 @@ struct SnCurve {
 enum class SnEnvironment { Air, SeawaterCathodicProtection, SeawaterFreeCorrosion };
 
 // The DNVGL-RP-C203 (2016) curve `name` (B1, B2, C, C1, C2, D, E, F, F1, F3, G, W1, W2, W3) in air (Table 2-1),
-// in seawater with cathodic protection (Table 2-2) or in seawater for free corrosion (Table 2-3: one slope, m = 3),
+// in seawater with cathodic protection (Table 2-2) or in seawater for free corrosion (one slope, m = 3),
 // with its thickness exponent k and t_ref = 25 mm.
 // Throws std::invalid_argument naming the curve and listing the valid names.
 SnCurve dnvCurve(const std::string& name, SnEnvironment environment);

@@ -31,7 +31,7 @@ void bindFatigueParameters(SchemaBinder<RiserParameters>& b) {
   b.choice("fatigue.environment", &P::fatigue_environment,
            {"air", "seawater_cathodic_protection", "seawater_free_corrosion"},
            "S-N curve table: in air (Table 2-1), in seawater with cathodic protection (Table 2-2) or in seawater for "
-           "free corrosion (Table 2-3); not used by a user curve");
+           "free corrosion (one slope, m = 3); not used by a user curve");
   b.real("fatigue.sample_interval", &P::fatigue_sample_interval, "s", Range::nonNegative(),
          "Joint stresses are sampled this often for rainflow counting (0: 40 samples per shortest forcing period: "
          "the top motion's, the wave period or half the peak period of a spectrum; never coarser than the history)");

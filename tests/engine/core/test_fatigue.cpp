@@ -84,6 +84,32 @@ TEST(Fatigue, DnvCurvesReproduceTheTablesFatigueLimitsAndAreContinuous) {
   EXPECT_THROW(dnvCurve("X9", SnEnvironment::Air), std::invalid_argument);
 }
 
+TEST(Fatigue, FreeCorrosionCurvesHaveOneSlopeAndAThirdOfTheLifeInAir) {
+  // DNVGL-RP-C203 (2016), S-N curves in seawater for free corrosion: log N = log a − 3 log Δσ at every N. For the
+  // curves with m = 3 in air the RP's free-corrosion life is a third of the life in air on the first slope:
+  // log a = log a_1(air) − log10 3, within the 3-decimal rounding of both columns (0.001).
+  for (const auto& name : dnvCurveNames()) {
+    const SnCurve free = dnvCurve(name, SnEnvironment::SeawaterFreeCorrosion);
+    EXPECT_EQ(free.m1, 3.0) << free.name;
+    EXPECT_EQ(free.m2, 0.0) << free.name;
+    const SnCurve air = dnvCurve(name, SnEnvironment::Air);
+    if (air.m1 == 3.0) {
+      EXPECT_NEAR(free.log_a1, air.log_a1 - std::log10(3.0), 0.001) << free.name;
+    }
+    // One slope: 10 MPa gives the first slope's N, 10^(log a − 3), far beyond any transition.
+    EXPECT_NEAR(std::log10(cyclesToFailure(free, 10.0, 0.0)), free.log_a1 - 3.0, 1e-12) << free.name;
+  }
+  // Values of the table: D 11.687 (k 0.20), B1 12.436 (m = 3 although 4 in air; k 0), W3 10.493.
+  EXPECT_EQ(dnvCurve("D", SnEnvironment::SeawaterFreeCorrosion).log_a1, 11.687);
+  EXPECT_EQ(dnvCurve("D", SnEnvironment::SeawaterFreeCorrosion).thickness_exponent, 0.20);
+  EXPECT_EQ(dnvCurve("B1", SnEnvironment::SeawaterFreeCorrosion).log_a1, 12.436);
+  EXPECT_EQ(dnvCurve("W3", SnEnvironment::SeawaterFreeCorrosion).log_a1, 10.493);
+  // 1000 cycles of 100 MPa on D, 50 mm thick: D = 1000 · (100 · 2^0.2)³ / 10^11.687.
+  const std::vector<Cycle> cycles{{100e6, 0.0, 1000.0}};
+  EXPECT_NEAR(minerDamage(cycles, dnvCurve("D", SnEnvironment::SeawaterFreeCorrosion), 50.0),
+              1000.0 * std::pow(100.0 * std::pow(2.0, 0.2), 3) / std::pow(10.0, 11.687), 1e-12);
+}
+
 TEST(Fatigue, MinerDamageOfConstantAmplitudeEqualsTheSnFormula) {
   const SnCurve d_air = dnvCurve("D", SnEnvironment::Air);
   const SnCurve d_cp = dnvCurve("D", SnEnvironment::SeawaterCathodicProtection);

@@ -1,7 +1,8 @@
 // Scenario files written for earlier riser schemas load into the same model: the angles that were radians
 // (current.direction, top.motion_phase_x/y/z, initial.inclination, initial.azimuth) are read as their *_deg
-// fields, a file without a tangential added-mass coefficient keeps its isotropic added mass, and one without
-// output.modes computes the modes as before.
+// fields, a file without a tangential added-mass coefficient keeps its isotropic added mass, one without
+// output.modes computes the modes as before, and one without the fatigue sampling interval and user S-N curve
+// fields gets their defaults (automatic sampling; the table curve it names).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include "core/angles.hpp"
 #include "core/scene.hpp"
+#include "riser/riser_fatigue.hpp"
 #include "riser/riser_model.hpp"
 #include "riser/riser_parameters.hpp"
 #include "riser_test_support.hpp"
@@ -142,6 +144,25 @@ TEST(RiserUpgrade, FileWithoutModesSwitchComputesTheModes) {
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_NE(notes[0].find("output.modes"), std::string::npos) << notes[0];
   EXPECT_TRUE(old["output"]["modes"].get<bool>());
+}
+
+// A file from before fatigue.sample_interval and the user S-N curve: the fields are added with their defaults
+// and one note; its curve stays the table curve it names.
+TEST(RiserUpgrade, FileWithoutFatigueSamplingOrUserCurveGetsTheDefaults) {
+  RiserParameters p;
+  p.fatigue_enabled = true;
+  p.fatigue_sn_curve = "D";
+  Json old = riserBinder().write(p);
+  for (const char* field : {"sample_interval", "user_log_a1", "user_m1", "user_log_a2", "user_m2",
+                            "user_transition_cycles", "user_thickness_exponent", "user_reference_thickness"})
+    old["fatigue"].erase(field);
+  const std::vector<std::string> notes = upgradeParameters(makeRiserScene(), old);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("fatigue.sample_interval"), std::string::npos) << notes[0];
+  const RiserParameters q = riserBinder().read(old);
+  EXPECT_EQ(q.fatigue_sample_interval, 0.0);
+  EXPECT_EQ(q.fatigue_user_m1, RiserParameters{}.fatigue_user_m1);
+  EXPECT_EQ(fatigueCurve(q).name, "DNVGL-RP-C203 D in seawater with cathodic protection");
 }
 
 }  // namespace
