@@ -353,6 +353,24 @@ TEST(RiserVessel, AutomaticImplicitStepResolvesTheMeanWavePeriod) {
   EXPECT_GT(plan.step, mean_period / 100);  // rounded down to whole steps per 1 s frame only
 }
 
+// Waves without a vessel set the automatic step the same way (it used to be end_time/200: 3 s in an 11 s sea
+// over 600 s).
+TEST(RiserVessel, AutomaticImplicitStepResolvesTheMeanWavePeriodWithoutAVessel) {
+  RiserParameters p = test::builtinParameters("scenarios/riser/riser_jonswap_sea.json");
+  p.time_step = 0.0;
+  p.end_time = 600.0;
+  p.frame_count = 600;
+  const RiserModel m = buildRiserModel(p);
+  ASSERT_TRUE(m.sea);
+  ASSERT_FALSE(m.vessel);
+  const double mean_period = m.sea->field.meanPeriod();
+  EXPECT_GT(mean_period, 7.0);
+  EXPECT_LT(mean_period, 11.0);
+  const IntegrationPlan plan = planIntegration(m, p);
+  EXPECT_LE(plan.step, mean_period / 50 * (1 + 1e-12));
+  EXPECT_GT(plan.step, mean_period / 100);
+}
+
 // The built-in floater case, 12 s: the integrated riser's top (a tensioner: horizontal motion prescribed) is where
 // the vessel puts it at every history sample, and the run warns of nothing (the RAO table covers the sea's band).
 TEST(RiserVessel, BuiltInRunMovesTheTopWithTheVessel) {
