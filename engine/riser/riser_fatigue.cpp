@@ -16,6 +16,8 @@ constexpr double kLongestLife = 1e12;              // [yr] reported when (almost
 // A sine sampled k times a period has its range low by at most 1 − cos(π/k): 0.31 % at k = 40, so the damage by
 // at most 0.9 % (m = 3) or 1.5 % (m = 5) from sampling.
 constexpr double kFatigueSamplesPerPeriod = 40.0;
+// At most this many joint-sample pairs (three doubles each: 1.2 GB): a 3-hour sea at n = 100 needs 8.6e6.
+constexpr double kMaxFatigueValues = 5e7;
 }  // namespace
 
 void bindFatigueParameters(SchemaBinder<RiserParameters>& b) {
@@ -91,6 +93,17 @@ double fatigueSampleInterval(const RiserParameters& p) {
 }
 
 void checkFatigueParameters(const RiserParameters& p, std::vector<FieldError>& e) {
+  // The joint-stress series are kept for rainflow counting: three doubles per joint and sample.
+  if (const double interval = fatigueSampleInterval(p); interval > 0) {
+    const double values = p.end_time / interval * std::max(p.segment_count, 1);
+    if (!(values <= kMaxFatigueValues))
+      e.push_back({"fatigue.sample_interval", numberText(p.fatigue_sample_interval),
+                   formatText("%s gives %.3g samples × %d joints = %.3g stress values (at most %.3g, %.2g GB): "
+                              "raise fatigue.sample_interval, shorten solver.end_time or use fewer segments",
+                              p.fatigue_sample_interval > 0 ? "this interval" : "the automatic interval",
+                              p.end_time / interval, p.segment_count, values, kMaxFatigueValues,
+                              kMaxFatigueValues * 24 / 1e9)});
+  }
   if (p.fatigue_sn_curve != "user" || p.fatigue_user_m2 == 0.0) return;
   // The two slopes must meet at N_t: a gap or an overlap there would make N jump with the stress range.
   const double log_nt = std::log10(p.fatigue_user_transition_cycles);

@@ -154,5 +154,21 @@ TEST(RiserFatigueRuns, UserCurveWhoseSlopesDoNotMeetIsRefused) {
   EXPECT_TRUE(test::errorsOf(p).empty());
 }
 
+// The stress series are kept for rainflow: more than 5e7 joint samples (1.2 GB) is an input error naming the
+// interval, whether given or automatic; a 3-hour sea at n = 100 (8.6e6) is accepted.
+TEST(RiserFatigueRuns, TooManyStressSamplesAreRefusedNamingTheInterval) {
+  RiserParameters p = regularSea(10800.0);
+  p.segment_count = 100;
+  EXPECT_TRUE(test::errorsOf(p).empty()) << describeErrors(test::errorsOf(p));
+  p.fatigue_sample_interval = 1e-3;  // 1.08e7 samples × 100 joints
+  auto errors = test::errorsOf(p);
+  ASSERT_TRUE(test::hasErrorAt(errors, "parameters.fatigue.sample_interval")) << describeErrors(errors);
+  p.fatigue_sample_interval = 0.0;
+  p.segment_count = 1000;  // automatic T/40 = 0.2 s: 54 000 samples × 1000 joints
+  errors = test::errorsOf(p);
+  ASSERT_TRUE(test::hasErrorAt(errors, "parameters.fatigue.sample_interval")) << describeErrors(errors);
+  EXPECT_NE(errors[0].message.find("automatic"), std::string::npos) << errors[0].message;
+}
+
 }  // namespace
 }  // namespace maris::riser
