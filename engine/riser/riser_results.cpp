@@ -459,9 +459,10 @@ Results RiserRecorder::finish(const SolverStats& stats, const StaticSolution& st
   out.addScalar("steps", static_cast<double>(stats.steps), "-", "Accepted time steps", "Steps");
   out.addScalar("rhs_evaluations", static_cast<double>(stats.rhs_evaluations), "-", "Right-hand side evaluations", "Right-hand side evaluations");
   out.addScalar("integrator_error_estimate", stats.error_estimate, "-",
-                "Error estimate: implicit runs under a harmonic top motion, the expected probe error relative to "
-                "the motion, C (h/T)² (docs/riser.md); other runs, the integrator's relative global estimate (sum "
-                "of local estimates, docs/numerics.md)", "Integrator error estimate");
+                "Error estimate: implicit runs under a harmonic top motion or in a sea, the expected probe error "
+                "relative to the motion, C (h/T)² with T the top's period or the sea's mean period T_m01 "
+                "(docs/riser.md); other runs, the integrator's relative global estimate (sum of local estimates, "
+                "docs/numerics.md)", "Integrator error estimate");
   // Plots.
   if (h.rows() > 1) addHistoryPlots(out);
   for (const auto& t : out.tables) {
