@@ -97,6 +97,7 @@ MarchOutcome march(const FivRhs& rhs, State& s, const LimitCycleSettings& set, d
   const double floor = 1e-6 * model.side;
   double t = 0.0, last_up = -1.0, e_damper_up = 0.0, e_fluid_up = 0.0;
   double cur_max = -1e300, cur_min = 1e300, cur_tan = 0.0, tan_checked = tan_start;
+  std::size_t next_window_test = 0;  // the stationarity test costs O(n): run it after every n/32-th cycle
   State prev;
   for (long step = 0; t < t_end; ++step) {
     prev = s;
@@ -186,6 +187,8 @@ MarchOutcome march(const FivRhs& rhs, State& s, const LimitCycleSettings& set, d
     // Not periodic (yet): a stationary response whose windowed mean amplitude is already as precise as the
     // tolerance asks needs no more cycles. A stationary one that is less precise runs on, so that its
     // windows grow and its mean sharpens.
+    if (n < next_window_test) continue;
+    next_window_test = n + std::max<std::size_t>(1, n / 32);
     out.windows = compareAmplitudeWindows(out.amplitudes, set.min_window);
     if (out.windows.stationary && out.windows.error() <= set.tolerance * out.windows.mean &&
         windowPowerImbalance(out.cycles, out.windows.first) <= set.tolerance)
