@@ -280,7 +280,7 @@ AmplitudeWindows compareAmplitudeWindows(const std::vector<double>& amplitudes, 
   AmplitudeWindows w;
   const std::size_t n = amplitudes.size();
   const std::size_t window = n / 4;
-  if (window < static_cast<std::size_t>(std::max(2, min_window))) return w;
+  if (window < static_cast<std::size_t>(std::max(4, min_window))) return w;  // 8 batches of at least one cycle
   w.window = window;
   w.first = n - 2 * window;
   // Mean and standard deviation of a_k over [begin, begin + window).

@@ -69,7 +69,7 @@ struct LimitCycle {
 struct AmplitudeWindows {
   bool stationary = false;
   std::size_t first = 0;   // index of the first cycle of the two windows
-  std::size_t window = 0;  // W, cycles per window (0: record too short, fewer than 4·min_window cycles)
+  std::size_t window = 0;  // W, cycles per window (0: record too short, W < max(min_window, 4))
   double mean = 0.0;       // mean of a_k over both windows
   double spread = 0.0;     // standard deviation of a_k over both windows
   double change = 0.0;     // |m2 − m1|
