@@ -92,14 +92,32 @@ CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferenceP
     res.initial.push_back(*v);
   }
   // Levenberg–Marquardt (core/least_squares.hpp) with Marquardt's diagonal scaling; trial points are clamped
-  // to the schema ranges. Forward differences with 2 % steps stay above the limit-cycle convergence noise
-  // (tolerance 1e-3). Every evaluated point's residuals are kept so the accepted one needs no rerun.
+  // to the schema ranges. Differences with 2 % steps stay above the limit-cycle convergence noise (tolerance
+  // 1e-3). Every evaluated point's residuals are kept so the accepted one needs no rerun.
   std::vector<std::pair<Eigen::VectorXd, std::vector<CalibrationResidual>>> evaluated;
   LeastSquaresProblem problem;
   problem.residuals = [&](const Eigen::VectorXd& at, Eigen::VectorXd& r) {
     auto values = calibrationResiduals(withCoefficients(p, res.names, at, ranges), points, context, &res.limit_cycles);
     r = vectorOf(values);
     evaluated.emplace_back(at, std::move(values));
+    return true;
+  };
+  // Forward differences, except for a coefficient whose forward step would leave its range: it is differenced
+  // backwards. Clamped, the forward point would equal the current one, leaving a zero column, and a
+  // coefficient that reached its upper bound could never be moved off it again.
+  constexpr double kDifferenceStep = 0.02, kDifferenceFloor = 0.05;
+  problem.jacobian = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& r, Eigen::MatrixXd& jac) {
+    jac.resize(r.size(), at.size());
+    Eigen::VectorXd shifted = at, r_shifted;
+    for (Eigen::Index j = 0; j < at.size(); ++j) {
+      const Range& range = ranges[static_cast<std::size_t>(j)];
+      double h = kDifferenceStep * std::max(std::abs(at[j]), kDifferenceFloor);
+      if (at[j] + h > range.max) h = -h;
+      shifted[j] = at[j] + h;
+      if (!problem.residuals(shifted, r_shifted) || r_shifted.size() != r.size()) return false;
+      jac.col(j) = (r_shifted - r) / h;
+      shifted[j] = at[j];
+    }
     return true;
   };
   problem.trial_point = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& step) {
@@ -115,8 +133,6 @@ CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferenceP
   options.min_damping = 1e-7;
   options.max_damping = std::numeric_limits<double>::infinity();
   options.cost_tolerance = 1e-4;  // a step gaining less than 0.01 % of the cost: stalled, done
-  options.difference_step = 0.02;
-  options.difference_floor = 0.05;
   options.progress_stage = "calibration";
   const LeastSquaresReport fit = levenbergMarquardt(problem, x, options, &context);
   auto residualsAt = [&](const Eigen::VectorXd& at) {

@@ -97,6 +97,12 @@ void addDetailResults(Results& results, const FivModel& model, const DetailPoint
   results.addScalar("detail_power_fluid", c.power_fluid, "W", "⟨Fẏ⟩ at the detail point (paper eq 8)", "⟨F ẏ⟩ at the detail point");
   results.addScalar("detail_efficiency", betzEfficiency(c.power_damper, fluid), "-", "η at the detail point", "η at the detail point");
   results.addScalar("detail_residual", c.residual, "-", "Estimated relative error of A at the detail point", "Residual at the detail point");
+  results.addScalar("detail_amplitude_spread", c.amplitude_spread, "m",
+                    "Standard deviation of the per-cycle amplitude at the detail point (0 on a periodic cycle)",
+                    "A spread at the detail point");
+  results.addScalar("detail_response", static_cast<double>(static_cast<int>(c.response)), "-",
+                    "Response at the detail point: 0 at rest, 1 periodic, 2 quasi-periodic (stationary), 3 drifting",
+                    "Response at the detail point");
   if (h.time.empty()) return;
   // Histories, thinned to a plottable number of rows.
   const std::size_t stride = std::max<std::size_t>(1, h.time.size() / kMaxHistoryRows);

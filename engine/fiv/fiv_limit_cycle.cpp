@@ -1,9 +1,11 @@
 #include "fiv/fiv_limit_cycle.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "core/checked_count.hpp"
 #include "core/errors.hpp"
@@ -55,6 +57,17 @@ double energyImbalance(const CycleRecord& c, double total_mass) {
   return energy > 0.0 ? std::abs(c.energy_fluid - c.energy_damper) / (2.0 * energy) : 0.0;
 }
 
+// |⟨Fẏ⟩ − ⟨cẏ²⟩|/⟨cẏ²⟩ over cycles [first, end): zero on average over a stationary response (eqs 8 = 13),
+// so what a window leaves is the error of its power, from the mechanical energy it ends with.
+double windowPowerImbalance(const std::vector<CycleRecord>& cycles, std::size_t first) {
+  double damper = 0.0, fluid = 0.0;
+  for (std::size_t i = first; i < cycles.size(); ++i) {
+    damper += cycles[i].energy_damper;
+    fluid += cycles[i].energy_fluid;
+  }
+  return damper > 0.0 ? std::abs(fluid - damper) / damper : 0.0;
+}
+
 // Largest RK4 step keeping h·rate <= 1.5 for every |ẏ/U| up to tan_alpha (rate sampled on 17 points).
 double stableStep(const FivRhs& rhs, double tan_alpha) {
   double rate = 0.0;
@@ -64,6 +77,8 @@ double stableStep(const FivRhs& rhs, double tan_alpha) {
 
 struct MarchOutcome {
   std::vector<CycleRecord> cycles;
+  std::vector<double> amplitudes;  // cycles[k].amplitude, for the stationarity test
+  AmplitudeWindows windows;        // the stationarity test's last verdict
   double residual = 1.0;
   double needed_step = 0.0;  // > 0: the march stopped because the force curve got too steep for h
   double needed_tan = 0.0;   // the |ẏ/U| that step was computed for
@@ -82,6 +97,7 @@ MarchOutcome march(const FivRhs& rhs, State& s, const LimitCycleSettings& set, d
   const double floor = 1e-6 * model.side;
   double t = 0.0, last_up = -1.0, e_damper_up = 0.0, e_fluid_up = 0.0;
   double cur_max = -1e300, cur_min = 1e300, cur_tan = 0.0, tan_checked = tan_start;
+  std::size_t next_window_test = 0;  // the stationarity test costs O(n): run it after every n/32-th cycle
   State prev;
   for (long step = 0; t < t_end; ++step) {
     prev = s;
@@ -141,6 +157,7 @@ MarchOutcome march(const FivRhs& rhs, State& s, const LimitCycleSettings& set, d
       c.max_tan_alpha = cur_tan;
       c.crossing_speed = at(1, tau);
       out.cycles.push_back(c);
+      out.amplitudes.push_back(c.amplitude);
     }
     last_up = t_up;
     e_damper_up = e_damper;
@@ -167,7 +184,17 @@ MarchOutcome march(const FivRhs& rhs, State& s, const LimitCycleSettings& set, d
       out.converged = true;
       return out;
     }
+    // Not periodic (yet): a stationary response whose windowed mean amplitude is already as precise as the
+    // tolerance asks needs no more cycles. A stationary one that is less precise runs on, so that its
+    // windows grow and its mean sharpens.
+    if (n < next_window_test) continue;
+    next_window_test = n + std::max<std::size_t>(1, n / 32);
+    out.windows = compareAmplitudeWindows(out.amplitudes, set.min_window);
+    if (out.windows.stationary && out.windows.error() <= set.tolerance * out.windows.mean &&
+        windowPowerImbalance(out.cycles, out.windows.first) <= set.tolerance)
+      return out;
   }
+  if (out.cycles.size() >= 3) out.windows = compareAmplitudeWindows(out.amplitudes, set.min_window);
   return out;
 }
 
@@ -184,17 +211,27 @@ LimitCycle summarise(const MarchOutcome& m, const LimitCycleSettings& set, doubl
     // No oscillation at all within max_cycles periods: the body sits at rest.
     r.at_rest = r.converged = true;
     r.residual = 0.0;
+    r.response = ResponseKind::AtRest;
     return r;
   }
+  const bool stationary = !m.converged && m.windows.stationary;
+  r.response = m.at_rest ? ResponseKind::AtRest
+               : m.converged ? ResponseKind::Periodic
+               : stationary  ? ResponseKind::Stationary
+                             : ResponseKind::Drifting;
+  // A stationary response is averaged over both windows: its mean per-cycle amplitude is the paper's A
+  // (half peak-to-peak per cycle) of a response whose cycles differ; f and the powers over the same cycles.
   const std::size_t n = m.cycles.size();
-  const std::size_t k = std::min<std::size_t>(n, static_cast<std::size_t>(set.average_cycles));
-  double period = 0.0, amp = 0.0, e_d = 0.0, e_f = 0.0, a_lo = 1e300, a_hi = 0.0;
+  const std::size_t k = stationary ? n - m.windows.first
+                                   : std::min<std::size_t>(n, static_cast<std::size_t>(set.average_cycles));
+  double period = 0.0, amp = 0.0, amp2 = 0.0, e_d = 0.0, e_f = 0.0, a_lo = 1e300, a_hi = 0.0;
   r.y_max = -1e300;
   r.y_min = 1e300;
   for (std::size_t i = n - k; i < n; ++i) {
     const CycleRecord& c = m.cycles[i];
     period += c.period;
     amp += c.amplitude;
+    amp2 += c.amplitude * c.amplitude;
     e_d += c.energy_damper;
     e_f += c.energy_fluid;
     a_lo = std::min(a_lo, c.amplitude);
@@ -207,9 +244,17 @@ LimitCycle summarise(const MarchOutcome& m, const LimitCycleSettings& set, doubl
   r.amplitude = m.at_rest ? 0.0 : amp / static_cast<double>(k);
   r.power_damper = e_d / period;
   r.power_fluid = e_f / period;
-  // An unconverged (e.g. quasi-periodic) response: its cycle-to-cycle spread is the error bar.
-  if (!m.converged && r.amplitude > 0.0)
-    r.residual = std::max(r.residual, 0.5 * (a_hi - a_lo) / std::max(r.amplitude, 1e-6 * model.side));
+  const double mean = amp / static_cast<double>(k);
+  r.amplitude_spread = m.at_rest ? 0.0 : std::sqrt(std::max(0.0, amp2 / static_cast<double>(k) - mean * mean));
+  const double scale = std::max(r.amplitude, 1e-6 * model.side);
+  if (stationary) {
+    // The error of the mean amplitude: the two windows' means apart, or the batch means' standard error; that
+    // of the powers: the windows' energy imbalance.
+    r.residual = std::max(m.windows.error() / scale, windowPowerImbalance(m.cycles, m.windows.first));
+  } else if (!m.converged && r.amplitude > 0.0) {
+    // Still drifting: the drift estimate or the last cycles' spread, whichever is larger, is the error bar.
+    r.residual = std::max(r.residual, 0.5 * (a_hi - a_lo) / scale);
+  }
   return r;
 }
 
@@ -231,6 +276,45 @@ void recordHistory(const FivRhs& rhs, State& s, double h, double duration, Histo
 
 }  // namespace
 
+AmplitudeWindows compareAmplitudeWindows(const std::vector<double>& amplitudes, int min_window) {
+  AmplitudeWindows w;
+  const std::size_t n = amplitudes.size();
+  const std::size_t window = n / 4;
+  if (window < static_cast<std::size_t>(std::max(4, min_window))) return w;  // 8 batches of at least one cycle
+  w.window = window;
+  w.first = n - 2 * window;
+  // Mean and standard deviation of a_k over [begin, begin + window).
+  auto stats = [&](std::size_t begin) {
+    double sum = 0.0, sum2 = 0.0;
+    for (std::size_t i = begin; i < begin + window; ++i) sum += amplitudes[i];
+    const double mean = sum / static_cast<double>(window);
+    for (std::size_t i = begin; i < begin + window; ++i) sum2 += (amplitudes[i] - mean) * (amplitudes[i] - mean);
+    return std::pair{mean, std::sqrt(sum2 / static_cast<double>(window))};
+  };
+  const auto [m1, s1] = stats(w.first);
+  const auto [m2, s2] = stats(w.first + window);
+  const double pooled = std::sqrt(0.5 * (s1 * s1 + s2 * s2));
+  w.mean = 0.5 * (m1 + m2);
+  // Over both windows: the pooled within-window variance plus the part from the two means' difference.
+  w.spread = std::sqrt(pooled * pooled + 0.25 * (m2 - m1) * (m2 - m1));
+  w.change = std::abs(m2 - m1);
+  w.stationary = w.change <= 0.5 * pooled && std::abs(s2 - s1) <= 0.5 * pooled;
+  constexpr std::size_t kBatches = 8;
+  const std::size_t batch = 2 * window / kBatches;
+  std::array<double, kBatches> batch_means{};
+  double grand = 0.0;
+  for (std::size_t b = 0; b < kBatches; ++b) {
+    double sum = 0.0;
+    for (std::size_t i = n - (kBatches - b) * batch; i < n - (kBatches - b - 1) * batch; ++i) sum += amplitudes[i];
+    batch_means[b] = sum / static_cast<double>(batch);
+    grand += batch_means[b] / kBatches;
+  }
+  double var = 0.0;
+  for (double b : batch_means) var += (b - grand) * (b - grand) / (kBatches - 1);
+  w.standard_error = std::sqrt(var / kBatches);
+  return w;
+}
+
 LimitCycle runToLimitCycle(const FivRhs& rhs, State& state, const LimitCycleSettings& settings, RunContext* context,
                            History* record, int record_cycles) {
   const FivModel& model = rhs.model();
@@ -242,6 +326,7 @@ LimitCycle runToLimitCycle(const FivRhs& rhs, State& state, const LimitCycleSett
   if (!model.viv_on && std::hypot(state[0], state[1] / model.omega_n) < settings.rest_amplitude) {
     LimitCycle r;
     r.at_rest = r.converged = true;
+    r.response = ResponseKind::AtRest;
     r.step = h;
     r.frequency = model.f_n * std::sqrt(1.0 - model.damping_ratio * model.damping_ratio);
     if (record) recordHistory(rhs, state, h, record_cycles / model.f_n, *record, context);

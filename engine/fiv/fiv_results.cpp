@@ -23,10 +23,12 @@ std::string hstarText(double h_star) { return std::isfinite(h_star) ? fixed(h_st
 void addDirectionColumns(Table& t, const FivModel& model, const std::vector<double>& speeds,
                          const SweepBranch& branch, const std::vector<LimitCycle>& cycles, const std::string& dir) {
   const std::string label = submergenceLabel(branch.submergence_ratio);
-  std::vector<double> a_star, f_star, power, power_fluid, eta, residual, clear;
+  std::vector<double> a_star, spread, response, f_star, power, power_fluid, eta, residual, clear;
   for (std::size_t i = 0; i < cycles.size(); ++i) {
     const LimitCycle& c = cycles[i];
     a_star.push_back(c.amplitude / model.side);
+    spread.push_back(c.amplitude_spread / model.side);
+    response.push_back(static_cast<double>(static_cast<int>(c.response)));
     f_star.push_back(c.frequency / model.f_n);
     power.push_back(c.power_damper);
     power_fluid.push_back(c.power_fluid);
@@ -43,6 +45,9 @@ void addDirectionColumns(Table& t, const FivModel& model, const std::vector<doub
   t.add("PF_" + dir + "_" + label, "W", power_fluid, "⟨F ẏ⟩" + of);
   t.add("eta_" + dir + "_" + label, "-", eta, "η" + of);
   t.add("residual_" + dir + "_" + label, "-", residual, "Residual" + of);
+  t.add("A_spread_" + dir + "_" + label, "-", spread, "Cycle-to-cycle std of A*/D" + of);
+  t.add("response_" + dir + "_" + label, "-", response,
+        "Response (0 rest, 1 periodic, 2 quasi-periodic, 3 drifting)" + of);
   t.add("clearance_exceeded_" + dir + "_" + label, "-", clear, "Clearance exceeded (1 = yes)" + of);
 }
 

@@ -106,20 +106,21 @@ Results solveFiv(const FivParameters& input, RunContext& ctx) {
   r.stats.error_unit = "relative amplitude";
   std::ostringstream method;
   method << "RK4, " << p.steps_per_period << " steps per shortest period; limit cycles converged to "
-         << p.convergence_tolerance << " (" << sweep.unconverged << " of "
-         << sweep.branches.size() * sweep.speeds.size() * (p.sweep_down ? 2 : 1) << " did not within "
-         << p.max_cycles << " periods)";
+         << p.convergence_tolerance << "; of " << sweep.branches.size() * sweep.speeds.size() * (p.sweep_down ? 2 : 1)
+         << " responses " << sweep.stationary << " quasi-periodic (stationary, averaged over their windows) and "
+         << sweep.unconverged << " still drifting after " << p.max_cycles << " periods";
   r.stats.method = method.str();
   if (sweep.unconverged > 0)
-    ctx.warn(std::to_string(sweep.unconverged) + " limit cycles did not converge within numerics.max_cycles (" +
-             "quasi-periodic or slowly growing response); their residual columns give the cycle-to-cycle spread");
+    ctx.warn(std::to_string(sweep.unconverged) + " responses were still growing or drifting after numerics.max_cycles " +
+             "periods (neither a converged cycle nor statistically stationary; response column 3); their residual " +
+             "columns give the drift or the cycle-to-cycle spread");
   return r;
 }
 
 // RK4 steps of the sweep (every speed of every submergence, up and down, at most max_cycles periods) and of the
 // detail point; the 3D frames and tables it keeps.
 WorkEstimate estimateFivWork(const FivParameters& p) {
-  constexpr double kColumnsPerSpeed = 16;
+  constexpr double kColumnsPerSpeed = 18;
   const double curves = static_cast<double>(p.submergence_ratios.size()) + (p.include_deep ? 1.0 : 0.0);
   const double speeds = curves * p.speed_count * (p.sweep_down ? 2.0 : 1.0);
   const double detail = static_cast<double>(p.detail_cycles) * p.steps_per_period;

@@ -79,7 +79,8 @@ SweepResult runSweep(const FivModel& model, const SweepSettings& settings, RunCo
   auto account = [&](const LimitCycle& c) {
     result.steps += c.steps;
     result.worst_residual = std::max(result.worst_residual, c.residual);
-    if (!c.converged) ++result.unconverged;
+    if (c.response == ResponseKind::Drifting) ++result.unconverged;
+    if (c.response == ResponseKind::Stationary) ++result.stationary;
     context.progress(++done / total, "limit cycles");
   };
   for (double h_star : settings.submergence_ratios) {

@@ -40,7 +40,8 @@ struct SweepResult {
   std::vector<SweepBranch> branches;
   long steps = 0;               // RK4 steps over the whole sweep
   double worst_residual = 0.0;  // [-] largest limit-cycle residual
-  int unconverged = 0;          // limit cycles that reached max_cycles without converging
+  int unconverged = 0;          // responses still drifting at max_cycles (ResponseKind::Drifting)
+  int stationary = 0;           // quasi-periodic or chaotic responses found stationary (ResponseKind::Stationary)
 };
 
 // Seeds a state with a small displacement and wake variable (the rest state plus a perturbation).

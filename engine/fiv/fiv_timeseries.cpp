@@ -112,6 +112,17 @@ ImportedSeries parseSeriesCsv(const std::string& text, const std::string& origin
   return out;
 }
 
+std::vector<double> cycleAmplitudes(const std::vector<double>& y, double mean) {
+  const auto up = upCrossings(y, mean);
+  std::vector<double> amps;
+  for (std::size_t c = 0; c + 1 < up.size(); ++c) {
+    const auto [lo, hi] = std::minmax_element(y.begin() + static_cast<std::ptrdiff_t>(up[c]),
+                                              y.begin() + static_cast<std::ptrdiff_t>(up[c + 1]));
+    amps.push_back(0.5 * (*hi - *lo));
+  }
+  return amps;
+}
+
 ImportedSeries readSeriesCsv(const std::string& path) {
   return parseSeriesCsv(readDataText(path, "fiv", "parameters.analysis.series_file"), path);
 }
@@ -135,12 +146,7 @@ SeriesAnalysis analyseSeries(const ImportedSeries& s, double damping, double den
     throw InputError("analysis.series_file", std::to_string(up.size()) + " up-crossings",
                      "the record must hold at least two whole oscillation cycles");
   SeriesAnalysis out;
-  // Amplitude per whole cycle from its extreme samples.
-  std::vector<double> amps;
-  for (std::size_t c = 0; c + 1 < up.size(); ++c) {
-    const auto [lo, hi] = std::minmax_element(s.y.begin() + up[c], s.y.begin() + up[c + 1]);
-    amps.push_back(0.5 * (*hi - *lo));
-  }
+  const std::vector<double> amps = cycleAmplitudes(s.y, mean);
   out.cycles = static_cast<int>(amps.size());
   out.amplitude = std::accumulate(amps.begin(), amps.end(), 0.0) / amps.size();
   double var = 0.0;

@@ -46,6 +46,9 @@ struct SeriesAnalysis {
   double efficiency = 0.0;        // [-] P / (P_fluid · 16/27)
 };
 
+// Half peak-to-peak of y per whole cycle (between zero up-crossings of y − mean), from its extreme samples.
+std::vector<double> cycleAmplitudes(const std::vector<double>& y, double mean);
+
 // Throws InputError when the record holds fewer than two whole cycles.
 SeriesAnalysis analyseSeries(const ImportedSeries& series, double damping, double density, double speed,
                              double length, double side);

@@ -32,7 +32,7 @@ TEST(FivPlausibility, ALightCylinder) {
 }
 
 TEST(FivPlausibility, TheGallopingHysteresisExampleSaysWhyItWarns) {
-  // U = 4–9 m/s is Re = 3.2e5–7.2e5: the example checks harmonic balance on the model, not the paper's flow.
+  // U = 4.4–9.4 m/s is Re = 3.5e5–7.6e5: the example checks harmonic balance on the model, not the paper's flow.
   const auto w = plausibilityOf("fiv_galloping_hysteresis", {});
   EXPECT_EQ(w.size(), 3u) << describeErrors(w);
   EXPECT_NE(findBuiltin("fiv_galloping_hysteresis")->scenario.description.find("warn"), std::string::npos);
