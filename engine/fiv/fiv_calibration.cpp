@@ -168,7 +168,7 @@ CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferenceP
   return res;
 }
 
-void addCalibrationResults(Results& results, const CalibrationResult& cal) {
+std::string addCalibrationResults(Results& results, const CalibrationResult& cal) {
   std::ostringstream note;
   if (cal.converged)
     note << "calibrated coefficients (save with --set or into the scenario's parameters):";
@@ -190,7 +190,8 @@ void addCalibrationResults(Results& results, const CalibrationResult& cal) {
                         " (" + cal.stop_reason + ")", "Calibration iterations");
   results.addScalar("calibration_rms_residual", std::sqrt(cal.cost / std::max<std::size_t>(1, cal.residuals.size())),
                     "-", "RMS of the normalised residuals after the fit", "Calibration RMS residual");
-  results.warnings.push_back(note.str());
+  // A converged fit is the run's result, not a warning: its coefficients go to the method line (and scalars).
+  if (!cal.converged) results.warnings.push_back(note.str());
   Table t;
   t.name = "calibration_residuals";
   t.title = "Calibration residuals (quantity 0 = amplitude [m], 1 = frequency [Hz], 2 = power [W])";
@@ -215,6 +216,7 @@ void addCalibrationResults(Results& results, const CalibrationResult& cal) {
   t.add("sigma", "SI", sig, "σ");
   t.add("normalised_residual_after", "-", norm, "Normalised residual after the fit");
   results.tables.push_back(std::move(t));
+  return cal.converged ? note.str() : std::string();
 }
 
 }  // namespace maris::fiv

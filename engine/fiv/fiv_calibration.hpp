@@ -45,7 +45,8 @@ std::vector<CalibrationResidual> calibrationResiduals(const FivParameters& p, co
 // Fits the coefficients named in p.free_coefficients. Throws InputError for unknown names or no data.
 CalibrationResult calibrate(const FivParameters& p, const std::vector<ReferencePoint>& points, RunContext& context);
 
-// Scalars calibrated_<path>, table "calibration_residuals" and a note with the values to save.
-void addCalibrationResults(Results& results, const CalibrationResult& calibration);
+// Scalars calibrated_<path> and table "calibration_residuals"; a fit that did not converge is a warning. Returns,
+// for a converged fit, the note with the values to save (for the run's method line), else "".
+std::string addCalibrationResults(Results& results, const CalibrationResult& calibration);
 
 }  // namespace maris::fiv

@@ -70,9 +70,10 @@ Results solveFiv(const FivParameters& input, RunContext& ctx) {
   Results r;
   FivParameters p = input;
   const std::vector<ReferencePoint> references = loadReferencePoints(p.reference_file);
+  std::string calibration_note;
   if (p.calibrate) {
     const CalibrationResult cal = calibrate(p, references, ctx);
-    addCalibrationResults(r, cal);
+    calibration_note = addCalibrationResults(r, cal);
     p = cal.parameters;
   }
   const FivModel model = buildFivModel(p);
@@ -109,6 +110,7 @@ Results solveFiv(const FivParameters& input, RunContext& ctx) {
          << p.convergence_tolerance << "; of " << sweep.branches.size() * sweep.speeds.size() * (p.sweep_down ? 2 : 1)
          << " responses " << sweep.stationary << " quasi-periodic (stationary, averaged over their windows) and "
          << sweep.unconverged << " still drifting after " << p.max_cycles << " periods";
+  if (!calibration_note.empty()) method << "; " << calibration_note;
   r.stats.method = method.str();
   if (sweep.unconverged > 0)
     ctx.warn(std::to_string(sweep.unconverged) + " responses were still growing or drifting after numerics.max_cycles " +

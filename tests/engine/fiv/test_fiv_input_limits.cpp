@@ -38,14 +38,17 @@ TEST(FivInputLimits, AnUnconvergedCalibrationSaysSoAndRecommendsNothing) {
   cal.cost_initial = 10.0;
   cal.cost = 5.0;
   cal.iterations = 25;
+  // Not converged: a warning that says so and recommends nothing; converged: no warning, the note with the values
+  // to save is returned for the method line.
   for (const bool converged : {false, true}) {
     cal.converged = converged;
     Results r;
-    addCalibrationResults(r, cal);
-    ASSERT_EQ(r.warnings.size(), 1u);
-    const std::string& w = r.warnings.front();
-    EXPECT_EQ(w.find("did not converge") != std::string::npos, !converged) << w;
-    EXPECT_EQ(w.find("structure.stiffness=123") != std::string::npos, converged) << w;
+    const std::string note = addCalibrationResults(r, cal);
+    ASSERT_EQ(r.warnings.size(), converged ? 0u : 1u);
+    EXPECT_EQ(note.empty(), !converged) << note;
+    const std::string& text = converged ? note : r.warnings.front();
+    EXPECT_EQ(text.find("did not converge") != std::string::npos, !converged) << text;
+    EXPECT_EQ(text.find("structure.stiffness=123") != std::string::npos, converged) << text;
   }
 }
 
