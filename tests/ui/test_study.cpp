@@ -4,7 +4,8 @@
 // clicked case in the results view, writes study.csv and the plot; two parameters give a line per
 // value and a heat map; Cancel stops the pool; a study file saves and reopens; a study with a bad
 // case runs nothing; a load-case table runs its rows; a Latin hypercube built in its dialog samples
-// every stratum; a table cell is added, edited, saved and reopened as a parameter.
+// every stratum; a table cell is added, edited, saved and reopened as a parameter; a table study's weighted
+// sum shows in the dock (the hand-computed sum, the cases it still waits for).
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -41,6 +42,7 @@
 #include "study/study_plot_view.hpp"
 #include "study/study_runner.hpp"
 #include "study/sweep_dialog.hpp"
+#include "study/weighted_sum_dialog.hpp"
 #include "test_scene.hpp"
 #include "ui_test_support.hpp"
 
@@ -599,6 +601,139 @@ class StudyTest : public QObject {
       // 1000 px hold the views and the left column but not the dock beside them; 2600 px do.
       QCOMPARE(dock->isFloating(), width == 1000);
     }
+  }
+
+  // A scatter-diagram-like table: its column "probability" varies no parameter, so opening the table asks
+  // whether it is the cases' weight (the prompt answered without a dialog); the dock shows the weighted sum
+  // Σ p_i · V_i with V_i = pi r_i^2 L_i (the test scene's closed form): "—" and every case named before the
+  // run, the value after it (hand-computed sum, 1e-12 relative). A failed case empties it again and is named.
+  // The weighted result can be changed after the run (the outcomes stay: no rerun), the sum saves and
+  // reopens with the study, and clearing it hides the sums.
+  void aTableStudyShowsItsWeightedSum() {
+    QTemporaryDir dir;
+    const QString table = dir.filePath(QStringLiteral("sea_states.csv"));
+    QFile file(table);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.length,geometry.radius,probability,run.fail\nm,m,-,-\n"
+               "120,0.3,0.5,false\n80,0.2,0.3,false\n150,0.5,0.2,false\n");
+    file.close();
+    const double rows[3][3] = {{120, 0.3, 0.5}, {80, 0.2, 0.3}, {150, 0.5, 0.2}};
+    double expected = 0.0, weight_total = 0.0;
+    for (const auto& r : rows) {
+      expected += r[2] * (kPi * r[1] * r[1] * r[0]);
+      weight_total += r[2];
+    }
+    std::vector<std::string> offered;
+    panel()->setWeightedSumPrompt([&offered](const std::vector<std::string>& columns, const auto&, const WeightedSumChoice&) {
+      offered = columns;
+      return std::optional<WeightedSumChoice>(WeightedSumChoice{"probability", {"rod_volume"}});
+    });
+    QVERIFY2(panel()->openCaseTable(table), qPrintable(panel()->lastError()));
+    QCOMPARE(offered, std::vector<std::string>({"probability"}));  // the parameters are no candidates
+    // Nor is a misspelt parameter (the engine refuses it with a guess): only the weight is offered.
+    const QString misspelt = dir.filePath(QStringLiteral("misspelt.csv"));
+    QFile misspelt_file(misspelt);
+    QVERIFY(misspelt_file.open(QIODevice::WriteOnly));
+    misspelt_file.write("geometry.lenght,probability\n120,1\n");
+    misspelt_file.close();
+    QCOMPARE(StudySession::nonParameterColumns(*window_->document()->scene(), window_->document()->scenario().parameters,
+                                               misspelt),
+             std::vector<std::string>({"probability"}));
+    QCOMPARE(panel()->session().weightColumn(), std::string("probability"));
+    QTableWidget* sums = panel()->weightedSumTable();
+    QVERIFY(!panel()->findChild<QWidget*>(QStringLiteral("studyWeightedSums"))->isHidden());
+    QVERIFY2(panel()->weightedSumHeading()->text().contains(QStringLiteral("probability")),
+             qPrintable(panel()->weightedSumHeading()->text()));
+    QCOMPARE(sums->rowCount(), 1);
+    // Before a run the result's unit is not known yet (the runs report it); its label is read from its name.
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume"));
+    QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
+    QVERIFY2(sums->item(0, 2)->text().contains(QStringLiteral("run the study")), qPrintable(sums->item(0, 2)->text()));
+
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    bool ok = false;
+    const double shown = sums->item(0, 1)->text().toDouble(&ok);
+    QVERIFY2(ok, qPrintable(sums->item(0, 1)->text()));
+    QVERIFY2(std::abs(shown - expected) <= 1e-12 * expected, qPrintable(QString::number(shown - expected)));
+    QCOMPARE(sums->item(0, 2)->text(), QString());
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m^3]"));
+    QVERIFY2(panel()->weightedSumHeading()->text().contains(QStringLiteral("add up to 1")),
+             qPrintable(panel()->weightedSumHeading()->text()));
+    QCOMPARE(weight_total, 1.0);
+
+    // Another result, chosen after the run through "Weighted sum…": shown at once from the same cases.
+    QSignalSpy started(panel()->runner(), &StudyRunner::started);
+    panel()->setWeightedSumPrompt([](const auto& columns, const auto& known, const WeightedSumChoice& current) {
+      const bool has_volume = std::any_of(known.begin(), known.end(), [](const auto& k) { return k.first == "rod_volume"; });
+      if (columns != std::vector<std::string>({"probability"}) || !has_volume || current.column != "probability")
+        return std::optional<WeightedSumChoice>();
+      return std::optional<WeightedSumChoice>(WeightedSumChoice{"probability", {"max_deflection", "rod_volume"}});
+    });
+    QVERIFY(panel()->weightedSumDialog());
+    QCOMPARE(started.count(), 0);
+    QCOMPARE(sums->rowCount(), 2);
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Max deflection [m]"));
+    double deflection_sum = 0.0;
+    for (int i = 0; i < 3; ++i)
+      deflection_sum += rows[i][2] * panel()->session().outcome(i).results->findScalar("max_deflection")->value;
+    QVERIFY(std::abs(sums->item(0, 1)->text().toDouble() - deflection_sum) <= 1e-12 * std::abs(deflection_sum));
+    QVERIFY(std::abs(sums->item(1, 1)->text().toDouble() - expected) <= 1e-12 * expected);
+
+    // Saved and reopened, the study keeps its weighted sum; run again, the same value.
+    const QString study_file = dir.filePath(QStringLiteral("scatter.study.json"));
+    QVERIFY2(panel()->saveStudy(study_file), qPrintable(panel()->lastError()));
+    panel()->clearParameters();
+    QVERIFY(panel()->findChild<QWidget*>(QStringLiteral("studyWeightedSums"))->isHidden());
+    QVERIFY2(panel()->openStudy(study_file), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().weightedResults(), std::vector<std::string>({"max_deflection", "rod_volume"}));
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    QVERIFY(std::abs(sums->item(1, 1)->text().toDouble() - expected) <= 1e-12 * expected);
+
+    // The second case fails: no sum, and the case is named.
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.length,geometry.radius,probability,run.fail\nm,m,-,-\n"
+               "120,0.3,0.5,false\n80,0.2,0.3,true\n150,0.5,0.2,false\n");
+    file.close();
+    panel()->setWeightedSumPrompt([](const auto&, const auto&, const WeightedSumChoice&) {
+      return std::optional<WeightedSumChoice>(WeightedSumChoice{"probability", {"rod_volume"}});
+    });
+    QVERIFY2(panel()->openCaseTable(table), qPrintable(panel()->lastError()));
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
+    QCOMPARE(sums->item(0, 2)->text(), QStringLiteral("failed: 0002"));
+
+    // Not cleared while the table has its weight column (a column of no parameter is read only as weights);
+    // a weight column that is not in the table is refused by name.
+    QVERIFY(!panel()->setWeightedSum("", {}));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("column probability varies no parameter")),
+             qPrintable(panel()->lastError()));
+    QVERIFY(!panel()->setWeightedSum("probabilty", {"rod_volume"}));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("did you mean 'probability'")), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().weightColumn(), std::string("probability"));  // unchanged
+
+    // The column removed from the table: cleared, nothing shown.
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.length,geometry.radius\n120,0.3\n80,0.2\n");
+    file.close();
+    QVERIFY2(panel()->setWeightedSum("", {}), qPrintable(panel()->lastError()));
+    QVERIFY(panel()->findChild<QWidget*>(QStringLiteral("studyWeightedSums"))->isHidden());
+    QCOMPARE(panel()->session().caseCount(), 0);  // the table changed: its cases are read again at the next run
+  }
+
+  // The dialog: no column, no sum; a column needs at least one result (checked or typed).
+  void theWeightedSumDialogNeedsAResultForAColumn() {
+    WeightedSumDialog dialog({"probability"}, {{"rod_volume", "rod_volume"}}, WeightedSumChoice{});
+    QVERIFY(dialog.okButton()->isEnabled());
+    QCOMPARE(dialog.choice(), WeightedSumChoice{});
+    dialog.columnBox()->setCurrentIndex(dialog.columnBox()->findText(QStringLiteral("probability")));
+    QVERIFY(!dialog.okButton()->isEnabled());
+    dialog.resultList()->item(0)->setCheckState(Qt::Checked);
+    QVERIFY(dialog.okButton()->isEnabled());
+    dialog.otherResults()->setText(QStringLiteral(" max_deflection , rod_volume"));
+    QCOMPARE(dialog.choice(), (WeightedSumChoice{"probability", {"rod_volume", "max_deflection"}}));
   }
 
   void aStudyWithABadCaseRunsNothing() {

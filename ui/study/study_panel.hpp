@@ -13,7 +13,9 @@
 
 #include "study/study_session.hpp"
 #include "study/sweep_dialog.hpp"
+#include "study/weighted_sum_dialog.hpp"
 
+class QAction;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -61,6 +63,24 @@ class StudyPanel : public QWidget {
   // the reason logged, when the design is bad.
   bool defineLatinHypercube(const LatinHypercubeDesign& design);
 
+  // A table study's weighted sum (the study file's "weighted_sum"): `column` of its table holds each case's
+  // weight and `results` are summed with it; "" clears it. The sums show below the run buttons at once for the
+  // cases that ran. False, with the reason logged, when the engine refuses the column or the study is no table.
+  bool setWeightedSum(const std::string& column, const std::vector<std::string>& results);
+  // "Weighted sum…": asks for the column and the results (through the prompt) and sets them; false if nothing changed.
+  bool weightedSumDialog();
+  // How the weight column and results are asked for (tests replace the dialog, WeightedSumDialog): `columns` are
+  // the table's columns that vary no parameter, `known` (name, label) the results the cases have so far; nullopt
+  // to cancel.
+  using WeightedSumPrompt = std::function<std::optional<WeightedSumChoice>(
+      const std::vector<std::string>& columns, const std::vector<std::pair<std::string, std::string>>& known,
+      const WeightedSumChoice& current)>;
+  void setWeightedSumPrompt(WeightedSumPrompt prompt) { weighted_sum_prompt_ = std::move(prompt); }
+  // The weighted sums as shown: a heading naming the weight column, then one row per summed result (its label
+  // and unit, the sum, and which cases it still waits for). Hidden when the study has no weighted sum.
+  QLabel* weightedSumHeading() const { return weighted_heading_; }
+  QTableWidget* weightedSumTable() const { return weighted_table_; }
+
   // A finished case as a run record for the results view ("study case 0003 (length = 120 m)").
   // Its id is `id`; nullopt if the case has no results.
   std::optional<RunRecord> caseRecord(int index, quint64 id) const;
@@ -99,6 +119,8 @@ class StudyPanel : public QWidget {
   void updateButtons();
   // The parameters of the study's base: the study's own when it came from a file, else the open scenario's.
   const Json& baseParameters() const;
+  // Shows the study's weighted sums (the engine's, over the outcomes so far), or hides them when it has none.
+  void showWeightedSums();
   void onCaseFinished(int index, ResultsPtr results, double wall_time_s);
   void onCaseFailed(int index, const QString& message);
   void fail(const QString& text);
@@ -121,11 +143,16 @@ class StudyPanel : public QWidget {
   QPushButton* cancel_;
   QSpinBox* threads_box_;
   QLabel* summary_;
+  QWidget* weighted_box_;
+  QLabel* weighted_heading_;
+  QTableWidget* weighted_table_;
+  QAction* weighted_action_ = nullptr;
   StudyPlotView* plot_view_;
   QTimer* refresh_timer_;
   QString last_error_;
   SweepPrompt sweep_prompt_;
   ParameterPrompt parameter_prompt_;
+  WeightedSumPrompt weighted_sum_prompt_;
 };
 
 }  // namespace maris::ui

@@ -14,6 +14,7 @@
 
 #include "plots/study_plot.hpp"
 #include "run/run_controller.hpp"
+#include "study/study_collect.hpp"
 #include "study/latin_hypercube_dialog.hpp"
 #include "study/sweep_dialog.hpp"
 
@@ -34,8 +35,11 @@ class StudySession {
   // A grid study over `base` (kept inline in the study file). Clears cases and outcomes.
   void define(const SceneDefinition& scene, const Scenario& base, std::vector<SweepRange> grid);
   // A load-case table study over `base`: one case per data row of `csv_file` (a column per parameter
-  // path; a units row may follow the names). Throws InputError naming every problem of the table.
-  void defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file);
+  // path; a units row may follow the names). With a `weight_column`, that column is no parameter but each
+  // case's weight, and `weighted_results` are summed with it (the study file's "weighted_sum"). Throws
+  // InputError naming every problem of the table.
+  void defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file,
+                   const std::string& weight_column = {}, const std::vector<std::string>& weighted_results = {});
   // A Latin-hypercube study over `base`: the engine draws `design.samples` cases from `design.seed`, one per
   // stratum of every parameter's interval. Throws InputError naming every problem of the design.
   void defineLatinHypercube(const SceneDefinition& scene, const Scenario& base, const LatinHypercubeDesign& design);
@@ -54,6 +58,27 @@ class StudySession {
   std::vector<std::string> parameterPaths() const;
   // "grid", "table" or "latin hypercube".
   QString kindName() const;
+  bool isTable() const;
+
+  // A table study's weighted sum (the study file's "weighted_sum"): the column of case weights ("" for none)
+  // and the scalar results summed with it.
+  std::string weightColumn() const;
+  std::vector<std::string> weightedResults() const;
+  // The columns of the table study's CSV file that vary no parameter: what may be its weight column.
+  std::vector<std::string> weightCandidates() const;
+  // The columns of `csv_file` that vary no parameter of `scene` over the base `parameters` (before a table
+  // study is defined from it). Throws InputError when the file cannot be read.
+  static std::vector<std::string> nonParameterColumns(const SceneDefinition& scene, const Json& parameters,
+                                                      const QString& csv_file);
+  // Sets (a `column` of the table) or clears ("") the table study's weighted sum; the engine reads the table
+  // again and checks the column and its weights. The cases and their outcomes are kept when the table's
+  // cases are the same, so the sums of a finished study show at once. Throws InputError or std::runtime_error
+  // (not a table study); nothing changes then.
+  void setWeightedSum(const std::string& column, const std::vector<std::string>& results);
+  // Each weighted result summed over the cases so far with their weights (the engine's sum, as `maris-cli
+  // study collect` writes it into study.json): no value while a case of weight > 0 has none, naming those
+  // cases. Empty without a weighted sum or before the cases are expanded.
+  std::vector<study::WeightedSum> weightedSums() const;
 
   // Expands the study into its cases and validates every one. Throws InputError naming every bad
   // case and field (nothing is kept then).
@@ -84,6 +109,8 @@ class StudySession {
   // Builds the engine's study from `document` (relative paths against `folder`) and makes it this session's.
   void adopt(const SceneDefinition& scene, const Scenario& base, const Json& document,
              const std::filesystem::path& folder, std::vector<SweepRange> grid);
+  // The cases so far as the engine collects them: each case's status and values, and its scalars.
+  study::CollectedStudy collected(std::vector<study::CaseScalars>* scalars = nullptr) const;
   std::shared_ptr<const SceneDefinition> scene_;
   Scenario base_;
   std::vector<SweepRange> grid_;

@@ -78,13 +78,97 @@ void StudySession::define(const SceneDefinition& scene, const Scenario& base, st
   adopt(scene, base, document, std::filesystem::current_path(), std::move(grid));
 }
 
-void StudySession::defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file) {
+void StudySession::defineTable(const SceneDefinition& scene, const Scenario& base, const QString& csv_file,
+                               const std::string& weight_column, const std::vector<std::string>& weighted_results) {
   const std::filesystem::path table = std::filesystem::absolute(csv_file.toStdString());
-  const Json document = {{"format", study::kStudyFormat},
-                         {"name", base.name + " load cases"},
-                         {"base", scenarioToJson(base)},
-                         {"table", table.string()}};
+  Json document = {{"format", study::kStudyFormat},
+                   {"name", base.name + " load cases"},
+                   {"base", scenarioToJson(base)},
+                   {"table", table.string()}};
+  if (!weight_column.empty()) document["weighted_sum"] = {{"weight", weight_column}, {"results", weighted_results}};
   adopt(scene, base, document, table.parent_path(), {});
+}
+
+bool StudySession::isTable() const { return impl_ && impl_->study.kind == study::DesignKind::Table; }
+
+std::string StudySession::weightColumn() const { return impl_ ? impl_->study.weight_column : std::string(); }
+
+std::vector<std::string> StudySession::weightedResults() const {
+  return impl_ ? impl_->study.weighted_results : std::vector<std::string>();
+}
+
+std::vector<std::string> StudySession::nonParameterColumns(const SceneDefinition& scene, const Json& parameters,
+                                                           const QString& csv_file) {
+  // A column close to a parameter's path is a misspelt parameter, not a weight: the engine refuses it with a guess.
+  std::vector<std::string> paths;
+  for (const auto& field : scene.schema.fields) paths.push_back(field.path);
+  std::vector<std::string> columns;
+  for (const std::string& name : study::tableColumns(std::filesystem::absolute(csv_file.toStdString())))
+    if (!name.empty() && !study::findStudyParameter(scene, parameters, name) && didYouMean(name, paths).empty())
+      columns.push_back(name);
+  return columns;
+}
+
+std::vector<std::string> StudySession::weightCandidates() const {
+  if (!isTable() || !scene_) return {};
+  try {
+    return nonParameterColumns(*scene_, impl_->study.base.parameters, QString::fromStdString(impl_->study.table_file.string()));
+  } catch (const std::exception&) {
+    return {};  // the table is gone or changed since: setWeightedSum says why
+  }
+}
+
+void StudySession::setWeightedSum(const std::string& column, const std::vector<std::string>& results) {
+  if (!isTable() || !scene_) throw std::runtime_error("a weighted sum needs a table study (the weights are a column of its table)");
+  // The study as it runs, as save() writes it: the base in place (a base file or "set" was read relative to
+  // the study file's folder), the table by its absolute path.
+  Json document = impl_->study.document;
+  document["base"] = scenarioToJson(impl_->study.base);
+  document.erase("set");
+  document["table"] = impl_->study.table_file.string();
+  if (column.empty())
+    document.erase("weighted_sum");
+  else
+    document["weighted_sum"] = {{"weight", column}, {"results", results}};
+  auto impl = std::make_shared<Impl>(*impl_);
+  impl->study = study::studyFromJson(document, impl_->study.folder, oneScene(*scene_));  // throws before anything changes
+  impl->log = logParameters(impl->study);
+  const bool same_cases = impl->study.rows == impl_->study.rows && impl->study.parameters.size() == impl_->study.parameters.size();
+  if (!same_cases) {
+    impl->cases.clear();
+    outcomes_.clear();
+  }
+  impl_ = std::move(impl);
+}
+
+study::CollectedStudy StudySession::collected(std::vector<study::CaseScalars>* scalars_out) const {
+  std::vector<study::CollectedCase> cases;
+  std::vector<study::CaseScalars> scalars;
+  for (std::size_t i = 0; impl_ && i < impl_->cases.size() && i < outcomes_.size(); ++i) {
+    study::CollectedCase c;
+    c.id = impl_->cases[i].id;
+    c.values = impl_->cases[i].values;
+    const CaseOutcome& o = outcomes_[i];
+    c.status = o.status == Status::Finished && o.results ? study::CaseStatus::Ok
+               : o.status == Status::Failed               ? study::CaseStatus::Failed
+                                                          : study::CaseStatus::Missing;
+    study::CaseScalars values;
+    if (o.results)
+      for (const Scalar& s : o.results->scalars) values[s.name] = {s.value, s.unit.empty() ? "-" : s.unit};
+    cases.push_back(std::move(c));
+    scalars.push_back(std::move(values));
+  }
+  auto result = study::collectScalars(impl_ ? impl_->study.parameters : std::vector<study::StudyParameter>(),
+                                      impl_ ? impl_->study.results : std::vector<std::string>(), std::move(cases), scalars);
+  if (scalars_out) *scalars_out = std::move(scalars);
+  return result;
+}
+
+std::vector<study::WeightedSum> StudySession::weightedSums() const {
+  if (!impl_ || impl_->study.weight_column.empty() || impl_->cases.empty()) return {};
+  std::vector<study::CaseScalars> scalars;
+  const study::CollectedStudy cases = collected(&scalars);
+  return study::weightedSums(impl_->study.weighted_results, impl_->study.weights, cases.cases, scalars);
 }
 
 void StudySession::defineLatinHypercube(const SceneDefinition& scene, const Scenario& base,
@@ -172,24 +256,7 @@ void StudySession::expand() {
 
 void StudySession::writeCsv(const QString& file) const {
   if (!impl_ || impl_->cases.empty()) throw std::runtime_error("the study has no cases yet: run it first");
-  std::vector<study::CollectedCase> cases;
-  std::vector<study::CaseScalars> scalars;
-  for (std::size_t i = 0; i < impl_->cases.size(); ++i) {
-    study::CollectedCase c;
-    c.id = impl_->cases[i].id;
-    c.values = impl_->cases[i].values;
-    const CaseOutcome& o = outcomes_.at(i);
-    c.status = o.status == Status::Finished && o.results ? study::CaseStatus::Ok
-               : o.status == Status::Failed               ? study::CaseStatus::Failed
-                                                          : study::CaseStatus::Missing;
-    study::CaseScalars values;
-    if (o.results)
-      for (const Scalar& s : o.results->scalars) values[s.name] = {s.value, s.unit.empty() ? "-" : s.unit};
-    cases.push_back(std::move(c));
-    scalars.push_back(std::move(values));
-  }
-  const auto collected = study::collectScalars(impl_->study.parameters, impl_->study.results, std::move(cases), scalars);
-  writeFileAtomic(file.toStdString(), study::studyCsv(collected));
+  writeFileAtomic(file.toStdString(), study::studyCsv(collected()));
 }
 
 }  // namespace maris::ui
