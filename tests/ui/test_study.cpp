@@ -658,6 +658,7 @@ class StudyTest : public QObject {
     QVERIFY2(std::abs(shown - expected) <= 1e-12 * expected, qPrintable(QString::number(shown - expected)));
     QCOMPARE(sums->item(0, 2)->text(), QString());
     QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m^3]"));
+    test::keepScreenshot(panel()->grab().toImage(), QStringLiteral("study_weighted_sum"));
     QVERIFY2(panel()->weightedSumHeading()->text().contains(QStringLiteral("add up to 1")),
              qPrintable(panel()->weightedSumHeading()->text()));
     QCOMPARE(weight_total, 1.0);

@@ -173,8 +173,6 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   weighted_table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Stretch);
   weighted_table_->verticalHeader()->hide();
   weighted_table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  weighted_table_->setMaximumHeight(weighted_table_->horizontalHeader()->sizeHint().height() +
-                                    4 * weighted_table_->verticalHeader()->defaultSectionSize());
   auto* weighted_layout = new QVBoxLayout(weighted_box_);
   weighted_layout->setContentsMargins(0, 0, 0, 0);
   weighted_layout->addWidget(weighted_heading_);
@@ -633,6 +631,10 @@ void StudyPanel::showWeightedSums() {
     weighted_table_->setItem(row, 1, value);
     weighted_table_->setItem(row, 2, new QTableWidgetItem(missing));
   }
+  // As tall as its rows (a scatter diagram sums one or two results): the plot below keeps the rest.
+  weighted_table_->setFixedHeight(weighted_table_->horizontalHeader()->sizeHint().height() +
+                                  weighted_table_->rowCount() * weighted_table_->verticalHeader()->defaultSectionSize() +
+                                  2 * weighted_table_->frameWidth());
 }
 
 bool StudyPanel::addParameterDialog() {
