@@ -339,6 +339,20 @@ class StudyTest : public QObject {
     file.close();
     QVERIFY2(panel()->openCaseTable(table), qPrintable(panel()->lastError()));
     QCOMPARE(panel()->session().kindName(), QStringLiteral("table"));
+    // The table is the design: no grid parameter is added to it (that would replace it by a grid over its base),
+    // and the empty grid table is hidden.
+    QVERIFY(panel()->parameterTable()->isHidden());
+    bool asked = false;
+    panel()->setParameterPrompt([&asked](const SceneDefinition&, const Json&, const std::vector<std::string>&) {
+      asked = true;
+      return std::string("geometry.radius");
+    });
+    QVERIFY(!panel()->addParameterDialog());
+    QVERIFY(!asked);
+    panel()->setSweepPrompt(answer({"", 0.2, 0.8, 4, false}, true));
+    QVERIFY(!panel()->sweep(QStringLiteral("geometry.radius")));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("cannot be added")), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().kindName(), QStringLiteral("table"));
     QVERIFY(panel()->startStudy());
     QVERIFY(runAndWait());
     const StudyPlotData data = panel()->session().plotData("rod_volume");

@@ -267,6 +267,12 @@ bool StudyPanel::sweep(const QString& path) {
   const Json* current = study::findParameterValue(baseParameters(), spec->path);
   const auto answer = sweep_prompt_(*spec, proposedSweep(*spec, current ? *current : Json()));
   if (!answer) return false;
+  if (answer->second && fixedDesign()) {
+    fail(tr("This %1 study's cases are its design: a parameter cannot be added to it. Start a new study from the "
+            "open scenario first (Study ▸ New study from the open scenario).")
+             .arg(session_.kindName()));
+    return false;
+  }
   if (!answer->second) grid_.clear();
   addParameter(answer->first);
   return answer->second || startStudy();
@@ -637,9 +643,11 @@ void StudyPanel::showWeightedSums() {
                                   2 * weighted_table_->frameWidth());
 }
 
+bool StudyPanel::fixedDesign() const { return from_file_ && session_.isDefined() && !session_.isGrid(); }
+
 bool StudyPanel::addParameterDialog() {
   const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
-  if (!scene || runner_->isRunning()) return false;
+  if (!scene || runner_->isRunning() || fixedDesign()) return false;
   std::vector<std::string> taken;
   for (const SweepRange& r : grid_) taken.push_back(r.path);
   const std::string path = parameter_prompt_(*scene, baseParameters(), taken);
@@ -710,7 +718,12 @@ void StudyPanel::updateButtons() {
   const bool have_base = (from_file_ && session_.isDefined()) || document_->isValid();
   run_->setEnabled(!running && have_base && (!grid_.empty() || from_file_));
   cancel_->setEnabled(running);
-  add_->setEnabled(!running);
+  add_->setEnabled(!running && !fixedDesign());
+  add_->setToolTip(fixedDesign() ? tr("A %1 study's cases are its design: start a new study from the open scenario "
+                                      "to vary parameters here").arg(session_.kindName())
+                                 : QString());
+  // A table or a sample has no ranges to edit: its parameters are named above the table, which is then hidden.
+  table_->setVisible(!fixedDesign());
   remove_->setEnabled(!running && !grid_.empty());
   if (weighted_action_) weighted_action_->setEnabled(!running && from_file_ && session_.isTable());
   table_->setEnabled(!running);

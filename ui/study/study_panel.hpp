@@ -127,6 +127,9 @@ class StudyPanel : public QWidget {
   // Why the grid `grid` over the study's base cannot run (its first invalid cases), or "" (sweep dialog).
   QString gridProblem(std::vector<SweepRange> grid) const;
   bool replaceSession(const QString& failure, const std::function<void(StudySession&)>& build);
+  // A table or Latin-hypercube study opened or built here: its parameters are its design (a CSV table, a sample),
+  // so no grid parameter is added to it (that would replace the design by a grid over its base).
+  bool fixedDesign() const;
 
   ScenarioDocument* document_;
   std::shared_ptr<const SceneLibrary> library_;

@@ -59,6 +59,7 @@ class StudySession {
   // "grid", "table" or "latin hypercube".
   QString kindName() const;
   bool isTable() const;
+  bool isGrid() const;  // also when nothing is defined yet (the dock builds grids)
 
   // A table study's weighted sum (the study file's "weighted_sum"): the column of case weights ("" for none)
   // and the scalar results summed with it.

@@ -89,6 +89,8 @@ void StudySession::defineTable(const SceneDefinition& scene, const Scenario& bas
   adopt(scene, base, document, table.parent_path(), {});
 }
 
+bool StudySession::isGrid() const { return !impl_ || impl_->study.kind == study::DesignKind::Grid; }
+
 bool StudySession::isTable() const { return impl_ && impl_->study.kind == study::DesignKind::Table; }
 
 std::string StudySession::weightColumn() const { return impl_ ? impl_->study.weight_column : std::string(); }
