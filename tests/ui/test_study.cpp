@@ -664,8 +664,13 @@ class StudyTest : public QObject {
     QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
     QVERIFY2(sums->item(0, 2)->text().contains(QStringLiteral("run the study")), qPrintable(sums->item(0, 2)->text()));
 
+    QSignalSpy logged(panel(), &StudyPanel::logged);
     QVERIFY(panel()->startStudy());
     QVERIFY(runAndWait());
+    bool any_sum_logged = false;
+    for (const auto& entry : logged)
+      any_sum_logged = any_sum_logged || entry.at(1).toString().startsWith(QStringLiteral("Weighted sum of rod_volume over probability: "));
+    QVERIFY(any_sum_logged);
     bool ok = false;
     const double shown = sums->item(0, 1)->text().toDouble(&ok);
     QVERIFY2(ok, qPrintable(sums->item(0, 1)->text()));

@@ -221,6 +221,18 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
                              .arg(succeeded).arg(session_.caseCount()).arg(failed);
     summary_->setText(text);
     emit logged(failed ? 1 : 0, text);
+    // The weighted sums in the run log too, as `maris-cli study collect` prints them: a record beside the run's.
+    if (from_file_)
+      for (const study::WeightedSum& sum : session_.weightedSums()) {
+        const QString unit = sum.unit.empty() || sum.unit == "-" ? QString() : QStringLiteral(" ") + QString::fromStdString(sum.unit);
+        emit logged(sum.value ? 0 : 1,
+                    sum.value ? tr("Weighted sum of %1 over %2: %3%4 (weights add up to %5)")
+                                    .arg(QString::fromStdString(sum.result), QString::fromStdString(session_.weightColumn()),
+                                         displayValue(Json(*sum.value)), unit, QString::number(sum.weight_total, 'g', 6))
+                              : tr("Weighted sum of %1 over %2: no value, %3 of the weighted cases have none")
+                                    .arg(QString::fromStdString(sum.result), QString::fromStdString(session_.weightColumn()))
+                                    .arg(sum.missing.size()));
+      }
     emit message(text);
     emit studyFinished(succeeded, failed);
   });
