@@ -26,6 +26,8 @@
 #include <qcustomplot.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
@@ -40,6 +42,8 @@
 #include "study/latin_hypercube_dialog.hpp"
 #include "study/study_panel.hpp"
 #include "study/study_plot_view.hpp"
+#include "study/study.hpp"
+#include "study/study_folder.hpp"
 #include "study/study_runner.hpp"
 #include "study/sweep_dialog.hpp"
 #include "study/weighted_sum_dialog.hpp"
@@ -741,6 +745,76 @@ class StudyTest : public QObject {
     QVERIFY2(panel()->setWeightedSum("", {}), qPrintable(panel()->lastError()));
     QVERIFY(panel()->findChild<QWidget*>(QStringLiteral("studyWeightedSums"))->isHidden());
     QCOMPARE(panel()->session().caseCount(), 0);  // the table changed: its cases are read again at the next run
+  }
+
+  // A study folder as `maris-cli study run` leaves it (prepared by the engine's own folder code, each case's
+  // summary.json written as a run writes its scalars): opened in the dock, nothing runs; the plot has the complete
+  // cases' values, a failed case is named in the weighted sum's empty state; once that case is complete too, the
+  // shown sum equals the hand-computed Σ p_i · V_i (1e-12 relative). A folder's study.json opens the folder.
+  void aFinishedStudyFolderOpensWithItsWeightedSum() {
+    QTemporaryDir dir;
+    const std::filesystem::path root = dir.path().toStdString();
+    {
+      std::ofstream(root / "seas.csv") << "geometry.length,probability\nm,-\n120,0.6\n80,0.3\n150,0.1\n";
+    }
+    const auto library = test::rodLibrary();
+    study::SceneSource source;
+    source.scene = [&library](const std::string& name) { return library->findScene(name); };
+    source.builtin = [](const std::string&) -> const Scenario* { return nullptr; };
+    source.builtin_ids = [] { return std::vector<std::string>(); };
+    const Json document = {{"format", study::kStudyFormat}, {"name", "seas"},
+                           {"base", scenarioToJson(window_->document()->scenario())}, {"table", "seas.csv"},
+                           {"results", {"rod_volume"}},
+                           {"weighted_sum", {{"weight", "probability"}, {"results", {"rod_volume"}}}}};
+    const study::Study definition = study::studyFromJson(document, root, source);
+    const auto cases = study::expandStudy(definition);
+    const study::StudyFolder folder{root / "out"};
+    study::prepareStudyFolder(folder, definition, cases, root / "seas.study.json", false);
+    const double radius = window_->document()->scenario().parameters["geometry"]["radius"].get<double>();
+    const double lengths[3] = {120, 80, 150}, weights[3] = {0.6, 0.3, 0.1};
+    auto complete = [&](int i) {
+      const double volume = kPi * radius * radius * lengths[i];
+      const Json summary = {{"results", {{"max_deflection", {{"value", 1.0}, {"unit", "m"}}},
+                                         {"rod_volume", {{"value", volume}, {"unit", "m^3"}, {"label", "Rod volume"}}}}}};
+      std::filesystem::create_directories(folder.caseRun(cases[i].id));
+      std::ofstream(folder.caseRun(cases[i].id) / "summary.json") << summary.dump();
+      return volume;
+    };
+    double expected = weights[0] * complete(0) + weights[2] * complete(2);
+    study::CaseOutcome failed;
+    failed.id = "0002";
+    failed.status = study::CaseStatus::Failed;
+    failed.exit_code = 4;
+    failed.message = "node 3 displacement became non-finite";
+    study::writeCaseOutcome(folder, failed);
+
+    QVERIFY2(panel()->openStudyFolder(QString::fromStdString(folder.root.string())), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().caseCount(), 3);
+    QCOMPARE(panel()->session().outcome(1).status, StudySession::Status::Failed);
+    // The study's listed result first (the plot opens on it), then the others.
+    QCOMPARE(panel()->session().resultNames(), std::vector<std::string>({"rod_volume", "max_deflection"}));
+    const StudyPlotData data = panel()->session().plotData("rod_volume");
+    QCOMPARE(data.result[0], kPi * radius * radius * 120.0);
+    QVERIFY(std::isnan(data.result[1]));
+    QTableWidget* sums = panel()->weightedSumTable();
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m^3]"));
+    QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
+    QCOMPARE(sums->item(0, 2)->text(), QStringLiteral("failed: 0002"));
+    QVERIFY(!panel()->startStudy());  // the CLI runs a folder's cases
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("--resume")), qPrintable(panel()->lastError()));
+
+    // Case 0002 completed (`study run --resume`): its folder's study.json reopens the folder, with the whole sum.
+    expected += weights[1] * complete(1);
+    QVERIFY2(panel()->openStudy(QString::fromStdString(folder.manifest().string())), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().folder(), QString::fromStdString(folder.root.string()));
+    bool ok = false;
+    const double shown = sums->item(0, 1)->text().toDouble(&ok);
+    QVERIFY2(ok, qPrintable(sums->item(0, 1)->text()));
+    QVERIFY2(std::abs(shown - expected) <= 1e-12 * expected, qPrintable(QString::number(shown - expected)));
+    QCOMPARE(sums->item(0, 2)->text(), QString());
+    // Not a study folder: refused by name.
+    QVERIFY(!panel()->openStudyFolder(dir.path()));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("study.json")), qPrintable(panel()->lastError()));
   }
 
   // The dialog: no column, no sum; a column needs at least one result (checked or typed).

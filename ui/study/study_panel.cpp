@@ -7,6 +7,7 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
@@ -109,6 +110,14 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   file_menu->addAction(tr("Open study…"), this, [this] {
     const QString f = askFile(this, false, tr("Open study"), QStringLiteral("studyFolder"), {}, tr("Maris study (*.json)"));
     if (!f.isEmpty()) openStudy(f);
+  });
+  file_menu->addAction(tr("Open study folder…"), this, [this] {
+    const QString last = QSettings().value(QStringLiteral("study/studyFolder")).toString();
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open a study folder (maris-cli study run --out DIR)"),
+                                                          startFolder(last));
+    if (dir.isEmpty()) return;
+    QSettings().setValue(QStringLiteral("study/studyFolder"), QFileInfo(dir).absolutePath());
+    openStudyFolder(dir);
   });
   file_menu->addAction(tr("Save study as…"), this, [this] {
     const QString f = askFile(this, true, tr("Save study"), QStringLiteral("studyFolder"), QStringLiteral("study.json"),
@@ -359,6 +368,11 @@ QString StudyPanel::gridProblem(std::vector<SweepRange> grid) const {
 
 bool StudyPanel::startStudy() {
   if (runner_->isRunning()) return false;
+  if (from_file_ && !session_.folder().isEmpty()) {
+    fail(tr("This study was opened from its folder %1, where maris-cli runs it: `maris-cli study run STUDY --out %1 "
+            "--resume` runs its missing cases.").arg(session_.folder()));
+    return false;
+  }
   const bool file_study = from_file_ && session_.isDefined();
   if (!file_study) {
     if (!document_->isValid()) {
@@ -472,10 +486,33 @@ bool StudyPanel::saveStudy(const QString& file) {
 
 bool StudyPanel::openStudy(const QString& file) {
   if (runner_->isRunning()) return false;
+  // A study folder's record: the folder is what the user means (its cases ran there).
+  const QFileInfo info(file);
+  if (info.fileName() == QLatin1String("study.json") && QFileInfo(info.dir(), QStringLiteral("cases")).isDir())
+    return openStudyFolder(info.absolutePath());
   if (!replaceSession(tr("Could not open the study %1").arg(file),
                       [&](StudySession& next) { next.load(file, *library_); }))
     return false;
   emit message(tr("Opened study %1").arg(file));
+  return true;
+}
+
+bool StudyPanel::openStudyFolder(const QString& dir) {
+  if (runner_->isRunning()) return false;
+  if (!replaceSession(tr("Could not open the study folder %1").arg(dir),
+                      [&](StudySession& next) { next.loadFolder(dir, *library_); }))
+    return false;
+  int ok = 0, failed = 0;
+  for (int i = 0; i < session_.caseCount(); ++i) {
+    ok += session_.outcome(i).status == StudySession::Status::Finished;
+    failed += session_.outcome(i).status == StudySession::Status::Failed;
+  }
+  const int missing = session_.caseCount() - ok - failed;
+  const QString text = tr("Study folder %1: %2 of %3 cases complete, %4 failed, %5 not run")
+                           .arg(dir).arg(ok).arg(session_.caseCount()).arg(failed).arg(missing);
+  summary_->setText(text);
+  emit logged(failed || missing ? 1 : 0, text);
+  emit message(text);
   return true;
 }
 
@@ -543,6 +580,11 @@ bool StudyPanel::replaceSession(const QString& failure, const std::function<void
 
 bool StudyPanel::setWeightedSum(const std::string& column, const std::vector<std::string>& results) {
   if (runner_->isRunning()) return false;
+  if (from_file_ && !session_.folder().isEmpty()) {
+    fail(tr("This study was opened from its folder, whose study.json records the weighted sum it ran with; the dock "
+            "shows it and does not change it."));
+    return false;
+  }
   if (!from_file_ || !session_.isTable()) {
     fail(tr("A weighted sum needs a table study: its weights are a column of the table (Study ▸ New load-case "
             "table study)."));
@@ -576,7 +618,7 @@ bool StudyPanel::setWeightedSum(const std::string& column, const std::vector<std
 }
 
 bool StudyPanel::weightedSumDialog() {
-  if (runner_->isRunning() || !from_file_ || !session_.isTable()) return false;
+  if (runner_->isRunning() || !from_file_ || !session_.isTable() || !session_.folder().isEmpty()) return false;
   std::vector<std::pair<std::string, std::string>> known;
   for (const std::string& name : session_.resultNames()) known.emplace_back(name, session_.resultLabel(name));
   WeightedSumChoice current;
@@ -655,7 +697,9 @@ void StudyPanel::showWeightedSums() {
                                   2 * weighted_table_->frameWidth());
 }
 
-bool StudyPanel::fixedDesign() const { return from_file_ && session_.isDefined() && !session_.isGrid(); }
+bool StudyPanel::fixedDesign() const {
+  return from_file_ && session_.isDefined() && (!session_.isGrid() || !session_.folder().isEmpty());
+}
 
 bool StudyPanel::addParameterDialog() {
   const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
@@ -728,7 +772,11 @@ void StudyPanel::rebuildTable() {
 void StudyPanel::updateButtons() {
   const bool running = runner_->isRunning();
   const bool have_base = (from_file_ && session_.isDefined()) || document_->isValid();
-  run_->setEnabled(!running && have_base && (!grid_.empty() || from_file_));
+  const bool folder = from_file_ && !session_.folder().isEmpty();
+  run_->setEnabled(!running && have_base && (!grid_.empty() || from_file_) && !folder);
+  run_->setToolTip(folder ? tr("A study folder is run by maris-cli: `maris-cli study run STUDY --out %1 --resume` runs "
+                               "its missing cases, then open the folder again").arg(session_.folder())
+                          : QString());
   cancel_->setEnabled(running);
   add_->setEnabled(!running && !fixedDesign());
   add_->setToolTip(fixedDesign() ? tr("A %1 study's cases are its design: start a new study from the open scenario "
@@ -737,7 +785,7 @@ void StudyPanel::updateButtons() {
   // A table or a sample has no ranges to edit: its parameters are named above the table, which is then hidden.
   table_->setVisible(!fixedDesign());
   remove_->setEnabled(!running && !grid_.empty());
-  if (weighted_action_) weighted_action_->setEnabled(!running && from_file_ && session_.isTable());
+  if (weighted_action_) weighted_action_->setEnabled(!running && from_file_ && session_.isTable() && !folder);
   table_->setEnabled(!running);
   if (!running && grid_.empty() && !from_file_)
     summary_->setText(tr("Right-click a number field in the parameter editor: Sweep this parameter…"));

@@ -58,7 +58,13 @@ class StudyPanel : public QWidget {
   // A load-case table study over the open scenario (one case per row of the CSV file); false, with the
   // reason logged, when the table or a case is bad.
   bool openCaseTable(const QString& file);
+  // A study file; or a study folder's study.json, which opens the folder (openStudyFolder).
   bool openStudy(const QString& file);
+  // "Open study folder…": a study that `maris-cli study run` (or a Slurm array) ran, as it stands — its plot,
+  // study.csv and weighted sums from the complete cases' summary.json. Nothing runs (Run study is disabled: the
+  // CLI's `study run --resume` finishes it); a clicked point opens the case's scalars. False, with the reason
+  // logged, when DIR holds no study.
+  bool openStudyFolder(const QString& dir);
   // "New Latin hypercube study…": a sample over the open scenario (the engine draws the cases); false, with
   // the reason logged, when the design is bad.
   bool defineLatinHypercube(const LatinHypercubeDesign& design);

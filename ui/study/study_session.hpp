@@ -46,7 +46,15 @@ class StudySession {
   // Reads a study file (grid, table or Latin hypercube); its base scenario's scene must be in
   // `library`. Throws InputError (every problem) or std::runtime_error.
   void load(const QString& file, const SceneLibrary& library);
-  // Writes the study file atomically. Throws std::runtime_error.
+  // Opens a study folder that `maris-cli study run` (or a Slurm array and `study collect`) wrote: the study as
+  // run (its study.json), every case's scenario, and each case's outcome — the scalars of a complete case's
+  // summary.json (its tables and plots stay in its run folder), the message of a failed one; a case not run
+  // yet is Pending. Nothing runs. Throws InputError (no study there, an unknown scene) or std::runtime_error.
+  void loadFolder(const QString& dir, const SceneLibrary& library);
+  // The study folder it was opened from ("" when the study was defined here or read from a study file).
+  QString folder() const { return folder_; }
+  // Writes the study file atomically. Throws std::runtime_error (also for a study opened from its folder: its
+  // study file is the one it was run from).
   void save(const QString& file) const;
 
   bool isDefined() const { return scene_ != nullptr; }
@@ -96,7 +104,8 @@ class StudySession {
   // Cases not finished or failed become Cancelled (after a cancel).
   void markUnfinishedCancelled();
 
-  // The scalar results the finished cases have, in the order of the first case that has them.
+  // The scalar results the finished cases have: those the study lists ("results") first, in its order, then the
+  // others in the order of the first case that has them.
   std::vector<std::string> resultNames() const;
   // The label for people of result scalar `name` ("σ_b max"), from the first case that has it; else `name`.
   std::string resultLabel(const std::string& name) const;
@@ -117,6 +126,7 @@ class StudySession {
   std::vector<SweepRange> grid_;
   std::shared_ptr<Impl> impl_;  // the engine's study and cases
   std::vector<CaseOutcome> outcomes_;
+  QString folder_;
 };
 
 }  // namespace maris::ui

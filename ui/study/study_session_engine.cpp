@@ -5,7 +5,9 @@
 #include "core/errors.hpp"
 #include "core/run_output.hpp"
 #include "scene_library.hpp"
+#include "core/input_limits.hpp"
 #include "study/study_collect.hpp"
+#include "study/study_folder.hpp"
 #include "study/study_session.hpp"
 #include "study/study_session_impl.hpp"
 
@@ -195,6 +197,7 @@ void StudySession::adopt(const SceneDefinition& scene, const Scenario& base, con
   grid_ = std::move(grid);
   impl_ = std::move(impl);
   outcomes_.clear();
+  folder_.clear();
 }
 
 std::vector<std::string> StudySession::parameterPaths() const {
@@ -222,10 +225,81 @@ void StudySession::load(const QString& file, const SceneLibrary& library) {
   grid_ = std::move(grid);
   impl_ = std::move(impl);
   outcomes_.clear();
+  folder_.clear();
+}
+
+void StudySession::loadFolder(const QString& dir, const SceneLibrary& library) {
+  const study::StudyFolder folder{std::filesystem::absolute(dir.toStdString()).lexically_normal()};
+  const study::StudyManifest manifest = study::readManifest(folder);  // InputError when DIR holds no study
+  const SceneDefinition* scene = library.findScene(manifest.scene);
+  if (!scene) throw InputError("scene", manifest.scene, "is not a scene of this program");
+  auto impl = std::make_shared<Impl>();
+  study::Study& s = impl->study;
+  s.document = manifest.json.value("study", Json::object());
+  s.name = s.document.is_object() ? s.document.value("name", std::string()) : std::string();
+  if (s.name.empty()) s.name = folder.root.filename().string();
+  s.folder = folder.root;
+  const std::string design = manifest.json.value("design", std::string("grid"));
+  s.kind = design == "table"             ? study::DesignKind::Table
+           : design == "latin_hypercube" ? study::DesignKind::LatinHypercube
+                                         : study::DesignKind::Grid;
+  s.parameters = manifest.parameters;
+  s.results = manifest.results;
+  s.weight_column = manifest.weight_column;
+  s.weights = manifest.weights;
+  s.weighted_results = manifest.weighted_results;
+  impl->log = logParameters(s);
+  std::vector<CaseOutcome> outcomes;
+  for (std::size_t i = 0; i < manifest.ids.size(); ++i) {
+    const std::string& id = manifest.ids[i];
+    const std::filesystem::path file = folder.caseScenario(id);
+    study::StudyCase c;
+    c.id = id;
+    c.values = i < manifest.values.size() ? manifest.values[i] : std::vector<Json>();
+    c.scenario = scenarioFromJson(parseJsonLimited(readInputFile(file, file.string(), InputLimits::kScenarioFileBytes), file.string()));
+    impl->cases.push_back(std::move(c));
+    CaseOutcome outcome;
+    const auto record = study::readCaseOutcome(folder, id);
+    if (record) outcome.wall_time_s = record->wall_s;
+    if (const auto summary = folder.caseSummary(id)) {
+      // The scalars as the run wrote them (labels and units for the plot's axes and the sums); a case's tables
+      // are in its run folder.
+      auto results = std::make_shared<Results>();
+      if (const auto r = summary->find("results"); r != summary->end() && r->is_object())
+        for (const auto& [name, value] : r->items())
+          if (value.is_object() && value.contains("value") && value["value"].is_number())
+            results->addScalar(name, value["value"].get<double>(), value.value("unit", std::string("-")),
+                               value.value("description", std::string()), value.value("label", std::string()));
+      outcome.status = Status::Finished;
+      outcome.results = std::move(results);
+    } else if (record && (record->status == study::CaseStatus::Failed || record->status == study::CaseStatus::Timeout)) {
+      outcome.status = Status::Failed;
+      outcome.error = QString::fromStdString(record->status == study::CaseStatus::Timeout ? "timed out: " + record->message
+                                                                                          : record->message);
+    }
+    outcomes.push_back(std::move(outcome));
+  }
+  // The base as the plot and the dock name it: the study's name over the first case's scenario (the base itself
+  // is not in the folder; the cases are).
+  Scenario base = impl->cases.empty() ? Scenario() : impl->cases.front().scenario;
+  base.name = s.name;
+  base.scene = manifest.scene;
+  s.base = base;
+  s.scene = nullptr;
+  scene_ = std::make_shared<const SceneDefinition>(*scene);
+  s.scene = scene_.get();
+  base_ = std::move(base);
+  grid_.clear();
+  impl_ = std::move(impl);
+  outcomes_ = std::move(outcomes);
+  folder_ = QString::fromStdString(folder.root.string());
 }
 
 void StudySession::save(const QString& file) const {
   if (!impl_) throw std::runtime_error("no study is defined");
+  if (!folder_.isEmpty())
+    throw std::runtime_error("this study was opened from its folder " + folder_.toStdString() +
+                             "; its study file is the one it was run from (study.json names it as study_file)");
   Json document = impl_->study.document;
   // The base as it runs (a file or built-in name read relative to the old study file would not resolve
   // from another folder); a table is written with its absolute path for the same reason.
