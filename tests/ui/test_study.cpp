@@ -812,6 +812,14 @@ class StudyTest : public QObject {
     QVERIFY2(ok, qPrintable(sums->item(0, 1)->text()));
     QVERIFY2(std::abs(shown - expected) <= 1e-12 * expected, qPrintable(QString::number(shown - expected)));
     QCOMPARE(sums->item(0, 2)->text(), QString());
+    // A sweep run from the editor while the folder is shown is a study of the open scenario (the folder holds no base).
+    panel()->setSweepPrompt(answer({"", 0.2, 0.8, 3, false}));
+    QVERIFY(panel()->sweep(QStringLiteral("geometry.radius")));
+    QVERIFY(runAndWait());
+    QCOMPARE(panel()->session().folder(), QString());
+    QCOMPARE(panel()->session().caseCount(), 3);
+    QCOMPARE(panel()->session().caseScenario(2).parameters["geometry"]["length"],
+             window_->document()->scenario().parameters["geometry"]["length"]);
     // Not a study folder: refused by name.
     QVERIFY(!panel()->openStudyFolder(dir.path()));
     QVERIFY2(panel()->lastError().contains(QStringLiteral("study.json")), qPrintable(panel()->lastError()));

@@ -294,6 +294,8 @@ bool StudyPanel::sweep(const QString& path) {
              .arg(session_.kindName()));
     return false;
   }
+  // A study folder holds its cases, not its base: a sweep run from the editor is then one of the open scenario.
+  if (!answer->second && from_file_ && !session_.folder().isEmpty()) from_file_ = false;
   if (!answer->second) grid_.clear();
   addParameter(answer->first);
   return answer->second || startStudy();
