@@ -307,6 +307,15 @@ TEST_F(CliStudy, AFatigueScatterStudyCollectsEachSeaStatesAnnualDamage) {
   const double year = 0.75 * damage[0] + 0.25 * damage[1];
   EXPECT_NEAR(sums[0].at("value").get<double>(), year, 1e-15 * year);
   EXPECT_TRUE(contains(run.out, "weighted sum of max_fatigue_damage_per_year over probability: ")) << run.out;
+
+  // A case gone (a node lost its folder): collect says the sum waits for it, by name, and records no value.
+  fs::remove_all(dir_ / "scatter" / "cases" / "0002");
+  const auto partial = runCli({"study", "collect", "scatter", "--no-plots"}, dir_.string());
+  EXPECT_EQ(partial.exit_code, 3) << partial.err;
+  EXPECT_TRUE(contains(partial.out, "over probability: not yet; case 0002 has weight but no value")) << partial.out;
+  const Json waiting = Json::parse(slurp(dir_ / "scatter" / "study.json")).at("collected").at("weighted_sums").at(0);
+  EXPECT_TRUE(waiting.at("value").is_null());
+  EXPECT_EQ(waiting.at("missing"), Json::array({"0002"}));
 }
 
 // A study over a table cell writes its plot under a portable file name (the cell's "[0]" as "_0"), and no file
