@@ -800,6 +800,14 @@ class StudyTest : public QObject {
     QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m^3]"));
     QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
     QCOMPARE(sums->item(0, 2)->text(), QStringLiteral("failed: 0002"));
+    // A clicked case opens its scalars in the results view (its tables stay in its run folder).
+    QVERIFY(window_->openStudyCase(2));
+    QTableWidget* scalars = window_->summary()->table();
+    bool volume_shown = false;
+    for (int row = 0; row < scalars->rowCount(); ++row)
+      volume_shown = volume_shown || (scalars->item(row, 0) && scalars->item(row, 0)->text() == QStringLiteral("Rod volume"));
+    QVERIFY(volume_shown);
+    QVERIFY(!window_->openStudyCase(1));  // the failed case has no results to open
     QVERIFY(!panel()->startStudy());  // the CLI runs a folder's cases
     QVERIFY2(panel()->lastError().contains(QStringLiteral("--resume")), qPrintable(panel()->lastError()));
 
