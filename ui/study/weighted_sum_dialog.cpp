@@ -9,6 +9,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QVBoxLayout>
 
 namespace maris::ui {
@@ -19,6 +20,7 @@ WeightedSumDialog::WeightedSumDialog(const std::vector<std::string>& columns,
     : QDialog(parent), column_(new QComboBox(this)), results_(new QListWidget(this)), other_(new QLineEdit(this)),
       problem_(new QLabel(this)) {
   setWindowTitle(tr("Weighted sum"));
+  setMinimumWidth(560);  // the results' labels and names, and the hint in the field, whole
   auto* intro = new QLabel(tr("A column of the table that is no parameter can hold each case's weight (a sea "
                               "state's probability, a number ≥ 0). The study then reports Σ weight · result of "
                               "each chosen scalar result over its cases, as <tt>maris-cli study collect</tt> "
@@ -50,6 +52,10 @@ WeightedSumDialog::WeightedSumDialog(const std::vector<std::string>& columns,
     if (std::none_of(known.begin(), known.end(), [&](const auto& k) { return k.first == name; }))
       other << QString::fromStdString(name);
   if (known.empty()) results_->hide();
+  // As tall as its results, up to eight rows (a scene reports a dozen or more scalars: it scrolls then).
+  if (results_->count() > 0)
+    results_->setMaximumHeight(std::min(results_->count(), 8) * results_->sizeHintForRow(0) + 2 * results_->frameWidth() +
+                               results_->horizontalScrollBar()->sizeHint().height());
   other_->setObjectName(QStringLiteral("otherWeightedResults"));
   other_->setText(other.join(QStringLiteral(", ")));
   other_->setPlaceholderText(known.empty() ? tr("names as in a run's summary.json, e.g. max_fatigue_damage_per_year")
