@@ -105,8 +105,9 @@ int collectAndReport(const StudyFolder& folder, StudyManifest& manifest, bool no
       std::printf("weighted sum of %s over %s: %.6g %s (weights add up to %.6g)\n", sum.result.c_str(),
                   manifest.weight_column.c_str(), *sum.value, sum.unit.c_str(), sum.weight_total);
     else
-      std::printf("weighted sum of %s over %s: not yet; cases %s have weight but no value\n", sum.result.c_str(),
-                  manifest.weight_column.c_str(), echoText(ids, 400).c_str());
+      std::printf("weighted sum of %s over %s: not yet; %s %s %s weight but no value\n", sum.result.c_str(),
+                  manifest.weight_column.c_str(), sum.missing.size() == 1 ? "case" : "cases", echoText(ids, 400).c_str(),
+                  sum.missing.size() == 1 ? "has" : "have");
   }
   std::printf("study.csv written to %s (%zu results per case)%s\n", folder.csv().c_str(),
               collected.result_names.size(),

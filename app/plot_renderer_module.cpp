@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QByteArray>
 
+#include <cstdio>
 #include <string>
 
 #include "core/version.hpp"
@@ -15,9 +16,31 @@ namespace {
 using maris::cli::StudyPng;
 namespace fs = std::filesystem;
 
+// Qt warns when XDG_RUNTIME_DIR is unset or unusable (a Slurm job, a container, a cron job: no login session) and
+// falls back to a folder of its own, which off-screen rendering never needs; the warning would be the only line a
+// plot-writing run or study collect prints on stderr, and reads like a fault. Every other message passes on.
+QtMessageHandler previous_message_handler = nullptr;
+
+void plotMessageHandler(QtMsgType type, const QMessageLogContext& context, const QString& text) {
+  if (type == QtWarningMsg && text.startsWith(QLatin1String("QStandardPaths: "))) return;
+  if (previous_message_handler)
+    previous_message_handler(type, context, text);
+  else
+    std::fprintf(stderr, "%s\n", qPrintable(qFormatLogMessage(type, context, text)));
+}
+
+// The filter while one call renders (the module is loaded into maris-cli, whose own messages are not Qt's).
+struct QuietRuntimeDirWarning {
+  QuietRuntimeDirWarning() { previous_message_handler = qInstallMessageHandler(plotMessageHandler); }
+  ~QuietRuntimeDirWarning() { qInstallMessageHandler(previous_message_handler); }
+  QuietRuntimeDirWarning(const QuietRuntimeDirWarning&) = delete;
+  QuietRuntimeDirWarning& operator=(const QuietRuntimeDirWarning&) = delete;
+};
+
 // The CLI never needs a display: Qt's off-screen platform. One application object per call (a process
 // writes its plots once).
 std::vector<fs::path> writeRunPngs(const fs::path& dir, const maris::Results& results, int argc, char** argv) {
+  const QuietRuntimeDirWarning quiet;
   qputenv("QT_QPA_PLATFORM", "offscreen");
   QApplication app(argc, argv);
   std::vector<fs::path> files;
@@ -32,6 +55,7 @@ std::vector<fs::path> writeRunPngs(const fs::path& dir, const maris::Results& re
 std::vector<fs::path> writeStudyPngs(const std::vector<StudyPng>& pngs, int argc, char** argv) {
   std::vector<fs::path> files;
   if (pngs.empty()) return files;
+  const QuietRuntimeDirWarning quiet;
   qputenv("QT_QPA_PLATFORM", "offscreen");
   QApplication app(argc, argv);
   for (const auto& png : pngs)

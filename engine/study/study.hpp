@@ -116,6 +116,10 @@ std::vector<StudyCase> expandStudy(const Study& study);
 // limits), each named "case 0003: parameters.x", led by one line listing all bad cases. Empty: all can run.
 std::vector<FieldError> caseErrors(const Study& study, const std::vector<StudyCase>& cases, bool allow_large);
 
+// The column names of a table study's CSV file (its header row, read as "table" reads it): a front end offers
+// those that are no parameter as the weight column of a "weighted_sum". Throws InputError.
+std::vector<std::string> tableColumns(const std::filesystem::path& file);
+
 // A cell of a table field as a varied parameter, "TABLE[ROW].COLUMN": "current.profile[1].speed" is the speed of
 // the current profile's second row (rows counted from 0, as the schema's messages count them).
 struct TableCell {

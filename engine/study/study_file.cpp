@@ -7,6 +7,7 @@
 #include "core/resources.hpp"
 #include "study/study.hpp"
 #include "study/study_design.hpp"
+#include "study/study_folder.hpp"
 
 namespace maris::study {
 
@@ -169,7 +170,9 @@ const char* toString(DesignKind kind) {
 bool isStudyDocument(const Json& document) {
   if (!document.is_object()) return false;
   const auto it = document.find("format");
-  return it != document.end() && it->is_string() && it->get<std::string>().rfind("maris-study/", 0) == 0;
+  // A study folder's record (its study.json) counts too, so that `validate` says what it is.
+  return it != document.end() && it->is_string() &&
+         (it->get<std::string>().rfind("maris-study/", 0) == 0 || it->get<std::string>() == kStudyRunFormat);
 }
 
 SceneSource catalogSource() {
@@ -194,6 +197,15 @@ Study studyFromJson(const Json& document, const std::filesystem::path& folder, c
   study.folder = std::filesystem::absolute(folder).lexically_normal();
   study.document = document;
   const auto format = document.find("format");
+  // The study.json that `study run` writes into its folder is the record of a study, not a study: name the file
+  // it was run from instead of listing every field that a study file does not have.
+  if (format != document.end() && *format == kStudyRunFormat) {
+    const std::string from = document.value("study_file", std::string());
+    throw InputError("format", jsonSnippet(*format),
+                     "is a study folder's record (the study.json that `maris-cli study run` writes), not a study file" +
+                         (from.empty() ? std::string() : "; the study was run from " + echoText(from)) +
+                         "; `maris-cli study collect DIR` collects that folder again");
+  }
   if (format == document.end())
     errors.push_back({"format", "", std::string("is missing; expected \"") + kStudyFormat + "\""});
   else if (!format->is_string() || format->get<std::string>() != kStudyFormat)

@@ -56,6 +56,26 @@ bool unitMatches(const std::string& written, const std::string& unit) {
   return plain(written) == plain(unit);
 }
 
+// The lines of a table's text that hold cells: (line number, text), without blank and comment lines.
+std::vector<std::pair<std::size_t, std::string>> tableLines(const std::string& text) {
+  std::vector<std::pair<std::size_t, std::string>> lines;
+  std::size_t number = 0, start = 0;
+  while (start < text.size()) {
+    const auto end = text.find('\n', start);
+    const std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    ++number;
+    if (!trim(line).empty() && trim(line)[0] != '#') lines.emplace_back(number, line);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+// The separator a header uses: ',', else ';', else a tab.
+char tableSeparator(const std::string& header) {
+  return header.find(',') != std::string::npos ? ',' : header.find(';') != std::string::npos ? ';' : '\t';
+}
+
 }  // namespace
 
 void readTable(const Json& table, const SceneDefinition& scene, Study& study, std::vector<FieldError>& errors) {
@@ -74,24 +94,13 @@ void readTable(const Json& table, const SceneDefinition& scene, Study& study, st
     errors.insert(errors.end(), e.errors().begin(), e.errors().end());
     return;
   }
-  std::vector<std::pair<std::size_t, std::string>> lines;  // (line number, text) without blanks and comments
-  std::size_t number = 0, start = 0;
-  while (start < text.size()) {
-    const auto end = text.find('\n', start);
-    const std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    ++number;
-    if (!trim(line).empty() && trim(line)[0] != '#') lines.emplace_back(number, line);
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
+  const auto lines = tableLines(text);
   if (lines.empty()) {
     errors.push_back({"table", value, "has no header row (one parameter path per column)"});
     return;
   }
   const std::string& header = lines[0].second;
-  const char separator = header.find(',') != std::string::npos   ? ','
-                         : header.find(';') != std::string::npos ? ';'
-                                                                 : '\t';
+  const char separator = tableSeparator(header);
   const auto names = splitCells(header, separator);
   std::vector<ParamKind> kinds;
   std::vector<std::string> units;
@@ -175,3 +184,15 @@ void readTable(const Json& table, const SceneDefinition& scene, Study& study, st
 }
 
 }  // namespace maris::study::detail
+
+namespace maris::study {
+
+std::vector<std::string> tableColumns(const std::filesystem::path& file) {
+  const std::string text = readInputFile(file, "table", InputLimits::kDataFileBytes);
+  checkDataShape(text, "table", file.string());
+  const auto lines = detail::tableLines(text);
+  if (lines.empty()) throw InputError("table", "\"" + echoText(file.string()) + "\"", "has no header row (one parameter path per column)");
+  return detail::splitCells(lines[0].second, detail::tableSeparator(lines[0].second));
+}
+
+}  // namespace maris::study

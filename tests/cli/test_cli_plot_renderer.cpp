@@ -71,6 +71,19 @@ TEST(CliPlotRenderer, ARunWritesItsPlotsThroughTheModule) {
   fs::remove_all(dir);
 }
 
+// Without a login session (a Slurm job, a container: no XDG_RUNTIME_DIR) Qt warns about its runtime folder, which
+// off-screen rendering does not use: the module keeps that line out of the run's stderr.
+TEST(CliPlotRenderer, NoRuntimeFolderWarningWithoutALoginSession) {
+  const fs::path dir = scratch("session");
+  const auto r = runCli({"run", "riser_cantilever_tip_load", "--set", "solver.end_time=0", "--out", (dir / "out").string()},
+                        ".", 0.0, 2, "unset XDG_RUNTIME_DIR;");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "out" / "summary.json"));
+  EXPECT_EQ(r.err.find("QStandardPaths"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("XDG_RUNTIME_DIR"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
 TEST(CliPlotRenderer, WithoutTheModuleARunWithPlotsIsRefusedBeforeTheSolve) {
   const fs::path dir = scratch("missing");
   fs::copy_file(maris::test::cliPath(), dir / "maris-cli");

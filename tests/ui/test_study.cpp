@@ -4,7 +4,8 @@
 // clicked case in the results view, writes study.csv and the plot; two parameters give a line per
 // value and a heat map; Cancel stops the pool; a study file saves and reopens; a study with a bad
 // case runs nothing; a load-case table runs its rows; a Latin hypercube built in its dialog samples
-// every stratum; a table cell is added, edited, saved and reopened as a parameter.
+// every stratum; a table cell is added, edited, saved and reopened as a parameter; a table study's weighted
+// sum shows in the dock (the hand-computed sum, the cases it still waits for).
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -25,6 +26,8 @@
 #include <qcustomplot.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
@@ -39,8 +42,11 @@
 #include "study/latin_hypercube_dialog.hpp"
 #include "study/study_panel.hpp"
 #include "study/study_plot_view.hpp"
+#include "study/study.hpp"
+#include "study/study_folder.hpp"
 #include "study/study_runner.hpp"
 #include "study/sweep_dialog.hpp"
+#include "study/weighted_sum_dialog.hpp"
 #include "test_scene.hpp"
 #include "ui_test_support.hpp"
 
@@ -337,6 +343,20 @@ class StudyTest : public QObject {
     file.close();
     QVERIFY2(panel()->openCaseTable(table), qPrintable(panel()->lastError()));
     QCOMPARE(panel()->session().kindName(), QStringLiteral("table"));
+    // The table is the design: no grid parameter is added to it (that would replace it by a grid over its base),
+    // and the empty grid table is hidden.
+    QVERIFY(panel()->parameterTable()->isHidden());
+    bool asked = false;
+    panel()->setParameterPrompt([&asked](const SceneDefinition&, const Json&, const std::vector<std::string>&) {
+      asked = true;
+      return std::string("geometry.radius");
+    });
+    QVERIFY(!panel()->addParameterDialog());
+    QVERIFY(!asked);
+    panel()->setSweepPrompt(answer({"", 0.2, 0.8, 4, false}, true));
+    QVERIFY(!panel()->sweep(QStringLiteral("geometry.radius")));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("cannot be added")), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().kindName(), QStringLiteral("table"));
     QVERIFY(panel()->startStudy());
     QVERIFY(runAndWait());
     const StudyPlotData data = panel()->session().plotData("rod_volume");
@@ -599,6 +619,231 @@ class StudyTest : public QObject {
       // 1000 px hold the views and the left column but not the dock beside them; 2600 px do.
       QCOMPARE(dock->isFloating(), width == 1000);
     }
+  }
+
+  // A scatter-diagram-like table: its column "probability" varies no parameter, so opening the table asks
+  // whether it is the cases' weight (the prompt answered without a dialog); the dock shows the weighted sum
+  // Σ p_i · V_i with V_i = pi r_i^2 L_i (the test scene's closed form): "—" and every case named before the
+  // run, the value after it (hand-computed sum, 1e-12 relative). A failed case empties it again and is named.
+  // The weighted result can be changed after the run (the outcomes stay: no rerun), the sum saves and
+  // reopens with the study, and clearing it hides the sums.
+  void aTableStudyShowsItsWeightedSum() {
+    QTemporaryDir dir;
+    const QString table = dir.filePath(QStringLiteral("sea_states.csv"));
+    QFile file(table);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.length,geometry.radius,probability,run.fail\nm,m,-,-\n"
+               "120,0.3,0.5,false\n80,0.2,0.3,false\n150,0.5,0.2,false\n");
+    file.close();
+    const double rows[3][3] = {{120, 0.3, 0.5}, {80, 0.2, 0.3}, {150, 0.5, 0.2}};
+    double expected = 0.0, weight_total = 0.0;
+    for (const auto& r : rows) {
+      expected += r[2] * (kPi * r[1] * r[1] * r[0]);
+      weight_total += r[2];
+    }
+    std::vector<std::string> offered;
+    panel()->setWeightedSumPrompt([&offered](const std::vector<std::string>& columns, const auto&, const WeightedSumChoice&) {
+      offered = columns;
+      return std::optional<WeightedSumChoice>(WeightedSumChoice{"probability", {"rod_volume"}});
+    });
+    QVERIFY2(panel()->openCaseTable(table), qPrintable(panel()->lastError()));
+    QCOMPARE(offered, std::vector<std::string>({"probability"}));  // the parameters are no candidates
+    // Nor is a misspelt parameter (the engine refuses it with a guess): only the weight is offered.
+    const QString misspelt = dir.filePath(QStringLiteral("misspelt.csv"));
+    QFile misspelt_file(misspelt);
+    QVERIFY(misspelt_file.open(QIODevice::WriteOnly));
+    misspelt_file.write("geometry.lenght,probability\n120,1\n");
+    misspelt_file.close();
+    QCOMPARE(StudySession::nonParameterColumns(*window_->document()->scene(), window_->document()->scenario().parameters,
+                                               misspelt),
+             std::vector<std::string>({"probability"}));
+    QCOMPARE(panel()->session().weightColumn(), std::string("probability"));
+    QTableWidget* sums = panel()->weightedSumTable();
+    QVERIFY(!panel()->findChild<QWidget*>(QStringLiteral("studyWeightedSums"))->isHidden());
+    QVERIFY2(panel()->weightedSumHeading()->text().contains(QStringLiteral("probability")),
+             qPrintable(panel()->weightedSumHeading()->text()));
+    QCOMPARE(sums->rowCount(), 1);
+    // Before a run the result's unit is not known yet (the runs report it); its label is read from its name.
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume"));
+    QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
+    QVERIFY2(sums->item(0, 2)->text().contains(QStringLiteral("run the study")), qPrintable(sums->item(0, 2)->text()));
+
+    QSignalSpy logged(panel(), &StudyPanel::logged);
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    bool any_sum_logged = false;
+    for (const auto& entry : logged)
+      any_sum_logged = any_sum_logged || entry.at(1).toString().startsWith(QStringLiteral("Weighted sum of rod_volume over probability: "));
+    QVERIFY(any_sum_logged);
+    bool ok = false;
+    const double shown = sums->item(0, 1)->text().toDouble(&ok);
+    QVERIFY2(ok, qPrintable(sums->item(0, 1)->text()));
+    QVERIFY2(std::abs(shown - expected) <= 1e-12 * expected, qPrintable(QString::number(shown - expected)));
+    QCOMPARE(sums->item(0, 2)->text(), QString());
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m^3]"));
+    test::keepScreenshot(panel()->grab().toImage(), QStringLiteral("study_weighted_sum"));
+    QVERIFY2(panel()->weightedSumHeading()->text().contains(QStringLiteral("add up to 1")),
+             qPrintable(panel()->weightedSumHeading()->text()));
+    QCOMPARE(weight_total, 1.0);
+
+    // Another result, chosen after the run through "Weighted sum…": shown at once from the same cases.
+    QSignalSpy started(panel()->runner(), &StudyRunner::started);
+    panel()->setWeightedSumPrompt([](const auto& columns, const auto& known, const WeightedSumChoice& current) {
+      const bool has_volume = std::any_of(known.begin(), known.end(), [](const auto& k) { return k.first == "rod_volume"; });
+      if (columns != std::vector<std::string>({"probability"}) || !has_volume || current.column != "probability")
+        return std::optional<WeightedSumChoice>();
+      return std::optional<WeightedSumChoice>(WeightedSumChoice{"probability", {"max_deflection", "rod_volume"}});
+    });
+    QVERIFY(panel()->weightedSumDialog());
+    QCOMPARE(started.count(), 0);
+    QCOMPARE(sums->rowCount(), 2);
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Max deflection [m]"));
+    double deflection_sum = 0.0;
+    for (int i = 0; i < 3; ++i)
+      deflection_sum += rows[i][2] * panel()->session().outcome(i).results->findScalar("max_deflection")->value;
+    QVERIFY(std::abs(sums->item(0, 1)->text().toDouble() - deflection_sum) <= 1e-12 * std::abs(deflection_sum));
+    QVERIFY(std::abs(sums->item(1, 1)->text().toDouble() - expected) <= 1e-12 * expected);
+
+    // Saved and reopened, the study keeps its weighted sum; run again, the same value.
+    const QString study_file = dir.filePath(QStringLiteral("scatter.study.json"));
+    QVERIFY2(panel()->saveStudy(study_file), qPrintable(panel()->lastError()));
+    panel()->clearParameters();
+    QVERIFY(panel()->findChild<QWidget*>(QStringLiteral("studyWeightedSums"))->isHidden());
+    QVERIFY2(panel()->openStudy(study_file), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().weightedResults(), std::vector<std::string>({"max_deflection", "rod_volume"}));
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    QVERIFY(std::abs(sums->item(1, 1)->text().toDouble() - expected) <= 1e-12 * expected);
+
+    // The second case fails: no sum, and the case is named.
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.length,geometry.radius,probability,run.fail\nm,m,-,-\n"
+               "120,0.3,0.5,false\n80,0.2,0.3,true\n150,0.5,0.2,false\n");
+    file.close();
+    panel()->setWeightedSumPrompt([](const auto&, const auto&, const WeightedSumChoice&) {
+      return std::optional<WeightedSumChoice>(WeightedSumChoice{"probability", {"rod_volume"}});
+    });
+    QVERIFY2(panel()->openCaseTable(table), qPrintable(panel()->lastError()));
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
+    QCOMPARE(sums->item(0, 2)->text(), QStringLiteral("failed: 0002"));
+
+    // Not cleared while the table has its weight column (a column of no parameter is read only as weights);
+    // a weight column that is not in the table is refused by name.
+    QVERIFY(!panel()->setWeightedSum("", {}));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("column probability varies no parameter")),
+             qPrintable(panel()->lastError()));
+    QVERIFY(!panel()->setWeightedSum("probabilty", {"rod_volume"}));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("did you mean 'probability'")), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().weightColumn(), std::string("probability"));  // unchanged
+
+    // The column removed from the table: cleared, nothing shown.
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("geometry.length,geometry.radius\n120,0.3\n80,0.2\n");
+    file.close();
+    QVERIFY2(panel()->setWeightedSum("", {}), qPrintable(panel()->lastError()));
+    QVERIFY(panel()->findChild<QWidget*>(QStringLiteral("studyWeightedSums"))->isHidden());
+    QCOMPARE(panel()->session().caseCount(), 0);  // the table changed: its cases are read again at the next run
+  }
+
+  // A study folder as `maris-cli study run` leaves it (prepared by the engine's own folder code, each case's
+  // summary.json written as a run writes its scalars): opened in the dock, nothing runs; the plot has the complete
+  // cases' values, a failed case is named in the weighted sum's empty state; once that case is complete too, the
+  // shown sum equals the hand-computed Σ p_i · V_i (1e-12 relative). A folder's study.json opens the folder.
+  void aFinishedStudyFolderOpensWithItsWeightedSum() {
+    QTemporaryDir dir;
+    const std::filesystem::path root = dir.path().toStdString();
+    {
+      std::ofstream(root / "seas.csv") << "geometry.length,probability\nm,-\n120,0.6\n80,0.3\n150,0.1\n";
+    }
+    const auto library = test::rodLibrary();
+    study::SceneSource source;
+    source.scene = [&library](const std::string& name) { return library->findScene(name); };
+    source.builtin = [](const std::string&) -> const Scenario* { return nullptr; };
+    source.builtin_ids = [] { return std::vector<std::string>(); };
+    const Json document = {{"format", study::kStudyFormat}, {"name", "seas"},
+                           {"base", scenarioToJson(window_->document()->scenario())}, {"table", "seas.csv"},
+                           {"results", {"rod_volume"}},
+                           {"weighted_sum", {{"weight", "probability"}, {"results", {"rod_volume"}}}}};
+    const study::Study definition = study::studyFromJson(document, root, source);
+    const auto cases = study::expandStudy(definition);
+    const study::StudyFolder folder{root / "out"};
+    study::prepareStudyFolder(folder, definition, cases, root / "seas.study.json", false);
+    const double radius = window_->document()->scenario().parameters["geometry"]["radius"].get<double>();
+    const double lengths[3] = {120, 80, 150}, weights[3] = {0.6, 0.3, 0.1};
+    auto complete = [&](int i) {
+      const double volume = kPi * radius * radius * lengths[i];
+      const Json summary = {{"results", {{"max_deflection", {{"value", 1.0}, {"unit", "m"}}},
+                                         {"rod_volume", {{"value", volume}, {"unit", "m^3"}, {"label", "Rod volume"}}}}}};
+      std::filesystem::create_directories(folder.caseRun(cases[i].id));
+      std::ofstream(folder.caseRun(cases[i].id) / "summary.json") << summary.dump();
+      return volume;
+    };
+    double expected = weights[0] * complete(0) + weights[2] * complete(2);
+    study::CaseOutcome failed;
+    failed.id = "0002";
+    failed.status = study::CaseStatus::Failed;
+    failed.exit_code = 4;
+    failed.message = "node 3 displacement became non-finite";
+    study::writeCaseOutcome(folder, failed);
+
+    QVERIFY2(panel()->openStudyFolder(QString::fromStdString(folder.root.string())), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().caseCount(), 3);
+    QCOMPARE(panel()->session().outcome(1).status, StudySession::Status::Failed);
+    // The study's listed result first (the plot opens on it), then the others.
+    QCOMPARE(panel()->session().resultNames(), std::vector<std::string>({"rod_volume", "max_deflection"}));
+    const StudyPlotData data = panel()->session().plotData("rod_volume");
+    QCOMPARE(data.result[0], kPi * radius * radius * 120.0);
+    QVERIFY(std::isnan(data.result[1]));
+    QTableWidget* sums = panel()->weightedSumTable();
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m^3]"));
+    QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
+    QCOMPARE(sums->item(0, 2)->text(), QStringLiteral("failed: 0002"));
+    // A clicked case opens its scalars in the results view (its tables stay in its run folder).
+    QVERIFY(window_->openStudyCase(2));
+    QTableWidget* scalars = window_->summary()->table();
+    bool volume_shown = false;
+    for (int row = 0; row < scalars->rowCount(); ++row)
+      volume_shown = volume_shown || (scalars->item(row, 0) && scalars->item(row, 0)->text() == QStringLiteral("Rod volume"));
+    QVERIFY(volume_shown);
+    QVERIFY(!window_->openStudyCase(1));  // the failed case has no results to open
+    QVERIFY(!panel()->startStudy());  // the CLI runs a folder's cases
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("--resume")), qPrintable(panel()->lastError()));
+
+    // Case 0002 completed (`study run --resume`): its folder's study.json reopens the folder, with the whole sum.
+    expected += weights[1] * complete(1);
+    QVERIFY2(panel()->openStudy(QString::fromStdString(folder.manifest().string())), qPrintable(panel()->lastError()));
+    QCOMPARE(panel()->session().folder(), QString::fromStdString(folder.root.string()));
+    bool ok = false;
+    const double shown = sums->item(0, 1)->text().toDouble(&ok);
+    QVERIFY2(ok, qPrintable(sums->item(0, 1)->text()));
+    QVERIFY2(std::abs(shown - expected) <= 1e-12 * expected, qPrintable(QString::number(shown - expected)));
+    QCOMPARE(sums->item(0, 2)->text(), QString());
+    // A sweep run from the editor while the folder is shown is a study of the open scenario (the folder holds no base).
+    panel()->setSweepPrompt(answer({"", 0.2, 0.8, 3, false}));
+    QVERIFY(panel()->sweep(QStringLiteral("geometry.radius")));
+    QVERIFY(runAndWait());
+    QCOMPARE(panel()->session().folder(), QString());
+    QCOMPARE(panel()->session().caseCount(), 3);
+    QCOMPARE(panel()->session().caseScenario(2).parameters["geometry"]["length"],
+             window_->document()->scenario().parameters["geometry"]["length"]);
+    // Not a study folder: refused by name.
+    QVERIFY(!panel()->openStudyFolder(dir.path()));
+    QVERIFY2(panel()->lastError().contains(QStringLiteral("study.json")), qPrintable(panel()->lastError()));
+  }
+
+  // The dialog: no column, no sum; a column needs at least one result (checked or typed).
+  void theWeightedSumDialogNeedsAResultForAColumn() {
+    WeightedSumDialog dialog({"probability"}, {{"rod_volume", "rod_volume"}}, WeightedSumChoice{});
+    QVERIFY(dialog.okButton()->isEnabled());
+    QCOMPARE(dialog.choice(), WeightedSumChoice{});
+    dialog.columnBox()->setCurrentIndex(dialog.columnBox()->findText(QStringLiteral("probability")));
+    QVERIFY(!dialog.okButton()->isEnabled());
+    dialog.resultList()->item(0)->setCheckState(Qt::Checked);
+    QVERIFY(dialog.okButton()->isEnabled());
+    dialog.otherResults()->setText(QStringLiteral(" max_deflection , rod_volume"));
+    QCOMPARE(dialog.choice(), (WeightedSumChoice{"probability", {"rod_volume", "max_deflection"}}));
   }
 
   void aStudyWithABadCaseRunsNothing() {

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <thread>
 
+#include <QAction>
 #include <QComboBox>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
@@ -58,7 +61,9 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
       base_(new QLabel(this)), table_(new QTableWidget(0, kColumnCount, this)),
       add_(new QPushButton(tr("Add parameter…"), this)), remove_(new QPushButton(tr("Remove"), this)),
       run_(new QPushButton(tr("Run study"), this)), cancel_(new QPushButton(tr("Cancel"), this)),
-      threads_box_(new QSpinBox(this)), summary_(new QLabel(this)), plot_view_(new StudyPlotView(this)),
+      threads_box_(new QSpinBox(this)), summary_(new QLabel(this)), weighted_box_(new QWidget(this)),
+      weighted_heading_(new QLabel(weighted_box_)), weighted_table_(new QTableWidget(0, 3, weighted_box_)),
+      plot_view_(new StudyPlotView(this)),
       refresh_timer_(new QTimer(this)) {
   sweep_prompt_ = [this](const ParamSpec& spec, const SweepRange& proposed) -> std::optional<std::pair<SweepRange, bool>> {
     SweepDialog dialog(spec, proposed, this);
@@ -76,6 +81,13 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
                              const std::vector<std::string>& taken) -> std::string {
     AddParameterDialog dialog(scene, parameters, taken, this);
     return dialog.exec() == QDialog::Accepted ? dialog.path() : std::string();
+  };
+  weighted_sum_prompt_ = [this](const std::vector<std::string>& columns,
+                                const std::vector<std::pair<std::string, std::string>>& known,
+                                const WeightedSumChoice& current) -> std::optional<WeightedSumChoice> {
+    WeightedSumDialog dialog(columns, known, current, this);
+    if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+    return dialog.choice();
   };
   base_->setWordWrap(true);
   summary_->setWordWrap(true);
@@ -98,6 +110,14 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   file_menu->addAction(tr("Open study…"), this, [this] {
     const QString f = askFile(this, false, tr("Open study"), QStringLiteral("studyFolder"), {}, tr("Maris study (*.json)"));
     if (!f.isEmpty()) openStudy(f);
+  });
+  file_menu->addAction(tr("Open study folder…"), this, [this] {
+    const QString last = QSettings().value(QStringLiteral("study/studyFolder")).toString();
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open a study folder (maris-cli study run --out DIR)"),
+                                                          startFolder(last));
+    if (dir.isEmpty()) return;
+    QSettings().setValue(QStringLiteral("study/studyFolder"), QFileInfo(dir).absolutePath());
+    openStudyFolder(dir);
   });
   file_menu->addAction(tr("Save study as…"), this, [this] {
     const QString f = askFile(this, true, tr("Save study"), QStringLiteral("studyFolder"), QStringLiteral("study.json"),
@@ -127,6 +147,10 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
     LatinHypercubeDialog dialog(*document_->scene(), document_->scenario(), this);
     if (dialog.exec() == QDialog::Accepted) defineLatinHypercube(dialog.design());
   });
+  weighted_action_ = file_menu->addAction(tr("Weighted sum…"), this, [this] { weightedSumDialog(); });
+  weighted_action_->setObjectName(QStringLiteral("weightedSumAction"));
+  weighted_action_->setToolTip(tr("A table study: sum each chosen result over the cases, weighted by a column of "
+                                  "the table (a scatter diagram's probabilities)"));
   auto* file_button = new QPushButton(tr("Study"), this);
   file_button->setMenu(file_menu);
 
@@ -146,6 +170,24 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   workers->addWidget(threads_box_);
   grid->addLayout(workers, 3, 2);
   grid->addWidget(summary_, 4, 0, 1, 6);
+  // The weighted sums of a table study: a short table under the summary (a scatter diagram sums one or two
+  // results), the weight column named above it.
+  weighted_box_->setObjectName(QStringLiteral("studyWeightedSums"));
+  weighted_heading_->setWordWrap(true);
+  weighted_heading_->setTextFormat(Qt::RichText);
+  weighted_table_->setObjectName(QStringLiteral("studyWeightedSumTable"));
+  weighted_table_->setHorizontalHeaderLabels({tr("Result"), tr("Σ weight · result"), tr("Cases without a value")});
+  weighted_table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  weighted_table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+  weighted_table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Stretch);
+  weighted_table_->verticalHeader()->hide();
+  weighted_table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  auto* weighted_layout = new QVBoxLayout(weighted_box_);
+  weighted_layout->setContentsMargins(0, 0, 0, 0);
+  weighted_layout->addWidget(weighted_heading_);
+  weighted_layout->addWidget(weighted_table_);
+  weighted_box_->hide();
+  grid->addWidget(weighted_box_, 5, 0, 1, 6);
   grid->setColumnStretch(5, 1);
   auto* split = new QSplitter(Qt::Vertical, this);
   split->addWidget(definition);
@@ -179,13 +221,27 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
   refresh_timer_->setSingleShot(true);
   refresh_timer_->setInterval(250);
   connect(refresh_timer_, &QTimer::timeout, plot_view_, &StudyPlotView::refresh);
+  connect(refresh_timer_, &QTimer::timeout, this, &StudyPanel::showWeightedSums);
   connect(runner_, &StudyRunner::finished, this, [this](int succeeded, int failed) {
     refresh_timer_->stop();
     plot_view_->refresh();
+    showWeightedSums();
     const QString text = tr("Study finished: %1 of %2 cases succeeded, %3 failed")
                              .arg(succeeded).arg(session_.caseCount()).arg(failed);
     summary_->setText(text);
     emit logged(failed ? 1 : 0, text);
+    // The weighted sums in the run log too, as `maris-cli study collect` prints them: a record beside the run's.
+    if (from_file_)
+      for (const study::WeightedSum& sum : session_.weightedSums()) {
+        const QString unit = sum.unit.empty() || sum.unit == "-" ? QString() : QStringLiteral(" ") + QString::fromStdString(sum.unit);
+        emit logged(sum.value ? 0 : 1,
+                    sum.value ? tr("Weighted sum of %1 over %2: %3%4 (weights add up to %5)")
+                                    .arg(QString::fromStdString(sum.result), QString::fromStdString(session_.weightColumn()),
+                                         displayValue(Json(*sum.value)), unit, QString::number(sum.weight_total, 'g', 6))
+                              : tr("Weighted sum of %1 over %2: no value, %3 of the weighted cases have none")
+                                    .arg(QString::fromStdString(sum.result), QString::fromStdString(session_.weightColumn()))
+                                    .arg(sum.missing.size()));
+      }
     emit message(text);
     emit studyFinished(succeeded, failed);
   });
@@ -193,6 +249,7 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
     refresh_timer_->stop();
     session_.markUnfinishedCancelled();
     plot_view_->refresh();
+    showWeightedSums();
     const QString text = tr("Study cancelled: the workers stopped %1 ms after the request")
                              .arg(runner_->lastCancelLatency() * 1e3, 0, 'f', 1);
     summary_->setText(text);
@@ -231,6 +288,14 @@ bool StudyPanel::sweep(const QString& path) {
   const Json* current = study::findParameterValue(baseParameters(), spec->path);
   const auto answer = sweep_prompt_(*spec, proposedSweep(*spec, current ? *current : Json()));
   if (!answer) return false;
+  if (answer->second && fixedDesign()) {
+    fail(tr("This %1 study's cases are its design: a parameter cannot be added to it. Start a new study from the "
+            "open scenario first (Study ▸ New study from the open scenario).")
+             .arg(session_.kindName()));
+    return false;
+  }
+  // A study folder holds its cases, not its base: a sweep run from the editor is then one of the open scenario.
+  if (!answer->second && from_file_ && !session_.folder().isEmpty()) from_file_ = false;
   if (!answer->second) grid_.clear();
   addParameter(answer->first);
   return answer->second || startStudy();
@@ -255,6 +320,7 @@ void StudyPanel::clearParameters() {
   grid_.clear();
   from_file_ = false;
   rebuildTable();
+  showWeightedSums();
 }
 
 void StudyPanel::setThreads(int threads) {
@@ -304,6 +370,11 @@ QString StudyPanel::gridProblem(std::vector<SweepRange> grid) const {
 
 bool StudyPanel::startStudy() {
   if (runner_->isRunning()) return false;
+  if (from_file_ && !session_.folder().isEmpty()) {
+    fail(tr("This study was opened from its folder %1, where maris-cli runs it: `maris-cli study run STUDY --out %1 "
+            "--resume` runs its missing cases.").arg(session_.folder()));
+    return false;
+  }
   const bool file_study = from_file_ && session_.isDefined();
   if (!file_study) {
     if (!document_->isValid()) {
@@ -339,6 +410,7 @@ bool StudyPanel::startStudy() {
     return false;
   }
   plot_view_->refresh();
+  showWeightedSums();
   const int threads = threads_ > 0 ? threads_ : threads_box_->value();
   if (!runner_->start(*session_.scene(), session_.caseScenarios(), threads)) return false;
   const QString text = tr("Study started: %1 of %2 on %3")
@@ -361,6 +433,7 @@ void StudyPanel::onCaseFinished(int index, ResultsPtr results, double wall_time_
 
 void StudyPanel::onCaseFailed(int index, const QString& message) {
   session_.setOutcome(index, {StudySession::Status::Failed, nullptr, message, 0.0});
+  if (!refresh_timer_->isActive()) refresh_timer_->start();
   emit logged(1, tr("case %1 (%2) failed: %3").arg(session_.caseId(index), session_.caseLabel(index), message));
 }
 
@@ -415,10 +488,33 @@ bool StudyPanel::saveStudy(const QString& file) {
 
 bool StudyPanel::openStudy(const QString& file) {
   if (runner_->isRunning()) return false;
+  // A study folder's record: the folder is what the user means (its cases ran there).
+  const QFileInfo info(file);
+  if (info.fileName() == QLatin1String("study.json") && QFileInfo(info.dir(), QStringLiteral("cases")).isDir())
+    return openStudyFolder(info.absolutePath());
   if (!replaceSession(tr("Could not open the study %1").arg(file),
                       [&](StudySession& next) { next.load(file, *library_); }))
     return false;
   emit message(tr("Opened study %1").arg(file));
+  return true;
+}
+
+bool StudyPanel::openStudyFolder(const QString& dir) {
+  if (runner_->isRunning()) return false;
+  if (!replaceSession(tr("Could not open the study folder %1").arg(dir),
+                      [&](StudySession& next) { next.loadFolder(dir, *library_); }))
+    return false;
+  int ok = 0, failed = 0;
+  for (int i = 0; i < session_.caseCount(); ++i) {
+    ok += session_.outcome(i).status == StudySession::Status::Finished;
+    failed += session_.outcome(i).status == StudySession::Status::Failed;
+  }
+  const int missing = session_.caseCount() - ok - failed;
+  const QString text = tr("Study folder %1: %2 of %3 cases complete, %4 failed, %5 not run")
+                           .arg(dir).arg(ok).arg(session_.caseCount()).arg(failed).arg(missing);
+  summary_->setText(text);
+  emit logged(failed || missing ? 1 : 0, text);
+  emit message(text);
   return true;
 }
 
@@ -428,8 +524,21 @@ bool StudyPanel::openCaseTable(const QString& file) {
     fail(tr("Open a valid scenario first: the load cases vary it."));
     return false;
   }
+  // A column that varies no parameter may be the cases' weights (a scatter diagram's probabilities): asked
+  // before the table is read, since the engine refuses a column that is neither.
+  WeightedSumChoice weighting;
+  try {
+    const auto columns = StudySession::nonParameterColumns(*document_->scene(), document_->scenario().parameters, file);
+    if (!columns.empty()) {
+      WeightedSumChoice proposed;
+      proposed.column = columns.front();
+      if (const auto answer = weighted_sum_prompt_(columns, {}, proposed)) weighting = *answer;
+    }
+  } catch (const std::exception&) {
+    // An unreadable table: defineTable below says why.
+  }
   if (!replaceSession(tr("Could not read the case table %1").arg(file), [&](StudySession& next) {
-        next.defineTable(*document_->scene(), document_->scenario(), file);
+        next.defineTable(*document_->scene(), document_->scenario(), file, weighting.column, weighting.results);
       }))
     return false;
   emit message(tr("Load-case table %1: run the study to run its cases").arg(file));
@@ -467,12 +576,136 @@ bool StudyPanel::replaceSession(const QString& failure, const std::function<void
   from_file_ = true;
   plot_view_->refresh();
   rebuildTable();
+  showWeightedSums();
   return true;
+}
+
+bool StudyPanel::setWeightedSum(const std::string& column, const std::vector<std::string>& results) {
+  if (runner_->isRunning()) return false;
+  if (from_file_ && !session_.folder().isEmpty()) {
+    fail(tr("This study was opened from its folder, whose study.json records the weighted sum it ran with; the dock "
+            "shows it and does not change it."));
+    return false;
+  }
+  if (!from_file_ || !session_.isTable()) {
+    fail(tr("A weighted sum needs a table study: its weights are a column of the table (Study ▸ New load-case "
+            "table study)."));
+    return false;
+  }
+  // A column that varies no parameter is read only as the weights: the engine refuses it otherwise.
+  const std::vector<std::string> unused = session_.weightCandidates();
+  if (column.empty() && !unused.empty()) {
+    QStringList names;
+    for (const std::string& c : unused) names << QString::fromStdString(c);
+    fail(tr("The weighted sum cannot be cleared: the table's column %1 varies no parameter, and a table study reads "
+            "such a column only as its weights. Remove it from the CSV file (and open the table again) to study "
+            "the cases without a weighted sum.")
+             .arg(names.join(QStringLiteral(", "))));
+    return false;
+  }
+  try {
+    session_.setWeightedSum(column, results);
+  } catch (const InputError& e) {
+    fail(tr("The weighted sum cannot be set:\n%1").arg(QString::fromStdString(describeErrors(e.errors()))));
+    return false;
+  } catch (const std::exception& e) {
+    fail(tr("The weighted sum cannot be set: %1").arg(QString::fromUtf8(e.what())));
+    return false;
+  }
+  showWeightedSums();
+  plot_view_->refresh();
+  emit message(column.empty() ? tr("The study has no weighted sum now")
+                              : tr("Weighted sum over the column %1").arg(QString::fromStdString(column)));
+  return true;
+}
+
+bool StudyPanel::weightedSumDialog() {
+  if (runner_->isRunning() || !from_file_ || !session_.isTable() || !session_.folder().isEmpty()) return false;
+  std::vector<std::pair<std::string, std::string>> known;
+  for (const std::string& name : session_.resultNames()) known.emplace_back(name, session_.resultLabel(name));
+  WeightedSumChoice current;
+  current.column = session_.weightColumn();
+  current.results = session_.weightedResults();
+  const auto answer = weighted_sum_prompt_(session_.weightCandidates(), known, current);
+  if (!answer || *answer == current) return false;
+  return setWeightedSum(answer->column, answer->results);
+}
+
+void StudyPanel::showWeightedSums() {
+  const std::string column = from_file_ ? session_.weightColumn() : std::string();
+  weighted_box_->setVisible(!column.empty());
+  if (column.empty()) {
+    weighted_table_->setRowCount(0);
+    return;
+  }
+  const std::vector<study::WeightedSum> sums = session_.weightedSums();  // empty before the cases are expanded
+  QString heading = tr("<b>Weighted sums</b> over the cases, each case weighted by the table's column <b>%1</b>")
+                        .arg(QString::fromStdString(column).toHtmlEscaped());
+  if (!sums.empty())
+    heading += tr(" (the weights add up to %1)").arg(QString::number(sums.front().weight_total, 'g', 6));
+  weighted_heading_->setText(heading);
+  // Why each case without a value has none: still to run (or running), failed, cancelled, or ran without it.
+  std::map<std::string, int> index_of;
+  for (int i = 0; i < session_.caseCount(); ++i) index_of[session_.caseId(i).toStdString()] = i;
+  const std::vector<std::string> names = session_.weightedResults();
+  weighted_table_->setRowCount(static_cast<int>(names.size()));
+  for (int row = 0; row < static_cast<int>(names.size()); ++row) {
+    const std::string& name = names[row];
+    const study::WeightedSum* sum = row < static_cast<int>(sums.size()) ? &sums[row] : nullptr;
+    const std::string unit = sum ? sum->unit : std::string("-");
+    // The result's label from the cases; before a run (no case has it yet) read from its name.
+    Scalar named;
+    named.name = name;
+    const std::string text = session_.resultLabel(name);
+    QString label = QString::fromStdString(text == name ? displayLabel(named) : text);
+    if (!unit.empty() && unit != "-") label += QStringLiteral(" [%1]").arg(QString::fromStdString(unit));
+    auto* result = new QTableWidgetItem(label);
+    result->setToolTip(tr("%1: Σ %2 · %1 over the cases").arg(QString::fromStdString(name), QString::fromStdString(column)));
+    // The sum as study.json holds it: the shortest text that reads back to the same double.
+    auto* value = new QTableWidgetItem(sum && sum->value ? displayValue(Json(*sum->value)) : QStringLiteral("—"));
+    value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    QString missing;
+    if (!sum) {
+      missing = tr("all: run the study");
+    } else if (!sum->missing.empty()) {
+      std::map<QString, QStringList> why;
+      for (const std::string& id : sum->missing) {
+        const auto it = index_of.find(id);
+        const StudySession::CaseOutcome* o = it == index_of.end() ? nullptr : &session_.outcome(it->second);
+        const QString reason = !o                                               ? tr("not run")
+                               : o->status == StudySession::Status::Pending     ? tr("not finished")
+                               : o->status == StudySession::Status::Failed      ? tr("failed")
+                               : o->status == StudySession::Status::Cancelled   ? tr("cancelled")
+                                                                                : tr("finished without this result");
+        why[reason] << QString::fromStdString(id);
+      }
+      QStringList parts;
+      for (auto& [reason, ids] : why) {
+        constexpr int kShownIds = 8;
+        QString list = ids.mid(0, kShownIds).join(QStringLiteral(", "));
+        if (ids.size() > kShownIds) list += tr(" and %n more", nullptr, static_cast<int>(ids.size() - kShownIds));
+        parts << tr("%1: %2").arg(reason, list);
+      }
+      missing = parts.join(QStringLiteral("; "));
+      value->setToolTip(tr("No sum while a case of weight > 0 has no value"));
+    }
+    weighted_table_->setItem(row, 0, result);
+    weighted_table_->setItem(row, 1, value);
+    weighted_table_->setItem(row, 2, new QTableWidgetItem(missing));
+  }
+  // As tall as its rows (a scatter diagram sums one or two results): the plot below keeps the rest.
+  weighted_table_->setFixedHeight(weighted_table_->horizontalHeader()->sizeHint().height() +
+                                  weighted_table_->rowCount() * weighted_table_->verticalHeader()->defaultSectionSize() +
+                                  2 * weighted_table_->frameWidth());
+}
+
+bool StudyPanel::fixedDesign() const {
+  return from_file_ && session_.isDefined() && (!session_.isGrid() || !session_.folder().isEmpty());
 }
 
 bool StudyPanel::addParameterDialog() {
   const SceneDefinition* scene = from_file_ ? session_.scene() : document_->scene();
-  if (!scene || runner_->isRunning()) return false;
+  if (!scene || runner_->isRunning() || fixedDesign()) return false;
   std::vector<std::string> taken;
   for (const SweepRange& r : grid_) taken.push_back(r.path);
   const std::string path = parameter_prompt_(*scene, baseParameters(), taken);
@@ -541,10 +774,20 @@ void StudyPanel::rebuildTable() {
 void StudyPanel::updateButtons() {
   const bool running = runner_->isRunning();
   const bool have_base = (from_file_ && session_.isDefined()) || document_->isValid();
-  run_->setEnabled(!running && have_base && (!grid_.empty() || from_file_));
+  const bool folder = from_file_ && !session_.folder().isEmpty();
+  run_->setEnabled(!running && have_base && (!grid_.empty() || from_file_) && !folder);
+  run_->setToolTip(folder ? tr("A study folder is run by maris-cli: `maris-cli study run STUDY --out %1 --resume` runs "
+                               "its missing cases, then open the folder again").arg(session_.folder())
+                          : QString());
   cancel_->setEnabled(running);
-  add_->setEnabled(!running);
+  add_->setEnabled(!running && !fixedDesign());
+  add_->setToolTip(fixedDesign() ? tr("A %1 study's cases are its design: start a new study from the open scenario "
+                                      "to vary parameters here").arg(session_.kindName())
+                                 : QString());
+  // A table or a sample has no ranges to edit: its parameters are named above the table, which is then hidden.
+  table_->setVisible(!fixedDesign());
   remove_->setEnabled(!running && !grid_.empty());
+  if (weighted_action_) weighted_action_->setEnabled(!running && from_file_ && session_.isTable() && !folder);
   table_->setEnabled(!running);
   if (!running && grid_.empty() && !from_file_)
     summary_->setText(tr("Right-click a number field in the parameter editor: Sweep this parameter…"));

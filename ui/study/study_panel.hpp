@@ -13,7 +13,9 @@
 
 #include "study/study_session.hpp"
 #include "study/sweep_dialog.hpp"
+#include "study/weighted_sum_dialog.hpp"
 
+class QAction;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -56,10 +58,34 @@ class StudyPanel : public QWidget {
   // A load-case table study over the open scenario (one case per row of the CSV file); false, with the
   // reason logged, when the table or a case is bad.
   bool openCaseTable(const QString& file);
+  // A study file; or a study folder's study.json, which opens the folder (openStudyFolder).
   bool openStudy(const QString& file);
+  // "Open study folder…": a study that `maris-cli study run` (or a Slurm array) ran, as it stands — its plot,
+  // study.csv and weighted sums from the complete cases' summary.json. Nothing runs (Run study is disabled: the
+  // CLI's `study run --resume` finishes it); a clicked point opens the case's scalars. False, with the reason
+  // logged, when DIR holds no study.
+  bool openStudyFolder(const QString& dir);
   // "New Latin hypercube study…": a sample over the open scenario (the engine draws the cases); false, with
   // the reason logged, when the design is bad.
   bool defineLatinHypercube(const LatinHypercubeDesign& design);
+
+  // A table study's weighted sum (the study file's "weighted_sum"): `column` of its table holds each case's
+  // weight and `results` are summed with it; "" clears it. The sums show below the run buttons at once for the
+  // cases that ran. False, with the reason logged, when the engine refuses the column or the study is no table.
+  bool setWeightedSum(const std::string& column, const std::vector<std::string>& results);
+  // "Weighted sum…": asks for the column and the results (through the prompt) and sets them; false if nothing changed.
+  bool weightedSumDialog();
+  // How the weight column and results are asked for (tests replace the dialog, WeightedSumDialog): `columns` are
+  // the table's columns that vary no parameter, `known` (name, label) the results the cases have so far; nullopt
+  // to cancel.
+  using WeightedSumPrompt = std::function<std::optional<WeightedSumChoice>(
+      const std::vector<std::string>& columns, const std::vector<std::pair<std::string, std::string>>& known,
+      const WeightedSumChoice& current)>;
+  void setWeightedSumPrompt(WeightedSumPrompt prompt) { weighted_sum_prompt_ = std::move(prompt); }
+  // The weighted sums as shown: a heading naming the weight column, then one row per summed result (its label
+  // and unit, the sum, and which cases it still waits for). Hidden when the study has no weighted sum.
+  QLabel* weightedSumHeading() const { return weighted_heading_; }
+  QTableWidget* weightedSumTable() const { return weighted_table_; }
 
   // A finished case as a run record for the results view ("study case 0003 (length = 120 m)").
   // Its id is `id`; nullopt if the case has no results.
@@ -99,12 +125,17 @@ class StudyPanel : public QWidget {
   void updateButtons();
   // The parameters of the study's base: the study's own when it came from a file, else the open scenario's.
   const Json& baseParameters() const;
+  // Shows the study's weighted sums (the engine's, over the outcomes so far), or hides them when it has none.
+  void showWeightedSums();
   void onCaseFinished(int index, ResultsPtr results, double wall_time_s);
   void onCaseFailed(int index, const QString& message);
   void fail(const QString& text);
   // Why the grid `grid` over the study's base cannot run (its first invalid cases), or "" (sweep dialog).
   QString gridProblem(std::vector<SweepRange> grid) const;
   bool replaceSession(const QString& failure, const std::function<void(StudySession&)>& build);
+  // A table or Latin-hypercube study opened or built here: its parameters are its design (a CSV table, a sample),
+  // so no grid parameter is added to it (that would replace the design by a grid over its base).
+  bool fixedDesign() const;
 
   ScenarioDocument* document_;
   std::shared_ptr<const SceneLibrary> library_;
@@ -121,11 +152,16 @@ class StudyPanel : public QWidget {
   QPushButton* cancel_;
   QSpinBox* threads_box_;
   QLabel* summary_;
+  QWidget* weighted_box_;
+  QLabel* weighted_heading_;
+  QTableWidget* weighted_table_;
+  QAction* weighted_action_ = nullptr;
   StudyPlotView* plot_view_;
   QTimer* refresh_timer_;
   QString last_error_;
   SweepPrompt sweep_prompt_;
   ParameterPrompt parameter_prompt_;
+  WeightedSumPrompt weighted_sum_prompt_;
 };
 
 }  // namespace maris::ui

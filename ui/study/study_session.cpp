@@ -57,6 +57,11 @@ void StudySession::markUnfinishedCancelled() {
 
 std::vector<std::string> StudySession::resultNames() const {
   std::vector<std::string> names;
+  // The results the study lists ("results") come first, so the plot opens on one of them.
+  if (impl_)
+    for (const std::string& name : impl_->study.results)
+      if (std::any_of(outcomes_.begin(), outcomes_.end(), [&](const CaseOutcome& o) { return o.results && o.results->findScalar(name); }))
+        names.push_back(name);
   for (const CaseOutcome& o : outcomes_) {
     if (!o.results) continue;
     for (const Scalar& s : o.results->scalars)

@@ -168,4 +168,31 @@ TEST_F(StudyDesign, ATablesWeightColumnIsReadPerCaseAndIsNoParameter) {
   EXPECT_NE(no_table.find("needs a \"table\""), std::string::npos) << no_table;
 }
 
+// A study folder's record (the study.json that `study run` writes) given where a study file belongs: one message
+// saying what it is and which study file it was run from, instead of every field a study file lacks; `validate`
+// takes it for a study (not a scenario) to say so.
+TEST_F(StudyDesign, AStudyFoldersRecordIsNamedAsSuchNotReadAsAStudy) {
+  const Json record = {{"format", "maris-study-run/1"}, {"study_file", "/data/grid.json"}, {"case_count", 20},
+                       {"runs", Json::array()}};
+  EXPECT_TRUE(isStudyDocument(record));
+  const auto text = inputErrorText([&] { studyFromJson(record, "/"); });
+  EXPECT_NE(text.find("is a study folder's record"), std::string::npos) << text;
+  EXPECT_NE(text.find("run from /data/grid.json"), std::string::npos) << text;
+  EXPECT_EQ(text.find("case_count"), std::string::npos) << text;
+  EXPECT_FALSE(isStudyDocument(Json{{"format", "maris-scenario/1"}}));
+}
+
+// The header of a table's CSV file, as a front end offers its columns for the weight: split as the table is
+// (here at ';', after comment and blank lines), cells trimmed; a file without a header row is refused by name.
+TEST_F(StudyDesign, TableColumnsAreTheHeaderRowsCells) {
+  ScratchFolder folder("maris_study_columns");
+  folder.write("seas.csv", "# sea states\n\nhull.length ; probability\nm;-\n2.5;0.7\n");
+  folder.write("empty.csv", "# only a comment\n");
+  EXPECT_EQ(tableColumns(folder.path / "seas.csv"), (std::vector<std::string>{"hull.length", "probability"}));
+  const auto empty = inputErrorText([&] { tableColumns(folder.path / "empty.csv"); });
+  EXPECT_NE(empty.find("has no header row"), std::string::npos) << empty;
+  const auto missing = inputErrorText([&] { tableColumns(folder.path / "none.csv"); });
+  EXPECT_NE(missing.find("table"), std::string::npos) << missing;
+}
+
 }  // namespace maris::study::test
