@@ -60,6 +60,15 @@ void PlotView::showEvent(QShowEvent* event) {
   ensureDrawn();
 }
 
+void PlotView::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  // Which corner is free, and how many legend entries fit side by side under the axes, depend on the size.
+  if (has_data_ && !stale_) {
+    placePlotLegend(*plot_);
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+  }
+}
+
 void PlotView::ensureDrawn() const {
   // Drawing is not a visible change of state: the data were set already.
   if (stale_) const_cast<PlotView*>(this)->redraw();
@@ -85,7 +94,7 @@ void PlotView::redraw() {
     if (keep) {
       plot_->axisRect()->axis(QCPAxis::atBottom)->setRange(kept_x);
       plot_->axisRect()->axis(QCPAxis::atLeft)->setRange(kept_y);
-      moveLegendToEmptiestCorner(*plot_);
+      placePlotLegend(*plot_);
     }
     watchUserRange();
     tracer_ = new QCPItemTracer(plot_);
@@ -140,7 +149,7 @@ void PlotView::applyAxisScales() {
   apply(rect->axis(QCPAxis::atLeft), log_y_);
   apply(rect->axis(QCPAxis::atRight), log_y_);
   fitAxesToData(*plot_);
-  moveLegendToEmptiestCorner(*plot_);
+  placePlotLegend(*plot_);
 }
 
 // A new axis scale fits the data again (a linear range rarely makes sense on a log axis).

@@ -14,6 +14,7 @@ class QCustomPlot;
 class QCPItemTracer;
 class QLabel;
 class QMouseEvent;
+class QResizeEvent;
 
 namespace maris::ui {
 
@@ -63,6 +64,7 @@ class PlotView : public QWidget {
  protected:
   void changeEvent(QEvent* event) override;  // a new palette (theme) redraws in its colours
   void showEvent(QShowEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;  // the legend is placed again for the new size
 
  private:
   void redraw();
