@@ -134,6 +134,25 @@ class SectionViewTest : public QObject {
     QVERIFY(!camera->GetParallelProjection());
     QCOMPARE(actorCount(view), 1);
   }
+
+  // However narrow the view (the colour bar moved left to keep its title inside), the section ends left of the
+  // bar's leftmost part, and still fills a good part of the view.
+  void aSectionIsFramedLeftOfTheColourBar() {
+    for (const int width : {900, 460, 320}) {
+      SceneView view;
+      view.resize(width, 400);
+      view.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&view));
+      view.showResults(std::make_shared<Results>(sectionResults()));
+      QTest::qWait(50);
+      const auto e = view.projectedModelExtent();
+      const double bar = 2.0 * view.colorBarLeftEdge() - 1.0;  // in the view's [-1, 1]
+      qInfo("%d px: section x from %.3f to %.3f, colour bar from %.3f", width, e[0], e[1], bar);
+      QVERIFY2(e[1] <= bar + 1e-6 || e[1] <= 0.0 + 1e-6, qPrintable(QStringLiteral("%1 px").arg(width)));
+      QVERIFY(e[0] >= -1.0 - 1e-6);
+      QVERIFY2(e[1] - e[0] >= 0.8, qPrintable(QStringLiteral("%1 px: %2 of 2").arg(width).arg(e[1] - e[0])));
+    }
+  }
 };
 
 QTEST_MAIN(SectionViewTest)

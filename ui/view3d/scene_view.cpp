@@ -194,9 +194,17 @@ void SceneView::applyPaletteColors() {
   renderer->SetBackground2(c.view_top.redF(), c.view_top.greenF(), c.view_top.blueF());
   // Text on a light background is near-black, on a dark one the palette's text colour.
   const QColor text = isDark(palette()) ? c.foreground : QColor::fromRgbF(0.1f, 0.1f, 0.1f);
+  // Text drawn over the model (a colour bar label beside a brown sea bed, the caption over a tall riser) stays
+  // readable: every label sits on a box of the view's background colour, mostly opaque.
+  const QColor backdrop = QColor::fromRgbF((c.view_top.redF() + c.view_bottom.redF()) / 2,
+                                           (c.view_top.greenF() + c.view_bottom.greenF()) / 2,
+                                           (c.view_top.blueF() + c.view_bottom.blueF()) / 2);
   for (vtkTextProperty* p : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty(),
-                             caption_->GetTextProperty()})
+                             caption_->GetTextProperty()}) {
     p->SetColor(text.redF(), text.greenF(), text.blueF());
+    p->SetBackgroundColor(backdrop.redF(), backdrop.greenF(), backdrop.blueF());
+    p->SetBackgroundOpacity(0.8);
+  }
   gl_->requestRender();
 }
 
@@ -393,6 +401,8 @@ void SceneView::placeColorBar() {
   const double labels_px = std::ceil(strip_px * scalar_bar_->GetBarRatio()) + ColorBarActor::kLabelGap + label_px;
   const double left = colorBarLeft(view_px, strip_px, title_px, labels_px, kMarginPx, kPreferredLeft);
   scalar_bar_->GetPositionCoordinate()->SetValue(left, kBarBottom);
+  const double title_left = left * view_px + 0.5 * strip_px - 0.5 * std::max(strip_px, title_px);
+  if (view_px > 0) color_bar_left_ = std::min(left, title_left / view_px);
   // The caption (top left; four lines over a ship's wave pattern) and the bar's title (top right) share the top of
   // a narrow view: where the caption reaches over to the title's left edge, the bar ends two margins below it.
   double top = kBarBottom + kBarHeight;
@@ -403,7 +413,6 @@ void SceneView::placeColorBar() {
       vtkTextRenderer::GetInstance()->GetBoundingBox(caption_->GetTextProperty(), std::string(caption), box, dpi)) {
     const double caption_right = kCaptionLeft * view_px + (box[1] - box[0]);
     const double caption_bottom = kCaptionTop * view_h - (box[3] - box[2]);
-    const double title_left = left * view_px + 0.5 * strip_px - 0.5 * std::max(strip_px, title_px);
     if (caption_right + kMarginPx > title_left) top = std::min(top, (caption_bottom - 2 * kMarginPx) / view_h);
   }
   scalar_bar_->SetHeight(std::max(kBarHeight / 2, top - kBarBottom));
@@ -571,8 +580,13 @@ void SceneView::resetCamera() {
   gl_->renderer()->ResetCamera(bounds.b.data());
   // ResetCamera fits the bounding sphere, which leaves a long model (a hull, a 2-D section, a riser seen
   // across) small in a wide view. Fit the projected box instead: zoom until it fills the free part of the
-  // view (the right ~20 % holds the colour bar, the top the caption), then shift it to that part's centre.
-  const double right = have_scalars_ ? 0.55 : 0.95, left = -0.95, top = 0.80, bottom = -0.95;
+  // view (the right ~20 % holds the colour bar, the top the caption), then shift it to that part's centre. A 2-D
+  // section, a flat box as wide as its picture, would run under the bar where a narrow view moved the bar left: it
+  // ends a margin left of the bar as placed for this width (keeping at least about half the view). A 3-D model
+  // keeps the fixed share: its box's corners are mostly empty space, and a tall riser needs the width.
+  double right = have_scalars_ ? 0.55 : 0.95;
+  if (have_scalars_ && section_axis_ >= 0) right = std::clamp(2.0 * color_bar_left_ - 1.0 - 0.03, 0.0, 0.95);
+  const double left = -0.95, top = 0.80, bottom = -0.95;
   constexpr double kFill = 0.92;
   for (int pass = 0; pass < 3; ++pass) {  // perspective makes one zoom step inexact: refine twice
     camera->SetWindowCenter(0.0, 0.0);
