@@ -35,6 +35,7 @@ PlotView::PlotView(PlotSpec spec, QWidget* parent)
   layout->addWidget(plot_, 1);
   layout->addWidget(readout_);
   plot_->hide();
+  plot_->installEventFilter(this);
   connect(plot_, &QCustomPlot::mouseMove, this, &PlotView::onMouseMove);
   connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { resetZoom(); });
 }
@@ -60,13 +61,14 @@ void PlotView::showEvent(QShowEvent* event) {
   ensureDrawn();
 }
 
-void PlotView::resizeEvent(QResizeEvent* event) {
-  QWidget::resizeEvent(event);
-  // Which corner is free, and how many legend entries fit side by side under the axes, depend on the size.
-  if (has_data_ && !stale_) {
+bool PlotView::eventFilter(QObject* watched, QEvent* event) {
+  // Which corner is free, and how many legend entries fit side by side under the axes, depend on the plot's size;
+  // the plot is drawn (and its legend first placed) before it is shown and laid out at its size.
+  if (watched == plot_ && event->type() == QEvent::Resize && has_data_ && !stale_) {
     placePlotLegend(*plot_);
     plot_->replot(QCustomPlot::rpQueuedReplot);
   }
+  return QWidget::eventFilter(watched, event);
 }
 
 void PlotView::ensureDrawn() const {

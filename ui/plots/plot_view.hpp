@@ -14,7 +14,6 @@ class QCustomPlot;
 class QCPItemTracer;
 class QLabel;
 class QMouseEvent;
-class QResizeEvent;
 
 namespace maris::ui {
 
@@ -64,7 +63,7 @@ class PlotView : public QWidget {
  protected:
   void changeEvent(QEvent* event) override;  // a new palette (theme) redraws in its colours
   void showEvent(QShowEvent* event) override;
-  void resizeEvent(QResizeEvent* event) override;  // the legend is placed again for the new size
+  bool eventFilter(QObject* watched, QEvent* event) override;  // the plot resized: its legend is placed again
 
  private:
   void redraw();

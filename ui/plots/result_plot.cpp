@@ -164,10 +164,11 @@ bool segmentCrossesBox(double ax, double ay, double bx, double by, double x0, do
   return true;
 }
 
-// The axis rect's size in pixels: its laid-out size once the plot was drawn, else the plot's size less room for
-// the tick labels, axis labels and title (a plot not yet shown is taken as 600 × 400).
+// The axis rect's size in pixels: its laid-out size once the plot was drawn at its present size, else the plot's
+// size less room for the tick labels, axis labels and title (a plot not yet shown is taken as 600 × 400).
 QSizeF axisRectPixels(const QCustomPlot& plot, const QCPAxisRect& rect) {
-  if (rect.width() > 50 && rect.height() > 50) return QSizeF(rect.width(), rect.height());
+  if (rect.width() > 50 && rect.height() > 50 && plot.viewport().size() == plot.size())
+    return QSizeF(rect.width(), rect.height());
   const double w = plot.width() > 100 ? plot.width() : 600, h = plot.height() > 100 ? plot.height() : 400;
   return QSizeF(std::max(50.0, w - 90.0), std::max(50.0, h - 80.0));
 }
@@ -236,14 +237,15 @@ void placePlotLegend(QCustomPlot& plot) {
   auto entry_width = [&](const QString& name) { return metrics.horizontalAdvance(name) + legend->iconSize().width() + 24; };
   int widest = 0;
   for (QCPAbstractPlottable* p : entries) widest = std::max(widest, entry_width(fullGraphName(*p)));
-  // Entries too wide or too many for a corner go under the axes; wider than the plot, they are shortened with "…"
-  // (the whole name stays as the graph's "full_name": the hover read-out and the entry's tooltip show it).
+  // Entries too wide or too many for a corner go under the axes; wider than the plot, they are shortened with "…" in
+  // the middle, keeping the end that tells entries apart (", float 2", the unit). The whole name stays as the
+  // graph's "full_name": the hover read-out and the entry's tooltip show it.
   bool below = widest > 0.45 * plot_width || entries.size() > 8;
   const int room = plot_width - legend->iconSize().width() - 40;
   for (QCPAbstractPlottable* p : entries) {
     const QString full = fullGraphName(*p);
     p->setProperty(kFullNameProperty, full);
-    p->setName(metrics.elidedText(full, Qt::ElideRight, room));
+    p->setName(metrics.elidedText(full, Qt::ElideMiddle, room));
   }
   Qt::Alignment corner = Qt::AlignTop | Qt::AlignRight;
   if (!below) {
@@ -262,7 +264,20 @@ void placePlotLegend(QCustomPlot& plot) {
     // Entries side by side in as many columns as the plot's width holds: a short block under the axes.
     int shown_widest = 0;
     for (QCPAbstractPlottable* p : entries) shown_widest = std::max(shown_widest, entry_width(p->name()));
-    const int columns = std::max(1, (plot_width - 20) / std::max(1, shown_widest));
+    const int count = static_cast<int>(entries.size());
+    int columns = std::max(1, (plot_width - 20) / std::max(1, shown_widest));
+    // More than three rows would take the axes' height: more columns (each at least 160 px), entries shortened
+    // to their column.
+    constexpr int kMaxRows = 3, kMinColumnPx = 160;
+    if ((count + columns - 1) / columns > kMaxRows) {
+      const int wanted = std::min((count + kMaxRows - 1) / kMaxRows, std::max(1, (plot_width - 20) / kMinColumnPx));
+      if (wanted > columns) {
+        columns = wanted;
+        const int column_room = (plot_width - 20) / columns - legend->iconSize().width() - 24;
+        for (QCPAbstractPlottable* p : entries)
+          p->setName(metrics.elidedText(fullGraphName(*p), Qt::ElideMiddle, column_room));
+      }
+    }
     legend->setWrap(std::min(static_cast<int>(entries.size()), columns));
     legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
     const int row = plot.plotLayout()->rowCount();

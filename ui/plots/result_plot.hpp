@@ -23,8 +23,8 @@ QString axisLabel(const std::string& text, const std::string& unit);
 // A column's axis label and legend entry: its label for people (displayLabel) and unit, "Fn", "R_T [N]".
 QString axisLabel(const Column& column);
 
-// A legend entry too wide for a narrow plot is shortened with "…"; the graph keeps its whole name in this
-// property, for the hover read-out and the entry's tooltip.
+// A legend entry too wide for a narrow plot is shortened with "…" in the middle; the graph keeps its whole name in
+// this property, for the hover read-out and the entry's tooltip.
 inline constexpr const char* kFullNameProperty = "full_name";
 // The whole name of a graph (its name where it was not shortened).
 QString fullGraphName(const QCPAbstractPlottable& graph);
