@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include <QDir>
