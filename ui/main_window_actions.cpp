@@ -188,6 +188,7 @@ void MainWindow::showRecord(const RunRecord& record) {
   shown_run_ = record.id;
   if (const SceneDefinition* scene = library_->findScene(record.scenario.scene)) plots_->setDeclaredGroups(scene->plot_groups);
   plots_->showResults(record.results, record.label);
+  plots_->showPlotWithData();  // a statics-only run opens on its shape, not on an empty time history
   // Overlays and the all-runs CSV combine runs whose columns mean the same: runs of the same scenario.
   std::vector<RunRecord> same_scenario;
   for (const auto& r : history_.runs())

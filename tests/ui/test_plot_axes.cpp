@@ -1,10 +1,13 @@
 // A plot's axes as fillPlot draws them: reference points (the scene's own and a user's) lie inside the fitted
 // ranges with room for their markers, quantities whose sizes differ by more than 100× get their own y axis (a third
-// one when the smaller ones differ by 100× again), and legend entries too wide for a narrow plot are shortened.
+// one when the smaller ones differ by 100× again), legend entries too wide for a narrow plot are shortened, and a
+// legend sits at a corner no curve passes through, else under the axes.
 // Values are built here, so every expected range and axis follows from them.
 #include <QtTest>
 #include <qcustomplot.h>
 
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include "plots/plot_axes.hpp"
@@ -189,7 +192,67 @@ class TestPlotAxes : public QObject {
              (std::vector<std::vector<std::string>>{{"z", "t"}}));
   }
 
-  // In a narrow plot, legend entries wider than the plot are shortened with "…"; the whole text stays as the
+  // The legend's corner cover counts a line passing through a corner box, not only its points there: one segment
+  // from (0, 0.7) to (0.4, 1) of the axes crosses the top-left box (0.3 × 0.2 of the axes; at x = 0.2 the line is
+  // at 0.85) between its two points, which both lie outside it.
+  void legendCoverCountsSegmentsThroughACorner() {
+    Results r;
+    Table& t = r.tables.emplace_back();
+    t.name = "line";
+    t.add("x", "m", {0.0, 0.4});
+    t.add("y", "m", {0.7, 1.0});
+    QCustomPlot plot;
+    plot.resize(600, 400);
+    QVERIFY(fillPlot(plot, r, makePlot("p", "Line", "line", "x", {"y"})));
+    plot.xAxis->setRange(0.0, 1.0);
+    plot.yAxis->setRange(0.0, 1.0);
+    plot.replot();  // lays out the axes: their size in pixels
+    const QRect rect = plot.axisRect()->rect();
+    // Less the 12-pixel inset margin the cover adds: a box of 0.3 × 0.2 of the axes.
+    const QSizeF legend(0.3 * rect.width() - 12.0, 0.2 * rect.height() - 12.0);
+    const std::array<int, 4> cover = legendCornerCover(plot, *plot.axisRect(), legend);
+    QCOMPARE(cover[0], 0);  // top right
+    QCOMPARE(cover[1], 1);  // top left: the segment, neither of its points
+    QCOMPARE(cover[2], 0);
+    QCOMPARE(cover[3], 0);
+  }
+
+  // A curve that fills every corner (an oscillation over the whole range) leaves no corner to the legend: it goes
+  // under the axes, its entries side by side; when the axes are zoomed to where a corner is empty, it goes inside.
+  void legendGoesUnderTheAxesWhenEveryCornerHasACurve() {
+    Results r;
+    Table& t = r.tables.emplace_back();
+    t.name = "wave";
+    std::vector<double> x, a, b;
+    for (int i = 0; i <= 2000; ++i) {
+      x.push_back(i * 0.01);
+      a.push_back(std::sin(2.0 * M_PI * x.back()));
+      b.push_back(0.5 * std::cos(2.0 * M_PI * x.back()));
+    }
+    t.add("t", "s", x, "Time");
+    t.add("a", "m", a, "Surge");
+    t.add("b", "m", b, "Sway");
+    QCustomPlot plot;
+    plot.resize(800, 500);
+    QVERIFY(fillPlot(plot, r, makePlot("p", "Motion", "wave", "t", {"a", "b"})));
+    QCOMPARE(plot.axisRect()->insetLayout()->elementCount(), 0);
+    auto* grid = plot.plotLayout();
+    auto* legend = qobject_cast<QCPLegend*>(grid->element(grid->rowCount() - 1, 0));
+    QVERIFY(legend);
+    QCOMPARE(legend->itemCount(), 2);
+    QCOMPARE(legend->columnCount(), 2);  // one row: both entries fit the width side by side
+    // Zoomed into the first quarter period (the curves rise from the bottom left and fall to the right), the top
+    // left is empty: the legend goes there.
+    plot.xAxis->setRange(0.0, 0.25);
+    plot.yAxis->setRange(-1.2, 1.2);
+    placePlotLegend(plot);
+    QCOMPARE(plot.axisRect()->insetLayout()->elementCount(), 1);
+    QVERIFY(qobject_cast<QCPLegend*>(plot.axisRect()->insetLayout()->elementAt(0)));
+    QCOMPARE(plot.axisRect()->insetLayout()->insetAlignment(0), Qt::AlignTop | Qt::AlignLeft);
+    QCOMPARE(grid->rowCount(), 2);  // the title and the axes: the legend's row is gone
+  }
+
+  // In a narrow plot, legend entries wider than the plot are shortened with "…" in the middle; the whole text stays as the
   // graph's full name (the legend entry's tooltip and the hover read-out show it).
   void longLegendEntriesAreElidedInANarrowPlot() {
     const std::string long_name = "horizontal component of the top reaction force in the global frame";
@@ -199,9 +262,11 @@ class TestPlotAxes : public QObject {
     QVERIFY(fillPlot(plot, r, makePlot("p", "Top reaction", "curve", "x",
                                        {long_name, "vertical component of the top reaction force"})));
     const QString full = QString::fromStdString(long_name) + QStringLiteral(" [N]");
-    // Qt ends it with "…" (or "..." where the font lacks the ellipsis).
-    QVERIFY2(plot.graph(0)->name().endsWith(QChar(0x2026)) || plot.graph(0)->name().endsWith(QStringLiteral("...")),
+    // Shortened in the middle ("…", or "..." where the font lacks the ellipsis): the end that tells entries apart
+    // (here the unit) stays.
+    QVERIFY2(plot.graph(0)->name().contains(QChar(0x2026)) || plot.graph(0)->name().contains(QStringLiteral("...")),
              qPrintable(plot.graph(0)->name()));
+    QVERIFY2(plot.graph(0)->name().endsWith(QStringLiteral(" [N]")), qPrintable(plot.graph(0)->name()));
     QVERIFY(plot.graph(0)->name().size() < full.size());
     QCOMPARE(fullGraphName(*plot.graph(0)), full);
     // Every legend entry fits the plot's width.

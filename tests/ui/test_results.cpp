@@ -1,6 +1,6 @@
 // The views of a finished run, on Qt's offscreen platform: the results table copied and exported,
-// the report's summary.md with awkward names, the folder a dialog starts in, and the run panel's
-// log and progress after a cancel.
+// the report's summary.md with awkward names, the folder a dialog starts in, the run panel's
+// log and progress after a cancel, and the plot a finished run opens on.
 #include <QAction>
 #include <QApplication>
 #include <QClipboard>
@@ -16,7 +16,10 @@
 
 #include <qcustomplot.h>
 
+#include "catalog.hpp"
+#include "core/run_context.hpp"
 #include "core/scenario.hpp"
+#include "plots/plot_panel.hpp"
 #include "plots/display_units.hpp"
 #include "plots/result_plot.hpp"
 #include "plots/plot_export.hpp"
@@ -52,6 +55,32 @@ int unescapedPipes(const std::string& line) {
   return n;
 }
 
+// A table "t" over x = 0, 1, 2 with one column per (name, values), each drawn in a plot of the same name.
+Results plotsOf(const std::vector<std::pair<std::string, std::vector<double>>>& columns) {
+  Results r;
+  Table& t = r.tables.emplace_back();
+  t.name = std::string(1, 't');  // (GCC 12 reports a false -Warray-bounds for a one-letter literal assigned here)
+  t.add("x", "s", {0.0, 1.0, 2.0});
+  for (const auto& [name, values] : columns) {
+    t.add(name, "m", values);
+    r.plots.push_back(makePlot(name, name, "t", "x", {name}));
+  }
+  return r;
+}
+
+// A built-in scenario run as the GUI runs it, shown in `panel` as the main window shows a finished run.
+std::shared_ptr<const Results> showBuiltin(PlotPanel& panel, const std::string& id) {
+  const BuiltinScenario* b = findBuiltin(id);
+  if (!b) return nullptr;
+  const SceneDefinition& scene = requireScene(b->scenario.scene);
+  RunContext context({}, nullptr);
+  auto results = std::make_shared<const Results>(runScenario(scene, b->scenario, context));
+  panel.setDeclaredGroups(scene.plot_groups);
+  panel.showResults(results, QStringLiteral("run 1"));
+  panel.showPlotWithData();
+  return results;
+}
+
 }  // namespace
 
 class ResultsViewsTest : public QObject {
@@ -59,6 +88,68 @@ class ResultsViewsTest : public QObject {
 
  private slots:
   void initTestCase() { test::isolateSettings(); }
+
+  // Zeros and round-off are no data; a small value beside nothing larger in its unit is.
+  void plotCarriesDataIgnoresZerosAndRoundOff() {
+    const Results r = plotsOf({{"zero", {0.0, 0.0, 0.0}},
+                               {"round_off", {0.0, 2e-14, 0.0}},
+                               {"depth", {-100.0, -50.0, 0.0}},
+                               {"nan", {std::nan(""), 0.0, 0.0}}});
+    QVERIFY(!plotCarriesData(r, r.plots[0]));
+    QVERIFY(!plotCarriesData(r, r.plots[1]));  // 2e-16 of the 100 m beside it
+    QVERIFY(plotCarriesData(r, r.plots[2]));
+    QVERIFY(!plotCarriesData(r, r.plots[3]));
+    const Results alone = plotsOf({{"tiny", {0.0, 1e-9, 0.0}}});
+    QVERIFY(plotCarriesData(alone, alone.plots[0]));
+  }
+
+  // A finished run whose first plot is all zeros opens on the first plot with data, unless the user chose the plot.
+  void finishedRunOpensOnAPlotWithData() {
+    auto r = std::make_shared<const Results>(plotsOf({{"history", {0.0, 0.0, 0.0}}, {"shape", {1.0, 2.0, 3.0}}}));
+    PlotPanel panel;
+    panel.resize(600, 400);
+    panel.showResults(r, QStringLiteral("run 1"));
+    QCOMPARE(panel.tabs()->currentIndex(), 0);
+    panel.showPlotWithData();
+    QCOMPARE(panel.tabs()->currentIndex(), 1);
+    // The user's own choice of the empty plot stays, for this run and the next.
+    emit panel.tabs()->tabBarClicked(0);
+    panel.tabs()->setCurrentIndex(0);
+    QVERIFY(panel.userChosePlot());
+    panel.showResults(r, QStringLiteral("run 2"));
+    panel.showPlotWithData();
+    QCOMPARE(panel.tabs()->currentIndex(), 0);
+    // Another scenario (clear()) chooses again; a plot with data is left as it is.
+    panel.clear();
+    panel.showResults(r, QStringLiteral("run 3"));
+    panel.showPlotWithData();
+    QCOMPARE(panel.tabs()->currentIndex(), 1);
+    auto both = std::make_shared<const Results>(plotsOf({{"a", {0.0, 1.0, 0.0}}, {"b", {1.0, 2.0, 3.0}}}));
+    panel.clear();
+    panel.showResults(both, QStringLiteral("run 4"));
+    panel.showPlotWithData();
+    QCOMPARE(panel.tabs()->currentIndex(), 0);
+  }
+
+  // The statics-and-modes-only riser opens on a plot with its result (its stress profile is zero, its shape
+  // round-off), a dynamic riser on its first plot, the probe's displacement over time.
+  void builtInRunsOpenOnTheirResult() {
+    if (!findBuiltin("riser_paper_case3_pretensioned") || !findBuiltin("riser_peer_fixed_height"))
+      QSKIP("the riser scene is not built in");
+    PlotPanel statics;
+    statics.resize(600, 400);
+    const auto modes_run = showBuiltin(statics, "riser_paper_case3_pretensioned");
+    const PlotSpec& shown = statics.currentView()->spec();
+    QVERIFY2(plotCarriesData(*modes_run, shown), shown.name.c_str());
+    QVERIFY2(shown.name.rfind("frequency_", 0) == 0, shown.name.c_str());
+    PlotPanel dynamic;
+    dynamic.resize(600, 400);
+    const auto dynamic_run = showBuiltin(dynamic, "riser_peer_fixed_height");
+    QVERIFY(!dynamic.groups().empty());
+    QCOMPARE(dynamic.tabs()->currentIndex(), dynamic.groups().front().plots.front());
+    QVERIFY(plotCarriesData(*dynamic_run, dynamic.currentView()->spec()));
+    QCOMPARE(dynamic.currentView()->spec().table, std::string("history"));
+  }
 
   void copyPutsTabSeparatedScalarsWithHeaderOnTheClipboard() {
     ResultsSummary summary;

@@ -134,6 +134,38 @@ class SectionViewTest : public QObject {
     QVERIFY(!camera->GetParallelProjection());
     QCOMPARE(actorCount(view), 1);
   }
+
+  // However narrow the view (the colour bar moved left to keep its title inside), the section ends left of the
+  // bar's strip, and left of its title where it reaches up beside the title, and still fills a good part of the
+  // view: the 40 m × 30 m section (water included), and a wide, low one (400 m × 30 m) that stays below the title.
+  void aSectionIsFramedLeftOfTheColourBar() {
+    const Results square = sectionResults();
+    Results wide = sectionResults();
+    for (Eigen::Vector3d& p : wide.view.frames[0].shapes[0].points) p.x() *= 10.0;
+    for (const Results* results : {&square, static_cast<const Results*>(&wide)})
+      for (const int width : {900, 460, 320}) {
+        SceneView view;
+        view.resize(width, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        view.showResults(std::make_shared<Results>(*results));
+        QTest::qWait(50);
+        const auto e = view.projectedModelExtent();
+        const SceneView::ColorBarExtent bar = view.colorBarExtent();  // fractions; the view spans [-1, 1]
+        const double strip = 2.0 * bar.strip_left - 1.0, whole = 2.0 * bar.left - 1.0;
+        const double title_bottom = 2.0 * bar.title_bottom - 1.0;
+        const QString what = QStringLiteral("%1, %2 px: section x %3 … %4, y up to %5; bar from %6, strip from %7, "
+                                            "title above %8")
+                                 .arg(results == &wide ? "wide" : "square").arg(width).arg(e[0]).arg(e[1]).arg(e[3])
+                                 .arg(whole).arg(strip).arg(title_bottom);
+        qInfo("%s", qPrintable(what));
+        // Clear of the strip (or at the least the view keeps for the section, its left half).
+        QVERIFY2(e[1] <= strip + 1e-6 || e[1] <= 1e-6, qPrintable(what));
+        if (e[3] > title_bottom) QVERIFY2(e[1] <= whole + 1e-6 || e[1] <= 1e-6, qPrintable(what));
+        QVERIFY(e[0] >= -1.0 - 1e-6);
+        QVERIFY2(e[1] - e[0] >= 0.8, qPrintable(what));
+      }
+  }
 };
 
 QTEST_MAIN(SectionViewTest)

@@ -18,6 +18,8 @@
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkScalarsToColors.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
 
 #include "catalog.hpp"
 #include "core/run_context.hpp"
@@ -269,6 +271,40 @@ class View3dTest : public QObject {
     QTest::qWait(20);
     view.glWidget()->renderer()->GetBackground(bottom);
     QVERIFY(QColor::fromRgbF(bottom[0], bottom[1], bottom[2]).lightnessF() > 0.8);
+    applyTheme(Theme::System);
+  }
+
+  // Text over the model stays readable: the caption and the colour bar's title and labels sit on a box of at
+  // least 70 % opacity whose lightness differs from the text's by at least 0.5, in both themes.
+  void textSitsOnAContrastingBackdrop() {
+    SceneView view;
+    view.resize(600, 400);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.showResults(std::make_shared<const Results>(test::verticalTubeResults(100.0, 0.25)));
+    for (const Theme theme : {Theme::Light, Theme::Dark}) {
+      applyTheme(theme);
+      QTest::qWait(20);
+      std::vector<vtkTextProperty*> texts;
+      vtkPropCollection* props = view.glWidget()->renderer()->GetViewProps();
+      props->InitTraversal();
+      while (vtkProp* prop = props->GetNextProp()) {
+        if (auto* text = vtkTextActor::SafeDownCast(prop)) texts.push_back(text->GetTextProperty());
+        if (auto* bar = ColorBarActor::SafeDownCast(prop)) {
+          texts.push_back(bar->GetTitleTextProperty());
+          texts.push_back(bar->GetLabelTextProperty());
+        }
+      }
+      QCOMPARE(texts.size(), std::size_t(3));  // the caption, the bar's title and its labels
+      for (vtkTextProperty* t : texts) {
+        const double* fg = t->GetColor();
+        const double* bg = t->GetBackgroundColor();
+        const double contrast = std::abs(QColor::fromRgbF(fg[0], fg[1], fg[2]).lightnessF() -
+                                         QColor::fromRgbF(bg[0], bg[1], bg[2]).lightnessF());
+        QVERIFY2(t->GetBackgroundOpacity() >= 0.7, qPrintable(QString::number(t->GetBackgroundOpacity())));
+        QVERIFY2(contrast >= 0.5, qPrintable(QString::number(contrast)));
+      }
+    }
     applyTheme(Theme::System);
   }
 

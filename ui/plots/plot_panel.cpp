@@ -18,6 +18,7 @@
 #include "core/resources.hpp"
 #include "plots/plot_export.hpp"
 #include "plots/reference_data.hpp"
+#include "plots/result_plot.hpp"
 #include "widgets/flow_layout.hpp"
 
 namespace maris::ui {
@@ -90,6 +91,10 @@ PlotPanel::PlotPanel(QWidget* parent)
   });
   plot_list_->hide();
   connect(plot_list_, &PlotList::plotChosen, tabs_, &QTabWidget::setCurrentIndex);
+  // The user's own choices of a plot (not the panel's, nor a --tab from the command line).
+  connect(plot_list_, &PlotList::plotChosen, this, [this] { plot_chosen_ = true; });
+  connect(tabs_, &QTabWidget::tabBarClicked, this, [this] { plot_chosen_ = true; });
+  connect(group_box_, &QComboBox::activated, this, [this] { plot_chosen_ = true; });
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -133,6 +138,7 @@ void PlotPanel::clear() {
   plot_list_->clear();
   plot_list_->hide();
   list_mode_ = false;
+  plot_chosen_ = false;
   tabs_->tabBar()->show();
   qDeleteAll(views_);
   views_.clear();
@@ -147,6 +153,21 @@ void PlotPanel::showResults(std::shared_ptr<const Results> results, const QStrin
   if (!shown_) return;
   rebuildTabs(*shown_);
   redrawAll();
+}
+
+void PlotPanel::showPlotWithData() {
+  if (plot_chosen_ || !shown_) return;
+  const int current = tabs_->currentIndex();
+  if (current >= 0 && current < count() && plotCarriesData(*shown_, views_[current]->spec())) return;
+  std::vector<int> offered;  // the groups' plots in their order, else the tabs'
+  for (const PlotGroup& g : groups_) offered.insert(offered.end(), g.plots.begin(), g.plots.end());
+  if (offered.empty())
+    for (int i = 0; i < count(); ++i) offered.push_back(i);
+  for (int i : offered)
+    if (i < count() && plotCarriesData(*shown_, views_[i]->spec())) {
+      tabs_->setCurrentIndex(i);
+      return;
+    }
 }
 
 void PlotPanel::rebuildTabs(const Results& results) {

@@ -37,6 +37,12 @@ class PlotPanel : public QWidget {
   // current tab, and the change between a live run's plots and the finished run's (which has more)
   // makes no new views after the first run (making a plot view and its first layout cost ~2 ms each).
   void showResults(std::shared_ptr<const Results> results, const QString& label);
+  // A finished run's first plot: when the shown plot draws nothing but zeros (a statics-only run's time history) and
+  // the user has not chosen a plot since the scenario was opened, the first plot (in the order they are offered)
+  // that carries data is shown instead (plotCarriesData).
+  void showPlotWithData();
+  // Whether the user chose the shown plot (a tab, the plot list or the group chooser) since the last clear().
+  bool userChosePlot() const { return plot_chosen_; }
   // The groups the shown scene declares (SceneDefinition::plot_groups); set before its results are shown. Shown
   // results are grouped again when they change.
   void setDeclaredGroups(const std::vector<PlotGroupSpec>& declared);
@@ -99,6 +105,7 @@ class PlotPanel : public QWidget {
   std::vector<PlotGroup> groups_;
   std::vector<PlotGroupSpec> declared_groups_;
   bool grouping_ = false;  // inside showGroup: tab changes are its own
+  bool plot_chosen_ = false;  // the user picked a plot: showPlotWithData leaves it
   QAction* log_x_;
   QAction* log_y_;
   QMenu* overlay_menu_;

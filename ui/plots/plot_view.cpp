@@ -35,6 +35,7 @@ PlotView::PlotView(PlotSpec spec, QWidget* parent)
   layout->addWidget(plot_, 1);
   layout->addWidget(readout_);
   plot_->hide();
+  plot_->installEventFilter(this);
   connect(plot_, &QCustomPlot::mouseMove, this, &PlotView::onMouseMove);
   connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { resetZoom(); });
 }
@@ -58,6 +59,16 @@ void PlotView::setReferences(std::vector<Table> references) {
 void PlotView::showEvent(QShowEvent* event) {
   QWidget::showEvent(event);
   ensureDrawn();
+}
+
+bool PlotView::eventFilter(QObject* watched, QEvent* event) {
+  // Which corner is free, and how many legend entries fit side by side under the axes, depend on the plot's size;
+  // the plot is drawn (and its legend first placed) before it is shown and laid out at its size.
+  if (watched == plot_ && event->type() == QEvent::Resize && has_data_ && !stale_) {
+    placePlotLegend(*plot_);
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+  }
+  return QWidget::eventFilter(watched, event);
 }
 
 void PlotView::ensureDrawn() const {
@@ -85,7 +96,7 @@ void PlotView::redraw() {
     if (keep) {
       plot_->axisRect()->axis(QCPAxis::atBottom)->setRange(kept_x);
       plot_->axisRect()->axis(QCPAxis::atLeft)->setRange(kept_y);
-      moveLegendToEmptiestCorner(*plot_);
+      placePlotLegend(*plot_);
     }
     watchUserRange();
     tracer_ = new QCPItemTracer(plot_);
@@ -140,7 +151,7 @@ void PlotView::applyAxisScales() {
   apply(rect->axis(QCPAxis::atLeft), log_y_);
   apply(rect->axis(QCPAxis::atRight), log_y_);
   fitAxesToData(*plot_);
-  moveLegendToEmptiestCorner(*plot_);
+  placePlotLegend(*plot_);
 }
 
 // A new axis scale fits the data again (a linear range rarely makes sense on a log axis).

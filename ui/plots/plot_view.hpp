@@ -63,6 +63,7 @@ class PlotView : public QWidget {
  protected:
   void changeEvent(QEvent* event) override;  // a new palette (theme) redraws in its colours
   void showEvent(QShowEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;  // the plot resized: its legend is placed again
 
  private:
   void redraw();

@@ -1,8 +1,10 @@
 #include "plots/result_plot.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include <QDir>
@@ -131,77 +133,180 @@ QString yAxisLabel(const Table& table, const std::vector<std::string>& columns, 
   return severalColumnsLabel(table, columns, title);
 }
 
-// Where a legend of `entries` lines hides the fewest data points: the share of all points inside
-// each corner box of the axis rect (in axis fractions, log axes in log space).
-Qt::Alignment emptiestCorner(const QCustomPlot& plot, const QCPAxisRect& rect, int entries) {
-  const QCPAxis* xa = rect.axis(QCPAxis::atBottom);
-  auto fraction = [](const QCPAxis* axis, double v) {
-    const QCPRange r = axis->range();
-    if (axis->scaleType() == QCPAxis::stLogarithmic) {
-      if (v <= 0 || r.lower <= 0) return -1.0;
-      return std::log(v / r.lower) / std::log(r.upper / r.lower);
-    }
-    return r.size() > 0 ? (v - r.lower) / r.size() : 0.5;
-  };
-  const double box_w = 0.42, box_h = std::min(0.07 * entries + 0.04, 0.7);
-  const Qt::Alignment corners[] = {Qt::AlignTop | Qt::AlignRight, Qt::AlignTop | Qt::AlignLeft,
-                                   Qt::AlignBottom | Qt::AlignRight, Qt::AlignBottom | Qt::AlignLeft};
-  int counts[4] = {0, 0, 0, 0};
-  for (int g = 0; g < plot.graphCount(); ++g) {
-    const auto data = plot.graph(g)->data();
-    const int n = data->size();
-    const int stride = std::max(1, n / 2000);  // a sample is enough to find the emptiest corner
-    for (int i = 0; i < n; i += stride) {
-      const double fx = fraction(xa, data->at(i)->key), fy = fraction(plot.graph(g)->valueAxis(), data->at(i)->value);
-      const bool right = fx > 1.0 - box_w, left = fx < box_w, top = fy > 1.0 - box_h, bottom = fy < box_h;
-      counts[0] += right && top;
-      counts[1] += left && top;
-      counts[2] += right && bottom;
-      counts[3] += left && bottom;
-    }
+// A plot point in fractions of the axes (0 … 1 inside them; log axes in log space); NaN where a log axis cannot
+// show it.
+double axisFraction(const QCPAxis* axis, double v) {
+  const QCPRange r = axis->range();
+  if (axis->scaleType() == QCPAxis::stLogarithmic) {
+    if (v <= 0 || r.lower <= 0) return std::numeric_limits<double>::quiet_NaN();
+    return std::log(v / r.lower) / std::log(r.upper / r.lower);
   }
-  return corners[std::min_element(counts, counts + 4) - counts];
+  return r.size() > 0 ? (v - r.lower) / r.size() : 0.5;
 }
 
+// Whether the segment a–b (axis fractions) passes through the box [x0, x1] × [y0, y1] (Liang–Barsky clipping).
+bool segmentCrossesBox(double ax, double ay, double bx, double by, double x0, double x1, double y0, double y1) {
+  double t0 = 0.0, t1 = 1.0;
+  const double dx = bx - ax, dy = by - ay;
+  const double p[4] = {-dx, dx, -dy, dy}, q[4] = {ax - x0, x1 - ax, ay - y0, y1 - ay};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0.0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// The axis rect's size in pixels: its laid-out size once the plot was drawn at its present size, else the plot's
+// size less room for the tick labels, axis labels and title (a plot not yet shown is taken as 600 × 400).
+QSizeF axisRectPixels(const QCustomPlot& plot, const QCPAxisRect& rect) {
+  if (rect.width() > 50 && rect.height() > 50 && plot.viewport().size() == plot.size())
+    return QSizeF(rect.width(), rect.height());
+  const double w = plot.width() > 100 ? plot.width() : 600, h = plot.height() > 100 ? plot.height() : 400;
+  return QSizeF(std::max(50.0, w - 90.0), std::max(50.0, h - 80.0));
+}
+
+// The legend of a plot (fillPlot makes one, inside the axes or in a row under them), or null.
+QCPLegend* findPlotLegend(const QCustomPlot& plot) {
+  for (QCPLayoutElement* e : plot.plotLayout()->elements(true))
+    if (auto* legend = qobject_cast<QCPLegend*>(e)) return legend;
+  return nullptr;
+}
 
 }  // namespace
+
+std::array<int, 4> legendCornerCover(const QCustomPlot& plot, const QCPAxisRect& rect, QSizeF legend_px) {
+  const QSizeF rect_px = axisRectPixels(plot, rect);
+  // The inset layout keeps the legend 12 px from the axes (QCPLayoutInset's margins): that strip is covered too.
+  const double box_w = std::min(1.0, (legend_px.width() + 12.0) / rect_px.width());
+  const double box_h = std::min(1.0, (legend_px.height() + 12.0) / rect_px.height());
+  std::array<int, 4> hidden{0, 0, 0, 0};
+  const struct {
+    double x0, x1, y0, y1;
+  } boxes[4] = {{1.0 - box_w, 1.0, 1.0 - box_h, 1.0},
+                {0.0, box_w, 1.0 - box_h, 1.0},
+                {1.0 - box_w, 1.0, 0.0, box_h},
+                {0.0, box_w, 0.0, box_h}};
+  for (int g = 0; g < plot.graphCount(); ++g) {
+    const QCPGraph* graph = plot.graph(g);
+    const auto data = graph->data();
+    const int n = data->size();
+    const int stride = std::max(1, n / 2000);  // a sample is enough to see which corners the data pass through
+    const bool lines = graph->lineStyle() != QCPGraph::lsNone;
+    double px = 0, py = 0;
+    bool have_previous = false;
+    for (int i = 0; i < n; i += stride) {
+      const double fx = axisFraction(graph->keyAxis(), data->at(i)->key);
+      const double fy = axisFraction(graph->valueAxis(), data->at(i)->value);
+      if (!std::isfinite(fx) || !std::isfinite(fy)) {
+        have_previous = false;
+        continue;
+      }
+      for (int c = 0; c < 4; ++c) {
+        const auto& b = boxes[c];
+        const bool inside = fx >= b.x0 && fx <= b.x1 && fy >= b.y0 && fy <= b.y1;
+        hidden[c] += inside || (lines && have_previous && segmentCrossesBox(px, py, fx, fy, b.x0, b.x1, b.y0, b.y1));
+      }
+      px = fx;
+      py = fy;
+      have_previous = true;
+    }
+  }
+  return hidden;
+}
+
+void placePlotLegend(QCustomPlot& plot) {
+  QCPLegend* legend = findPlotLegend(plot);
+  QCPAxisRect* rect = plot.axisRect();
+  if (!legend || !rect) return;
+  // Taken out of wherever it is, then put where it hides least.
+  if (legend->layout()) legend->layout()->take(legend);
+  plot.plotLayout()->simplify();
+  std::vector<QCPAbstractPlottable*> entries;
+  for (int i = 0; i < legend->itemCount(); ++i)
+    if (auto* item = qobject_cast<QCPPlottableLegendItem*>(legend->item(i))) entries.push_back(item->plottable());
+  const QFontMetrics metrics(legend->font());
+  const int plot_width = plot.width() > 100 ? plot.width() : 600;
+  auto entry_width = [&](const QString& name) { return metrics.horizontalAdvance(name) + legend->iconSize().width() + 24; };
+  int widest = 0;
+  for (QCPAbstractPlottable* p : entries) widest = std::max(widest, entry_width(fullGraphName(*p)));
+  // Entries too wide or too many for a corner go under the axes; wider than the plot, they are shortened with "…" in
+  // the middle, keeping the end that tells entries apart (", float 2", the unit). The whole name stays as the
+  // graph's "full_name": the hover read-out and the entry's tooltip show it.
+  bool below = widest > 0.45 * plot_width || entries.size() > 8;
+  const int room = plot_width - legend->iconSize().width() - 40;
+  for (QCPAbstractPlottable* p : entries) {
+    const QString full = fullGraphName(*p);
+    p->setProperty(kFullNameProperty, full);
+    p->setName(metrics.elidedText(full, Qt::ElideMiddle, room));
+  }
+  Qt::Alignment corner = Qt::AlignTop | Qt::AlignRight;
+  if (!below) {
+    legend->setWrap(0);
+    legend->setFillOrder(QCPLayoutGrid::foRowsFirst, true);
+    const QSize size = legend->minimumOuterSizeHint();
+    const std::array<int, 4> hidden = legendCornerCover(plot, *rect, QSizeF(size.width(), size.height()));
+    const Qt::Alignment corners[] = {Qt::AlignTop | Qt::AlignRight, Qt::AlignTop | Qt::AlignLeft,
+                                     Qt::AlignBottom | Qt::AlignRight, Qt::AlignBottom | Qt::AlignLeft};
+    const auto best = std::min_element(hidden.begin(), hidden.end());
+    corner = corners[best - hidden.begin()];
+    // Every corner crosses a curve (an oscillation fills the axes): under the axes it hides nothing.
+    below = *best > 0;
+  }
+  if (below) {
+    // Entries side by side in as many columns as the plot's width holds: a short block under the axes.
+    int shown_widest = 0;
+    for (QCPAbstractPlottable* p : entries) shown_widest = std::max(shown_widest, entry_width(p->name()));
+    const int count = static_cast<int>(entries.size());
+    int columns = std::max(1, (plot_width - 20) / std::max(1, shown_widest));
+    // More than three rows would take the axes' height: more columns (each at least 160 px), entries shortened
+    // to their column.
+    constexpr int kMaxRows = 3, kMinColumnPx = 160;
+    if ((count + columns - 1) / columns > kMaxRows) {
+      const int wanted = std::min((count + kMaxRows - 1) / kMaxRows, std::max(1, (plot_width - 20) / kMinColumnPx));
+      if (wanted > columns) {
+        columns = wanted;
+        const int column_room = (plot_width - 20) / columns - legend->iconSize().width() - 24;
+        for (QCPAbstractPlottable* p : entries)
+          p->setName(metrics.elidedText(fullGraphName(*p), Qt::ElideMiddle, column_room));
+      }
+    }
+    legend->setWrap(std::min(static_cast<int>(entries.size()), columns));
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    const int row = plot.plotLayout()->rowCount();
+    plot.plotLayout()->addElement(row, 0, legend);
+    plot.plotLayout()->setRowStretchFactor(row, 0.001);
+    legend->setMargins(QMargins(6, 2, 6, 2));
+  } else {
+    legend->setMargins(QMargins(7, 5, 7, 4));  // QCPLegend's own
+    rect->insetLayout()->addElement(legend, corner);
+  }
+}
 
 void setLogScale(QCPAxis* axis) {
   axis->setScaleType(QCPAxis::stLogarithmic);
   axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
 }
 
-// A legend inside the axes at their emptiest corner, or under them when its entries are too wide
-// to sit inside without covering the curves.
+// A legend inside the axes at a corner where it hides no curve, or under them (placePlotLegend).
 void addPlotLegend(QCustomPlot& plot, QCPAxisRect& rect) {
   auto* legend = new QCPLegend;
-  const QFontMetrics metrics(legend->font());
-  int widest = 0;
-  for (int i = 0; i < plot.graphCount(); ++i)
-    widest = std::max(widest, metrics.horizontalAdvance(plot.graph(i)->name()) + legend->iconSize().width() + 24);
-  const int plot_width = plot.width() > 100 ? plot.width() : 600;
-  if (widest > 0.45 * plot_width || plot.graphCount() > 8) {
-    const int row = plot.plotLayout()->rowCount();
-    plot.plotLayout()->addElement(row, 0, legend);
-    plot.plotLayout()->setRowStretchFactor(row, 0.001);
-    legend->setMargins(QMargins(6, 2, 6, 2));
-    // Entries wider than the plot are shortened; the whole name stays as the graph's "full_name" (the hover
-    // read-out and the legend entry's tooltip show it).
-    const int room = plot_width - legend->iconSize().width() - 40;
-    for (int i = 0; i < plot.graphCount(); ++i) {
-      QCPGraph* g = plot.graph(i);
-      g->setProperty(kFullNameProperty, g->name());
-      g->setName(metrics.elidedText(g->name(), Qt::ElideRight, room));
-    }
-  } else {
-    rect.insetLayout()->addElement(legend, emptiestCorner(plot, rect, plot.graphCount()));
-  }
+  // Parked in the axes' inset until placed (an element needs a layout for its plot and font).
+  rect.insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
   legend->setLayer(QLatin1String("legend"));
   for (int i = 0; i < plot.graphCount(); ++i) plot.graph(i)->addToLegend(legend);
   const DrawingColors colors = drawingColors(plot.palette());
   legend->setBrush(colors.legend_background);
   legend->setBorderPen(QPen(colors.foreground, 0.8));
   legend->setTextColor(colors.foreground);
+  placePlotLegend(plot);
 }
 
 bool fillPlot(QCustomPlot& plot, const Results& results, const PlotSpec& spec) {
@@ -301,13 +406,26 @@ void applyPlotColors(QCustomPlot& plot) {
   }
 }
 
-void moveLegendToEmptiestCorner(QCustomPlot& plot) {
-  QCPAxisRect* rect = plot.axisRect();
-  if (!rect) return;
-  QCPLayoutInset* inset = rect->insetLayout();
-  for (int i = 0; i < inset->elementCount(); ++i)
-    if (auto* legend = qobject_cast<QCPLegend*>(inset->elementAt(i)))
-      inset->setInsetAlignment(i, emptiestCorner(plot, *rect, legend->itemCount()));
+bool plotCarriesData(const Results& results, const PlotSpec& spec) {
+  const Table* table = results.findTable(spec.table);
+  if (!table) return false;
+  auto largest = [](const Column& c) {
+    double m = 0.0;
+    for (double v : c.values)
+      if (std::isfinite(v)) m = std::max(m, std::abs(v));
+    return m;
+  };
+  for (const auto& name : spec.y) {
+    const Column* y = table->find(name);
+    if (!y) continue;
+    // Round-off is not data: a straight riser's lateral offsets of 1e-14 m beside its 100 m of depth. A value counts
+    // above 1e-12 of the largest magnitude among the table's columns in the same unit (itself when it is alone).
+    double scale = 0.0;
+    for (const Column& c : table->columns)
+      if (c.unit == y->unit) scale = std::max(scale, largest(c));
+    if (largest(*y) > 1e-12 * scale) return true;
+  }
+  return false;
 }
 
 int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec) {

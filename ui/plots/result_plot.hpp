@@ -3,8 +3,10 @@
 // the GUI's plot tabs and the CLI's PNG export.
 #pragma once
 
+#include <array>
 #include <vector>
 
+#include <QSizeF>
 #include <QString>
 
 #include "core/results.hpp"
@@ -21,8 +23,8 @@ QString axisLabel(const std::string& text, const std::string& unit);
 // A column's axis label and legend entry: its label for people (displayLabel) and unit, "Fn", "R_T [N]".
 QString axisLabel(const Column& column);
 
-// A legend entry too wide for a narrow plot is shortened with "…"; the graph keeps its whole name in this
-// property, for the hover read-out and the entry's tooltip.
+// A legend entry too wide for a narrow plot is shortened with "…" in the middle; the graph keeps its whole name in
+// this property, for the hover read-out and the entry's tooltip.
 inline constexpr const char* kFullNameProperty = "full_name";
 // The whole name of a graph (its name where it was not shortened).
 QString fullGraphName(const QCPAbstractPlottable& graph);
@@ -49,16 +51,25 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
 // Background, axes, grid and text in the colours of the plot's palette (light or dark theme).
 void applyPlotColors(QCustomPlot& plot);
 
-// After the axes changed (log scale, rescale): moves a legend that sits inside the axes to the
-// corner where it hides the fewest data points.
-void moveLegendToEmptiestCorner(QCustomPlot& plot);
+// Puts the plot's legend where it hides no data: inside the axes at a corner no curve passes through (the top
+// right first), else in a row under the axes (entries side by side as the width allows). A legend whose entries are
+// too wide or too many for the axes stays under them. Called again after the axes changed (log scale, zoom).
+void placePlotLegend(QCustomPlot& plot);
+
+// For each corner of `rect` (top right, top left, bottom right, bottom left), how many of the plot's drawn points
+// and line segments a legend of `legend_px` pixels there would cover (0: it covers no curve).
+std::array<int, 4> legendCornerCover(const QCustomPlot& plot, const QCPAxisRect& rect, QSizeF legend_px);
 
 // A logarithmic scale with decade ticks.
 void setLogScale(QCPAxis* axis);
 
-// A legend of the plot's graphs inside `rect` at its emptiest corner, or under the axes when its
-// entries are too wide to sit inside without covering the curves; in the palette's colours.
+// A legend of the plot's graphs, placed by placePlotLegend; in the palette's colours.
 void addPlotLegend(QCustomPlot& plot, QCPAxisRect& rect);
+
+// Whether `spec` drawn from `results` shows anything: one of its y columns has a finite value that is not zero nor
+// round-off (above 1e-12 of the largest magnitude in that unit in the table). A statics-only run's time history is
+// one row of zeros; a straight riser's bending stress is zero and its lateral offsets are 1e-14 m.
+bool plotCarriesData(const Results& results, const PlotSpec& spec);
 
 // Number of data points of the graphs drawn from the first source's y columns.
 int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec);

@@ -194,9 +194,17 @@ void SceneView::applyPaletteColors() {
   renderer->SetBackground2(c.view_top.redF(), c.view_top.greenF(), c.view_top.blueF());
   // Text on a light background is near-black, on a dark one the palette's text colour.
   const QColor text = isDark(palette()) ? c.foreground : QColor::fromRgbF(0.1f, 0.1f, 0.1f);
+  // Text drawn over the model (a colour bar label beside a brown sea bed, the caption over a tall riser) stays
+  // readable: every label sits on a box of the view's background colour, mostly opaque.
+  const QColor backdrop = QColor::fromRgbF((c.view_top.redF() + c.view_bottom.redF()) / 2,
+                                           (c.view_top.greenF() + c.view_bottom.greenF()) / 2,
+                                           (c.view_top.blueF() + c.view_bottom.blueF()) / 2);
   for (vtkTextProperty* p : {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty(),
-                             caption_->GetTextProperty()})
+                             caption_->GetTextProperty()}) {
     p->SetColor(text.redF(), text.greenF(), text.blueF());
+    p->SetBackgroundColor(backdrop.redF(), backdrop.greenF(), backdrop.blueF());
+    p->SetBackgroundOpacity(0.8);
+  }
   gl_->requestRender();
 }
 
@@ -393,6 +401,9 @@ void SceneView::placeColorBar() {
   const double labels_px = std::ceil(strip_px * scalar_bar_->GetBarRatio()) + ColorBarActor::kLabelGap + label_px;
   const double left = colorBarLeft(view_px, strip_px, title_px, labels_px, kMarginPx, kPreferredLeft);
   scalar_bar_->GetPositionCoordinate()->SetValue(left, kBarBottom);
+  const double title_left = left * view_px + 0.5 * strip_px - 0.5 * std::max(strip_px, title_px);
+  if (view_px > 0) color_bar_.left = std::min(left, title_left / view_px);
+  color_bar_.strip_left = left;
   // The caption (top left; four lines over a ship's wave pattern) and the bar's title (top right) share the top of
   // a narrow view: where the caption reaches over to the title's left edge, the bar ends two margins below it.
   double top = kBarBottom + kBarHeight;
@@ -403,10 +414,17 @@ void SceneView::placeColorBar() {
       vtkTextRenderer::GetInstance()->GetBoundingBox(caption_->GetTextProperty(), std::string(caption), box, dpi)) {
     const double caption_right = kCaptionLeft * view_px + (box[1] - box[0]);
     const double caption_bottom = kCaptionTop * view_h - (box[3] - box[2]);
-    const double title_left = left * view_px + 0.5 * strip_px - 0.5 * std::max(strip_px, title_px);
     if (caption_right + kMarginPx > title_left) top = std::min(top, (caption_bottom - 2 * kMarginPx) / view_h);
   }
   scalar_bar_->SetHeight(std::max(kBarHeight / 2, top - kBarBottom));
+  // The title is drawn inside the bar's box, at its top, a separation above the strip.
+  int title_box[4] = {0, 0, 0, 0};
+  const double title_h = title && *title && vtkTextRenderer::GetInstance()->GetBoundingBox(
+                                                scalar_bar_->GetTitleTextProperty(), std::string(title), title_box, dpi)
+                             ? title_box[3] - title_box[2] + 2.0 * scalar_bar_->GetTextPad() +
+                                   scalar_bar_->GetVerticalTitleSeparation()
+                             : 0.0;
+  color_bar_.title_bottom = kBarBottom + scalar_bar_->GetHeight() - (view_h > 0 ? title_h / view_h : 0.0);
   gl_->requestRender();
 }
 
@@ -571,20 +589,34 @@ void SceneView::resetCamera() {
   gl_->renderer()->ResetCamera(bounds.b.data());
   // ResetCamera fits the bounding sphere, which leaves a long model (a hull, a 2-D section, a riser seen
   // across) small in a wide view. Fit the projected box instead: zoom until it fills the free part of the
-  // view (the right ~20 % holds the colour bar, the top the caption), then shift it to that part's centre.
-  const double right = have_scalars_ ? 0.55 : 0.95, left = -0.95, top = 0.80, bottom = -0.95;
+  // view (the right ~20 % holds the colour bar, the top the caption), then shift it to that part's centre. A 2-D
+  // section, a flat box as wide as its picture, would run under the bar where a narrow view moved the bar left: it
+  // ends a margin left of the bar's strip as placed for this width, and left of the bar's title too when it reaches
+  // up beside the title (keeping at least about half the view). A 3-D model keeps the fixed share: its box's corners
+  // are mostly empty space, and a tall riser needs the width.
+  const double left = -0.95, top = 0.80, bottom = -0.95;
   constexpr double kFill = 0.92;
-  for (int pass = 0; pass < 3; ++pass) {  // perspective makes one zoom step inexact: refine twice
+  auto fit = [&](double right) {
+    for (int pass = 0; pass < 3; ++pass) {  // perspective makes one zoom step inexact: refine twice
+      camera->SetWindowCenter(0.0, 0.0);
+      const auto e = projectedModelExtent();
+      const double half_x = 0.5 * (e[1] - e[0]), half_y = 0.5 * (e[3] - e[2]);
+      const double zoom = std::min(half_x > 0 ? 0.5 * (right - left) * kFill / half_x : 1e3,
+                                   half_y > 0 ? 0.5 * (top - bottom) * kFill / half_y : 1e3);
+      if (std::isfinite(zoom) && zoom > 0 && std::abs(zoom - 1.0) > 1e-3) camera->Zoom(std::clamp(zoom, 0.05, 20.0));
+    }
     camera->SetWindowCenter(0.0, 0.0);
     const auto e = projectedModelExtent();
-    const double half_x = 0.5 * (e[1] - e[0]), half_y = 0.5 * (e[3] - e[2]);
-    const double zoom = std::min(half_x > 0 ? 0.5 * (right - left) * kFill / half_x : 1e3,
-                                 half_y > 0 ? 0.5 * (top - bottom) * kFill / half_y : 1e3);
-    if (std::isfinite(zoom) && zoom > 0 && std::abs(zoom - 1.0) > 1e-3) camera->Zoom(std::clamp(zoom, 0.05, 20.0));
+    camera->SetWindowCenter(0.5 * (e[0] + e[1]) - 0.5 * (left + right), 0.5 * (e[2] + e[3]) - 0.5 * (top + bottom));
+  };
+  const bool section_beside_bar = have_scalars_ && section_axis_ >= 0;
+  // A margin left of an edge at `fraction` of the view's width, in the view's [-1, 1].
+  auto leftOf = [](double fraction) { return std::clamp(2.0 * fraction - 1.0 - 0.03, 0.0, 0.95); };
+  fit(section_beside_bar ? leftOf(color_bar_.strip_left) : have_scalars_ ? 0.55 : 0.95);
+  if (section_beside_bar && color_bar_.left < color_bar_.strip_left) {
+    const auto e = projectedModelExtent();
+    if (e[3] > 2.0 * color_bar_.title_bottom - 1.0 && e[1] > leftOf(color_bar_.left)) fit(leftOf(color_bar_.left));
   }
-  camera->SetWindowCenter(0.0, 0.0);
-  const auto e = projectedModelExtent();
-  camera->SetWindowCenter(0.5 * (e[0] + e[1]) - 0.5 * (left + right), 0.5 * (e[2] + e[3]) - 0.5 * (top + bottom));
   gl_->renderer()->ResetCameraClippingRange();
   camera_placed_ = true;
   user_moved_camera_ = false;

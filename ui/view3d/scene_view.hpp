@@ -83,6 +83,14 @@ class SceneView : public QWidget {
   // {x_min, x_max, y_min, y_max} of its eight projected corners in normalised view coordinates, the view
   // spanning [-1, 1] in each direction. For tests of the framing.
   std::array<double, 4> projectedModelExtent() const;
+  // Where the colour bar was last placed, in fractions of the view (from its left and its bottom): the left edge
+  // of the bar as a whole (its title's or its strip's, whichever reaches further left), of its strip (the labels
+  // are right of it), and the bottom of its title (above the strip). A 2-D section is framed left of the strip, and
+  // left of the title too where it reaches up beside it (resetCamera).
+  struct ColorBarExtent {
+    double left = 0.8, strip_left = 0.8, title_bottom = 0.84;
+  };
+  ColorBarExtent colorBarExtent() const { return color_bar_; }
   // Number of model actors in the current frame (planes, colour bar and triad not counted).
   int modelActorCount() const { return static_cast<int>(frame_actors_.size()); }
 
@@ -124,6 +132,7 @@ class SceneView : public QWidget {
   std::vector<vtkSmartPointer<vtkActor>> frame_actors_;
   double min_tube_radius_ = 0.0;
   bool have_scalars_ = false;
+  ColorBarExtent color_bar_;  // colorBarExtent()
   double data_lo_ = 0.0, data_hi_ = 1.0;  // scalar range of all frames
   double frame_lo_ = 0.0, frame_hi_ = 1.0;  // scalar range of the frame shown
   double magnification_ = 1.0;
