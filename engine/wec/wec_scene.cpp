@@ -70,7 +70,8 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
   res.tables.push_back(hydroTable(model, omega));
   if (p.omega_min < omega_deep && p.hydro_source == "hemisphere_hulme")
     ctx.warn(formatText("below %.3g rad/s kh < pi at %.3g m depth: the deep-water Hulme coefficients are approximate there "
-                        "(finite depth lowers heave damping by several %%); see column deep_water",
+                        "(finite depth lowers heave damping by several %%); see the column \"Deep water (1 = yes)\" of "
+                        "the frequency sweep",
                         omega_deep, p.depth));
   for (std::size_t f = 0; f < model.floats.size(); ++f) {
     const std::string n = std::to_string(f + 1);
