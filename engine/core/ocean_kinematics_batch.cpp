@@ -30,6 +30,9 @@ constexpr double kTwoPiHead = 0x1.921fb544p+2, kTwoPiTail = 0x1.0b4611a626331p-3
 constexpr double kLog2E = 0x1.71547652b82fep+0;
 constexpr double kLn2Head = 0x1.62e42fefp-1, kLn2Tail = 0x1.473de6af278edp-34;
 constexpr double kLargestExpArgument = 708.0;  // e^±708 is a normal double
+constexpr double kLargestRatioArgument = 700.0;  // depthSums' ratio form: 2^±n with |n| ≤ 1010 are normal doubles
+// Per-component arrays are padded to a multiple of this (the AVX-512 lanes; AVX2's 4 and SSE2's 2 divide it).
+constexpr std::size_t kLanes = 8;
 constexpr double kLargestSinArgument = 1e5;    // |q| < 2^17: q·(π/2 head) exact with room
 constexpr double kLargestTimePhase = 6e6;      // |n| < 2^20 turns: n·(2π head) exact
 // A point whose phases differ from the anchor's by at most this much (|k_max d| ≤ 0.2 rad) takes them by rotation;
@@ -140,24 +143,57 @@ MARIS_SIMD_CLONES double rotatedPhasesAndElevation(std::size_t n, double d, cons
   return eta;
 }
 
-// The linear kinematics sums at the stretched height z'.
-MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restrict k, const double* __restrict a_omega,
-                                 const double* __restrict a_omega2, const double* __restrict depth_scale,
-                                 const double* __restrict mirror, const double* __restrict cos_psi,
+// The linear kinematics sums at the stretched height z' over the components j < kept: the first `ratio_count` by
+// the ratio form
+//   C_j = cosh k_j(z'+h)/sinh k_j h,  S_j = sinh k_j(z'+h)/sinh k_j h,
+// the others (deep water; kh > 300, where the mirror term e^{−k(z'+2h)} ≤ e^{−kh} < 1e-130 of the component's
+// surface value; or k(z'+h) > 700, where it is below e^{−1400} of it) by C_j = S_j = e^{k_j z'}/(1 − e^{−2 k_j h})
+// (`depth_scale`, 1 in deep water).
+// Ratio form: u = k(z'+h) = n ln 2 + r, |r| ≤ ½ ln 2, one reduction for e^u and e^{−u}: with E and O the even and
+// odd Taylor series of e^r (cosh r to r^12, sinh r to r^13: next terms < 5e-18) and a = 2^n, b = 2^{−n},
+//   2 cosh u = (a + b) E + (a − b) O,  2 sinh u = (a − b) E + (a + b) O,
+// no division and no second exponential (`half_inverse_sinh` = 1/(2 sinh kh)). Near the sea bed (n = 0) a − b = 0
+// exactly, so 2 sinh u = 2 O: the odd series itself, without the cancellation of e^u − e^{−u} (which held the sea
+// bed's sinh to the rounding of e^u, not of sinh u); for n ≥ 1 the two terms cancel by at most a factor 2.3. The
+// caller keeps 0 ≤ u ≤ 700 (z' ≥ −h; `ratio_count` ends before the first k_j (z'+h) > 700), so the loop needs no
+// range clamp, which GCC vectorises only into masked code.
+MARIS_SIMD_CLONES void depthSums(std::size_t kept, std::size_t ratio_count, double z, double z_plus_h,
+                                 const double* __restrict k, const double* __restrict a_omega,
+                                 const double* __restrict a_omega2, const double* __restrict half_inverse_sinh,
+                                 const double* __restrict depth_scale, const double* __restrict cos_psi,
                                  const double* __restrict sin_psi, PointSums& out) {
+  constexpr double c2 = inverseFactorial(2), c4 = inverseFactorial(4), c6 = inverseFactorial(6),
+                   c8 = inverseFactorial(8), c10 = inverseFactorial(10), c12 = inverseFactorial(12);
+  constexpr double s3 = inverseFactorial(3), s5 = inverseFactorial(5), s7 = inverseFactorial(7),
+                   s9 = inverseFactorial(9), s11 = inverseFactorial(11), s13 = inverseFactorial(13);
   double u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
 #pragma omp simd reduction(+ : u, w, du, dw)
-  for (std::size_t j = 0; j < n; ++j) {
-    const double e1 = expKernel(k[j] * z);
-    // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300). (e^{−kz} from
-    // e^{kz}'s own reduction instead of the division rounds the two terms independently: near the sea bed, where
-    // they cancel in sinh, that exceeded the 1e-13 of the tests.)
-    const double e2 = mirror[j] / (e1 > 1e-300 ? e1 : 1e-300);
-    const double ch = (e1 + e2) * depth_scale[j], sh = (e1 - e2) * depth_scale[j];
+  for (std::size_t j = 0; j < ratio_count; ++j) {
+    const double x = k[j] * z_plus_h;
+    const double shifted = x * kLog2E + kShifter;
+    const double nearest = shifted - kShifter;
+    const std::int64_t power = std::bit_cast<std::int64_t>(shifted) - std::bit_cast<std::int64_t>(kShifter);
+    const double r = (x - nearest * kLn2Head) - nearest * kLn2Tail;
+    const double r2 = r * r;
+    const double even = 1.0 + r2 * (c2 + r2 * (c4 + r2 * (c6 + r2 * (c8 + r2 * (c10 + r2 * c12)))));
+    const double odd = r + r * r2 * (s3 + r2 * (s5 + r2 * (s7 + r2 * (s9 + r2 * (s11 + r2 * s13)))));
+    const double up = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + power) << 52);
+    const double down = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - power) << 52);
+    const double sum = up + down, difference = up - down;
+    const double ch = (sum * even + difference * odd) * half_inverse_sinh[j];
+    const double sh = (difference * even + sum * odd) * half_inverse_sinh[j];
     u += a_omega[j] * ch * cos_psi[j];
     w += a_omega[j] * sh * sin_psi[j];
     du += a_omega2[j] * ch * sin_psi[j];
     dw -= a_omega2[j] * sh * cos_psi[j];
+  }
+#pragma omp simd reduction(+ : u, w, du, dw)
+  for (std::size_t j = ratio_count; j < kept; ++j) {
+    const double e = expKernel(k[j] * z) * depth_scale[j];
+    u += a_omega[j] * e * cos_psi[j];
+    w += a_omega[j] * e * sin_psi[j];
+    du += a_omega2[j] * e * sin_psi[j];
+    dw -= a_omega2[j] * e * cos_psi[j];
   }
   out.u = u, out.w = w, out.du = du, out.dw = dw;
 }
@@ -215,9 +251,12 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     amplitude_.push_back(c.amplitude);
     a_omega_.push_back(c.amplitude * c.omega);
     a_omega2_.push_back(c.amplitude * c.omega * c.omega);
+    // Beyond kh = 300 the mirror term e^{−k(z+2h)} ≤ e^{−kh} < 1e-130 of the component's surface value: dropped
+    // (depthSums); the components are sorted by k, so those that keep it come first.
+    const bool finite = !deep && k * depth_ <= 300.0;
+    if (finite) ++finite_count_;
+    half_inverse_sinh_.push_back(finite ? 0.5 / std::sinh(k * depth_) : 0.0);
     depth_scale_.push_back(deep ? 1.0 : 1.0 / -std::expm1(-2.0 * k * depth_));
-    // Beyond kh = 300 the mirror term e^{−k(z+2h)} ≤ e^{−kh} < 1e-130 of the component's surface value: dropped.
-    mirror_.push_back(deep || k * depth_ > 300.0 ? 0.0 : std::exp(-2.0 * k * depth_));
     omega_.push_back(c.omega);
     phase_.push_back(c.phase);
     largest_k_ = std::max(largest_k_, k);
@@ -229,7 +268,7 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     tail_acceleration_[j] = tail_acceleration_[j + 1] + std::abs(a_omega2_[j]);
   }
   // The components from m on are negligible where C_m(z') ≤ B_m = ε min(T_v,0/T_v,m, T_a,0/T_a,m) (T the tail sums):
-  // with C_m(z') = cosh k(z'+h)/sinh kh (e^{kz'}/(1 − e^{−2kh}) where the mirror term is dropped), increasing in z',
+  // with C_m(z') = cosh k(z'+h)/sinh kh (e^{kz'} where the mirror term is dropped), increasing in z',
   // that is z' ≤ z*_m. The z*_m do not fall with m (C_m falls with k at z' ≤ 0, the tails fall with m); they are
   // lowered by 1e-9 (1 + |z*_m|) m, far above their rounding, so that a component is never dropped above its bound.
   negligible_below_.assign(n, -std::numeric_limits<double>::infinity());
@@ -242,25 +281,34 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     double z = std::numeric_limits<double>::infinity();
     if (std::isfinite(bound)) {
       const double k = k_[m];
-      if (mirror_[m] > 0.0) {
+      if (m < finite_count_) {
         const double argument = bound * std::sinh(k * depth_);
         z = argument >= 1.0 ? std::acosh(argument) / k - depth_ : -std::numeric_limits<double>::infinity();
       } else {
-        z = std::log(bound / depth_scale_[m]) / k;
+        z = std::log(bound) / k;
       }
       if (std::isfinite(z)) z -= 1e-9 * (1.0 + std::abs(z));
     }
     previous = std::max(previous, z);
     negligible_below_[m] = previous;
   }
+  // Padding to whole SIMD vectors: components of zero amplitude and scales (k = k_max, keeping k sorted; ω = 0):
+  // finite values that add 0.
+  const std::size_t padded = (n + kLanes - 1) / kLanes * kLanes;
+  for (auto* v : {&amplitude_, &a_omega_, &a_omega2_, &half_inverse_sinh_, &depth_scale_, &omega_, &phase_})
+    v->resize(padded, 0.0);
+  k_.resize(padded, largest_k_);
+  if (finite_count_ == n) finite_count_ = padded;
 }
 
 std::size_t WaveKinematicsBatch::keptComponents(double z) const {
-  const std::size_t n = k_.size();
-  if (!(truncation_ > 0.0) || !(z < 0.0) || n == 0) return n;
-  // The first m whose threshold z*_m lies at or above z (every component from there on negligible).
-  return static_cast<std::size_t>(std::lower_bound(negligible_below_.begin(), negligible_below_.end(), z) -
-                                  negligible_below_.begin());
+  const std::size_t padded = k_.size();
+  if (!(truncation_ > 0.0) || !(z < 0.0) || padded == 0) return padded;
+  // The first m whose threshold z*_m lies at or above z (every component from there on negligible), rounded up to
+  // whole SIMD vectors: the components up to there are summed, not dropped (a loop without a scalar remainder).
+  const auto m = static_cast<std::size_t>(std::lower_bound(negligible_below_.begin(), negligible_below_.end(), z) -
+                                          negligible_below_.begin());
+  return std::min(padded, (m + kLanes - 1) / kLanes * kLanes);
 }
 
 void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp,
@@ -325,8 +373,15 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
     if (!f.wet) continue;
     const double z = stretchedZ(p.z(), eta, depth_, field_.stretching());
     PointSums sums;
-    depthSums(keptComponents(z), z, k_.data(), a_omega_.data(), a_omega2_.data(), depth_scale_.data(), mirror_.data(),
-              cos_psi, sin_psi, sums);
+    const std::size_t kept = keptComponents(z);
+    std::size_t ratio_count = std::min(kept, finite_count_);
+    const double z_plus_h = z + depth_;  // ≥ 0 in finite water (z' ≥ −h); exact near the sea bed
+    if (ratio_count > 0 && k_[ratio_count - 1] * z_plus_h > kLargestRatioArgument)  // z' far above the surface
+      ratio_count = static_cast<std::size_t>(
+          std::upper_bound(k_.begin(), k_.begin() + static_cast<std::ptrdiff_t>(ratio_count),
+                           kLargestRatioArgument / z_plus_h) - k_.begin());
+    depthSums(kept, ratio_count, z, z_plus_h, k_.data(), a_omega_.data(), a_omega2_.data(), half_inverse_sinh_.data(),
+              depth_scale_.data(), cos_psi, sin_psi, sums);
     const Eigen::Vector3d velocity(sums.u * cos_dir_, sums.u * sin_dir_, sums.w);
     const Eigen::Vector3d acceleration(sums.du * cos_dir_, sums.du * sin_dir_, sums.dw);
     f.velocity = ramp * velocity;

@@ -5,8 +5,8 @@
 // Per time: the components' time phases θ_j = φ_j − ω_j t, reduced to [−π, π] (once per time, not per point).
 // Per point, with s = x cos β + y sin β the distance along the waves' direction (a one-directional sea):
 //   ψ_j = k_j s + θ_j,  η = r Σ a_j cos ψ_j,  z' by the field's stretching,
-//   e_j = e^{k_j z'},   e'_j = e^{−k_j (z' + 2h)} = e^{−2 k_j h} / e_j  (one exponential per component),
-//   C_j = (e_j + e'_j)/(1 − e^{−2 k_j h}),  S_j = (e_j − e'_j)/(1 − e^{−2 k_j h}).
+//   C_j = cosh k_j(z'+h)/sinh k_j h,  S_j = sinh k_j(z'+h)/sinh k_j h  (e^{k_j z'} both in deep water and where
+//   k_j h > 300), cosh and sinh from one exponential's reduction, without a division (ocean_kinematics_batch.cpp).
 // Phase rotation: cos ψ_j, sin ψ_j are computed by the sine-cosine kernel at "anchor" positions s_a only: at the
 // first point of a call, and where a point lies farther than 0.2/k_max from the last anchor, 0.9 × 0.2/k_max ahead
 // of that point in the direction the points move along s (so the anchor serves points on both sides). Every
@@ -71,10 +71,13 @@ class WaveKinematicsBatch {
   WaveField field_;
   double cos_dir_ = 1.0, sin_dir_ = 0.0, depth_ = kDeepWater, largest_k_ = 0.0;
   double truncation_ = 0.0;
+  // The components with kh ≤ 300 in finite water (the first ones): their depth sums keep the mirror term.
+  std::size_t finite_count_ = 0;
   mutable std::atomic<long> evaluations_{0};
-  // Per component, in increasing k: k, a, a ω, a ω², 1/(1 − e^{−2kh}), e^{−2kh} (0 in deep water or where it
-  // underflows), ω, φ; and the tail sums Σ_{j≥m} a_j ω_j, Σ_{j≥m} a_j ω_j² (n + 1 entries, the last 0).
-  std::vector<double> k_, amplitude_, a_omega_, a_omega2_, depth_scale_, mirror_, omega_, phase_;
+  // Per component, in increasing k: k, a, a ω, a ω², 1/(2 sinh kh) (0 where the mirror term is dropped),
+  // 1/(1 − e^{−2kh}) (1 in deep water), ω, φ; padded to whole SIMD vectors (ocean_kinematics_batch.cpp). And the
+  // tail sums Σ_{j≥m} a_j ω_j, Σ_{j≥m} a_j ω_j² (n + 1 entries, the last 0).
+  std::vector<double> k_, amplitude_, a_omega_, a_omega2_, half_inverse_sinh_, depth_scale_, omega_, phase_;
   std::vector<double> tail_velocity_, tail_acceleration_;
   // z*_m: at stretched heights z' ≤ z*_m every component from m on is negligible (nondecreasing in m).
   std::vector<double> negligible_below_;
