@@ -148,19 +148,21 @@ MARIS_SIMD_CLONES double rotatedPhasesAndElevation(std::size_t n, double d, cons
 //   C_j = cosh k_j(z'+h)/sinh k_j h,  S_j = sinh k_j(z'+h)/sinh k_j h,
 // the others (deep water; kh > 300, where the mirror term e^{−k(z'+2h)} ≤ e^{−kh} < 1e-130 of the component's
 // surface value; or k(z'+h) > 700, where it is below e^{−1400} of it) by C_j = S_j = e^{k_j z'}/(1 − e^{−2 k_j h})
-// (`depth_scale`, 1 in deep water).
+// (1 in deep water). The factors 1/(2 sinh kh) and 1/(1 − e^{−2kh}) come multiplied into the components' a ω and
+// a ω² (`ratio_*`, `exponential_*`).
 // Ratio form: u = k(z'+h) = n ln 2 + r, |r| ≤ ½ ln 2, one reduction for e^u and e^{−u}: with E and O the even and
 // odd Taylor series of e^r (cosh r to r^12, sinh r to r^13: next terms < 5e-18) and a = 2^n, b = 2^{−n},
 //   2 cosh u = (a + b) E + (a − b) O,  2 sinh u = (a − b) E + (a + b) O,
-// no division and no second exponential (`half_inverse_sinh` = 1/(2 sinh kh)). Near the sea bed (n = 0) a − b = 0
+// no division and no second exponential. Near the sea bed (n = 0) a − b = 0
 // exactly, so 2 sinh u = 2 O: the odd series itself, without the cancellation of e^u − e^{−u} (which held the sea
 // bed's sinh to the rounding of e^u, not of sinh u); for n ≥ 1 the two terms cancel by at most a factor 2.3. The
 // caller keeps 0 ≤ u ≤ 700 (z' ≥ −h; `ratio_count` ends before the first k_j (z'+h) > 700), so the loop needs no
 // range clamp, which GCC vectorises only into masked code.
 MARIS_SIMD_CLONES void depthSums(std::size_t kept, std::size_t ratio_count, double z, double z_plus_h,
-                                 const double* __restrict k, const double* __restrict a_omega,
-                                 const double* __restrict a_omega2, const double* __restrict half_inverse_sinh,
-                                 const double* __restrict depth_scale, const double* __restrict cos_psi,
+                                 const double* __restrict k, const double* __restrict ratio_velocity,
+                                 const double* __restrict ratio_acceleration,
+                                 const double* __restrict exponential_velocity,
+                                 const double* __restrict exponential_acceleration, const double* __restrict cos_psi,
                                  const double* __restrict sin_psi, PointSums& out) {
   constexpr double c2 = inverseFactorial(2), c4 = inverseFactorial(4), c6 = inverseFactorial(6),
                    c8 = inverseFactorial(8), c10 = inverseFactorial(10), c12 = inverseFactorial(12);
@@ -180,20 +182,19 @@ MARIS_SIMD_CLONES void depthSums(std::size_t kept, std::size_t ratio_count, doub
     const double up = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + power) << 52);
     const double down = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - power) << 52);
     const double sum = up + down, difference = up - down;
-    const double ch = (sum * even + difference * odd) * half_inverse_sinh[j];
-    const double sh = (difference * even + sum * odd) * half_inverse_sinh[j];
-    u += a_omega[j] * ch * cos_psi[j];
-    w += a_omega[j] * sh * sin_psi[j];
-    du += a_omega2[j] * ch * sin_psi[j];
-    dw -= a_omega2[j] * sh * cos_psi[j];
+    const double ch = sum * even + difference * odd, sh = difference * even + sum * odd;  // 2 cosh u, 2 sinh u
+    u += ratio_velocity[j] * ch * cos_psi[j];
+    w += ratio_velocity[j] * sh * sin_psi[j];
+    du += ratio_acceleration[j] * ch * sin_psi[j];
+    dw -= ratio_acceleration[j] * sh * cos_psi[j];
   }
 #pragma omp simd reduction(+ : u, w, du, dw)
   for (std::size_t j = ratio_count; j < kept; ++j) {
-    const double e = expKernel(k[j] * z) * depth_scale[j];
-    u += a_omega[j] * e * cos_psi[j];
-    w += a_omega[j] * e * sin_psi[j];
-    du += a_omega2[j] * e * sin_psi[j];
-    dw -= a_omega2[j] * e * cos_psi[j];
+    const double e = expKernel(k[j] * z);
+    u += exponential_velocity[j] * e * cos_psi[j];
+    w += exponential_velocity[j] * e * sin_psi[j];
+    du += exponential_acceleration[j] * e * sin_psi[j];
+    dw -= exponential_acceleration[j] * e * cos_psi[j];
   }
   out.u = u, out.w = w, out.du = du, out.dw = dw;
 }
@@ -249,14 +250,19 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     const WaveComponent& c = field.components()[j];
     k_.push_back(k);
     amplitude_.push_back(c.amplitude);
-    a_omega_.push_back(c.amplitude * c.omega);
-    a_omega2_.push_back(c.amplitude * c.omega * c.omega);
+    const double a_omega = c.amplitude * c.omega, a_omega2 = c.amplitude * c.omega * c.omega;
+    a_omega_.push_back(a_omega);
+    a_omega2_.push_back(a_omega2);
     // Beyond kh = 300 the mirror term e^{−k(z+2h)} ≤ e^{−kh} < 1e-130 of the component's surface value: dropped
     // (depthSums); the components are sorted by k, so those that keep it come first.
     const bool finite = !deep && k * depth_ <= 300.0;
     if (finite) ++finite_count_;
-    half_inverse_sinh_.push_back(finite ? 0.5 / std::sinh(k * depth_) : 0.0);
-    depth_scale_.push_back(deep ? 1.0 : 1.0 / -std::expm1(-2.0 * k * depth_));
+    const double half_inverse_sinh = finite ? 0.5 / std::sinh(k * depth_) : 0.0;
+    const double depth_scale = deep ? 1.0 : 1.0 / -std::expm1(-2.0 * k * depth_);
+    ratio_velocity_.push_back(a_omega * half_inverse_sinh);
+    ratio_acceleration_.push_back(a_omega2 * half_inverse_sinh);
+    exponential_velocity_.push_back(a_omega * depth_scale);
+    exponential_acceleration_.push_back(a_omega2 * depth_scale);
     omega_.push_back(c.omega);
     phase_.push_back(c.phase);
     largest_k_ = std::max(largest_k_, k);
@@ -295,7 +301,8 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
   // Padding to whole SIMD vectors: components of zero amplitude and scales (k = k_max, keeping k sorted; ω = 0):
   // finite values that add 0.
   const std::size_t padded = (n + kLanes - 1) / kLanes * kLanes;
-  for (auto* v : {&amplitude_, &a_omega_, &a_omega2_, &half_inverse_sinh_, &depth_scale_, &omega_, &phase_})
+  for (auto* v : {&amplitude_, &a_omega_, &a_omega2_, &ratio_velocity_, &ratio_acceleration_, &exponential_velocity_,
+                  &exponential_acceleration_, &omega_, &phase_})
     v->resize(padded, 0.0);
   k_.resize(padded, largest_k_);
   if (finite_count_ == n) finite_count_ = padded;
@@ -380,8 +387,8 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
       ratio_count = static_cast<std::size_t>(
           std::upper_bound(k_.begin(), k_.begin() + static_cast<std::ptrdiff_t>(ratio_count),
                            kLargestRatioArgument / z_plus_h) - k_.begin());
-    depthSums(kept, ratio_count, z, z_plus_h, k_.data(), a_omega_.data(), a_omega2_.data(), half_inverse_sinh_.data(),
-              depth_scale_.data(), cos_psi, sin_psi, sums);
+    depthSums(kept, ratio_count, z, z_plus_h, k_.data(), ratio_velocity_.data(), ratio_acceleration_.data(),
+              exponential_velocity_.data(), exponential_acceleration_.data(), cos_psi, sin_psi, sums);
     const Eigen::Vector3d velocity(sums.u * cos_dir_, sums.u * sin_dir_, sums.w);
     const Eigen::Vector3d acceleration(sums.du * cos_dir_, sums.du * sin_dir_, sums.dw);
     f.velocity = ramp * velocity;
