@@ -36,8 +36,9 @@ constexpr std::size_t kLanes = 8;
 constexpr double kLargestSinArgument = 1e5;    // |q| < 2^17: q·(π/2 head) exact with room
 constexpr double kLargestTimePhase = 6e6;      // |n| < 2^20 turns: n·(2π head) exact
 // A point whose phases differ from the anchor's by at most this much (|k_max d| ≤ 0.2 rad) takes them by rotation;
-// the series of rotatedPhasesAndElevation then stop below 0.2^13/13! = 1.3e-19 (sine) and 0.2^14/14! (cosine).
+// rotatePhase's series and elevationSeries then stop below 0.2^13/13! = 1.3e-19 (sine) and 0.2^14/14! (cosine).
 constexpr double kRotationLimit = 0.2;
+constexpr int kElevationTerms = 13;  // d^0 … d^12 (elevationSeries)
 
 // Taylor coefficients 1/k!, k = 0…17.
 constexpr double inverseFactorial(int k) {
@@ -116,31 +117,42 @@ MARIS_SIMD_CLONES double phasesAndElevation(std::size_t n, double s, const doubl
   return eta;
 }
 
-// cos ψ_j, sin ψ_j of a point a distance d further along the waves than an anchor point whose cos, sin are
-// given (ψ_j = ψ_j,anchor + k_j d, |k_j d| ≤ kRotationLimit), and η = Σ a_j cos ψ_j (unramped): the angle addition
-// with cos and sin of k_j d from their Taylor series.
-MARIS_SIMD_CLONES double rotatedPhasesAndElevation(std::size_t n, double d, const double* __restrict k,
-                                                   const double* __restrict amplitude,
-                                                   const double* __restrict anchor_cos,
-                                                   const double* __restrict anchor_sin, double* __restrict cos_psi,
-                                                   double* __restrict sin_psi) {
+// cos ψ, sin ψ of a point a distance d further along the waves than an anchor point whose cos, sin are given
+// (ψ = ψ_anchor + x, x = k d, |x| ≤ kRotationLimit): the angle addition with cos x − 1 and sin x from their Taylor
+// series (to x^12 and x^11).
+[[gnu::always_inline]] inline void rotatePhase(double x, double anchor_cos, double anchor_sin, double& cosine,
+                                               double& sine) {
   constexpr double s3 = -inverseFactorial(3), s5 = inverseFactorial(5), s7 = -inverseFactorial(7),
                    s9 = inverseFactorial(9), s11 = -inverseFactorial(11);
   constexpr double c2 = -inverseFactorial(2), c4 = inverseFactorial(4), c6 = -inverseFactorial(6),
                    c8 = inverseFactorial(8), c10 = -inverseFactorial(10), c12 = inverseFactorial(12);
-  double eta = 0.0;
-#pragma omp simd reduction(+ : eta)
+  const double x2 = x * x;
+  const double sine_x = x + x * x2 * (s3 + x2 * (s5 + x2 * (s7 + x2 * (s9 + x2 * s11))));
+  const double cosine_minus_one = x2 * (c2 + x2 * (c4 + x2 * (c6 + x2 * (c8 + x2 * (c10 + x2 * c12)))));
+  cosine = anchor_cos + (anchor_cos * cosine_minus_one - anchor_sin * sine_x);
+  sine = anchor_sin + (anchor_sin * cosine_minus_one + anchor_cos * sine_x);
+}
+
+// The elevation's Taylor coefficients in the distance d from an anchor: with A_j = a_j cos ψ_j, B_j = a_j sin ψ_j
+// at the anchor, η(d) = Σ_j A_j cos k_j d − B_j sin k_j d = Σ_m e_m d^m with
+//   e_2i = (−1)^i Σ_j A_j k_j^2i / (2i)!,  e_2i+1 = (−1)^(i+1) Σ_j B_j k_j^2i+1 / (2i+1)!,  m ≤ 12,
+// the same series as rotatePhase's (each term's remainder ≤ a_j |k_j d|^13/13! ≤ 1.3e-19 a_j): the elevation of a
+// rotated point in 12 operations instead of a rotation of every component. Its rounding: the terms are bounded by
+// Σ a_j |k_j d|^m/m!, so a few units in the last place of Σ a_j.
+MARIS_SIMD_CLONES void elevationSeries(std::size_t n, const double* __restrict k, const double* __restrict amplitude,
+                                       const double* __restrict cos_psi, const double* __restrict sin_psi,
+                                       double* __restrict series) {
+  double p0 = 0, p1 = 0, p2 = 0, p3 = 0, p4 = 0, p5 = 0, p6 = 0, q0 = 0, q1 = 0, q2 = 0, q3 = 0, q4 = 0, q5 = 0;
+#pragma omp simd reduction(+ : p0, p1, p2, p3, p4, p5, p6, q0, q1, q2, q3, q4, q5)
   for (std::size_t j = 0; j < n; ++j) {
-    const double x = k[j] * d, x2 = x * x;
-    const double sine = x + x * x2 * (s3 + x2 * (s5 + x2 * (s7 + x2 * (s9 + x2 * s11))));
-    const double cosine_minus_one = x2 * (c2 + x2 * (c4 + x2 * (c6 + x2 * (c8 + x2 * (c10 + x2 * c12)))));
-    const double ca = anchor_cos[j], sa = anchor_sin[j];
-    const double cs = ca + (ca * cosine_minus_one - sa * sine);
-    cos_psi[j] = cs;
-    sin_psi[j] = sa + (sa * cosine_minus_one + ca * sine);
-    eta += amplitude[j] * cs;
+    const double kk = k[j] * k[j];
+    double a = amplitude[j] * cos_psi[j], b = amplitude[j] * sin_psi[j] * k[j];
+    p0 += a, a *= kk, p1 += a, a *= kk, p2 += a, a *= kk, p3 += a, a *= kk, p4 += a, a *= kk, p5 += a, a *= kk, p6 += a;
+    q0 += b, b *= kk, q1 += b, b *= kk, q2 += b, b *= kk, q3 += b, b *= kk, q4 += b, b *= kk, q5 += b;
   }
-  return eta;
+  const double p[] = {p0, p1, p2, p3, p4, p5, p6}, q[] = {q0, q1, q2, q3, q4, q5};
+  for (int i = 0; i <= 6; ++i) series[2 * i] = (i % 2 ? -1.0 : 1.0) * p[i] * inverseFactorial(2 * i);
+  for (int i = 0; i <= 5; ++i) series[2 * i + 1] = (i % 2 ? 1.0 : -1.0) * q[i] * inverseFactorial(2 * i + 1);
 }
 
 // The linear kinematics sums at the stretched height z' over the components j < kept: the first `ratio_count` by
@@ -158,12 +170,13 @@ MARIS_SIMD_CLONES double rotatedPhasesAndElevation(std::size_t n, double d, cons
 // bed's sinh to the rounding of e^u, not of sinh u); for n ≥ 1 the two terms cancel by at most a factor 2.3. The
 // caller keeps 0 ≤ u ≤ 700 (z' ≥ −h; `ratio_count` ends before the first k_j (z'+h) > 700), so the loop needs no
 // range clamp, which GCC vectorises only into masked code.
-MARIS_SIMD_CLONES void depthSums(std::size_t kept, std::size_t ratio_count, double z, double z_plus_h,
+MARIS_SIMD_CLONES void depthSums(std::size_t kept, std::size_t ratio_count, double d, double z, double z_plus_h,
                                  const double* __restrict k, const double* __restrict ratio_velocity,
                                  const double* __restrict ratio_acceleration,
                                  const double* __restrict exponential_velocity,
-                                 const double* __restrict exponential_acceleration, const double* __restrict cos_psi,
-                                 const double* __restrict sin_psi, PointSums& out) {
+                                 const double* __restrict exponential_acceleration,
+                                 const double* __restrict anchor_cos, const double* __restrict anchor_sin,
+                                 PointSums& out) {
   constexpr double c2 = inverseFactorial(2), c4 = inverseFactorial(4), c6 = inverseFactorial(6),
                    c8 = inverseFactorial(8), c10 = inverseFactorial(10), c12 = inverseFactorial(12);
   constexpr double s3 = inverseFactorial(3), s5 = inverseFactorial(5), s7 = inverseFactorial(7),
@@ -183,18 +196,22 @@ MARIS_SIMD_CLONES void depthSums(std::size_t kept, std::size_t ratio_count, doub
     const double down = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - power) << 52);
     const double sum = up + down, difference = up - down;
     const double ch = sum * even + difference * odd, sh = difference * even + sum * odd;  // 2 cosh u, 2 sinh u
-    u += ratio_velocity[j] * ch * cos_psi[j];
-    w += ratio_velocity[j] * sh * sin_psi[j];
-    du += ratio_acceleration[j] * ch * sin_psi[j];
-    dw -= ratio_acceleration[j] * sh * cos_psi[j];
+    double cos_psi, sin_psi;
+    rotatePhase(k[j] * d, anchor_cos[j], anchor_sin[j], cos_psi, sin_psi);
+    u += ratio_velocity[j] * ch * cos_psi;
+    w += ratio_velocity[j] * sh * sin_psi;
+    du += ratio_acceleration[j] * ch * sin_psi;
+    dw -= ratio_acceleration[j] * sh * cos_psi;
   }
 #pragma omp simd reduction(+ : u, w, du, dw)
   for (std::size_t j = ratio_count; j < kept; ++j) {
     const double e = expKernel(k[j] * z);
-    u += exponential_velocity[j] * e * cos_psi[j];
-    w += exponential_velocity[j] * e * sin_psi[j];
-    du += exponential_acceleration[j] * e * sin_psi[j];
-    dw -= exponential_acceleration[j] * e * cos_psi[j];
+    double cos_psi, sin_psi;
+    rotatePhase(k[j] * d, anchor_cos[j], anchor_sin[j], cos_psi, sin_psi);
+    u += exponential_velocity[j] * e * cos_psi;
+    w += exponential_velocity[j] * e * sin_psi;
+    du += exponential_acceleration[j] * e * sin_psi;
+    dw -= exponential_acceleration[j] * e * cos_psi;
   }
   out.u = u, out.w = w, out.du = du, out.dw = dw;
 }
@@ -324,8 +341,6 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
   evaluations_.fetch_add(1, std::memory_order_relaxed);
   if (scratch.theta.size() != n || !(scratch.time == t)) {
     scratch.theta.resize(n);
-    scratch.cos_psi.resize(n);
-    scratch.sin_psi.resize(n);
     scratch.time_reduced = true;
     for (std::size_t j = 0; j < n; ++j) {
       const double theta = phase_[j] - omega_[j] * t;
@@ -338,6 +353,7 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
   }
   scratch.anchor_cos.resize(n);
   scratch.anchor_sin.resize(n);
+  double series[kElevationTerms];  // the elevation's Taylor coefficients in the distance from the anchor
   // anchor_cos, anchor_sin hold the exact phases at s = anchor_s. A new anchor is placed 0.9 of the rotation's
   // reach ahead of the point that needs it, in the direction the points have been moving along s, so that it
   // serves the points on both sides of it.
@@ -357,20 +373,16 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
       anchor_s = std::abs(ahead) * largest_k_ < kLargestSinArgument ? ahead : s;
       anchor_eta = phasesAndElevation(n, anchor_s, k_.data(), scratch.theta.data(), amplitude_.data(),
                                       scratch.anchor_cos.data(), scratch.anchor_sin.data());
+      elevationSeries(n, k_.data(), amplitude_.data(), scratch.anchor_cos.data(), scratch.anchor_sin.data(), series);
       anchored = true;
     }
     previous_s = s;
-    const bool rotate = s != anchor_s;
-    const double* cos_psi = rotate ? scratch.cos_psi.data() : scratch.anchor_cos.data();
-    const double* sin_psi = rotate ? scratch.sin_psi.data() : scratch.anchor_sin.data();
-    double unramped_eta;
-    if (rotate) {
-      unramped_eta = rotatedPhasesAndElevation(n, s - anchor_s, k_.data(), amplitude_.data(), scratch.anchor_cos.data(),
-                                               scratch.anchor_sin.data(), scratch.cos_psi.data(),
-                                               scratch.sin_psi.data());
+    const double d = s - anchor_s;
+    double unramped_eta = anchor_eta;
+    if (d != 0.0) {
+      unramped_eta = series[kElevationTerms - 1];
+      for (int m = kElevationTerms - 1; m-- > 0;) unramped_eta = series[m] + d * unramped_eta;
       ++scratch.rotated_points;
-    } else {
-      unramped_eta = anchor_eta;
     }
     const double eta = ramp * unramped_eta;
     f.elevation = eta;
@@ -387,8 +399,9 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
       ratio_count = static_cast<std::size_t>(
           std::upper_bound(k_.begin(), k_.begin() + static_cast<std::ptrdiff_t>(ratio_count),
                            kLargestRatioArgument / z_plus_h) - k_.begin());
-    depthSums(kept, ratio_count, z, z_plus_h, k_.data(), ratio_velocity_.data(), ratio_acceleration_.data(),
-              exponential_velocity_.data(), exponential_acceleration_.data(), cos_psi, sin_psi, sums);
+    depthSums(kept, ratio_count, d, z, z_plus_h, k_.data(), ratio_velocity_.data(), ratio_acceleration_.data(),
+              exponential_velocity_.data(), exponential_acceleration_.data(), scratch.anchor_cos.data(),
+              scratch.anchor_sin.data(), sums);
     const Eigen::Vector3d velocity(sums.u * cos_dir_, sums.u * sin_dir_, sums.w);
     const Eigen::Vector3d acceleration(sums.du * cos_dir_, sums.du * sin_dir_, sums.dw);
     f.velocity = ramp * velocity;

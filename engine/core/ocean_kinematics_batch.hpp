@@ -13,7 +13,9 @@
 // other point takes them from the anchor's by angle addition, cos and sin of k_j (s − s_a) (≤ 0.2 rad) from
 // Taylor series to x^12 (remainder ≤ 1.3e-19), each rotated from the exact anchor (no accumulation from point to
 // point): within a few units in the last place of 1 of the kernel's values. Points along a riser, a cable or a
-// pile are ordered and close together, so most of them rotate.
+// pile are ordered and close together, so most of them rotate. A rotated point's η is the same series summed over
+// the components once per anchor (η = Σ_m e_m (s − s_a)^m, m ≤ 12), and its phases are rotated inside the depth
+// sums, for the components these keep only (the truncation below).
 // Sine, cosine and exponential are polynomial kernels without branches (Cody–Waite reduction, Taylor series to
 // below the double's rounding; ocean_kinematics_batch.cpp) instead of the library's calls, which do not vectorise.
 // Agreement with WaveField::kinematics: ≤ 1e-13 of each quantity's scale (the sum of the components' magnitudes),
@@ -48,7 +50,7 @@ class WaveKinematicsBatch {
   struct Scratch {
     double time = std::numeric_limits<double>::quiet_NaN();
     bool time_reduced = false;  // θ_j in [−π, π] (else the point-by-point fallback)
-    std::vector<double> theta, cos_psi, sin_psi;
+    std::vector<double> theta;
     std::vector<double> anchor_cos, anchor_sin;  // the exact phases of the last anchor point
     long rotated_points = 0;  // points whose phases were rotated from an anchor's (a count, for tests and benches)
   };
