@@ -261,6 +261,7 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
   const std::size_t n = field.size();
   const bool deep = std::isinf(depth_);
   std::vector<std::pair<double, std::size_t>> by_k;
+  std::vector<double> speeds, accelerations;  // |a ω|, |a ω²| in increasing k (the tail sums)
   for (std::size_t j = 0; j < n; ++j) by_k.emplace_back(waveNumber(field.components()[j].omega, depth_, gravity), j);
   std::sort(by_k.begin(), by_k.end());
   for (const auto& [k, j] : by_k) {
@@ -268,8 +269,8 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     k_.push_back(k);
     amplitude_.push_back(c.amplitude);
     const double a_omega = c.amplitude * c.omega, a_omega2 = c.amplitude * c.omega * c.omega;
-    a_omega_.push_back(a_omega);
-    a_omega2_.push_back(a_omega2);
+    speeds.push_back(std::abs(a_omega));
+    accelerations.push_back(std::abs(a_omega2));
     // Beyond kh = 300 the mirror term e^{−k(z+2h)} ≤ e^{−kh} < 1e-130 of the component's surface value: dropped
     // (depthSums); the components are sorted by k, so those that keep it come first.
     const bool finite = !deep && k * depth_ <= 300.0;
@@ -287,8 +288,8 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
   tail_velocity_.assign(n + 1, 0.0);
   tail_acceleration_.assign(n + 1, 0.0);
   for (std::size_t j = n; j-- > 0;) {
-    tail_velocity_[j] = tail_velocity_[j + 1] + std::abs(a_omega_[j]);
-    tail_acceleration_[j] = tail_acceleration_[j + 1] + std::abs(a_omega2_[j]);
+    tail_velocity_[j] = tail_velocity_[j + 1] + speeds[j];
+    tail_acceleration_[j] = tail_acceleration_[j + 1] + accelerations[j];
   }
   // The components from m on are negligible where C_m(z') ≤ B_m = ε min(T_v,0/T_v,m, T_a,0/T_a,m) (T the tail sums):
   // with C_m(z') = cosh k(z'+h)/sinh kh (e^{kz'} where the mirror term is dropped), increasing in z',
@@ -318,7 +319,7 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
   // Padding to whole SIMD vectors: components of zero amplitude and scales (k = k_max, keeping k sorted; ω = 0):
   // finite values that add 0.
   const std::size_t padded = (n + kLanes - 1) / kLanes * kLanes;
-  for (auto* v : {&amplitude_, &a_omega_, &a_omega2_, &ratio_velocity_, &ratio_acceleration_, &exponential_velocity_,
+  for (auto* v : {&amplitude_, &ratio_velocity_, &ratio_acceleration_, &exponential_velocity_,
                   &exponential_acceleration_, &omega_, &phase_})
     v->resize(padded, 0.0);
   k_.resize(padded, largest_k_);

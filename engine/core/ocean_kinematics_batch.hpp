@@ -46,7 +46,7 @@ namespace maris::ocean {
 
 class WaveKinematicsBatch {
  public:
-  // Per-caller workspace: the time phases of the last time and the per-component scratch of one point.
+  // Per-caller workspace: the time phases of the last time and the phases of the last anchor point.
   struct Scratch {
     double time = std::numeric_limits<double>::quiet_NaN();
     bool time_reduced = false;  // θ_j in [−π, π] (else the point-by-point fallback)
@@ -76,11 +76,11 @@ class WaveKinematicsBatch {
   // The components with kh ≤ 300 in finite water (the first ones): their depth sums keep the mirror term.
   std::size_t finite_count_ = 0;
   mutable std::atomic<long> evaluations_{0};
-  // Per component, in increasing k: k, a, a ω, a ω², the last two times 1/(2 sinh kh) (0 where the mirror term is
-  // dropped) and times 1/(1 − e^{−2kh}) (1 in deep water), ω, φ; padded to whole SIMD vectors
-  // (ocean_kinematics_batch.cpp). And the tail sums Σ_{j≥m} a_j ω_j, Σ_{j≥m} a_j ω_j² (n + 1 entries, the last 0).
-  std::vector<double> k_, amplitude_, a_omega_, a_omega2_, ratio_velocity_, ratio_acceleration_,
-      exponential_velocity_, exponential_acceleration_, omega_, phase_;
+  // Per component, in increasing k: k, a, a ω and a ω² times 1/(2 sinh kh) (0 where the mirror term is dropped)
+  // and times 1/(1 − e^{−2kh}) (1 in deep water), ω, φ; padded to whole SIMD vectors (ocean_kinematics_batch.cpp).
+  // And the tail sums Σ_{j≥m} |a_j ω_j|, Σ_{j≥m} |a_j ω_j²| (n + 1 entries, the last 0).
+  std::vector<double> k_, amplitude_, ratio_velocity_, ratio_acceleration_, exponential_velocity_,
+      exponential_acceleration_, omega_, phase_;
   std::vector<double> tail_velocity_, tail_acceleration_;
   // z*_m: at stretched heights z' ≤ z*_m every component from m on is negligible (nondecreasing in m).
   std::vector<double> negligible_below_;
