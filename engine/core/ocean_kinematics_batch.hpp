@@ -28,7 +28,8 @@
 // for z' ≤ 0 and bounds S_j(z'), so the dropped components change each velocity component by at most ε Σ a_j ω_j
 // and each acceleration component by at most ε Σ a_j ω_j² (times the ramp; the ramp-rate term likewise): an exact
 // bound, not an estimate. The first such m is found among thresholds z*_m of z' computed once (no exponential per
-// point). η (and so wetness and stretching) always takes every component.
+// point) and rounded up to a multiple of 8 (whole SIMD vectors: the components up to there are summed, not
+// dropped). η (and so wetness and stretching) always takes every component.
 // Limits: a point with |k_max s| > 1e5 rad (s more than ≈ 70 km from the origin for 2 s waves) or a time with
 // |ω_j t| > 6e6 rad takes WaveField::kinematics itself, point by point.
 #pragma once
