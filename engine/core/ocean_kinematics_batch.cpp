@@ -30,11 +30,15 @@ constexpr double kTwoPiHead = 0x1.921fb544p+2, kTwoPiTail = 0x1.0b4611a626331p-3
 constexpr double kLog2E = 0x1.71547652b82fep+0;
 constexpr double kLn2Head = 0x1.62e42fefp-1, kLn2Tail = 0x1.473de6af278edp-34;
 constexpr double kLargestExpArgument = 708.0;  // e^±708 is a normal double
+constexpr double kLargestRatioArgument = 700.0;  // depthSums' ratio form: 2^±n with |n| ≤ 1010 are normal doubles
+// Per-component arrays are padded to a multiple of this (the AVX-512 lanes; AVX2's 4 and SSE2's 2 divide it).
+constexpr std::size_t kLanes = 8;
 constexpr double kLargestSinArgument = 1e5;    // |q| < 2^17: q·(π/2 head) exact with room
 constexpr double kLargestTimePhase = 6e6;      // |n| < 2^20 turns: n·(2π head) exact
 // A point whose phases differ from the anchor's by at most this much (|k_max d| ≤ 0.2 rad) takes them by rotation;
-// the series of rotatedPhasesAndElevation then stop below 0.2^13/13! = 1.3e-19 (sine) and 0.2^14/14! (cosine).
+// rotatePhase's series and elevationSeries then stop below 0.2^13/13! = 1.3e-19 (sine) and 0.2^14/14! (cosine).
 constexpr double kRotationLimit = 0.2;
+constexpr int kElevationTerms = 13;  // d^0 … d^12 (elevationSeries)
 
 // Taylor coefficients 1/k!, k = 0…17.
 constexpr double inverseFactorial(int k) {
@@ -113,51 +117,101 @@ MARIS_SIMD_CLONES double phasesAndElevation(std::size_t n, double s, const doubl
   return eta;
 }
 
-// cos ψ_j, sin ψ_j of a point a distance d further along the waves than an anchor point whose cos, sin are
-// given (ψ_j = ψ_j,anchor + k_j d, |k_j d| ≤ kRotationLimit), and η = Σ a_j cos ψ_j (unramped): the angle addition
-// with cos and sin of k_j d from their Taylor series.
-MARIS_SIMD_CLONES double rotatedPhasesAndElevation(std::size_t n, double d, const double* __restrict k,
-                                                   const double* __restrict amplitude,
-                                                   const double* __restrict anchor_cos,
-                                                   const double* __restrict anchor_sin, double* __restrict cos_psi,
-                                                   double* __restrict sin_psi) {
+// cos ψ, sin ψ of a point a distance d further along the waves than an anchor point whose cos, sin are given
+// (ψ = ψ_anchor + x, x = k d, |x| ≤ kRotationLimit): the angle addition with cos x − 1 and sin x from their Taylor
+// series (to x^12 and x^11).
+[[gnu::always_inline]] inline void rotatePhase(double x, double anchor_cos, double anchor_sin, double& cosine,
+                                               double& sine) {
   constexpr double s3 = -inverseFactorial(3), s5 = inverseFactorial(5), s7 = -inverseFactorial(7),
                    s9 = inverseFactorial(9), s11 = -inverseFactorial(11);
   constexpr double c2 = -inverseFactorial(2), c4 = inverseFactorial(4), c6 = -inverseFactorial(6),
                    c8 = inverseFactorial(8), c10 = -inverseFactorial(10), c12 = inverseFactorial(12);
-  double eta = 0.0;
-#pragma omp simd reduction(+ : eta)
-  for (std::size_t j = 0; j < n; ++j) {
-    const double x = k[j] * d, x2 = x * x;
-    const double sine = x + x * x2 * (s3 + x2 * (s5 + x2 * (s7 + x2 * (s9 + x2 * s11))));
-    const double cosine_minus_one = x2 * (c2 + x2 * (c4 + x2 * (c6 + x2 * (c8 + x2 * (c10 + x2 * c12)))));
-    const double ca = anchor_cos[j], sa = anchor_sin[j];
-    const double cs = ca + (ca * cosine_minus_one - sa * sine);
-    cos_psi[j] = cs;
-    sin_psi[j] = sa + (sa * cosine_minus_one + ca * sine);
-    eta += amplitude[j] * cs;
-  }
-  return eta;
+  const double x2 = x * x;
+  const double sine_x = x + x * x2 * (s3 + x2 * (s5 + x2 * (s7 + x2 * (s9 + x2 * s11))));
+  const double cosine_minus_one = x2 * (c2 + x2 * (c4 + x2 * (c6 + x2 * (c8 + x2 * (c10 + x2 * c12)))));
+  cosine = anchor_cos + (anchor_cos * cosine_minus_one - anchor_sin * sine_x);
+  sine = anchor_sin + (anchor_sin * cosine_minus_one + anchor_cos * sine_x);
 }
 
-// The linear kinematics sums at the stretched height z'.
-MARIS_SIMD_CLONES void depthSums(std::size_t n, double z, const double* __restrict k, const double* __restrict a_omega,
-                                 const double* __restrict a_omega2, const double* __restrict depth_scale,
-                                 const double* __restrict mirror, const double* __restrict cos_psi,
-                                 const double* __restrict sin_psi, PointSums& out) {
+// The elevation's Taylor coefficients in the distance d from an anchor: with A_j = a_j cos ψ_j, B_j = a_j sin ψ_j
+// at the anchor, η(d) = Σ_j A_j cos k_j d − B_j sin k_j d = Σ_m e_m d^m with
+//   e_2i = (−1)^i Σ_j A_j k_j^2i / (2i)!,  e_2i+1 = (−1)^(i+1) Σ_j B_j k_j^2i+1 / (2i+1)!,  m ≤ 12,
+// the same series as rotatePhase's (each term's remainder ≤ a_j |k_j d|^13/13! ≤ 1.3e-19 a_j): the elevation of a
+// rotated point in 12 operations instead of a rotation of every component. Its rounding: the terms are bounded by
+// Σ a_j |k_j d|^m/m!, so a few units in the last place of Σ a_j.
+MARIS_SIMD_CLONES void elevationSeries(std::size_t n, const double* __restrict k, const double* __restrict amplitude,
+                                       const double* __restrict cos_psi, const double* __restrict sin_psi,
+                                       double* __restrict series) {
+  double p0 = 0, p1 = 0, p2 = 0, p3 = 0, p4 = 0, p5 = 0, p6 = 0, q0 = 0, q1 = 0, q2 = 0, q3 = 0, q4 = 0, q5 = 0;
+#pragma omp simd reduction(+ : p0, p1, p2, p3, p4, p5, p6, q0, q1, q2, q3, q4, q5)
+  for (std::size_t j = 0; j < n; ++j) {
+    const double kk = k[j] * k[j];
+    double a = amplitude[j] * cos_psi[j], b = amplitude[j] * sin_psi[j] * k[j];
+    p0 += a, a *= kk, p1 += a, a *= kk, p2 += a, a *= kk, p3 += a, a *= kk, p4 += a, a *= kk, p5 += a, a *= kk, p6 += a;
+    q0 += b, b *= kk, q1 += b, b *= kk, q2 += b, b *= kk, q3 += b, b *= kk, q4 += b, b *= kk, q5 += b;
+  }
+  const double p[] = {p0, p1, p2, p3, p4, p5, p6}, q[] = {q0, q1, q2, q3, q4, q5};
+  for (int i = 0; i <= 6; ++i) series[2 * i] = (i % 2 ? -1.0 : 1.0) * p[i] * inverseFactorial(2 * i);
+  for (int i = 0; i <= 5; ++i) series[2 * i + 1] = (i % 2 ? 1.0 : -1.0) * q[i] * inverseFactorial(2 * i + 1);
+}
+
+// The linear kinematics sums at the stretched height z' over the components j < kept: the first `ratio_count` by
+// the ratio form
+//   C_j = cosh k_j(z'+h)/sinh k_j h,  S_j = sinh k_j(z'+h)/sinh k_j h,
+// the others (deep water; kh > 300, where the mirror term e^{−k(z'+2h)} ≤ e^{−kh} < 1e-130 of the component's
+// surface value; or k(z'+h) > 700, where it is below e^{−1400} of it) by C_j = S_j = e^{k_j z'}/(1 − e^{−2 k_j h})
+// (1 in deep water). The factors 1/(2 sinh kh) and 1/(1 − e^{−2kh}) come multiplied into the components' a ω and
+// a ω² (`ratio_*`, `exponential_*`).
+// Ratio form: u = k(z'+h) = n ln 2 + r, |r| ≤ ½ ln 2, one reduction for e^u and e^{−u}: with E and O the even and
+// odd Taylor series of e^r (cosh r to r^12, sinh r to r^13: next terms < 5e-18) and a = 2^n, b = 2^{−n},
+//   2 cosh u = (a + b) E + (a − b) O,  2 sinh u = (a − b) E + (a + b) O,
+// no division and no second exponential. Near the sea bed (n = 0) a − b = 0
+// exactly, so 2 sinh u = 2 O: the odd series itself, without the cancellation of e^u − e^{−u} (which held the sea
+// bed's sinh to the rounding of e^u, not of sinh u); for n ≥ 1 the two terms cancel by at most a factor 2.3. The
+// caller keeps 0 ≤ u ≤ 700 (z' ≥ −h; `ratio_count` ends before the first k_j (z'+h) > 700), so the loop needs no
+// range clamp, which GCC vectorises only into masked code.
+MARIS_SIMD_CLONES void depthSums(std::size_t kept, std::size_t ratio_count, double d, double z, double z_plus_h,
+                                 const double* __restrict k, const double* __restrict ratio_velocity,
+                                 const double* __restrict ratio_acceleration,
+                                 const double* __restrict exponential_velocity,
+                                 const double* __restrict exponential_acceleration,
+                                 const double* __restrict anchor_cos, const double* __restrict anchor_sin,
+                                 PointSums& out) {
+  constexpr double c2 = inverseFactorial(2), c4 = inverseFactorial(4), c6 = inverseFactorial(6),
+                   c8 = inverseFactorial(8), c10 = inverseFactorial(10), c12 = inverseFactorial(12);
+  constexpr double s3 = inverseFactorial(3), s5 = inverseFactorial(5), s7 = inverseFactorial(7),
+                   s9 = inverseFactorial(9), s11 = inverseFactorial(11), s13 = inverseFactorial(13);
   double u = 0.0, w = 0.0, du = 0.0, dw = 0.0;
 #pragma omp simd reduction(+ : u, w, du, dw)
-  for (std::size_t j = 0; j < n; ++j) {
-    const double e1 = expKernel(k[j] * z);
-    // e^{−k(z+2h)} = e^{−2kh}/e^{kz}; e^{kz} ≥ e^{−kh} > 1e-300 wherever e^{−2kh} is kept (kh ≤ 300). (e^{−kz} from
-    // e^{kz}'s own reduction instead of the division rounds the two terms independently: near the sea bed, where
-    // they cancel in sinh, that exceeded the 1e-13 of the tests.)
-    const double e2 = mirror[j] / (e1 > 1e-300 ? e1 : 1e-300);
-    const double ch = (e1 + e2) * depth_scale[j], sh = (e1 - e2) * depth_scale[j];
-    u += a_omega[j] * ch * cos_psi[j];
-    w += a_omega[j] * sh * sin_psi[j];
-    du += a_omega2[j] * ch * sin_psi[j];
-    dw -= a_omega2[j] * sh * cos_psi[j];
+  for (std::size_t j = 0; j < ratio_count; ++j) {
+    const double x = k[j] * z_plus_h;
+    const double shifted = x * kLog2E + kShifter;
+    const double nearest = shifted - kShifter;
+    const std::int64_t power = std::bit_cast<std::int64_t>(shifted) - std::bit_cast<std::int64_t>(kShifter);
+    const double r = (x - nearest * kLn2Head) - nearest * kLn2Tail;
+    const double r2 = r * r;
+    const double even = 1.0 + r2 * (c2 + r2 * (c4 + r2 * (c6 + r2 * (c8 + r2 * (c10 + r2 * c12)))));
+    const double odd = r + r * r2 * (s3 + r2 * (s5 + r2 * (s7 + r2 * (s9 + r2 * (s11 + r2 * s13)))));
+    const double up = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + power) << 52);
+    const double down = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - power) << 52);
+    const double sum = up + down, difference = up - down;
+    const double ch = sum * even + difference * odd, sh = difference * even + sum * odd;  // 2 cosh u, 2 sinh u
+    double cos_psi, sin_psi;
+    rotatePhase(k[j] * d, anchor_cos[j], anchor_sin[j], cos_psi, sin_psi);
+    u += ratio_velocity[j] * ch * cos_psi;
+    w += ratio_velocity[j] * sh * sin_psi;
+    du += ratio_acceleration[j] * ch * sin_psi;
+    dw -= ratio_acceleration[j] * sh * cos_psi;
+  }
+#pragma omp simd reduction(+ : u, w, du, dw)
+  for (std::size_t j = ratio_count; j < kept; ++j) {
+    const double e = expKernel(k[j] * z);
+    double cos_psi, sin_psi;
+    rotatePhase(k[j] * d, anchor_cos[j], anchor_sin[j], cos_psi, sin_psi);
+    u += exponential_velocity[j] * e * cos_psi;
+    w += exponential_velocity[j] * e * sin_psi;
+    du += exponential_acceleration[j] * e * sin_psi;
+    dw -= exponential_acceleration[j] * e * cos_psi;
   }
   out.u = u, out.w = w, out.du = du, out.dw = dw;
 }
@@ -207,17 +261,26 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
   const std::size_t n = field.size();
   const bool deep = std::isinf(depth_);
   std::vector<std::pair<double, std::size_t>> by_k;
+  std::vector<double> speeds, accelerations;  // |a ω|, |a ω²| in increasing k (the tail sums)
   for (std::size_t j = 0; j < n; ++j) by_k.emplace_back(waveNumber(field.components()[j].omega, depth_, gravity), j);
   std::sort(by_k.begin(), by_k.end());
   for (const auto& [k, j] : by_k) {
     const WaveComponent& c = field.components()[j];
     k_.push_back(k);
     amplitude_.push_back(c.amplitude);
-    a_omega_.push_back(c.amplitude * c.omega);
-    a_omega2_.push_back(c.amplitude * c.omega * c.omega);
-    depth_scale_.push_back(deep ? 1.0 : 1.0 / -std::expm1(-2.0 * k * depth_));
-    // Beyond kh = 300 the mirror term e^{−k(z+2h)} ≤ e^{−kh} < 1e-130 of the component's surface value: dropped.
-    mirror_.push_back(deep || k * depth_ > 300.0 ? 0.0 : std::exp(-2.0 * k * depth_));
+    const double a_omega = c.amplitude * c.omega, a_omega2 = c.amplitude * c.omega * c.omega;
+    speeds.push_back(std::abs(a_omega));
+    accelerations.push_back(std::abs(a_omega2));
+    // Beyond kh = 300 the mirror term e^{−k(z+2h)} ≤ e^{−kh} < 1e-130 of the component's surface value: dropped
+    // (depthSums); the components are sorted by k, so those that keep it come first.
+    const bool finite = !deep && k * depth_ <= 300.0;
+    if (finite) ++finite_count_;
+    const double half_inverse_sinh = finite ? 0.5 / std::sinh(k * depth_) : 0.0;
+    const double depth_scale = deep ? 1.0 : 1.0 / -std::expm1(-2.0 * k * depth_);
+    ratio_velocity_.push_back(a_omega * half_inverse_sinh);
+    ratio_acceleration_.push_back(a_omega2 * half_inverse_sinh);
+    exponential_velocity_.push_back(a_omega * depth_scale);
+    exponential_acceleration_.push_back(a_omega2 * depth_scale);
     omega_.push_back(c.omega);
     phase_.push_back(c.phase);
     largest_k_ = std::max(largest_k_, k);
@@ -225,11 +288,11 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
   tail_velocity_.assign(n + 1, 0.0);
   tail_acceleration_.assign(n + 1, 0.0);
   for (std::size_t j = n; j-- > 0;) {
-    tail_velocity_[j] = tail_velocity_[j + 1] + std::abs(a_omega_[j]);
-    tail_acceleration_[j] = tail_acceleration_[j + 1] + std::abs(a_omega2_[j]);
+    tail_velocity_[j] = tail_velocity_[j + 1] + speeds[j];
+    tail_acceleration_[j] = tail_acceleration_[j + 1] + accelerations[j];
   }
   // The components from m on are negligible where C_m(z') ≤ B_m = ε min(T_v,0/T_v,m, T_a,0/T_a,m) (T the tail sums):
-  // with C_m(z') = cosh k(z'+h)/sinh kh (e^{kz'}/(1 − e^{−2kh}) where the mirror term is dropped), increasing in z',
+  // with C_m(z') = cosh k(z'+h)/sinh kh (e^{kz'} where the mirror term is dropped), increasing in z',
   // that is z' ≤ z*_m. The z*_m do not fall with m (C_m falls with k at z' ≤ 0, the tails fall with m); they are
   // lowered by 1e-9 (1 + |z*_m|) m, far above their rounding, so that a component is never dropped above its bound.
   negligible_below_.assign(n, -std::numeric_limits<double>::infinity());
@@ -242,25 +305,35 @@ WaveKinematicsBatch::WaveKinematicsBatch(const WaveField& field, double directio
     double z = std::numeric_limits<double>::infinity();
     if (std::isfinite(bound)) {
       const double k = k_[m];
-      if (mirror_[m] > 0.0) {
+      if (m < finite_count_) {
         const double argument = bound * std::sinh(k * depth_);
         z = argument >= 1.0 ? std::acosh(argument) / k - depth_ : -std::numeric_limits<double>::infinity();
       } else {
-        z = std::log(bound / depth_scale_[m]) / k;
+        z = std::log(bound) / k;
       }
       if (std::isfinite(z)) z -= 1e-9 * (1.0 + std::abs(z));
     }
     previous = std::max(previous, z);
     negligible_below_[m] = previous;
   }
+  // Padding to whole SIMD vectors: components of zero amplitude and scales (k = k_max, keeping k sorted; ω = 0):
+  // finite values that add 0.
+  const std::size_t padded = (n + kLanes - 1) / kLanes * kLanes;
+  for (auto* v : {&amplitude_, &ratio_velocity_, &ratio_acceleration_, &exponential_velocity_,
+                  &exponential_acceleration_, &omega_, &phase_})
+    v->resize(padded, 0.0);
+  k_.resize(padded, largest_k_);
+  if (finite_count_ == n) finite_count_ = padded;
 }
 
 std::size_t WaveKinematicsBatch::keptComponents(double z) const {
-  const std::size_t n = k_.size();
-  if (!(truncation_ > 0.0) || !(z < 0.0) || n == 0) return n;
-  // The first m whose threshold z*_m lies at or above z (every component from there on negligible).
-  return static_cast<std::size_t>(std::lower_bound(negligible_below_.begin(), negligible_below_.end(), z) -
-                                  negligible_below_.begin());
+  const std::size_t padded = k_.size();
+  if (!(truncation_ > 0.0) || !(z < 0.0) || padded == 0) return padded;
+  // The first m whose threshold z*_m lies at or above z (every component from there on negligible), rounded up to
+  // whole SIMD vectors: the components up to there are summed, not dropped (a loop without a scalar remainder).
+  const auto m = static_cast<std::size_t>(std::lower_bound(negligible_below_.begin(), negligible_below_.end(), z) -
+                                          negligible_below_.begin());
+  return std::min(padded, (m + kLanes - 1) / kLanes * kLanes);
 }
 
 void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t count, double t, double ramp,
@@ -269,8 +342,6 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
   evaluations_.fetch_add(1, std::memory_order_relaxed);
   if (scratch.theta.size() != n || !(scratch.time == t)) {
     scratch.theta.resize(n);
-    scratch.cos_psi.resize(n);
-    scratch.sin_psi.resize(n);
     scratch.time_reduced = true;
     for (std::size_t j = 0; j < n; ++j) {
       const double theta = phase_[j] - omega_[j] * t;
@@ -283,6 +354,7 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
   }
   scratch.anchor_cos.resize(n);
   scratch.anchor_sin.resize(n);
+  double series[kElevationTerms];  // the elevation's Taylor coefficients in the distance from the anchor
   // anchor_cos, anchor_sin hold the exact phases at s = anchor_s. A new anchor is placed 0.9 of the rotation's
   // reach ahead of the point that needs it, in the direction the points have been moving along s, so that it
   // serves the points on both sides of it.
@@ -302,20 +374,16 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
       anchor_s = std::abs(ahead) * largest_k_ < kLargestSinArgument ? ahead : s;
       anchor_eta = phasesAndElevation(n, anchor_s, k_.data(), scratch.theta.data(), amplitude_.data(),
                                       scratch.anchor_cos.data(), scratch.anchor_sin.data());
+      elevationSeries(n, k_.data(), amplitude_.data(), scratch.anchor_cos.data(), scratch.anchor_sin.data(), series);
       anchored = true;
     }
     previous_s = s;
-    const bool rotate = s != anchor_s;
-    const double* cos_psi = rotate ? scratch.cos_psi.data() : scratch.anchor_cos.data();
-    const double* sin_psi = rotate ? scratch.sin_psi.data() : scratch.anchor_sin.data();
-    double unramped_eta;
-    if (rotate) {
-      unramped_eta = rotatedPhasesAndElevation(n, s - anchor_s, k_.data(), amplitude_.data(), scratch.anchor_cos.data(),
-                                               scratch.anchor_sin.data(), scratch.cos_psi.data(),
-                                               scratch.sin_psi.data());
+    const double d = s - anchor_s;
+    double unramped_eta = anchor_eta;
+    if (d != 0.0) {
+      unramped_eta = series[kElevationTerms - 1];
+      for (int m = kElevationTerms - 1; m-- > 0;) unramped_eta = series[m] + d * unramped_eta;
       ++scratch.rotated_points;
-    } else {
-      unramped_eta = anchor_eta;
     }
     const double eta = ramp * unramped_eta;
     f.elevation = eta;
@@ -325,8 +393,16 @@ void WaveKinematicsBatch::evaluate(const Eigen::Vector3d* points, std::size_t co
     if (!f.wet) continue;
     const double z = stretchedZ(p.z(), eta, depth_, field_.stretching());
     PointSums sums;
-    depthSums(keptComponents(z), z, k_.data(), a_omega_.data(), a_omega2_.data(), depth_scale_.data(), mirror_.data(),
-              cos_psi, sin_psi, sums);
+    const std::size_t kept = keptComponents(z);
+    std::size_t ratio_count = std::min(kept, finite_count_);
+    const double z_plus_h = z + depth_;  // ≥ 0 in finite water (z' ≥ −h); exact near the sea bed
+    if (ratio_count > 0 && k_[ratio_count - 1] * z_plus_h > kLargestRatioArgument)  // z' far above the surface
+      ratio_count = static_cast<std::size_t>(
+          std::upper_bound(k_.begin(), k_.begin() + static_cast<std::ptrdiff_t>(ratio_count),
+                           kLargestRatioArgument / z_plus_h) - k_.begin());
+    depthSums(kept, ratio_count, d, z, z_plus_h, k_.data(), ratio_velocity_.data(), ratio_acceleration_.data(),
+              exponential_velocity_.data(), exponential_acceleration_.data(), scratch.anchor_cos.data(),
+              scratch.anchor_sin.data(), sums);
     const Eigen::Vector3d velocity(sums.u * cos_dir_, sums.u * sin_dir_, sums.w);
     const Eigen::Vector3d acceleration(sums.du * cos_dir_, sums.du * sin_dir_, sums.dw);
     f.velocity = ramp * velocity;

@@ -5,15 +5,17 @@
 // Per time: the components' time phases θ_j = φ_j − ω_j t, reduced to [−π, π] (once per time, not per point).
 // Per point, with s = x cos β + y sin β the distance along the waves' direction (a one-directional sea):
 //   ψ_j = k_j s + θ_j,  η = r Σ a_j cos ψ_j,  z' by the field's stretching,
-//   e_j = e^{k_j z'},   e'_j = e^{−k_j (z' + 2h)} = e^{−2 k_j h} / e_j  (one exponential per component),
-//   C_j = (e_j + e'_j)/(1 − e^{−2 k_j h}),  S_j = (e_j − e'_j)/(1 − e^{−2 k_j h}).
+//   C_j = cosh k_j(z'+h)/sinh k_j h,  S_j = sinh k_j(z'+h)/sinh k_j h  (e^{k_j z'} both in deep water and where
+//   k_j h > 300), cosh and sinh from one exponential's reduction, without a division (ocean_kinematics_batch.cpp).
 // Phase rotation: cos ψ_j, sin ψ_j are computed by the sine-cosine kernel at "anchor" positions s_a only: at the
 // first point of a call, and where a point lies farther than 0.2/k_max from the last anchor, 0.9 × 0.2/k_max ahead
 // of that point in the direction the points move along s (so the anchor serves points on both sides). Every
 // other point takes them from the anchor's by angle addition, cos and sin of k_j (s − s_a) (≤ 0.2 rad) from
 // Taylor series to x^12 (remainder ≤ 1.3e-19), each rotated from the exact anchor (no accumulation from point to
 // point): within a few units in the last place of 1 of the kernel's values. Points along a riser, a cable or a
-// pile are ordered and close together, so most of them rotate.
+// pile are ordered and close together, so most of them rotate. A rotated point's η is the same series summed over
+// the components once per anchor (η = Σ_m e_m (s − s_a)^m, m ≤ 12), and its phases are rotated inside the depth
+// sums, for the components these keep only (the truncation below).
 // Sine, cosine and exponential are polynomial kernels without branches (Cody–Waite reduction, Taylor series to
 // below the double's rounding; ocean_kinematics_batch.cpp) instead of the library's calls, which do not vectorise.
 // Agreement with WaveField::kinematics: ≤ 1e-13 of each quantity's scale (the sum of the components' magnitudes),
@@ -26,7 +28,8 @@
 // for z' ≤ 0 and bounds S_j(z'), so the dropped components change each velocity component by at most ε Σ a_j ω_j
 // and each acceleration component by at most ε Σ a_j ω_j² (times the ramp; the ramp-rate term likewise): an exact
 // bound, not an estimate. The first such m is found among thresholds z*_m of z' computed once (no exponential per
-// point). η (and so wetness and stretching) always takes every component.
+// point) and rounded up to a multiple of 8 (whole SIMD vectors: the components up to there are summed, not
+// dropped). η (and so wetness and stretching) always takes every component.
 // Limits: a point with |k_max s| > 1e5 rad (s more than ≈ 70 km from the origin for 2 s waves) or a time with
 // |ω_j t| > 6e6 rad takes WaveField::kinematics itself, point by point.
 #pragma once
@@ -44,11 +47,11 @@ namespace maris::ocean {
 
 class WaveKinematicsBatch {
  public:
-  // Per-caller workspace: the time phases of the last time and the per-component scratch of one point.
+  // Per-caller workspace: the time phases of the last time and the phases of the last anchor point.
   struct Scratch {
     double time = std::numeric_limits<double>::quiet_NaN();
     bool time_reduced = false;  // θ_j in [−π, π] (else the point-by-point fallback)
-    std::vector<double> theta, cos_psi, sin_psi;
+    std::vector<double> theta;
     std::vector<double> anchor_cos, anchor_sin;  // the exact phases of the last anchor point
     long rotated_points = 0;  // points whose phases were rotated from an anchor's (a count, for tests and benches)
   };
@@ -71,10 +74,14 @@ class WaveKinematicsBatch {
   WaveField field_;
   double cos_dir_ = 1.0, sin_dir_ = 0.0, depth_ = kDeepWater, largest_k_ = 0.0;
   double truncation_ = 0.0;
+  // The components with kh ≤ 300 in finite water (the first ones): their depth sums keep the mirror term.
+  std::size_t finite_count_ = 0;
   mutable std::atomic<long> evaluations_{0};
-  // Per component, in increasing k: k, a, a ω, a ω², 1/(1 − e^{−2kh}), e^{−2kh} (0 in deep water or where it
-  // underflows), ω, φ; and the tail sums Σ_{j≥m} a_j ω_j, Σ_{j≥m} a_j ω_j² (n + 1 entries, the last 0).
-  std::vector<double> k_, amplitude_, a_omega_, a_omega2_, depth_scale_, mirror_, omega_, phase_;
+  // Per component, in increasing k: k, a, a ω and a ω² times 1/(2 sinh kh) (0 where the mirror term is dropped)
+  // and times 1/(1 − e^{−2kh}) (1 in deep water), ω, φ; padded to whole SIMD vectors (ocean_kinematics_batch.cpp).
+  // And the tail sums Σ_{j≥m} |a_j ω_j|, Σ_{j≥m} |a_j ω_j²| (n + 1 entries, the last 0).
+  std::vector<double> k_, amplitude_, ratio_velocity_, ratio_acceleration_, exponential_velocity_,
+      exponential_acceleration_, omega_, phase_;
   std::vector<double> tail_velocity_, tail_acceleration_;
   // z*_m: at stretched heights z' ≤ z*_m every component from m on is negligible (nondecreasing in m).
   std::vector<double> negligible_below_;

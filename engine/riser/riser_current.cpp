@@ -22,6 +22,13 @@ SchemaBinder<CurrentProfileRow> profileRowBinder() {
   return b;
 }
 
+// The rows' (cos, sin) and the shorter-arc steps between them, once per profile.
+void setCurrentDirections(CurrentProfile& c) {
+  for (double h : c.heading) c.direction.emplace_back(std::cos(h), std::sin(h));
+  for (std::size_t k = 1; k < c.heading.size(); ++k)
+    c.heading_step.push_back(std::remainder(c.heading[k] - c.heading[k - 1], 2 * std::numbers::pi));
+}
+
 }  // namespace
 
 Eigen::Vector3d CurrentProfile::at(double z) const {
@@ -39,7 +46,10 @@ Eigen::Vector3d CurrentProfile::at(double z) const {
     s = speed[k] + f * (speed[k + 1] - speed[k]);
     if (heading[k + 1] == heading[k] && direction.size() == heading.size())
       return s * Eigen::Vector3d(direction[k].x(), direction[k].y(), 0.0);
-    h = heading[k] + f * std::remainder(heading[k + 1] - heading[k], 2 * std::numbers::pi);
+    const double step = heading_step.size() + 1 == heading.size()
+                            ? heading_step[k]
+                            : std::remainder(heading[k + 1] - heading[k], 2 * std::numbers::pi);
+    h = heading[k] + f * step;
   } else if (direction.size() == 1) {
     return s * Eigen::Vector3d(direction[0].x(), direction[0].y(), 0.0);
   }
@@ -56,7 +66,7 @@ CurrentProfile buildCurrentProfile(const RiserParameters& p) {
       c.heading.push_back(radiansFromDegrees(r.heading_deg));
       c.max_speed = std::max(c.max_speed, std::abs(r.speed));
     }
-    for (double h : c.heading) c.direction.emplace_back(std::cos(h), std::sin(h));
+    setCurrentDirections(c);
     return c;
   }
   const double direction = radiansFromDegrees(p.current_direction_deg), depth = p.water_level - p.seabed_level;
@@ -69,7 +79,7 @@ CurrentProfile buildCurrentProfile(const RiserParameters& p) {
     c.heading.push_back(direction);
   }
   c.max_speed = std::max(std::abs(p.current_speed_surface), std::abs(p.current_speed_seabed));
-  for (double h : c.heading) c.direction.emplace_back(std::cos(h), std::sin(h));
+  setCurrentDirections(c);
   return c;
 }
 

@@ -24,6 +24,9 @@ struct CurrentProfile {
   // these instead of a remainder, a cosine and a sine at every Gauss point (the same numbers, 15 % of a riser's
   // right-hand side).
   std::vector<Eigen::Vector2d> direction;
+  // Shorter-arc heading change from each row to the next, remainder(heading[k+1] − heading[k], 2π) (one fewer
+  // entry than the rows), set by buildCurrentProfile: `at` then takes no remainder per Gauss point.
+  std::vector<double> heading_step;
 
   // Velocity [m/s] at height z: zero above the water level; above the first row and below the last the end row
   // holds; in between speed and heading are linear in depth, the heading along the shorter arc.

@@ -191,7 +191,7 @@ void prepareSegmentsAt(const RiserModel& m, const TopKinematics& top, RiserWorks
 }  // namespace
 
 void prepareSegments(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y) {
-  prepareSegmentsAt(m, m.topAt(t), ws, t, y);
+  prepareSegmentsAt(m, m.topAt(t, ws.vessel_motion), ws, t, y);
 }
 
 namespace {
@@ -344,7 +344,7 @@ Vec3 stabilisation(const RiserModel& m, const ConstraintViolation& phi, int k, d
 }  // namespace
 
 void evaluateRhs(const RiserModel& m, RiserWorkspace& ws, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
-  const TopKinematics top = m.topAt(t);
+  const TopKinematics top = m.topAt(t, ws.vessel_motion);
   prepareSegmentsAt(m, top, ws, t, y);
   const RiserPose& pose = ws.pose;
   const int f = m.first_dynamic, last = m.last_dynamic, nb = last - f + 2;

@@ -47,6 +47,7 @@ struct RiserWorkspace {
   ConstraintViolation constraint_violation;           // Φ, Φ̇ of the last evaluation (joint: end rows only)
   double stabilisation_rate = 0.0;  // [1/s] Baumgarte α (= β)
   double constraint_drift = 0.0;    // [m] max |Φ| at the last evaluation
+  VesselMotionCache vessel_motion;  // the top's vessel motion at the last time (RiserModel::topAt)
 };
 
 RiserWorkspace makeWorkspace(const RiserModel& m, double stabilisation_rate);

@@ -126,6 +126,18 @@ TopMotionSpline buildTopMotionSpline(const std::vector<TopMotionRow>& rows, bool
   return s;
 }
 
+TopKinematics RiserModel::topAt(double t, VesselMotionCache& cache) const {
+  if (!vessel) return topAt(t);
+  if (cache.vessel != vessel || !(cache.time == t)) {
+    cache.vessel = vessel;
+    cache.time = t;
+    cache.motion = vessel->at(t);
+  }
+  TopKinematics k = cache.motion;
+  k.position += top_mean;
+  return k;
+}
+
 TopKinematics RiserModel::topAt(double t) const {
   if (vessel) {
     TopKinematics k = vessel->at(t);

@@ -15,6 +15,7 @@
 //   are singular only at a 90° bend between neighbouring segments.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -79,6 +80,16 @@ struct TopKinematics {
   Vec3 position, velocity, acceleration;  // [m], [m/s], [m/s²] global
 };
 
+// The vessel's motion (VesselMotion::at) at the last time a caller asked for it: a step's residuals and the
+// differences of its Newton matrix share their time, and the vessel's harmonic synthesis over the sea's components is
+// then done once (RiserModel::topAt). Per caller (each RiserWorkspace holds one); holding the vessel keeps it from
+// being replaced by another at the same address.
+struct VesselMotionCache {
+  std::shared_ptr<const VesselMotion> vessel;
+  double time = std::numeric_limits<double>::quiet_NaN();
+  TopKinematics motion;
+};
+
 // Clamped cubic spline through a time table of top displacements (zero velocity at the first and last
 // rows, so velocity is continuous everywhere; the first/last row is held outside the table).
 // Position is C², velocity C¹ inside; interpolation error O(Δt⁴) for smooth motions.
@@ -136,6 +147,8 @@ struct RiserModel {
   Vec3 currentAt(double z) const;
   // Prescribed top motion at time t (mean position + ramped harmonic motion per axis, the table, or the vessel).
   TopKinematics topAt(double t) const;
+  // The same, the vessel's motion looked up in `cache` when it holds this time's (the same numbers).
+  TopKinematics topAt(double t, VesselMotionCache& cache) const;
   // Segment index and local coordinate ξ of arc length s.
   std::pair<int, double> locate(double s) const;
 };

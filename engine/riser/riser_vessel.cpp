@@ -211,14 +211,11 @@ void VesselMotion::degreesOfFreedom(double t, Vec6& x, Vec6& v, Vec6& a) const {
   // each sum is a 6 × block matrix–vector product.
   constexpr std::size_t kBlock = 64;
   Vec6 d = Vec6::Zero(), dd = Vec6::Zero(), ddd = Vec6::Zero();
-  double phase[kBlock], c[kBlock], s[kBlock], wc[kBlock], ws[kBlock], wwc[kBlock], wws[kBlock];
-  const double x_ref = reference.x(), y_ref = reference.y();
+  double c[kBlock], s[kBlock], wc[kBlock], ws[kBlock], wwc[kBlock], wws[kBlock];
   for (std::size_t start = 0; start < omega_.size(); start += kBlock) {
     const std::size_t count = std::min(kBlock, omega_.size() - start);
     const double* w = omega_.data() + start;
-    for (std::size_t j = 0; j < count; ++j)  // ψ = k·x_ref + φ − ω t, as WaveField::elevation
-      phase[j] = kx_[start + j] * x_ref + ky_[start + j] * y_ref + phase_[start + j];
-    ocean::harmonicPhases(count, phase, w, t, c, s);
+    ocean::harmonicPhases(count, reference_phase_.data() + start, w, t, c, s);
     for (std::size_t j = 0; j < count; ++j) {
       wc[j] = w[j] * c[j], ws[j] = w[j] * s[j];
       wwc[j] = w[j] * wc[j], wws[j] = w[j] * ws[j];
@@ -283,10 +280,10 @@ std::shared_ptr<const VesselMotion> buildVesselMotion(const RiserParameters& p, 
   for (Eigen::Index i = 0; i < n; ++i) {
     const ocean::WaveComponent& c = field.components()[static_cast<std::size_t>(i)];
     const double k = ocean::waveNumber(c.omega, field.depth(), p.gravity);  // as the field's own k
-    m->kx_.push_back(k * std::cos(direction));
-    m->ky_.push_back(k * std::sin(direction));
+    const double kx = k * std::cos(direction), ky = k * std::sin(direction);
     m->omega_.push_back(c.omega);
-    m->phase_.push_back(c.phase);
+    // ψ = k·x_ref + φ − ω t, as WaveField::elevation: the part without t once, not at every call
+    m->reference_phase_.push_back(kx * m->reference.x() + ky * m->reference.y() + c.phase);
     bool this_outside = false;
     const RaoValue rao = interpolateRao(table, relative_deg, c.omega, &this_outside, &clamped);
     variance += 0.5 * c.amplitude * c.amplitude;

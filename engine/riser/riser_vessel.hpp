@@ -62,7 +62,8 @@ RaoValue interpolateRao(const RaoTable& table, double heading_deg, double omega,
 
 class VesselMotion {
  public:
-  Vec3 reference = Vec3::Zero();  // [m] mean position of the RAO origin (the wave phase reference), global
+  Vec3 reference = Vec3::Zero();  // [m] mean position of the RAO origin (the wave phase reference), global; the
+                                  // phases are formed from it when the motion is built
   std::vector<std::string> warnings;  // frequencies or heading outside the table (scene warnings)
   double mean_period = 0.0;  // [s] T_m01 = 2π Σa²/Σa²ω of the wave train (sets the automatic time step)
 
@@ -75,7 +76,8 @@ class VesselMotion {
   friend std::shared_ptr<const VesselMotion> buildVesselMotion(const RiserParameters&,
                                                                std::shared_ptr<const RiserSea>, const Vec3&, bool);
   std::shared_ptr<const RiserSea> sea_;
-  std::vector<double> kx_, ky_, omega_, phase_;  // per wave component
+  // Per wave component: ω and the phase k·x_ref + φ at the RAO origin's mean position (set with `reference`).
+  std::vector<double> omega_, reference_phase_;
   Eigen::Matrix<double, 6, Eigen::Dynamic> cos_part_, sin_part_;  // a R cos ε, a R sin ε per dof and component
   Mat3 heading_ = Mat3::Identity();
   Vec3 hang_off_ = Vec3::Zero();

@@ -3,6 +3,7 @@
 // cosine and exponential kernels against the standard library's.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -79,8 +80,10 @@ Scales scalesAt(const WaveField& field, double z_stretched) {
     const WaveComponent& c = field.components()[j];
     const double k = waveNumber(c.omega, h, kG);
     const double z = std::isinf(h) ? z_stretched : std::max(z_stretched, -h);
-    const double ch = std::isinf(h) ? std::exp(k * z) : std::cosh(k * (z + h)) / std::sinh(k * h);
-    const double sh = std::isinf(h) ? std::exp(k * z) : std::abs(std::sinh(k * (z + h))) / std::sinh(k * h);
+    // Beyond k h = 300 the ratios equal e^{k z} to 1e-260 (and cosh, sinh would overflow past k h = 710).
+    const bool deep = std::isinf(h) || k * h > 300.0;
+    const double ch = deep ? std::exp(k * z) : std::cosh(k * (z + h)) / std::sinh(k * h);
+    const double sh = deep ? std::exp(k * z) : std::abs(std::sinh(k * (z + h))) / std::sinh(k * h);
     s.eta += c.amplitude;
     s.u += c.amplitude * c.omega * ch;
     s.w += c.amplitude * c.omega * sh;
@@ -244,6 +247,45 @@ TEST(OceanKinematicsBatch, TruncationStaysWithinItsStatedBound) {
       dropped += fast[i].velocity != all[i].velocity;
     }
     EXPECT_GE(dropped, 20);  // of 41 points: the deeper ones lose their short waves
+  }
+}
+
+// In 1000 m of water the short components (k h > 300) drop the mirror term e^{−k(z'+2h)} (≤ e^{−300} of their
+// value) and take e^{k z'}, the long ones the ratio form: both against the direct formula within 1e-13 of the scale.
+TEST(OceanKinematicsBatch, EqualsTheDirectFormulaWhereTheShortWavesDropTheMirrorTerm) {
+  const WaveField field = jonswapSea(1000.0, Stretching::Wheeler);
+  int long_waves = 0, short_waves = 0;
+  for (const WaveComponent& c : field.components()) (waveNumber(c.omega, 1000.0, kG) * 1000.0 > 300.0 ? short_waves : long_waves)++;
+  EXPECT_GE(long_waves, 20);
+  EXPECT_GE(short_waves, 20);
+  expectBatchEqualsDirect(field, 37.3, 1.0, 0.0, 1e-13);
+}
+
+// Without stretching a point above the still water keeps z' = z: a wave of k = 100 /m in 2.9 m of water (k h = 290,
+// below the 300 of the mirror term) with a 5.1 m crest, at z = 3.5 m (k (z'+h) = 640: the ratio form, 2^±923) and
+// z = 5 m (k (z'+h) = 790, beyond the ratio form's range: e^{k z'} = e^{500}, the mirror term e^{−1080} dropped). Against the direct formula within
+// 1e-13 of the velocity's and acceleration's size (the sums of one component: their magnitudes a ω C, a ω² C).
+TEST(OceanKinematicsBatch, PointsFarAboveTheStillWaterWithoutStretchingEqualTheDirectFormula) {
+  const double depth = 2.9, k = 100.0, omega = std::sqrt(kG * k * std::tanh(k * depth));
+  const WaveField field =
+      airyWave(10.2, 2.0 * std::numbers::pi / omega, kDirection, 0.0, depth, kG, Stretching::None);
+  const WaveKinematicsBatch batch(field, kDirection, kG);
+  WaveKinematicsBatch::Scratch scratch;
+  const double s = 1e-3;  // ψ = 0.1: velocity and acceleration have both components
+  for (const double z : {3.5, 5.0}) {
+    SCOPED_TRACE(z);
+    const Eigen::Vector3d p(s * std::cos(kDirection), s * std::sin(kDirection), z);
+    FluidKinematics fast;
+    batch.evaluate(&p, 1, 0.0, 1.0, 0.0, scratch, &fast);
+    const FluidKinematics direct = field.kinematics(p, 0.0);
+    ASSERT_TRUE(direct.wet);
+    ASSERT_TRUE(fast.wet);
+    // cosh k(z+h)/sinh kh without its overflow at k (z+h) > 710
+    const double c = (std::exp(k * z) + std::exp(-k * (z + 2.0 * depth))) / -std::expm1(-2.0 * k * depth);
+    const double v = 5.1 * omega * c, a = v * omega;
+    ASSERT_TRUE(std::isfinite(v * omega));
+    EXPECT_LE((fast.velocity - direct.velocity).cwiseAbs().maxCoeff(), 1e-13 * v);
+    EXPECT_LE((fast.acceleration - direct.acceleration).cwiseAbs().maxCoeff(), 1e-13 * a);
   }
 }
 

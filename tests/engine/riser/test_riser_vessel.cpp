@@ -193,6 +193,32 @@ TEST(RiserVessel, VelocityAndAccelerationAreTheDerivativesOfThePosition) {
   }
 }
 
+// The vessel motion looked up per time (RiserModel::topAt with a VesselMotionCache, as evaluateRhs does): the same
+// numbers as computed afresh, exactly, for repeated and new times and for a cache passed between two vessels.
+TEST(RiserVessel, TopMotionLookedUpPerTimeEqualsTheMotionComputedAfresh) {
+  const double all[12] = {0.8, 95, 0.6, 80, 0.9, 10, 1.5, 120, 2.0, 200, 0.7, 300};
+  RiserParameters p = vesselRiser(flatTable(0.0, all), "cache_a.csv");
+  p.vessel_hang_off_x = 35.0;
+  p.vessel_hang_off_z = 20.0;
+  const RiserModel a = buildRiserModel(p);
+  p.vessel_heading_deg = 60.0;  // another vessel: another motion at the same times
+  const RiserModel b = buildRiserModel(p);
+  VesselMotionCache cache;
+  auto expectSame = [&](const RiserModel& m, double t) {
+    const TopKinematics looked_up = m.topAt(t, cache), afresh = m.topAt(t);
+    EXPECT_EQ(looked_up.position, afresh.position) << "t = " << t;
+    EXPECT_EQ(looked_up.velocity, afresh.velocity) << "t = " << t;
+    EXPECT_EQ(looked_up.acceleration, afresh.acceleration) << "t = " << t;
+  };
+  for (const double t : {3.0, 3.0, 12.5, 12.5, 3.0}) {
+    expectSame(a, t);
+    expectSame(a, t);
+    expectSame(b, t);  // the same time, the other vessel
+    expectSame(a, t);
+  }
+  EXPECT_NE(a.topAt(12.5).position, b.topAt(12.5).position);  // the two vessels do move differently
+}
+
 // A tensioner leaves the top's height free: the vessel's heave does not prescribe it.
 TEST(RiserVessel, TensionerIgnoresTheVerticalMotion) {
   const double heave_and_surge[12] = {1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0};
