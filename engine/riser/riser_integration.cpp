@@ -10,6 +10,7 @@
 #include "core/checked_count.hpp"
 #include "core/errors.hpp"
 #include "core/ode.hpp"
+#include "core/text_format.hpp"
 #include "riser/riser_charted_alpha.hpp"
 #include "riser/riser_vessel.hpp"
 #include "riser/riser_waves.hpp"
@@ -314,7 +315,7 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
       std::ostringstream e;
       e.precision(2);
       e << (plan.reason.empty() ? "" : "; ") << "expected probe error ≈ " << plan.expected_error << " of the motion";
-      if (!harmonic_top) e << " (" << kSeaErrorModel << " (h/T_m01)², T_m01 = " << wave_period << " s)";
+      if (!harmonic_top) e << formatText(" (%g (h/T_m01)², T_m01 = %.2g s)", kSeaErrorModel, wave_period);
       plan.reason += e.str();
     }
   }
