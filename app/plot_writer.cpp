@@ -82,6 +82,7 @@ ui::StudyPlotData studyPlotData(const study::CollectedStudy& collected, const st
   data.title = plot.title;
   data.result_name = collected.result_names[plot.result];
   data.result_unit = collected.result_units[plot.result];
+  if (plot.result < collected.result_labels.size()) data.result_label = collected.result_labels[plot.result];
   for (std::size_t p = 0; p < collected.parameters.size(); ++p) {
     const auto& parameter = collected.parameters[p];
     if (parameter.kind != ParamKind::Real && parameter.kind != ParamKind::Integer) continue;

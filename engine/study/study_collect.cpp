@@ -34,6 +34,13 @@ CaseScalars summaryScalars(const Json& j) {
   return scalars;
 }
 
+// The human labels a summary.json declares for its scalars (those without one are left out).
+void addSummaryLabels(const Json& j, std::map<std::string, std::string>& labels) {
+  for (const auto& [name, s] : j.at("results").items())
+    if (s.is_object() && s.contains("label") && s["label"].is_string() && !s["label"].get<std::string>().empty())
+      labels.emplace(name, s["label"].get<std::string>());
+}
+
 }  // namespace
 
 std::size_t CollectedStudy::count(CaseStatus status) const {
@@ -44,6 +51,7 @@ std::size_t CollectedStudy::count(CaseStatus status) const {
 CollectedStudy collectStudy(const StudyFolder& folder, const StudyManifest& manifest) {
   std::vector<CollectedCase> cases;
   std::vector<CaseScalars> scalars(manifest.ids.size());
+  std::map<std::string, std::string> labels;  // the first complete case's label of each scalar
   for (std::size_t i = 0; i < manifest.ids.size(); ++i) {
     CollectedCase c;
     c.id = manifest.ids[i];
@@ -53,6 +61,7 @@ CollectedStudy collectStudy(const StudyFolder& folder, const StudyManifest& mani
     if (const auto summary = folder.caseSummary(c.id)) {
       try {
         scalars[i] = summaryScalars(*summary);
+        addSummaryLabels(*summary, labels);
         c.status = CaseStatus::Ok;
         c.outcome.status = CaseStatus::Ok;
       } catch (const std::exception& e) {
@@ -65,6 +74,7 @@ CollectedStudy collectStudy(const StudyFolder& folder, const StudyManifest& mani
     cases.push_back(std::move(c));
   }
   CollectedStudy collected = collectScalars(manifest.parameters, manifest.results, std::move(cases), scalars);
+  for (const auto& name : collected.result_names) collected.result_labels.push_back(labels.count(name) ? labels[name] : "");
   if (!manifest.weight_column.empty())
     collected.weighted_sums = weightedSums(manifest.weighted_results, manifest.weights, collected.cases, scalars);
   return collected;
@@ -235,12 +245,15 @@ std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyMa
   const bool map = manifest.json.value("design", "") == "grid" && collected.parameters.size() == 2 && numeric.size() == 2;
   for (std::size_t r = 0; r < collected.result_names.size(); ++r) {
     const std::string& result = collected.result_names[r];
+    // Titles name the result by its label where the runs declared one; parameters by their study paths.
+    const std::string shown =
+        r < collected.result_labels.size() && !collected.result_labels[r].empty() ? collected.result_labels[r] : result;
     if (map)
-      plots.push_back({portableStem(result + "_map"), result + " over " + collected.parameters[0].path + " and " +
+      plots.push_back({portableStem(result + "_map"), shown + " over " + collected.parameters[0].path + " and " +
                                             collected.parameters[1].path, r, 1, true});
     for (const auto p : numeric)
       plots.push_back({portableStem(result + "_vs_" + collected.parameters[p].path),
-                       result + " against " + collected.parameters[p].path, r, p, false});
+                       shown + " against " + collected.parameters[p].path, r, p, false});
   }
   makeStemsUnique(plots);
   return plots;

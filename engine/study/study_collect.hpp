@@ -34,6 +34,7 @@ struct CollectedStudy {
   std::vector<StudyParameter> parameters;
   std::vector<std::string> result_names;  // the requested scalars, or every scalar of the complete cases (sorted)
   std::vector<std::string> result_units;
+  std::vector<std::string> result_labels;  // collectStudy: each result's label from the cases' summary.json ("": none)
   std::vector<CollectedCase> cases;
   std::vector<std::string> warnings;      // requested results that no complete case has
   std::vector<WeightedSum> weighted_sums; // a table study's "weighted_sum", one per listed result

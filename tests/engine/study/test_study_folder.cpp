@@ -40,6 +40,31 @@ TEST(StudyFolder, ACaseIsCompleteOnlyWhenItsSummaryParsesAsAJsonObject) {
     EXPECT_EQ(collected.cases[i].status, i == 4 ? CaseStatus::Ok : CaseStatus::Missing) << collected.cases[i].id;
   ASSERT_EQ(collected.result_names, std::vector<std::string>{"tip_deflection"});
   EXPECT_EQ(collected.cases[4].results[0], 0.25);
+  EXPECT_EQ(collected.result_labels, std::vector<std::string>{""});  // the summary declares no label
+}
+
+// The study's plots label each result as its runs did: the label a case's summary.json declares for the scalar
+// ("" where none does, and the plot makes the name readable).
+TEST(StudyFolder, CollectedResultsCarryTheLabelsTheirSummariesDeclare) {
+  const ScratchFolder scratch("maris_study_folder_labels");
+  const StudyFolder folder{scratch.path};
+  std::filesystem::create_directories(folder.caseRun("0001"));
+  scratch.write("cases/0001/summary.json",
+                R"({"results": {"end_z": {"value": -1.5, "unit": "m", "label": "Bottom end z"},)"
+                R"( "steps": {"value": 10, "unit": "-"}}})" "\n");
+  StudyManifest manifest;
+  manifest.parameters = {{"geometry.length", "m", ParamKind::Real}};
+  manifest.ids = {"0001"};
+  manifest.values = {{Json(10.0)}};
+  const CollectedStudy collected = collectStudy(folder, manifest);
+  ASSERT_EQ(collected.result_names, (std::vector<std::string>{"end_z", "steps"}));
+  EXPECT_EQ(collected.result_labels, (std::vector<std::string>{"Bottom end z", ""}));
+  manifest.json = Json{{"design", "table"}};
+  const auto plots = studyPlots(collected, manifest);
+  ASSERT_EQ(plots.size(), 2u);
+  EXPECT_EQ(plots[0].title, "Bottom end z against geometry.length");
+  EXPECT_EQ(plots[1].title, "steps against geometry.length");
+  EXPECT_EQ(plots[0].file_stem, "end_z_vs_geometry.length");  // file names keep the result's name
 }
 
 }  // namespace maris::study::test
