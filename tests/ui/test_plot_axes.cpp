@@ -136,6 +136,20 @@ class TestPlotAxes : public QObject {
     QVERIFY(!plot.graph(0)->name().contains(QStringLiteral("right axis")));
   }
 
+  // Several columns on one axis are labelled by the plot's title; a title "Y against X" (or "Y vs X", with an
+  // aside in brackets) gives the y axis Y only, so it fits beside the axis: "Bending frequencies [rad/s]".
+  void aTitleAgainstXLabelsTheYAxisByItsYPart() {
+    const Results r = curves({{"omega_1", "rad/s", 2.0}, {"omega_2", "rad/s", 4.0}});
+    QCustomPlot plot;
+    QVERIFY(fillPlot(plot, r, makePlot("p", "Bending frequencies against pretension ratio i_T", "curve", "x",
+                                       {"omega_1", "omega_2"})));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atLeft)->label(), QStringLiteral("Bending frequencies [rad/s]"));
+    QCustomPlot other;
+    QVERIFY(fillPlot(other, r, makePlot("q", "Amplitude ratio vs reduced velocity (up-sweep)", "curve", "x",
+                                        {"omega_1", "omega_2"})));
+    QCOMPARE(other.axisRect()->axis(QCPAxis::atLeft)->label(), QStringLiteral("Amplitude ratio [rad/s]"));
+  }
+
   // The threshold is a factor 100 of the largest |value|: a top tension of 2 MN with a horizontal force of 10 kN
   // (200×) is split, with 50 kN (40×) it is not.
   void splitAtAFactorOfHundred() {

@@ -122,6 +122,11 @@ QString severalColumnsLabel(const Table& table, const std::vector<std::string>& 
     const qsizetype open = label.lastIndexOf(QStringLiteral(" ("));
     if (open > 0) label.truncate(open);
   }
+  // "Bending frequencies against pretension ratio i_T": the y axis shows what comes before "against" (the x axis
+  // names the rest), so the label fits beside the axis.
+  if (!title.empty())
+    for (const QString& word : {QStringLiteral(" against "), QStringLiteral(" vs ")})
+      if (const qsizetype at = label.indexOf(word); at > 0) label.truncate(at);
   if (!units.isEmpty()) label += QStringLiteral("%1[%2]").arg(label.isEmpty() ? "" : " ", units.join(", "));
   return label;
 }
