@@ -248,6 +248,31 @@ class StudyTest : public QObject {
     QCOMPARE(studyCaseAt(*view->plot(), view->drawn(), cell), 5);
   }
 
+  // Legend entries give a parameter's value to 4 significant digits ("1.01e+11 Pa", not 1.00957e+11), more only
+  // where two of the study's values would then read the same (1.00001 and 1.00002 keep 6).
+  void legendValuesHaveFourDigitsUnlessMoreTellThemApart() {
+    StudyPlotData data;
+    data.result_name = "bending_stress_max";
+    data.result_unit = "Pa";
+    data.parameters = {{"geometry.length", "m", false, {10.0, 20.0, 10.0, 20.0}},
+                       {"section.youngs_modulus", "Pa", false, {7e10, 7e10, 1.00957e11, 1.00957e11}}};
+    data.result = {2.0e7, 4.0e7, 1.0e7, 3.0e7};
+    QCustomPlot plot;
+    plot.resize(600, 400);
+    QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
+    QStringList names;
+    for (int g = 0; g < plot.graphCount(); ++g) names << plot.graph(g)->name();
+    QVERIFY2(names.contains(QStringLiteral("youngs modulus = 1.01e+11 Pa")), qPrintable(names.join(" | ")));
+    data.parameters[1].values = {1.00001, 1.00001, 1.00002, 1.00002};
+    data.parameters[1].unit = "-";
+    QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
+    names.clear();
+    for (int g = 0; g < plot.graphCount(); ++g) names << plot.graph(g)->name();
+    QVERIFY2(names.contains(QStringLiteral("youngs modulus = 1.00001")) &&
+                 names.contains(QStringLiteral("youngs modulus = 1.00002")),
+             qPrintable(names.join(" | ")));
+  }
+
   // View ▸ Units reaches the study plot: lengths chosen in mm and stresses in MPa scale the drawn values (SI × 1000
   // and × 1e-6, exactly) and name the unit on the axes, the legend and the colour scale; the data stay SI.
   void displayUnitsReachTheStudyPlot() {

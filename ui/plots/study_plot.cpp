@@ -59,14 +59,36 @@ int indexOf(const std::vector<double>& sorted, double v) {
   return static_cast<int>(std::lower_bound(sorted.begin(), sorted.end(), v) - sorted.begin());
 }
 
-// "length = 120 m, method = 2" for the parameters other than `x` of case `c`.
+// `v` with at least `digits` significant digits, and all of its integer digits below 1e6 (20000, not 2e+04).
+QString studyNumber(double v, int digits) {
+  const double magnitude = std::abs(v);
+  if (magnitude >= 1.0 && magnitude < 1e6)
+    digits = std::max(digits, static_cast<int>(std::floor(std::log10(magnitude))) + 1);
+  return QString::number(v, 'g', digits);
+}
+
+// Significant digits that tell `values` apart: 4, or more where two distinct values would read the same.
+int distinguishingDigits(const std::vector<double>& values) {
+  const std::vector<double> distinct = distinctValues(values);
+  for (int digits = 4; digits < 17; ++digits) {
+    QStringList texts;
+    for (double v : distinct) texts << studyNumber(v, digits);
+    texts.removeDuplicates();
+    if (texts.size() == static_cast<qsizetype>(distinct.size())) return digits;
+  }
+  return 17;
+}
+
+// "length = 120 m, method = 2" for the parameters other than `x` of case `c` (4 significant digits, more only
+// where the study's values of a parameter need them to read apart).
 QString groupLabel(const StudyPlotData& data, int x, std::size_t c) {
   QStringList parts;
   for (int p = 0; p < static_cast<int>(data.parameters.size()); ++p) {
     if (p == x) continue;
     const auto& param = data.parameters[p];
     const DisplayUnit shown = displayUnit(param.unit);
-    QString value = QString::number(param.values[c] * shown.factor, 'g', 6);
+    const int digits = distinguishingDigits(shownValues(param.values, param.unit));
+    QString value = studyNumber(param.values[c] * shown.factor, digits);
     if (!shown.unit.empty() && shown.unit != "-") value += QStringLiteral(" ") + QString::fromStdString(shown.unit);
     parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(shortName(param.name)), value);
   }
@@ -94,7 +116,9 @@ void addTitle(QCustomPlot& plot, const std::string& title) {
 void cellTicks(QCPAxis* axis, const std::vector<double>& values) {
   QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
   const int step = std::max<int>(1, static_cast<int>(values.size()) / 10);
-  for (int i = 0; i < static_cast<int>(values.size()); i += step) ticker->addTick(i, QString::number(values[i], 'g', 6));
+  const int digits = distinguishingDigits(values);
+  for (int i = 0; i < static_cast<int>(values.size()); i += step)
+    ticker->addTick(i, studyNumber(values[i], digits));
   axis->setTicker(ticker);
   axis->setRange(-0.5, values.size() - 0.5);
 }
