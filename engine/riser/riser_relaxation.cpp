@@ -28,7 +28,8 @@ DampedRelaxation::DampedRelaxation(const RiserModel& at_rest)
       step_(period_ / 40),
       integrator_(m_, 1.0 / step_) {}  // Baumgarte rate as the implicit dynamics use
 
-void DampedRelaxation::advance(Eigen::VectorXd& y, double duration, RunContext& context) {
+void DampedRelaxation::advance(Eigen::VectorXd& y, double duration, RunContext& context,
+                               const RunContext::ProgressFn& progress) {
   OdeOptions options;
   options.rtol = options.atol = 1e-6;
   options.step = step_;
@@ -37,11 +38,16 @@ void DampedRelaxation::advance(Eigen::VectorXd& y, double duration, RunContext& 
   GeneralizedAlphaOptions alpha;
   alpha.startup_halvings = time_ == 0.0 ? 6 : 0;  // the shape starts at rest far from equilibrium
   // One chart per period: rotations within it stay well inside the chart's limit.
-  const double end = time_ + duration;
+  const double start = time_, end = time_ + duration;
   while (time_ < end - 1e-9 * period_) {
     options.t0 = time_;
     options.t1 = std::min(end, time_ + period_);
-    integrator_.advance(y, options, alpha, context);
+    RunContext::ProgressFn chunk;
+    if (progress)
+      chunk = [&](double f, const std::string& stage) {
+        progress((options.t0 - start + f * (options.t1 - options.t0)) / duration, stage);
+      };
+    integrator_.advance(y, options, alpha, context, chunk);
     time_ = options.t1;
     alpha.startup_halvings = 0;
   }

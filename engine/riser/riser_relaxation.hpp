@@ -22,9 +22,10 @@ class DampedRelaxation {
   DampedRelaxation(const DampedRelaxation&) = delete;  // the integrator refers to m_
   DampedRelaxation& operator=(const DampedRelaxation&) = delete;
 
-  // Advances the joint state y (riser_dynamics layout of the joint model) by `duration` s of damped motion.
-  // Throws SolverError if the motion fails (naming time, step and quantity).
-  void advance(Eigen::VectorXd& y, double duration, RunContext& context);
+  // Advances the joint state y (riser_dynamics layout of the joint model) by `duration` s of damped motion;
+  // `progress` (may be empty) sees the fraction of `duration` done. Throws SolverError if the motion fails
+  // (naming time, step and quantity).
+  void advance(Eigen::VectorXd& y, double duration, RunContext& context, const RunContext::ProgressFn& progress = {});
 
   const RiserModel& model() const { return m_; }  // the joint model with the damper
   double period() const { return period_; }       // [s] 2π√(L/g)

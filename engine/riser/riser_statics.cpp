@@ -347,7 +347,10 @@ bool relaxThenNewton(const RiserModel& m, StaticProblem& problem, Configuration&
   for (int k = 0; k < kPeriods; ++k) {
     context.progress(0.05 + 0.9 * k / kPeriods, "statics: dynamic relaxation");
     try {
-      relax.advance(y, relax.period(), context);
+      // A period of a long chain can take minutes of damped motion: its progress is reported inside it too.
+      relax.advance(y, relax.period(), context, [&](double f, const std::string&) {
+        context.progress(0.05 + 0.9 * (k + f) / kPeriods, "statics: dynamic relaxation");
+      });
     } catch (const SolverError&) {
       return false;  // the motion itself failed: the dense path may still find the equilibrium
     }

@@ -237,5 +237,23 @@ TEST(RiserStaticsBanded, DefaultRiserStopsAtItsRoundOffFloorWithoutRelaxation) {
   }
 }
 
+// Dynamic relaxation reports its progress inside each pendulum period, not only between periods (a period of a
+// long chain can take minutes): the slack cable held at both ends (n = 50, which relaxes) reports fractions
+// strictly inside its first period's share, 0.05 … 0.05 + 0.9/30, under the stage "statics: dynamic relaxation".
+TEST(RiserStaticsBanded, DynamicRelaxationReportsProgressWithinAPeriod) {
+  RiserParameters p = test::implicitCableHeldAtBothEnds(50, 0.0);
+  p.formulation = "joint";
+  const RiserModel m = buildRiserModel(p);
+  std::vector<double> inside;
+  RunContext context(
+      [&](double f, const std::string& stage) {
+        if (stage == "statics: dynamic relaxation" && f > 0.05 && f < 0.05 + 0.9 / 30) inside.push_back(f);
+      },
+      nullptr);
+  const StaticSolution s = solveStatics(m, context, StaticMethod::Automatic);
+  ASSERT_GT(s.relaxation_time, 0.0);
+  EXPECT_FALSE(inside.empty());
+}
+
 }  // namespace
 }  // namespace maris::riser
