@@ -248,15 +248,12 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   double h_rk4_run = h_rk4;  // auto: also within the step its accuracy needs
   // Implicit: 50 steps per top period (or per run), unresolved fast modes are damped (ρ∞ = 0.8).
   double h_implicit = harmonic_top ? p.motion_period / 50 : std::max(p.end_time, 1e-9) / 200;
-  // A top moved by the vessel follows the waves: the same step counts per mean wave period T_m01.
-  if (m.vessel) {
-    h_rk4 = std::min(h_rk4, m.vessel->mean_period / 40);
-    h_implicit = std::min(h_implicit, m.vessel->mean_period / 50);
-  } else if (m.sea && m.sea->field.meanPeriod() > 0) {
-    // Waves alone load the riser at their own periods: the same step counts per T_m01 (a run's end time over 200
-    // steps took 1.9 s steps in an 8 s wave over 384 s).
-    h_rk4 = std::min(h_rk4, m.sea->field.meanPeriod() / 40);
-    h_implicit = std::min(h_implicit, m.sea->field.meanPeriod() / 50);
+  // Waves load the riser, and move a vessel's top, at their own periods: the same step counts per mean wave period
+  // T_m01 (a run's end time over 200 steps took 1.9 s steps in an 8 s wave over 384 s).
+  const double wave_period = m.vessel ? m.vessel->mean_period : m.sea ? m.sea->field.meanPeriod() : 0.0;
+  if (wave_period > 0) {
+    h_rk4 = std::min(h_rk4, wave_period / 40);
+    h_implicit = std::min(h_implicit, wave_period / 50);
   }
   const std::string& choice = p.integrator;
   if (choice == "rk4") {
@@ -305,7 +302,6 @@ IntegrationPlan planIntegration(const RiserModel& m, const RiserParameters& p) {
   } else {
     plan.step = p.time_step > 0 ? p.time_step : wholeStepsPerFrame(p, h_implicit);
     plan.stabilisation_rate = 1.0 / plan.step;
-    const double wave_period = m.vessel ? m.vessel->mean_period : m.sea ? m.sea->field.meanPeriod() : 0.0;
     if (harmonic_top) {
       plan.expected_error = implicitErrorModel(m.formulation) * std::pow(plan.step / p.motion_period, 2);
     } else if (wave_period > 0) {
