@@ -9,6 +9,7 @@
 #include "core/ode_internal.hpp"
 #include "core/ode_newton.hpp"
 #include "core/ode_second_order.hpp"
+#include "core/text_format.hpp"
 
 namespace maris {
 
@@ -37,7 +38,7 @@ std::string newtonFailure(const NewtonSolver& newton, const SecondOrderSystem& s
   const Eigen::Index checked = correction.size() - passive;
   if (checked > 0) correction.head(checked).cwiseAbs().maxCoeff(worst);
   return "has the largest correction when the Newton iteration failed to converge at step h = " +
-         std::to_string(h) + " s (min_step " + std::to_string(o.min_step) + " s)";
+         numberText(h) + " s (min_step " + numberText(o.min_step) + " s)";
 }
 
 }  // namespace

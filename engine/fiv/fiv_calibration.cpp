@@ -12,6 +12,7 @@
 #include "core/least_squares.hpp"
 #include "fiv/fiv_limit_cycle.hpp"
 #include "fiv/fiv_sweep.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::fiv {
 
@@ -178,8 +179,8 @@ std::string addCalibrationResults(Results& results, const CalibrationResult& cal
          << "); its coefficients are not a fit and are not recommended (allow more iterations or start elsewhere)";
   for (std::size_t i = 0; i < cal.names.size(); ++i) {
     results.addScalar("calibrated_" + cal.names[i], cal.fitted[i], "-",
-                      "Fitted " + cal.names[i] + " (was " + std::to_string(cal.initial[i]) + "; ± " +
-                          std::to_string(cal.standard_error[i]) + " standard error)",
+                      "Fitted " + cal.names[i] + " (was " + numberText(cal.initial[i]) + "; ± " +
+                          numberText(cal.standard_error[i]) + " standard error)",
                       calibratedLabel(cal.names[i]));
     if (cal.converged) note << " " << cal.names[i] << "=" << cal.fitted[i];
   }

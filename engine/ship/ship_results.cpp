@@ -219,7 +219,7 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     GridKochin kochin(m.grid, false);
     Table s;
     s.name = "wave_spectrum";
-    s.title = "Wave-angle spectrum dR_W/dtheta at Fn = " + std::to_string(c.froude[d]);
+    s.title = "Wave-angle spectrum dR_W/dθ at Fn = " + numberText(c.froude[d]);
     s.add("theta_deg", "deg", theta_deg, "Wave angle θ");
     s.add("dr_dtheta", "N/rad", waveSpectrum(kochin, c.speed[d], p.gravity, rho, michellSettings(p, m, false), theta),
           "dR_W/dθ Michell");
@@ -239,7 +239,7 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     const auto dstar = m.tangency->displacementThickness(j, c.speed[d], m.water.kinematic_viscosity);
     Table b;
     b.name = "boundary_layer";
-    b.title = "Displacement thickness at z = " + std::to_string(m.grid.z(j)) + " m, Fn = " + std::to_string(c.froude[d]);
+    b.title = "Displacement thickness at z = " + numberText(m.grid.z(j)) + " m, Fn = " + numberText(c.froude[d]);
     std::vector<double> x, y, ye;
     for (int i = 0; i < m.grid.nx(); ++i) {
       x.push_back(m.grid.x(i));
@@ -299,7 +299,7 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
     worst = std::max(worst, c.michell[i].error_estimate / c.michell[i].resistance);
     evaluations += c.michell[i].evaluations;
     if (!c.michell[i].converged)
-      context.warn("Fn = " + std::to_string(c.froude[i]) + ": the wave-angle quadrature stopped before the tolerance");
+      context.warn("Fn = " + numberText(c.froude[i]) + ": the wave-angle quadrature stopped before the tolerance");
   }
   r.stats.steps = static_cast<long>(n);
   r.stats.rhs_evaluations = evaluations;
@@ -307,7 +307,7 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   r.stats.error_unit = "relative (largest over the sweep, uncorrected C_W)";
   r.stats.method = "Michell: exp-fitted trapezoid (z) x Filon-Simpson (x) on " + std::to_string(p.stations) + "x" +
                    std::to_string(p.waterlines) + ", adaptive Gauss-Kronrod 7/15 in lambda = cosh u, rtol " +
-                   std::to_string(p.relative_tolerance);
+                   numberText(p.relative_tolerance);
   for (const auto& note : m.notes) context.warn(note);
   return r;
 }

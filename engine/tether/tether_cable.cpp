@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 
 #include "core/errors.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::tether {
 
@@ -58,7 +59,7 @@ StaticChain staticChainProfile(double span, double rise, double length, int segm
   for (out.iterations = 0; f.norm() > 1e-14 * length; ++out.iterations) {
     if (out.iterations == 50)
       throw SolverError("static chain closure", 0.0, out.iterations, "Newton did not converge (residual " +
-                                                                          std::to_string(f.norm()) + " m)");
+                                                                          numberText(f.norm()) + " m)");
     const Eigen::Vector2d step = jac.partialPivLu().solve(f);
     // Backtracking keeps the residual decreasing far from the solution.
     double factor = 1.0;

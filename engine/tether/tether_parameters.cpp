@@ -83,7 +83,7 @@ SchemaBinder<TetherParameters> tetherBinder() {
           "External pushes on the follower (world-frame velocity added to its command)");
   b.boolean("cable.enabled", &P::cable_enabled, "Simulate the lumped-mass cable beside the catenary");
   b.integer("cable.segments", &P::cable_segments, "-", Range::closed(2, 5000), "Number of rigid links N");
-  b.real("cable.damping", &P::cable_damping, "N s/m^2", Range::nonNegative(1e3), "Linear damping per length on node velocities");
+  b.real("cable.damping", &P::cable_damping, "N*s/m^2", Range::nonNegative(1e3), "Linear damping per length on node velocities");
   b.real("cable.drag_coefficient", &P::cable_drag_coefficient, "-", Range::nonNegative(10), "Morison normal drag Cd (0: off)");
   b.integer("cable.substeps", &P::cable_substeps, "-", Range::closed(1, 1000), "Cable time steps per control tick");
   b.boolean("vision.enabled", &P::vision_enabled, "Estimate a and b from a synthetic follower camera by Gauss-Newton");

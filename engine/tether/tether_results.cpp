@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/text_format.hpp"
+
 namespace maris::tether {
 
 namespace {
@@ -234,8 +236,8 @@ Results buildTetherResults(const TetherParameters& p, const SimulationOutput& si
   r.stats.steps = static_cast<long>(sim.ticks.size()) - 1;
   r.stats.rhs_evaluations = sim.cable_steps;
   r.stats.error_estimate = sim.worst_constraint_error;
-  r.stats.error_unit = "relative link length^2 error of the cable";
-  r.stats.method = "kinematic robots at " + std::to_string(p.control_rate).substr(0, 5) + " Hz (exact pose update)" +
+  r.stats.error_unit = "relative link length² error of the cable";
+  r.stats.method = "kinematic robots at " + numberText(p.control_rate) + " Hz (exact pose update)" +
                    (p.cable_enabled ? "; lumped-mass cable, symplectic Euler + link projection (SHAKE, then Newton), " +
                                           std::to_string(p.cable_substeps) + " sub-steps per tick"
                                     : std::string());

@@ -11,6 +11,7 @@
 #include "core/formats/tecplot.hpp"
 #include "core/resources.hpp"
 #include "wec/wec_radiation.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::wec {
 
@@ -154,7 +155,7 @@ NemohImport readNemoh(const std::filesystem::path& directory) {
     const double omega = toOmega(exc.variables, r[0]);
     auto it = rows.lower_bound(omegaKey(omega * (1.0 - 1e-6)));
     if (it != rows.end() && std::abs(it->second.omega - omega) > 1e-6 * omega) it = rows.end();
-    if (it == rows.end()) failNemohFile(exc_file, line, "frequency " + std::to_string(r[0]) + " is not in RadiationCoefficients.tec");
+    if (it == rows.end()) failNemohFile(exc_file, line, "frequency " + numberText(r[0]) + " is not in RadiationCoefficients.tec");
     // e^{−iωt} amplitudes → e^{+iωt} (conjugate).
     for (int b = 1; b <= bodies; ++b)
       for (int d : {1, 3}) {

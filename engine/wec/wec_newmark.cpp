@@ -18,6 +18,7 @@
 #include "core/errors.hpp"
 #include "wec/wec_dynamics.hpp"
 #include "wec/wec_frequency.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::wec {
 
@@ -69,7 +70,7 @@ TimeDomainResult simulateNewmark(const WecModel& model, const IncidentWaves& wav
   TimeDomainResult r;
   r.floats.resize(nf);
   r.stability_step = newmarkStabilityStep(model);
-  r.method = "augmented, Newmark two-loop (beta=0, gamma=1/2) h=" + std::to_string(h) + " s, radiation " +
+  r.method = "augmented, Newmark two-loop (beta=0, gamma=1/2) h=" + numberText(h) + " s, radiation " +
              (o.state_space ? "state-space" : "direct convolution");
 
   std::vector<std::vector<ModePropagator>> prop;
@@ -96,8 +97,8 @@ TimeDomainResult simulateNewmark(const WecModel& model, const IncidentWaves& wav
     sys.velocities(y_n, v_n);
     auto fail = [&](const std::string& what) {
       throw SolverError(what, t + h, n + 1,
-                        "augmented Newmark two-loop scheme; the time step " + std::to_string(h) +
-                            " s should stay below its stability limit " + std::to_string(r.stability_step) + " s");
+                        "augmented Newmark two-loop scheme; the time step " + numberText(h) +
+                            " s should stay below its stability limit " + numberText(r.stability_step) + " s");
     };
 
     // Outer loop: explicit Newmark predictor of θ; inner loop: Newton–Raphson on C(x, z; θ_{n+1}) = 0.
@@ -172,7 +173,7 @@ TimeDomainResult simulateNewmark(const WecModel& model, const IncidentWaves& wav
     r.error_estimate += h * h / 6.0 * local;
     throwIfNotFinite(y, t + h, n + 1, [&](Eigen::Index k) {
       return "state " + std::to_string(k) + " of the augmented Newmark run (stability limit " +
-             std::to_string(r.stability_step) + " s)";
+             numberText(r.stability_step) + " s)";
     });
     sys.project(y, r.max_position_drift, r.max_velocity_drift);
     sys.advanceHistory(y);

@@ -215,7 +215,7 @@ PlotSpec powerMatrixPlot(const std::vector<double>& hs, const std::string& spect
 PlotSpec responseSpectraPlot(std::size_t float_count) {
   PlotSpec plot;
   plot.name = "hinge_reaction_spectra";
-  plot.title = "Hinge reaction spectra S_F = |F_h/a|^2 S_eta";
+  plot.title = "Hinge reaction spectra S_F = |F_h/a|² S_η";
   plot.table = "response_spectra";
   plot.x = "omega";
   for (std::size_t i = 0; i < float_count; ++i) {

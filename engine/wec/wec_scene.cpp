@@ -76,7 +76,7 @@ void addFrequencyDomain(const WecParameters& p, const WecModel& model, Results& 
   for (std::size_t f = 0; f < model.floats.size(); ++f) {
     const std::string n = std::to_string(f + 1);
     const double wn = naturalFrequency(model, model.floats[f]);
-    res.addScalar("natural_frequency_" + n, wn, "rad/s", "Undamped pitch natural frequency, root of K = w^2 J(w)", "ω_n, float " + n);
+    res.addScalar("natural_frequency_" + n, wn, "rad/s", "Undamped pitch natural frequency, root of K = ω² J(ω)", "ω_n, float " + n);
     double cw_ratio = 0.0;
     for (const auto& r : resp[f]) cw_ratio = std::max(cw_ratio, r.capture_width / r.capture_width_bound);
     res.addScalar("max_capture_width_ratio_" + n, cw_ratio, "-", "max over the sweep of capture width / (3 lambda / 2 pi)", "max capture width / (3λ/2π), float " + n);
@@ -113,7 +113,7 @@ void addRadiationScalars(const WecModel& model, Results& res, RunContext& ctx) {
     }
     res.addScalar("cross_radiation_channels", static_cast<double>(model.cross.size()), "-",
                   "Off-diagonal (float-float and surge-heave) radiation entries with their own kernels", "Cross-radiation channels");
-    res.addScalar("cross_kernel_fit_r2_min", worst_r2, "-", "Lowest R^2 of the cross-kernel modal fits", "min R² of the cross-kernel fits");
+    res.addScalar("cross_kernel_fit_r2_min", worst_r2, "-", "Lowest R² of the cross-kernel modal fits", "min R² of the cross-kernel fits");
     res.addScalar("cross_kernel_fit_damping_error_max", worst_b, "-",
                   "Largest max|B_fit - B| / max|B| of the cross-kernel fits on 0.3-3 rad/s", "max damping error of the cross-kernel fits");
   }
@@ -316,7 +316,7 @@ Results solveWec(const WecParameters& p, RunContext& ctx) {
     res.stats.steps += second.steps;
     res.stats.rhs_evaluations += second.rhs_evaluations;
     res.addScalar("error_estimate_augmented", second.error_estimate, "rad",
-                  "Sum of local-error estimates of theta, augmented run (RK4 embedded pair or Newmark h^2/6 |dtheta_dd|)", "Error estimate, augmented");
+                  "Sum of local-error estimates of theta, augmented run (RK4 embedded pair or Newmark h²/6 |d²θ/dt²|)", "Error estimate, augmented");
   } else {
     res.tables.push_back(historyTable(main, nullptr, theta0, main.time.size()));
   }

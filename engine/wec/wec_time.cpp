@@ -11,6 +11,7 @@
 #include "core/ode.hpp"
 #include "wec/wec_dynamics.hpp"
 #include "wec/wec_frequency.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::wec {
 
@@ -107,7 +108,7 @@ TimeDomainResult simulateTimeDomain(const WecModel& model, const IncidentWaves& 
   ode.state_name = [&](Eigen::Index k) {
     std::string what = "state " + std::to_string(k);
     if (h > r.stability_step)
-      what += " (time step above the estimated RK4 stability limit " + std::to_string(r.stability_step) + " s)";
+      what += " (time step above the estimated RK4 stability limit " + numberText(r.stability_step) + " s)";
     return what;
   };
   // After each step: projection onto the hinge constraints (augmented), then the velocity history (direct).

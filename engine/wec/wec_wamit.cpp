@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "core/formats/wamit.hpp"
 #include "core/resources.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::wec {
 
@@ -57,7 +58,7 @@ std::shared_ptr<TabulatedHydro> readWamit(const std::filesystem::path& stem, dou
   for (const auto& r : formats::parseWamit3(readFile(file3), "hydro.wamit_stem", file3.string())) {
     if ((r.i != 1 && r.i != 3) || std::abs(r.heading) > 1e-6 || r.period <= 0.0) continue;
     auto it = rows.find(periodKey(r.period));
-    if (it == rows.end()) failWamitFile(file3, r.line, "period " + std::to_string(r.period) + " s is not in " + file1.string());
+    if (it == rows.end()) failWamitFile(file3, r.line, "period " + numberText(r.period) + " s is not in " + file1.string());
     (r.i == 1 ? it->second.hydro.surge : it->second.hydro.heave).excitation =
         Complex(r.re, r.im) * density * gravity * l2;
   }

@@ -34,17 +34,22 @@ using namespace maris::ui;
 
 namespace {
 
-// Two scalars whose values are exact in binary, so their printed forms are known: 0.125 and 2.5.
-RunRecord twoScalarRun() {
-  auto results = std::make_shared<Results>();
-  results->addScalar("tip_deflection", 0.125, "m", "Tip deflection");
-  results->addScalar("period", 2.5, "s", "First period", "T₁");
+// A finished run of the scenario "Rod" with these results.
+RunRecord runOf(Results results) {
   RunRecord record;
   record.id = 1;
   record.scenario.name = "Rod";
-  record.results = results;
+  record.results = std::make_shared<Results>(std::move(results));
   record.label = QStringLiteral("run 1");
   return record;
+}
+
+// Two scalars whose values are exact in binary, so their printed forms are known: 0.125 and 2.5.
+RunRecord twoScalarRun() {
+  Results results;
+  results.addScalar("tip_deflection", 0.125, "m", "Tip deflection");
+  results.addScalar("period", 2.5, "s", "First period", "T₁");
+  return runOf(std::move(results));
 }
 
 // Table separators of one Markdown row: '|' not escaped by a backslash.
@@ -236,6 +241,29 @@ class ResultsViewsTest : public QObject {
     setDisplayUnit("m", "m");
     QVERIFY(fillPlot(plot, results, makePlot("tip", "Tip", "tip", "time", {"tip_x"})));
     QCOMPARE(plot.graph(0)->data()->at(1)->value, 0.25);
+  }
+
+  // The engine declares units in ASCII ("kg/m^3"); what people read has superscripts, middle dots and degree signs,
+  // on axes and in the results dock alike, while the CSV keeps the declared form.
+  void unitsAreShownInTypographicForm() {
+    QCOMPARE(unitText("kg/m^3"), QStringLiteral("kg/m³"));
+    QCOMPARE(unitText("N^2*m^2*s/rad"), QStringLiteral("N²·m²·s/rad"));
+    QCOMPARE(unitText("deg"), QStringLiteral("°"));
+    QCOMPARE(unitText("degC"), QStringLiteral("°C"));
+    QCOMPARE(unitText("1/s"), QStringLiteral("1/s"));
+    QVERIFY(unitText("-").isEmpty());
+    QVERIFY(unitText("").isEmpty());
+    QCOMPARE(axisLabel("Density", "kg/m^3"), QStringLiteral("Density [kg/m³]"));
+    QCOMPARE(axisLabel("Ratio", "-"), QStringLiteral("Ratio"));
+    Results results;
+    results.addScalar("water_density", 1025.0, "kg/m^3", "Water density", "ρ");
+    ResultsSummary summary;
+    summary.showRun(runOf(results));
+    QCOMPARE(summary.table()->item(0, 2)->text(), QStringLiteral("kg/m³"));
+    QTemporaryDir dir;
+    const std::filesystem::path file = dir.filePath(QStringLiteral("scalars.csv")).toStdString();
+    summary.exportCsv(file);
+    QCOMPARE(QString::fromStdString(readTextFile(file)), QStringLiteral("water_density\nkg/m^3\n1025\n"));
   }
 
   void dialogsStartInAnExistingFolder() {

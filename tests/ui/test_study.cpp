@@ -128,7 +128,7 @@ class StudyTest : public QObject {
     QCOMPARE(view->drawn().points, 5);
     QCOMPARE(view->plot()->graphCount(), 1);
     QCOMPARE(view->plot()->xAxis->label(), QStringLiteral("length [m]"));
-    QCOMPARE(view->plot()->yAxis->label(), QStringLiteral("Rod volume [m^3]"));
+    QCOMPARE(view->plot()->yAxis->label(), QStringLiteral("Rod volume [m³]"));
 
     // Each point equals the same case run alone through the single-run controller (bitwise), and
     // the closed form pi r^2 L (r = 0.5 m) to 1e-12 relative.

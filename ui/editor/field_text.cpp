@@ -4,6 +4,7 @@
 #include <QStringList>
 
 #include "document/scenario_document.hpp"
+#include "plots/display_units.hpp"
 
 namespace maris::ui {
 
@@ -64,7 +65,7 @@ QString fieldText(const Json& value, ParamKind kind) {
 QString fieldTooltip(const ParamSpec& spec) {
   QString tip = QStringLiteral("<b>%1</b><br>%2").arg(QString::fromStdString(spec.path).toHtmlEscaped(),
                                                        QString::fromStdString(spec.description).toHtmlEscaped());
-  if (!spec.unit.empty() && spec.unit != "-") tip += QStringLiteral("<br>Unit: %1").arg(QString::fromStdString(spec.unit));
+  if (const QString unit = unitText(spec.unit); !unit.isEmpty()) tip += QStringLiteral("<br>Unit: %1").arg(unit);
   if (spec.kind == ParamKind::Real || spec.kind == ParamKind::Integer || spec.kind == ParamKind::RealList)
     tip += QStringLiteral("<br>Range: %1").arg(QString::fromStdString(spec.range.str()).toHtmlEscaped());
   if (spec.kind == ParamKind::Choice) {

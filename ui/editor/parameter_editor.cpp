@@ -24,6 +24,7 @@
 #include "editor/field_text.hpp"
 #include "themed_icon.hpp"
 #include "editor/table_editor.hpp"
+#include "plots/display_units.hpp"
 #include "study/study.hpp"
 
 namespace maris::ui {
@@ -169,7 +170,7 @@ void ParameterEditor::rebuild() {
     auto* label = new QLabel(fieldLabel(spec), fields_host_);
     label->setToolTip(fieldTooltip(spec));
     label->setBuddy(row.editor);
-    auto* unit = new QLabel(spec.unit == "-" ? QString() : QString::fromStdString(spec.unit), fields_host_);
+    auto* unit = new QLabel(unitText(spec.unit), fields_host_);
     if (spec.kind != ParamKind::Table) labels.push_back(label);
     units.push_back(unit);
     row.reset = new QToolButton(fields_host_);

@@ -48,6 +48,19 @@ void setDisplayUnit(const std::string& si_unit, const std::string& shown) {
   QSettings().setValue(settingsKey(si_unit), QString::fromStdString(shown));
 }
 
+QString unitText(const std::string& unit) {
+  if (unit.empty() || unit == "-") return {};
+  if (unit == "deg") return QStringLiteral("°");
+  if (unit == "degC") return QStringLiteral("°C");
+  QString text = QString::fromStdString(unit);
+  text.replace(QStringLiteral("^-1"), QStringLiteral("⁻¹"));
+  text.replace(QStringLiteral("^2"), QStringLiteral("²"));
+  text.replace(QStringLiteral("^3"), QStringLiteral("³"));
+  text.replace(QStringLiteral("^4"), QStringLiteral("⁴"));
+  text.replace(QLatin1Char('*'), QStringLiteral("·"));
+  return text;
+}
+
 void loadDisplayUnits() {
   QSettings settings;
   for (const char* si_unit : {"N", "Pa", "m"})

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <QString>
+
 namespace maris::ui {
 
 struct DisplayUnit {
@@ -25,6 +27,11 @@ std::vector<std::string> displayUnitChoices(const std::string& si_unit);
 
 // Shows `si_unit` as `shown` (one of its choices; anything else shows SI) from now on, and remembers it.
 void setDisplayUnit(const std::string& si_unit, const std::string& shown);
+
+// A unit as people read it, wherever the GUI or a plot shows one: powers as superscripts and products with a
+// middle dot ("kg/m^3" → "kg/m³", "N*s/m" → "N·s/m"), "deg" → "°", "degC" → "°C"; empty for "-" (no unit) and "".
+// Results and scenario files keep the ASCII form the engine declares.
+QString unitText(const std::string& unit);
 
 // The choices remembered in QSettings (the GUI calls this at start; the CLI's plots stay SI).
 void loadDisplayUnits();

@@ -21,7 +21,7 @@ namespace maris::ui {
 
 QString axisLabel(const std::string& text, const std::string& unit) {
   QString label = QString::fromStdString(text);
-  if (!unit.empty() && unit != "-") label += QStringLiteral(" [%1]").arg(QString::fromStdString(unit));
+  if (const QString shown = unitText(unit); !shown.isEmpty()) label += QStringLiteral(" [%1]").arg(shown);
   return label;
 }
 

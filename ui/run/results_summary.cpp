@@ -107,7 +107,7 @@ void ResultsSummary::showRun(const RunRecord& record) {
     value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     table_->setItem(i, 0, name);
     table_->setItem(i, 1, value);
-    table_->setItem(i, 2, new QTableWidgetItem(QString::fromStdString(shown.unit)));
+    table_->setItem(i, 2, new QTableWidgetItem(unitText(shown.unit)));
     table_->setItem(i, 3, new QTableWidgetItem(QString::fromStdString(s.description)));
   }
   table_->resizeColumnsToContents();
@@ -144,7 +144,7 @@ QString ResultsSummary::copyText() const {
     const Scalar& s = scalars[i];
     const DisplayUnit shown = displayUnit(s.unit);
     lines << QStringList{cell(displayLabel(s)), QString::number(s.value * shown.factor, 'g', QLocale::FloatingPointShortest),
-                         cell(shown.unit),
+                         unitText(shown.unit),
                          cell(s.description)}
                  .join('\t');
   }
