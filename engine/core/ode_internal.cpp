@@ -2,6 +2,7 @@
 #include "core/ode_internal.hpp"
 
 #include "core/errors.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::ode_detail {
 
@@ -12,7 +13,7 @@ void throwNonFiniteStep(std::initializer_list<const Eigen::VectorXd*> stage_deri
     for (Eigen::Index i = 0; i < k->size(); ++i)
       if (!std::isfinite((*k)[i]))
         throw SolverError(componentName(options, i), t, step,
-                          "has a non-finite time derivative (" + std::to_string((*k)[i]) + ", stage " +
+                          "has a non-finite time derivative (" + numberText((*k)[i]) + ", stage " +
                               std::to_string(stage) + ")");
     ++stage;
   }

@@ -166,7 +166,7 @@ void addFatigueResults(const std::vector<JointFatigue>& joints, const fatigue::S
   out.plots.push_back(makePlot("fatigue_life", "Fatigue life along the riser", "fatigue", "arc_length", {"life"}, true));
   if (!worst) return;
   out.addScalar("min_fatigue_life", worst->life, "yr",
-                "Shortest fatigue life over the joints (damage over " + std::to_string(window) +
+                "Shortest fatigue life over the joints (damage over " + numberText(window) +
                     " s scaled to a year; capped at 1e12 yr)", "Minimum fatigue life");
   // Not capped like the life: a scatter-diagram study adds these, weighted by each sea state's probability.
   out.addScalar("max_fatigue_damage_per_year", worst->damage_per_year, "1/yr",

@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 
 #include "core/errors.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::riser {
 namespace {
@@ -121,8 +122,8 @@ void OrientationChart::residual(double t, const Eigen::VectorXd& q, const Eigen:
     if (!(reach < limit)) {
       const char* coordinates = swing_twist ? " swing-twist angles" : " rotation vector";
       overflow_ = {t, "segment " + std::to_string(i) + coordinates,
-                   std::string(swing_twist ? "reached a swing |θ_s| = " : "reached |θ| = ") + std::to_string(reach) +
-                       " rad, beyond the chart's limit of " + std::to_string(limit) + " rad"};
+                   std::string(swing_twist ? "reached a swing |θ_s| = " : "reached |θ| = ") + numberText(reach) +
+                       " rad, beyond the chart's limit of " + numberText(limit) + " rad"};
       r.setConstant(std::numeric_limits<double>::quiet_NaN());
       return;
     }

@@ -15,6 +15,7 @@
 #include "riser/riser_statics.hpp"
 #include "riser/riser_stress_convergence.hpp"
 #include "riser/riser_vessel.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::riser {
 
@@ -51,8 +52,8 @@ Results solveRiser(const RiserParameters& p, RunContext& context) {
       context.warn(slowGrowthNote(modes.slowly_growing_count, modes.largest_growth_rate, modes.largest_growth_per_radian));
     if (modes.unstable_count > 0)
       context.warn(std::to_string(modes.unstable_count) + " linearised modes are unstable: internal flow speed " +
-                   std::to_string(std::abs(model.flow_speed)) + " m/s is beyond the divergence speed " +
-                   std::to_string(modes.divergence_flow_speed) + " m/s (or in flutter)");
+                   numberText(std::abs(model.flow_speed)) + " m/s is beyond the divergence speed " +
+                   numberText(modes.divergence_flow_speed) + " m/s (or in flutter)");
   }
   Results results = simulateRiser(model, p, statics, modes, context);
   if (!p.modes) results.stats.method += "; natural frequencies and modes not computed (output.modes = false)";

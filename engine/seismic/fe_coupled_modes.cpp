@@ -11,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "seismic/fe_modes_detail.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::seismic {
 
@@ -151,8 +152,8 @@ ModalResult computeCoupledModes(const FeModel& model, int count, bool fixed_base
     const std::complex<double> theta = ritz.eigenvalues()[order[i]];
     if (!(theta.real() > 0.0) || std::abs(theta.imag()) > 1e-6 * std::abs(theta))
       throw SolverError("modal analysis", 0.0, 0,
-                        "a fluid–solid Ritz value stayed complex or non-positive (" + std::to_string(theta.real()) +
-                            " + " + std::to_string(theta.imag()) + "i): the Arnoldi iteration did not converge");
+                        "a fluid–solid Ritz value stayed complex or non-positive (" + numberText(theta.real()) +
+                            " + " + numberText(theta.imag()) + "i): the Arnoldi iteration did not converge");
     Eigen::VectorXcd yc = ritz_vectors.col(order[i]);
     Eigen::Index big;
     yc.cwiseAbs().maxCoeff(&big);

@@ -74,7 +74,7 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   results.addScalar("time_step", dt, "s", "Central-difference step", "Time step Δt");
   results.addScalar("stable_step", c.stable_step, "s", "Element (Irons) bound on the stable step", "Stable step bound");
   results.stats.steps = c.steps;
-  results.stats.method = "explicit central difference, lumped mass, dt = " + std::to_string(dt) + " s";
+  results.stats.method = "explicit central difference, lumped mass, dt = " + numberText(dt) + " s";
 
   // Amplification along the reef flat (paper eq 29).
   const PeakRatios r = amplificationRatios(c);
@@ -304,7 +304,7 @@ void addDiscretisationEstimate(const FeCase& main, const FeCase& coarse, Results
                     "Relative change of the largest R_a,y on the flat, main vs companion mesh", "Mesh change of max R_ay");
   results.stats.error_estimate = std::max(change_x, change_y);
   results.stats.error_unit = "relative change of the largest R_a on the flat between Δ = " +
-                             std::to_string(main.element_size) + " m and " + std::to_string(coarse.element_size) + " m";
+                             numberText(main.element_size) + " m and " + numberText(coarse.element_size) + " m";
 }
 
 }  // namespace maris::seismic

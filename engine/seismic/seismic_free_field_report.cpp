@@ -8,6 +8,7 @@
 #include "seismic/free_field_synthesis.hpp"
 #include "seismic/seismic_inputs.hpp"
 #include "seismic/seismic_solve.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::seismic {
 
@@ -62,7 +63,7 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
                       "1 when SV is beyond the critical angle: the reflected P is evanescent (complex Snell's law)", "Reflected P evanescent (1 = yes)");
     if (field.reflectedPEvanescent())
       ctx.warn("SV at " + std::to_string(field.angle() * deg) + " deg is beyond the critical angle " +
-               std::to_string(FreeField::criticalAngleSv(field.solid()) * deg) +
+               numberText(FreeField::criticalAngleSv(field.solid()) * deg) +
                " deg: the reflected P is evanescent and the free field contains the input's Hilbert transform, "
                "whose precursor reaches before the arrival (the paper stops at the critical angle)");
   }
@@ -127,7 +128,7 @@ void addFreeFieldResults(const SeismicParameters& p, const FreeField& field, Res
     results.addScalar("free_field_precursor_at_start", offset, "-",
                       "Free-field displacement at B at t = 0 over its peak (evanescent case; the FE starts at rest)", "Free-field precursor at start");
     if (offset > 0.01)
-      ctx.warn("the free-field precursor at t = 0 is " + std::to_string(100.0 * offset) +
+      ctx.warn("the free-field precursor at t = 0 is " + numberText(100.0 * offset) +
                " % of the peak at the seabed: use a zero-mean input (Ricker) or a later arrival");
   }
   if (h > 0.0) {

@@ -9,6 +9,7 @@
 #include "seismic/fe_mesh.hpp"
 #include "seismic/fe_modes.hpp"
 #include "seismic/seismic_solve.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::seismic {
 
@@ -18,7 +19,7 @@ void addModalResults(const SeismicParameters& p, Results& results, RunContext& c
   constexpr std::size_t kMaxModalCells = 150000;
   if (model.solid_cells.size() > kMaxModalCells) {
     model = buildFeModel(buildMesh(p, p.include_water, true));
-    ctx.warn("modal analysis on the coarse mesh (Δ = " + std::to_string(model.mesh.delta) + " m): the main mesh has over " +
+    ctx.warn("modal analysis on the coarse mesh (Δ = " + numberText(model.mesh.delta) + " m): the main mesh has over " +
              std::to_string(kMaxModalCells) + " solid cells");
   }
   const bool wet = p.include_water && p.water_depth > 0.0;

@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "core/table_reader.hpp"
+#include "core/text_format.hpp"
 
 namespace maris::ship {
 
@@ -49,7 +50,7 @@ OffsetsTable parseOffsetsCsv(std::string_view text, const std::string& field, co
       if (!table.stations.empty() && *v[0] < table.stations.back().x) {
         errors.push_back(tableError(spec, row.line,
                                     "stations must be listed with x ascending (previous station x = " +
-                                        std::to_string(table.stations.back().x) + " m)",
+                                        numberText(table.stations.back().x) + " m)",
                                     &csv, 0));
         continue;
       }
@@ -67,16 +68,16 @@ OffsetsTable parseOffsetsCsv(std::string_view text, const std::string& field, co
     OffsetsStation sorted{s.x, {}, {}};
     for (auto k : order) {
       if (!sorted.z.empty() && sorted.z.back() == s.z[k]) {
-        errors.push_back({origin, std::to_string(s.z[k]),
-                          "station x = " + std::to_string(s.x) + " m lists z = " + std::to_string(s.z[k]) + " m twice"});
+        errors.push_back({origin, numberText(s.z[k]),
+                          "station x = " + numberText(s.x) + " m lists z = " + numberText(s.z[k]) + " m twice"});
         continue;
       }
       sorted.z.push_back(s.z[k]);
       sorted.half_breadth.push_back(s.half_breadth[k]);
     }
     if (sorted.z.size() < 2)
-      errors.push_back({origin, std::to_string(s.x),
-                        "station x = " + std::to_string(s.x) + " m has fewer than 2 points at or below the waterline"});
+      errors.push_back({origin, numberText(s.x),
+                        "station x = " + numberText(s.x) + " m has fewer than 2 points at or below the waterline"});
     s = std::move(sorted);
   }
   if (errors.empty() && table.stations.size() < 3)

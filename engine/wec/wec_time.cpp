@@ -70,7 +70,7 @@ TimeDomainResult simulateTimeDomain(const WecModel& model, const IncidentWaves& 
   TimeDomainResult r;
   r.floats.resize(nf);
   r.stability_step = rk4StabilityStep(model, o);
-  r.method = std::string(o.augmented ? "augmented" : "classical") + ", RK4 h=" + std::to_string(o.time_step) +
+  r.method = std::string(o.augmented ? "augmented" : "classical") + ", RK4 h=" + numberText(o.time_step) +
              " s, radiation " + (o.state_space ? "state-space" : "direct convolution");
   const double h = o.time_step;
   const long n_steps = std::lround(o.duration / h);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <set>
 
 #include <QDir>
 #include <QFileInfo>
@@ -87,12 +88,22 @@ struct YAxes {
 // Each column on its axis of `axes` (a legend entry of the right axis says so).
 void addSourceGraphs(QCustomPlot& plot, QCPAxis* x_axis, const YAxes& axes, const PlotSource& source, int run,
                      bool several_sources, const Table& table, const Column& x, const PlotSpec& spec) {
+  // Entries name their unit only where the axes do not say it for them: when the columns are on one axis in one
+  // unit, the axis label carries it and the legend has room for the words that tell entries apart.
+  std::set<std::string> units;
+  bool one_axis = true;
+  for (const auto& name : spec.y)
+    if (const Column* y = table.find(name)) {
+      units.insert(displayUnit(y->unit).unit);
+      one_axis = one_axis && axes.tierOf(name) == 0;
+    }
+  const bool unit_on_axis = one_axis && units.size() == 1;
   int series = 0;
   for (const auto& name : spec.y) {
     const Column* y = table.find(name);
     if (!y) continue;
     QCPGraph* g = plot.addGraph(x_axis, axes.of(name));
-    QString graph_name = axisLabel(*y) + axes.note(name);
+    QString graph_name = (unit_on_axis ? QString::fromStdString(displayLabel(*y)) : axisLabel(*y)) + axes.note(name);
     if (several_sources) graph_name = source.label + ": " + graph_name;
     g->setName(graph_name);
     const int color_index = spec.y.size() == 1 ? run : series;
@@ -111,8 +122,8 @@ QString severalColumnsLabel(const Table& table, const std::vector<std::string>& 
   QStringList units, labels;
   for (const auto& name : columns) {
     const Column* y = table.find(name);
-    const QString unit = y ? QString::fromStdString(displayUnit(y->unit).unit) : QString();
-    if (!unit.isEmpty() && unit != QLatin1String("-") && !units.contains(unit)) units << unit;
+    const QString unit = y ? unitText(displayUnit(y->unit).unit) : QString();
+    if (!unit.isEmpty() && !units.contains(unit)) units << unit;
     if (y) labels << QString::fromStdString(displayLabel(*y));
   }
   QString label = title.empty() ? labels.join(QStringLiteral(", ")) : QString::fromStdString(title);
