@@ -47,7 +47,7 @@ bool MainWindow::loadScenario(const Scenario& scenario, const QString& path, con
   Scenario upgraded = scenario;
   const std::vector<std::string> notes = upgradeParameters(*scene, upgraded.parameters);
   document_->reset(scene, upgraded, path);
-  for (const std::string& note : notes) run_panel_->log(RunPanel::Level::Warning, QString::fromStdString(note));
+  for (const std::string& note : notes) run_panel_->log(RunPanel::Level::Warning, withFieldNames(note, scene->schema));
   browser_->setCurrent(example_id, path);
   updateTitle();
   updateRunEnabled();
@@ -195,7 +195,8 @@ void MainWindow::showRecord(const RunRecord& record) {
     if (sameScenario(r.scenario, record.scenario)) same_scenario.push_back(r);
   plots_->setAvailableRuns(same_scenario, record.id);
   view_->showResults(record.results);
-  summary_->showRun(record);
+  const SceneDefinition* scene = library_->findScene(record.scenario.scene);
+  summary_->showRun(record, scene ? &scene->schema : nullptr);
 }
 
 // After a failed or cancelled run the plots may hold partial results: show the last finished run.
@@ -223,7 +224,8 @@ void MainWindow::onRunFinished(const RunRecord& finished) {
   showRecord(record);
   // A finished run opens on its final state (the end of the time history, the last load step).
   if (!view_->isPlaying()) view_->setFrame(view_->frameCount() - 1);
-  for (const auto& w : record.results->warnings) run_panel_->log(RunPanel::Level::Warning, QString::fromStdString(w));
+  for (const auto& w : record.results->warnings)
+    run_panel_->log(RunPanel::Level::Warning, scene ? withFieldNames(w, scene->schema) : QString::fromStdString(w));
   run_panel_->log(RunPanel::Level::Info,
                   tr("Finished %1 in %2").arg(record.label, formatDuration(record.wall_time_s)));
   status(tr("Finished %1 in %2").arg(record.label, formatDuration(record.wall_time_s)));

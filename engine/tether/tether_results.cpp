@@ -211,7 +211,7 @@ Results buildTetherResults(const TetherParameters& p, const SimulationOutput& si
   r.addScalar("peak_error_norm", peak, "-", "Largest feature error over the run (after pushes)", "Peak |e|");
   r.addScalar("final_error_norm", last.error.norm(), "-", "Feature error at the end", "Final |e|");
   if (settling < 0.0) {
-    context.warn("the feature error did not stay below 2 % of its peak; settling_time is the duration");
+    context.warn("the feature error did not stay below 2 % of its peak; the settling time shown is the duration");
     settling = last.time;
   }
   r.addScalar("settling_time", settling, "s", "Time after which |e| stays below 2 % of its peak over the run", "Settling time");

@@ -13,6 +13,7 @@
 
 #include "catalog.hpp"
 #include "core/run_context.hpp"
+#include "document/scenario_document.hpp"
 #include "example_runs.hpp"
 #include "plots/result_plot.hpp"
 #include "ui_test_support.hpp"
@@ -54,6 +55,22 @@ class LabelsTest : public QObject {
     for (const char* human : {"C_W Michell", "σ_b at probe 2 [MPa]", "A*/D, up, h* = 1.11", "Fn", "R_T [N]",
                               "S_Fx, float 1", "x/L = 0.25", "Along the riser at t = 12.5 s"})
       QVERIFY2(!looksInternal(human), human);
+  }
+
+  // Messages name fields by their paths (what a scenario file's author needs); the GUI shows them as the editor
+  // names them, group ▸ label, table rows counted from 1. Words that are no parameter of the scene stay.
+  void messagesNameFieldsAsTheEditorDoes() {
+    const Schema& ship = requireScene("ship").schema;
+    QCOMPARE(withFieldNames("parameters.speed.froude_max = 0.1: must be greater than speed.froude_min = 0.2.", ship),
+             QStringLiteral("Speed ▸ froude max = 0.1: must be greater than Speed ▸ froude min = 0.2."));
+    const Schema& riser = requireScene("riser").schema;
+    QCOMPARE(withFieldNames("parameters.sections[1].outer_diameter = 0: must be > 0", riser),
+             QStringLiteral("Sections row 2 ▸ outer diameter = 0: must be > 0"));
+    QCOMPARE(withFieldNames("output.probes[0].arc_length beyond geometry.length", riser),
+             QStringLiteral("Output ▸ probes row 1 ▸ arc length beyond Geometry ▸ length"));
+    QCOMPARE(withFieldNames("see docs/riser.md and solver.no_such_field", riser),
+             QStringLiteral("see docs/riser.md and solver.no_such_field"));
+    QVERIFY(!looksInternal(withFieldNames("parameters.speed.froude_min", ship).toStdString()));
   }
 
   void everyBuiltInScenarioShowsLabelsNotIdentifiers() {
@@ -100,6 +117,9 @@ class LabelsTest : public QObject {
           declared += !c->label.empty();
         }
       }
+      // Warnings (the scene's plausibility checks among them) as the run log and the results dock show them.
+      for (const std::string& w : results.warnings)
+        check(withFieldNames(w, scene.schema).toStdString(), QStringLiteral("warning"));
       for (const Scalar& s : results.scalars) {
         check(displayLabel(s), QStringLiteral("scalar"));
         const std::string key = b.scenario.scene + ": scalar " + s.name;

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include <QRegularExpression>
+
 #include "document/set_parameter_command.hpp"
 
 namespace maris::ui {
@@ -66,14 +68,75 @@ QString problemsAt(const std::vector<FieldError>& problems, const std::string& p
 
 }  // namespace
 
-QString ScenarioDocument::errorText(const std::string& path) const { return problemsAt(errors_, path); }
+QString ScenarioDocument::errorText(const std::string& path) const {
+  const QString text = problemsAt(errors_, path);
+  return scene_ ? withFieldNames(text.toStdString(), scene_->schema) : text;
+}
 
-QString ScenarioDocument::warningText(const std::string& path) const { return problemsAt(warnings_, path); }
+QString ScenarioDocument::warningText(const std::string& path) const {
+  const QString text = problemsAt(warnings_, path);
+  return scene_ ? withFieldNames(text.toStdString(), scene_->schema) : text;
+}
 
 void ScenarioDocument::revalidate() {
   errors_ = scene_ ? validateParameters(*scene_, scenario_.parameters) : std::vector<FieldError>{};
   warnings_ = scene_ && errors_.empty() ? plausibilityWarnings(*scene_, scenario_.parameters) : std::vector<FieldError>{};
   emit errorsChanged();
+}
+
+QString groupTitle(const std::string& group) {
+  QString title = QString::fromStdString(group);
+  title.replace('_', ' ');
+  if (!title.isEmpty()) title[0] = title[0].toUpper();
+  return title;
+}
+
+namespace {
+
+// The editor's name of the field at `path` (below "parameters"), or empty when it is none of `schema`'s.
+QString fieldNameAt(const std::string& path, const Schema& schema) {
+  static const QRegularExpression indexed(QStringLiteral("^([a-z0-9_.]+)\\[(\\d+)\\](?:\\.([a-z0-9_]+))?$"));
+  const QRegularExpressionMatch m = indexed.match(QString::fromStdString(path));
+  const std::string base = m.hasMatch() ? m.captured(1).toStdString() : path;
+  const ParamSpec* spec = schema.find(base);
+  if (!spec) return {};
+  const bool grouped = spec->path.find('.') != std::string::npos;
+  const QString owner = grouped ? groupTitle(spec->group()) + QStringLiteral(" ▸ ") : QString();
+  if (!m.hasMatch()) return owner + fieldLabel(*spec);
+  const int row = m.captured(2).toInt() + 1;
+  if (spec->kind == ParamKind::Table) {
+    const QString table = owner + (owner.isEmpty() ? groupTitle(spec->key()) : fieldLabel(*spec)) +
+                          QStringLiteral(" row %1").arg(row);
+    const std::string column = m.captured(3).toStdString();
+    if (column.empty()) return table;
+    for (const ParamSpec& c : spec->columns)
+      if (c.path == column) return table + QStringLiteral(" ▸ ") + fieldLabel(c);
+    return {};
+  }
+  if (!m.captured(3).isEmpty()) return {};
+  return owner + fieldLabel(*spec) + QStringLiteral(", value %1").arg(row);
+}
+
+}  // namespace
+
+QString withFieldNames(const std::string& text, const Schema& schema) {
+  // A path: lower-case words joined by '.', each optionally indexed ("a.b[2].c"), with a '.' or '[' somewhere.
+  static const QRegularExpression path_like(
+      QStringLiteral("\\b(?:parameters\\.)?[a-z][a-z0-9_]*(?:\\[\\d+\\])?(?:\\.[a-z][a-z0-9_]*(?:\\[\\d+\\])?)*"));
+  const QString in = QString::fromStdString(text);
+  QString out;
+  qsizetype done = 0;
+  for (auto it = path_like.globalMatch(in); it.hasNext();) {
+    const QRegularExpressionMatch m = it.next();
+    QString token = m.captured(0);
+    if (!token.contains(QLatin1Char('.')) && !token.contains(QLatin1Char('['))) continue;
+    if (token.startsWith(QStringLiteral("parameters."))) token.remove(0, 11);
+    const QString name = fieldNameAt(token.toStdString(), schema);
+    if (name.isEmpty()) continue;
+    out += in.mid(done, m.capturedStart(0) - done) + name;
+    done = m.capturedEnd(0);
+  }
+  return out + in.mid(done);
 }
 
 QString fieldLabel(const ParamSpec& spec) {

@@ -66,6 +66,14 @@ class ScenarioDocument : public QObject {
 
 // A field's label for people: "segment count" from "discretisation.segment_count".
 QString fieldLabel(const ParamSpec& spec);
+// A parameter group's title as the editor shows it: "Free surface" from "free_surface".
+QString groupTitle(const std::string& group);
+// `text` (a message, a warning) with every parameter path of `schema` in it named as the editor shows the field:
+// "parameters.speed.froude_min" → "Speed ▸ froude min", "sections[1].outer_diameter" → "Sections row 2 ▸ outer
+// diameter", "free_surface.submergence_ratios[0]" → "Free surface ▸ submergence ratios, value 1". The engine's
+// messages name fields by their paths, which is what a scenario file's author needs; people in the GUI find
+// fields by their group and label. Words that are not parameter paths stay as they are.
+QString withFieldNames(const std::string& text, const Schema& schema);
 // A value shown in words: numbers in shortest round-trip form, strings unquoted.
 QString displayValue(const Json& value);
 

@@ -36,13 +36,6 @@ const char* kDoubtfulStyle = "border: 1px solid #c77c02; background: rgba(255, 1
 const char* kErrorTextStyle = "color: #d62728;";
 const char* kWarningTextStyle = "color: #a86400;";
 
-QString groupTitle(const std::string& group) {
-  QString title = QString::fromStdString(group);
-  title.replace('_', ' ');
-  if (!title.isEmpty()) title[0] = title[0].toUpper();
-  return title;
-}
-
 }  // namespace
 
 ParameterEditor::ParameterEditor(ScenarioDocument* document, QWidget* parent)
@@ -354,7 +347,7 @@ void ParameterEditor::refreshErrors() {
           (e.path.size() == full.size() || e.path[full.size()] == '.' || e.path[full.size()] == '['))
         shown = true;
     }
-    if (!shown) loose << QString::fromStdString(e.str());
+    if (!shown) loose << (document_->scene() ? withFieldNames(e.str(), document_->scene()->schema) : QString::fromStdString(e.str()));
   }
   QString text;
   if (!errors.empty())

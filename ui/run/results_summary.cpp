@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "core/scenario.hpp"
+#include "document/scenario_document.hpp"
 #include "plots/display_units.hpp"
 #include "start_folder.hpp"
 
@@ -86,7 +87,7 @@ void ResultsSummary::clear() {
   stats_->clear();
 }
 
-void ResultsSummary::showRun(const RunRecord& record) {
+void ResultsSummary::showRun(const RunRecord& record, const Schema* schema) {
   if (!record.results) return clear();
   results_ = record.results;
   copy_action_->setEnabled(true);
@@ -123,9 +124,10 @@ void ResultsSummary::showRun(const RunRecord& record) {
   stats_->setText(text);
   // Warnings follow the scalars as full-width rows, so the statistics line stays short.
   for (int i = 0; i < static_cast<int>(r.warnings.size()); ++i) {
-    auto* item = new QTableWidgetItem(QStringLiteral("⚠ ") + QString::fromStdString(r.warnings[i]));
+    const QString warning = schema ? withFieldNames(r.warnings[i], *schema) : QString::fromStdString(r.warnings[i]);
+    auto* item = new QTableWidgetItem(QStringLiteral("⚠ ") + warning);
     item->setForeground(QColor(0xd0, 0x80, 0x00));
-    item->setToolTip(QString::fromStdString(r.warnings[i]));
+    item->setToolTip(warning);
     table_->setItem(scalars + i, 0, item);
     table_->setSpan(scalars + i, 0, 1, 4);
   }

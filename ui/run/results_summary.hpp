@@ -20,7 +20,8 @@ class ResultsSummary : public QWidget {
   Q_OBJECT
  public:
   explicit ResultsSummary(QWidget* parent = nullptr);
-  void showRun(const RunRecord& record);
+  // Warnings name parameters as the editor does when the run's `schema` is given (withFieldNames).
+  void showRun(const RunRecord& record, const Schema* schema = nullptr);
   void clear();
   QTableWidget* table() const { return table_; }
 

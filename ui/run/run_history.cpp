@@ -3,6 +3,7 @@
 #include <QStringList>
 
 #include "document/scenario_document.hpp"
+#include "plots/display_units.hpp"
 
 namespace maris::ui {
 
@@ -13,8 +14,7 @@ namespace {
 QString labelValue(const Json& value, const ParamSpec* spec) {
   if (value.is_array()) return QObject::tr("edited");
   QString text = value.is_number_float() ? QString::number(value.get<double>(), 'g', 4) : displayValue(value);
-  if (spec && value.is_number() && !spec->unit.empty() && spec->unit != "-")
-    text += QLatin1Char(' ') + QString::fromStdString(spec->unit);
+  if (spec && value.is_number() && !unitText(spec->unit).isEmpty()) text += QLatin1Char(' ') + unitText(spec->unit);
   return text;
 }
 
