@@ -17,7 +17,7 @@ std::string fixed(double v, int digits) {
   return s.str();
 }
 
-std::string hstarText(double h_star) { return std::isfinite(h_star) ? fixed(h_star, 2) : "inf"; }
+std::string hstarText(double h_star) { return std::isfinite(h_star) ? fixed(h_star, 2) : "∞"; }
 
 // Per-branch columns of one sweep direction.
 void addDirectionColumns(Table& t, const FivModel& model, const std::vector<double>& speeds,
