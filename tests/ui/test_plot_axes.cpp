@@ -78,6 +78,7 @@ class TestPlotAxes : public QObject {
   void referencePointsAreInsideTheAxes() {
     Results r = curves({{"y", "m", 2.0}});  // y from 1 to 2
     r.tables.push_back(points("measured", "y", {0.0, 0.5, 1.2}, {0.8, 1.0, 2.5}));
+    r.tables.back().columns.back().label = "y measured";
     PlotSpec spec = makePlot("p", "Curve", "curve", "x", {"y"});
     spec.reference_table = "measured";
     spec.reference_y = {"y"};
@@ -85,11 +86,16 @@ class TestPlotAxes : public QObject {
     plot.resize(600, 400);
     QVERIFY(fillPlot(plot, r, spec));
     requireMarkersInside(plot, 0.03, 3);
+    // The scene's own points go by their column's label, which says what they are.
+    QCOMPARE(plot.graph(1)->name(), QStringLiteral("y measured"));
 
-    // A user's imported points (drawn as diamonds) likewise, beside the scene's own.
-    const Table user = points("paper", "y", {-0.3, 0.7}, {1.5, 3.0});
+    // A user's imported points (drawn as diamonds) likewise, beside the scene's own; named with their file's
+    // title, which tells them apart from the scene's.
+    Table user = points("paper", "y", {-0.3, 0.7}, {1.5, 3.0});
+    user.title = "paper.csv";
     QVERIFY(fillPlot(plot, {{QStringLiteral("run 1"), &r}}, spec, {user}));
     requireMarkersInside(plot, 0.03, 5);
+    QVERIFY2(plot.graph(2)->name().startsWith(QStringLiteral("paper.csv: ")), qPrintable(plot.graph(2)->name()));
   }
 
   // On a log y axis the room is counted in decades: points at 0.01 and 100 beside a curve from 1 to 2.

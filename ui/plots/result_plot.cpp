@@ -377,10 +377,15 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
     if (tx) addSourceGraphs(plot, x_axis, axes, sources[run], run, several, *t, *tx, spec);
   }
   int markers = 0;
-  auto add_markers = [&](const Table& ref, const Column* rx, const Column* ry, QCPScatterStyle::ScatterShape shape) {
+  // The scene's own points go by their column's declared label ("C_T measured" says what they are); the user's
+  // reference files also by the file's title, which tells them apart from the scene's.
+  auto add_markers = [&](const Table& ref, const Column* rx, const Column* ry, QCPScatterStyle::ScatterShape shape,
+                         bool scene_points) {
     QCPGraph* g = plot.addGraph(x_axis, axes.of(ry->name));
-    g->setName(QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + ": " +
-               QString::fromStdString(displayLabel(*ry)) + axes.note(ry->name));
+    const QString source = scene_points && !ry->label.empty()
+                               ? QString()
+                               : QString::fromStdString(ref.title.empty() ? ref.name : ref.title) + QStringLiteral(": ");
+    g->setName(source + QString::fromStdString(displayLabel(*ry)) + axes.note(ry->name));
     g->setLineStyle(QCPGraph::lsNone);
     g->setScatterStyle(QCPScatterStyle(shape, QPen(drawingColors(plot.palette()).foreground, 1.2),
                                        QBrush(seriesColor(3 + markers++, plot.palette())), 7));
@@ -389,11 +394,11 @@ bool fillPlot(QCustomPlot& plot, const std::vector<PlotSource>& sources, const P
   if (const Table* ref = primary.findTable(spec.reference_table)) {
     const Column* rx = ref->find(spec.x);
     for (const auto& name : spec.reference_y)
-      if (const Column* ry = ref->find(name); rx && ry) add_markers(*ref, rx, ry, QCPScatterStyle::ssCircle);
+      if (const Column* ry = ref->find(name); rx && ry) add_markers(*ref, rx, ry, QCPScatterStyle::ssCircle, true);
   }
   for (const Table& ref : references) {
     const ReferenceColumns match = matchReferenceColumns(ref, spec);
-    for (const Column* ry : match.y) add_markers(ref, match.x, ry, QCPScatterStyle::ssDiamond);
+    for (const Column* ry : match.y) add_markers(ref, match.x, ry, QCPScatterStyle::ssDiamond, false);
   }
   if (spec.log_x) setLogScale(x_axis);
   if (spec.log_y) setLogScale(y_axis);
