@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/results.hpp"
 #include "core/text_format.hpp"
 
 namespace maris {
@@ -48,6 +49,8 @@ std::string ParamSpec::key() const {
   const auto dot = path.rfind('.');
   return dot == std::string::npos ? path : path.substr(dot + 1);
 }
+
+std::string parameterLabel(const ParamSpec& spec) { return spec.label.empty() ? readableName(spec.key()) : spec.label; }
 
 const ParamSpec* Schema::find(const std::string& path) const {
   for (const auto& f : fields)
@@ -341,6 +344,7 @@ static Json specToJson(const ParamSpec& f) {
   j["kind"] = toString(f.kind);
   j["unit"] = f.unit;
   j["description"] = f.description;
+  if (!f.label.empty()) j["label"] = f.label;
   j["default"] = f.default_value;
   if (f.kind == ParamKind::Real || f.kind == ParamKind::Integer || f.kind == ParamKind::RealList) {
     j["range"] = f.range.str();

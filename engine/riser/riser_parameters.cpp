@@ -36,6 +36,20 @@ SchemaBinder<SectionRow> sectionBinder() {
          "Normal added-mass coefficient C_a = c_M - 1");
   b.real("tangential_added_mass_coefficient", &SectionRow::tangential_added_mass_coefficient, "-",
          Range::closed(0, 10), "Tangential (axial) added-mass coefficient C_at");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"start", "Start s"},
+      {"end", "End s"},
+      {"outer_diameter", "Outer diameter D_out"},
+      {"inner_diameter", "Inner diameter D_inn"},
+      {"youngs_modulus", "Young's modulus E"},
+      {"shear_modulus", "Shear modulus G"},
+      {"density", "Wall density"},
+      {"normal_drag_coefficient", "Normal drag coefficient D_yz"},
+      {"tangential_drag_coefficient", "Tangential drag coefficient D_x"},
+      {"added_mass_coefficient", "Added-mass coefficient C_a"},
+      {"tangential_added_mass_coefficient", "Tangential added-mass coefficient C_at"},
+  });
   return b;
 }
 
@@ -177,6 +191,59 @@ SchemaBinder<P> makeBinder() {
          "Under a harmonic top motion each repeated run is integrated by generalized-α with its step from this "
          "expected probe error (relative to the motion; keep it below the differences between the n); other runs "
          "keep the solver settings, so a fixed rk4 step must be stable at every n");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"geometry.length", "Length L"},
+      {"geometry.segment_count", "Elements n"},
+      {"section.outer_diameter", "Outer diameter D_out"},
+      {"section.inner_diameter", "Inner diameter D_inn"},
+      {"section.youngs_modulus", "Young's modulus E"},
+      {"section.shear_modulus", "Shear modulus G"},
+      {"section.density", "Wall density"},
+      {"section.normal_drag_coefficient", "Normal drag coefficient D_yz"},
+      {"section.tangential_drag_coefficient", "Tangential drag coefficient D_x"},
+      {"section.added_mass_coefficient", "Added-mass coefficient C_a"},
+      {"section.tangential_added_mass_coefficient", "Tangential added-mass coefficient C_at"},
+      {"sections", "section"},
+      {"model.stiffness_damping", "Spring damping β"},
+      {"environment.gravity", "Gravity g"},
+      {"environment.water_density", "Water density"},
+      {"environment.water_level", "Water level z"},
+      {"environment.internal_fluid_density", "Contents density"},
+      {"environment.internal_flow_speed", "Internal flow speed"},
+      {"current.speed_surface", "Current at the surface"},
+      {"current.speed_seabed", "Current at the sea bed"},
+      {"current.direction_deg", "Current heading"},
+      {"current.profile", "current profile"},
+      {"top.x", "Top x"},
+      {"top.y", "Top y"},
+      {"top.z", "Top z"},
+      {"top.tension", "Top tension"},
+      {"top.motion_amplitude_x", "Top motion amplitude x"},
+      {"top.motion_amplitude_y", "Top motion amplitude y"},
+      {"top.motion_amplitude_z", "Top motion amplitude z"},
+      {"top.motion_period", "Top motion period"},
+      {"bottom.x", "Anchor x"},
+      {"bottom.y", "Anchor y"},
+      {"bottom.z", "Anchor z"},
+      {"bottom.spring_stiffness", "Anchor spring stiffness"},
+      {"bottom.spring_damping", "Anchor spring damping"},
+      {"solver.end_time", "End time"},
+      {"solver.time_step", "Time step h"},
+      {"solver.tolerance", "Tolerance"},
+      {"waves.height", "Wave height H"},
+      {"waves.period", "Wave period T"},
+      {"waves.significant_height", "Significant wave height H_s"},
+      {"waves.peak_period", "Peak period T_p"},
+      {"waves.peak_enhancement", "Peak enhancement γ"},
+      {"waves.direction_deg", "Wave direction"},
+      {"buoyancy_modules", "buoyancy modules"},
+      {"point_loads", "point loads"},
+      {"seabed.normal_stiffness", "Sea-bed stiffness"},
+      {"seabed.axial_friction_coefficient", "Axial friction coefficient"},
+      {"seabed.lateral_friction_coefficient", "Lateral friction coefficient"},
+      {"fatigue.stress_concentration_factor", "Stress concentration factor"},
+  });
   return b;
 }
 

@@ -23,6 +23,8 @@ std::optional<ParamSpec> lookupTableCell(const SceneDefinition& scene, const Jso
                                          const std::string& where, std::vector<FieldError>& errors, bool& is_cell);
 // Splits "TABLE[ROW].COLUMN"; nothing when `path` has no '[' (a plain field) or is malformed (`malformed` set).
 std::optional<TableCell> splitTableCell(const std::string& path, bool& malformed);
+// "Speed of current profile row 2": the label for people of a cell (`row` counted from 0, as in its path).
+std::string cellLabel(const ParamSpec& table, const ParamSpec& column, std::size_t row);
 // Writes `value` at `path` of a scenario's parameters: a dotted path, or a cell whose row lookupParameter checked.
 void setParameter(Json& parameters, const std::string& path, Json value);
 

@@ -145,9 +145,9 @@ void AddParameterDialog::check() {
   } else {
     const Json* value = study::findParameterValue(parameters_, chosen);
     const auto spec = study::findStudyParameter(*scene_, parameters_, chosen);
-    const std::string unit = spec && spec->unit != "-" ? spec->unit : std::string();
     summary_->setText(tr("%1 (%2), now %3")
-                          .arg(studyAxisLabel(chosen, unit), QString::fromStdString(chosen),
+                          .arg(spec ? studyAxisLabel(parameterLabel(*spec), spec->unit) : QString::fromStdString(chosen),
+                               QString::fromStdString(chosen),
                                value ? displayValue(*value) : tr("not set")));
   }
   add_->setEnabled(!chosen.empty());

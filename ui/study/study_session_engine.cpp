@@ -207,6 +207,13 @@ std::vector<std::string> StudySession::parameterPaths() const {
   return paths;
 }
 
+std::vector<std::string> StudySession::parameterLabels() const {
+  std::vector<std::string> labels;
+  if (impl_)
+    for (const auto& p : impl_->study.parameters) labels.push_back(study::displayLabel(p));
+  return labels;
+}
+
 void StudySession::load(const QString& file, const SceneLibrary& library) {
   auto impl = std::make_shared<Impl>();
   impl->study = study::loadStudyFile(file.toStdString(), librarySource(library));
@@ -244,6 +251,8 @@ void StudySession::loadFolder(const QString& dir, const SceneLibrary& library) {
            : design == "latin_hypercube" ? study::DesignKind::LatinHypercube
                                          : study::DesignKind::Grid;
   s.parameters = manifest.parameters;
+  for (auto& p : s.parameters)  // a folder whose study.json records no labels: the scene's schema has them
+    if (p.label.empty()) p.label = study::studyParameterLabel(scene->schema, p.path);
   s.results = manifest.results;
   s.weight_column = manifest.weight_column;
   s.weights = manifest.weights;
