@@ -885,19 +885,19 @@ class StudyTest : public QObject {
     view->againstBox()->setCurrentIndex(view->againstBox()->findData(QStringLiteral("geometry.length")));
     QCOMPARE(view->againstBox()->currentText(), QStringLiteral("Length L [m]"));
     const QRegularExpression dotted(QStringLiteral("[A-Za-z_]\\.[A-Za-z_]"));
-    const auto noPath = [&](const PlotTexts& texts) {
+    const auto noPath = [&](const PlotWords& texts) {
       for (const QString& text : QStringList{texts.title} + texts.axes + texts.legend)
         if (text.contains(dotted)) return false;
       return true;
     };
-    PlotTexts texts = plotTexts(*view->plot());
+    PlotWords texts = plotWords(*view->plot());
     QCOMPARE(texts.axes.size(), 2);
     QCOMPARE(texts.axes[0], QStringLiteral("Length L [m]"));
     QCOMPARE(texts.legend, QStringList({QStringLiteral("Radius r [m] = 2"), QStringLiteral("Radius r [m] = 3")}));
     QVERIFY2(noPath(texts), qPrintable(texts.title + " | " + texts.axes.join(" | ") + " | " + texts.legend.join(" | ")));
     view->kindBox()->setCurrentIndex(1);  // heat map over length and radius
     QCOMPARE(view->drawn().kind, StudyPlotKind::HeatMap);
-    texts = plotTexts(*view->plot());
+    texts = plotWords(*view->plot());
     QCOMPARE(texts.axes.mid(0, 2), QStringList({QStringLiteral("Length L [m]"), QStringLiteral("Radius r [m]")}));
     QVERIFY2(noPath(texts), qPrintable(texts.axes.join(" | ")));
     test::keepScreenshot(window_->grab().toImage(), QStringLiteral("study_labels"));

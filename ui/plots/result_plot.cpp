@@ -441,8 +441,8 @@ int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec) {
   return points;
 }
 
-PlotTexts plotTexts(QCustomPlot& plot) {
-  PlotTexts texts;
+PlotWords plotWords(QCustomPlot& plot) {
+  PlotWords texts;
   QList<QCPLegend*> legends;
   const auto axisLabels = [&](QCPAxisRect* rect) {
     QList<QCPAxis*> axes = rect->axes(QCPAxis::atBottom) + rect->axes(QCPAxis::atLeft);
@@ -486,7 +486,7 @@ bool savePlotWidget(QCustomPlot& plot, const QString& file, int width_px, int he
     QImage image = plot.toPixmap(width_px, height_px).toImage();
     image.setDotsPerMeterX(static_cast<int>(96 / 0.0254));
     image.setDotsPerMeterY(static_cast<int>(96 / 0.0254));
-    const PlotTexts texts = plotTexts(plot);
+    const PlotWords texts = plotWords(plot);
     image.setText(QStringLiteral("Software"), QStringLiteral("Maris"));
     if (!texts.title.isEmpty()) image.setText(QStringLiteral("Title"), texts.title);
     if (!texts.axes.isEmpty()) image.setText(QStringLiteral("Axes"), texts.axes.join(QLatin1Char('\n')));
