@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/csv_field.hpp"
+#include "core/results.hpp"
 #include "core/input_limits.hpp"
 #include "core/run_output.hpp"
 
@@ -248,7 +249,8 @@ std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyMa
     // Titles name the result and the parameters by their labels for people (the result's as the runs declared
     // it, the parameters' from the scene's schema), where there are none by their names; file names by paths.
     const std::string shown =
-        r < collected.result_labels.size() && !collected.result_labels[r].empty() ? collected.result_labels[r] : result;
+        r < collected.result_labels.size() && !collected.result_labels[r].empty() ? collected.result_labels[r]
+                                                                                   : readableName(result);
     if (map)
       plots.push_back({portableStem(result + "_map"), shown + " over " + displayLabel(collected.parameters[0]) +
                                                           " and " + displayLabel(collected.parameters[1]),

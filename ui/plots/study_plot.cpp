@@ -61,11 +61,12 @@ int distinguishingDigits(const std::vector<double>& values) {
   return 17;
 }
 
-// "Length L [m] = 120, Method = 2" for the parameters other than `x` of case `c`.
-QString groupLabel(const StudyPlotData& data, int x, std::size_t c) {
+// "Length L [m] = 120, Method = 2" for the parameters other than `x` of case `c`, each with its `digits`
+// (studyValueDigits).
+QString groupLabel(const StudyPlotData& data, int x, std::size_t c, const std::vector<int>& digits) {
   QStringList parts;
   for (int p = 0; p < static_cast<int>(data.parameters.size()); ++p)
-    if (p != x) parts << studyValueLabel(data.parameters[p], c);
+    if (p != x) parts << studyParameterValue(data.parameters[p], data.parameters[p].values[c], digits[p]);
   return parts.join(QStringLiteral(", "));
 }
 
@@ -123,6 +124,8 @@ bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPl
     for (const auto& [key, cases] : groups) all.push_back(cases.front());
     groups = {{{}, all}};
   }
+  std::vector<int> digits;
+  for (const auto& p : data.parameters) digits.push_back(studyValueDigits(p));
   int series = 0;
   for (auto& [key, cases] : groups) {
     std::stable_sort(cases.begin(), cases.end(), [&](int a, int b) { return px.values[a] < px.values[b]; });
@@ -134,7 +137,7 @@ bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPl
     QCPGraph* g = plot.addGraph(x_axis, y_axis);
     const QColor color = seriesColor(series, plot.palette());
     g->setName(scatter || groups.size() == 1 ? resultAxisLabel(data)
-                                            : groupLabel(data, x, cases.front()));
+                                            : groupLabel(data, x, cases.front(), digits));
     g->setPen(QPen(color, 1.6));
     g->setLineStyle(scatter ? QCPGraph::lsNone : QCPGraph::lsLine);
     g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, color, color, 6));
@@ -228,11 +231,18 @@ QString studyAxisLabel(const StudyParameterData& parameter) {
   return studyAxisLabel(parameter.label.empty() ? parameter.name : parameter.label, parameter.unit);
 }
 
-QString studyValueLabel(const StudyParameterData& parameter, std::size_t c) {
-  const double v = c < parameter.values.size() ? parameter.values[c] : std::nan("");
-  const int digits = distinguishingDigits(shownValues(parameter.values, parameter.unit));
+int studyValueDigits(const StudyParameterData& parameter) {
+  return distinguishingDigits(shownValues(parameter.values, parameter.unit));
+}
+
+QString studyParameterValue(const StudyParameterData& parameter, double value, int digits) {
   return QStringLiteral("%1 = %2").arg(studyAxisLabel(parameter),
-                                       studyNumber(v * displayUnit(parameter.unit).factor, digits));
+                                       studyNumber(value * displayUnit(parameter.unit).factor, digits));
+}
+
+QString studyValueLabel(const StudyParameterData& parameter, std::size_t c) {
+  return studyParameterValue(parameter, c < parameter.values.size() ? parameter.values[c] : std::nan(""),
+                             studyValueDigits(parameter));
 }
 
 bool isFullGrid(const StudyPlotData& data, int a, int b) {

@@ -35,6 +35,10 @@ QString studyAxisLabel(const StudyParameterData& parameter);
 // "Length L [m] = 120": parameter `parameter` in case `c`, in its display unit, to 4 significant digits (more only
 // where two of its values would read the same; whole numbers below 1e6 in full): legends and run labels.
 QString studyValueLabel(const StudyParameterData& parameter, std::size_t c);
+// The significant digits studyValueLabel gives `parameter`'s values (it sorts them: worth keeping for many labels),
+// and the label of `value` (SI) of that parameter with them.
+int studyValueDigits(const StudyParameterData& parameter);
+QString studyParameterValue(const StudyParameterData& parameter, double value, int digits);
 
 // True when parameters `a` and `b` form a full grid (every pair of their distinct values occurs in
 // exactly one case) and no other parameter varies: what a heat map needs.

@@ -22,15 +22,26 @@ QString StudySession::caseLabel(int index) const {
   QStringList parts;
   const auto& c = impl_->cases.at(index);
   const auto& parameters = impl_->study.parameters;
+  // Each value with the digits the plot's legend gives it: enough to tell this study's values apart.
+  const auto valuesOf = [&](std::size_t p) {
+    std::vector<double> values;
+    values.reserve(impl_->cases.size());
+    for (const auto& other : impl_->cases)
+      values.push_back(p < other.values.size() && other.values[p].is_number() ? other.values[p].get<double>()
+                                                                             : std::nan(""));
+    return values;
+  };
+  if (impl_->value_digits.size() != parameters.size()) {
+    impl_->value_digits.clear();
+    for (std::size_t p = 0; p < parameters.size(); ++p)
+      impl_->value_digits.push_back(
+          studyValueDigits(StudyParameterData{parameters[p].path, parameters[p].label, parameters[p].unit, false, valuesOf(p)}));
+  }
   for (std::size_t p = 0; p < parameters.size() && p < c.values.size(); ++p) {
     const auto& param = parameters[p];
-    StudyParameterData shown{param.path, param.label, param.unit, false, {}};
+    const StudyParameterData shown{param.path, param.label, param.unit, false, {}};
     if (c.values[p].is_number()) {
-      // Its digits as the plot's legend shows them: enough to tell this study's values apart.
-      for (const auto& other : impl_->cases)
-        shown.values.push_back(p < other.values.size() && other.values[p].is_number() ? other.values[p].get<double>()
-                                                                                     : std::nan(""));
-      parts << studyValueLabel(shown, static_cast<std::size_t>(index));
+      parts << studyParameterValue(shown, c.values[p].get<double>(), impl_->value_digits[p]);
     } else {
       const QString value = c.values[p].is_string() ? QString::fromStdString(c.values[p].get<std::string>())
                                                     : QString::fromStdString(c.values[p].dump());

@@ -140,6 +140,7 @@ void StudySession::setWeightedSum(const std::string& column, const std::vector<s
   const bool same_cases = impl->study.rows == impl_->study.rows && impl->study.parameters.size() == impl_->study.parameters.size();
   if (!same_cases) {
     impl->cases.clear();
+    impl->value_digits.clear();
     outcomes_.clear();
   }
   impl_ = std::move(impl);
@@ -331,6 +332,7 @@ QString StudySession::kindName() const {
 void StudySession::expand() {
   if (!impl_ || !scene_) throw std::runtime_error("no study is defined");
   impl_->cases.clear();
+  impl_->value_digits.clear();
   outcomes_.clear();
   std::vector<study::StudyCase> cases = study::expandStudy(impl_->study);
   const std::vector<FieldError> errors = study::caseErrors(impl_->study, cases, false);

@@ -68,7 +68,7 @@ TEST(StudyCollect, PlotFileNamesArePortableAndUnique) {
   EXPECT_EQ(plots[1].file_stem, "drag_vs_current.profile_1.speed-2");
   EXPECT_EQ(plots[2].file_stem, "drag_vs_Current.Profile_1.Speed-3");
   EXPECT_EQ(plots[3].file_stem, "drag_vs_hull_length__m_");
-  EXPECT_EQ(plots[0].title, "drag against current.profile[1].speed");
+  EXPECT_EQ(plots[0].title, "Drag against current.profile[1].speed");
   collected.parameters[0].label = "Speed of current profile row 2";
   collected.result_labels = {"Drag D"};
   const auto labelled = studyPlots(collected, manifest);

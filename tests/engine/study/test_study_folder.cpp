@@ -63,7 +63,7 @@ TEST(StudyFolder, CollectedResultsCarryTheLabelsTheirSummariesDeclare) {
   const auto plots = studyPlots(collected, manifest);
   ASSERT_EQ(plots.size(), 2u);
   EXPECT_EQ(plots[0].title, "Bottom end z against geometry.length");
-  EXPECT_EQ(plots[1].title, "steps against geometry.length");
+  EXPECT_EQ(plots[1].title, "Steps against geometry.length");  // no labels: the name made readable, the path
   EXPECT_EQ(plots[0].file_stem, "end_z_vs_geometry.length");  // file names keep the result's name
 }
 
