@@ -426,13 +426,13 @@ class StudyTest : public QObject {
     for (const ParamSpec& spec : document->scene()->schema.fields)
       if (spec.path == "geometry.length") length = &spec;
     QVERIFY(length);
-    const auto rows = dialog.table()->findItems(fieldLabel(*length) + QStringLiteral(" [m]"), Qt::MatchExactly);
+    const auto rows = dialog.table()->findItems(QString::fromStdString(parameterLabel(*length)) + QStringLiteral(" [m]"), Qt::MatchExactly);
     QCOMPARE(rows.size(), 1);
     QCOMPARE(dialog.table()->item(rows.first()->row(), 1)->text(), QStringLiteral("50"));
     QCOMPARE(dialog.table()->item(rows.first()->row(), 2)->text(), QStringLiteral("150"));
     QVERIFY(dialog.choose("geometry.length", -5.0, 150.0));
     QVERIFY(!dialog.createButton()->isEnabled());
-    QVERIFY2(dialog.problem().startsWith(fieldLabel(*length) + QStringLiteral(": from")), qPrintable(dialog.problem()));
+    QVERIFY2(dialog.problem().startsWith(QString::fromStdString(parameterLabel(*length)) + QStringLiteral(": from")), qPrintable(dialog.problem()));
     const double bounds[2][2] = {{50.0, 150.0}, {0.2, 0.6}};  // length, radius (the design's path order)
     QVERIFY(dialog.choose("geometry.length", bounds[0][0], bounds[0][1]));
     QVERIFY(dialog.choose("geometry.radius", bounds[1][0], bounds[1][1]));

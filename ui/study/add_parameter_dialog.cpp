@@ -21,10 +21,10 @@ namespace {
 
 bool isNumberKind(ParamKind kind) { return kind == ParamKind::Real || kind == ParamKind::Integer; }
 
-// "length [m]": a field's or column's label for people with its SI unit.
+// "Length L [m]": a field's or column's label for people (the schema's) with its SI unit.
 QString labelWithUnit(const ParamSpec& spec) {
   const QString unit = spec.unit.empty() || spec.unit == "-" ? QString() : QStringLiteral(" [%1]").arg(QString::fromStdString(spec.unit));
-  return fieldLabel(spec) + unit;
+  return QString::fromStdString(parameterLabel(spec)) + unit;
 }
 
 std::size_t rowCount(const Json& parameters, const std::string& table) {
