@@ -1,6 +1,6 @@
 // The PNG plots of `maris-cli study run` and `study collect` name the varied parameters for people: the title,
 // the axes and the legend use the scene's labels and units ("Length L [m]", "Young's modulus E [Pa] = 7e+10", a
-// table cell as "Arc length of probes row 1"), never a dotted path. What a plot says is read from the text
+// table cell as "Arc length of probe row 1"), never a dotted path. What a plot says is read from the text
 // chunks every PNG carries ("Title", "Axes", "Legend"), not from its pixels.
 #include <gtest/gtest.h>
 
@@ -119,14 +119,14 @@ TEST_F(CliStudyLabels, StudyPlotsNameParametersByTheirLabelsAndUnits) {
     // A line per Young's modulus (the probe's one value in every legend entry; the parameters in the order of
     // their paths), 4 significant digits.
     EXPECT_EQ(length.at("Legend"),
-              "Arc length of probes row 1 [m] = 2, Young's modulus E [Pa] = 7e+10\n"
-              "Arc length of probes row 1 [m] = 2, Young's modulus E [Pa] = 2.1e+11");
+              "Arc length of probe row 1 [m] = 2, Young's modulus E [Pa] = 7e+10\n"
+              "Arc length of probe row 1 [m] = 2, Young's modulus E [Pa] = 2.1e+11");
     const auto& modulus = plots.at("end_z_vs_section.youngs_modulus.png");
     EXPECT_EQ(modulus.at("Title"), "Bottom end z against Young's modulus E");
     EXPECT_EQ(modulus.at("Axes"), "Young's modulus E [Pa]\nBottom end z [m]");
     const auto& cell = plots.at("end_z_vs_output.probes_0.arc_length.png");
-    EXPECT_EQ(cell.at("Title"), "Bottom end z against Arc length of probes row 1");
-    EXPECT_EQ(cell.at("Axes"), "Arc length of probes row 1 [m]\nBottom end z [m]");
+    EXPECT_EQ(cell.at("Title"), "Bottom end z against Arc length of probe row 1");
+    EXPECT_EQ(cell.at("Axes"), "Arc length of probe row 1 [m]\nBottom end z [m]");
   }
   // study.csv keeps the paths: it is for programs.
   const std::string csv = test::slurp(dir_ / "out" / "study.csv");
