@@ -22,7 +22,7 @@ struct StudyPng {
 };
 
 // Raised by one when the layout of these types or the functions change.
-inline constexpr int kPlotRendererAbi = 1;
+inline constexpr int kPlotRendererAbi = 2;
 
 struct PlotRenderer {
   int abi = kPlotRendererAbi;

@@ -87,7 +87,8 @@ ui::StudyPlotData studyPlotData(const study::CollectedStudy& collected, const st
     const auto& parameter = collected.parameters[p];
     if (parameter.kind != ParamKind::Real && parameter.kind != ParamKind::Integer) continue;
     if (p == plot.x) x = static_cast<int>(data.parameters.size());
-    ui::StudyParameterData column{parameter.path, parameter.unit, study::logSpaced(study_document, parameter.path), {}};
+    ui::StudyParameterData column{parameter.path, parameter.label, parameter.unit,
+                                  study::logSpaced(study_document, parameter.path), {}};
     for (const auto& c : collected.cases)
       column.values.push_back(c.values[p].is_number() ? c.values[p].get<double>() : std::nan(""));
     data.parameters.push_back(std::move(column));

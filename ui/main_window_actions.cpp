@@ -210,10 +210,28 @@ void MainWindow::restoreShownRun() {
 }
 
 bool MainWindow::openStudyCase(int index) {
-  const std::optional<RunRecord> record = study_->caseRecord(index, next_study_case_id_++);
-  if (!record) return false;
+  QString note;
+  const std::optional<RunRecord> record = study_->caseRecord(index, next_study_case_id_++, &note);
+  if (!record) {
+    // Said, not silently ignored: a failed case's cell can be clicked.
+    if (!note.isEmpty()) {
+      run_panel_->log(RunPanel::Level::Warning, note);
+      status(note.section(QLatin1Char('\n'), 0, 0), 15000);
+    }
+    return false;
+  }
   showRecord(history_.add(*record, true));
+  // A case read from its folder has no 3D view: say so rather than leave another run's view beside its plots.
+  if (record->results->view.empty()) {
+    const QString folder = study_->session().folder();
+    const QString scenario = folder.isEmpty() ? tr("cases/NNNN.json in the study folder")
+                                              : QDir(folder).filePath(QStringLiteral("cases/%1.json")
+                                                                          .arg(study_->session().caseId(index)));
+    view_->clear(tr("No 3D view: a study's case folder stores none. To see it, open the case's scenario (%1) "
+                    "and run it.").arg(scenario));
+  }
   if (!view_->isPlaying()) view_->setFrame(view_->frameCount() - 1);
+  if (!note.isEmpty()) run_panel_->log(RunPanel::Level::Info, note);
   status(tr("Showing %1").arg(record->label));
   return true;
 }

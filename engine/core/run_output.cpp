@@ -32,6 +32,26 @@ std::vector<std::filesystem::path> writeRunFolder(const std::filesystem::path& d
   summary["scenario"] = scenario.name;
   summary["tables"] = Json::array();
   for (const auto& t : results.tables) summary["tables"].push_back(t.name + ".csv");
+  // What the CSV files do not say, so that a front end can show the run again from its folder (readRunFolder):
+  // each table's title and its columns' labels for people, and the plots' layouts.
+  summary["table_labels"] = Json::object();
+  for (const auto& t : results.tables) {
+    Json columns = Json::object();
+    for (const auto& c : t.columns)
+      if (!c.label.empty()) columns[c.name] = c.label;
+    summary["table_labels"][t.name] = {{"title", t.title}, {"columns", columns}};
+  }
+  summary["plots"] = Json::array();
+  for (const auto& p : results.plots) {
+    Json plot = {{"name", p.name}, {"title", p.title}, {"table", p.table}, {"x", p.x}, {"y", p.y}};
+    if (p.log_x) plot["log_x"] = true;
+    if (p.log_y) plot["log_y"] = true;
+    if (!p.reference_table.empty()) {
+      plot["reference_table"] = p.reference_table;
+      plot["reference_y"] = p.reference_y;
+    }
+    summary["plots"].push_back(std::move(plot));
+  }
   // Which Maris ran it, when, and on how many hardware threads (for comparing wall times).
   summary["maris_version"] = projectVersion();
   summary["commit"] = commitId();

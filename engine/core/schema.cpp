@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/results.hpp"
 #include "core/text_format.hpp"
 
 namespace maris {
@@ -47,6 +48,17 @@ std::string ParamSpec::group() const {
 std::string ParamSpec::key() const {
   const auto dot = path.rfind('.');
   return dot == std::string::npos ? path : path.substr(dot + 1);
+}
+
+std::string parameterLabel(const ParamSpec& spec) { return spec.label.empty() ? readableName(spec.key()) : spec.label; }
+
+std::string tableCellLabel(const ParamSpec& table, const ParamSpec& column, std::size_t row) {
+  std::string table_name = table.label;
+  if (table_name.empty()) {
+    table_name = table.key();
+    std::replace(table_name.begin(), table_name.end(), '_', ' ');
+  }
+  return parameterLabel(column) + " of " + table_name + " row " + std::to_string(row + 1);
 }
 
 const ParamSpec* Schema::find(const std::string& path) const {
@@ -341,6 +353,7 @@ static Json specToJson(const ParamSpec& f) {
   j["kind"] = toString(f.kind);
   j["unit"] = f.unit;
   j["description"] = f.description;
+  if (!f.label.empty()) j["label"] = f.label;
   j["default"] = f.default_value;
   if (f.kind == ParamKind::Real || f.kind == ParamKind::Integer || f.kind == ParamKind::RealList) {
     j["range"] = f.range.str();

@@ -49,6 +49,8 @@ struct ParamSpec {
   ParamKind kind = ParamKind::Real;
   std::string unit;         // SI unit ("m", "N/m^2", "kg/m^3", "s", "rad"); "-" for dimensionless; "" for text
   std::string description;  // one line
+  std::string label;        // short name for people with the symbol, as plots and tables show it ("Length L");
+                            // empty: parameterLabel falls back to the key made readable
   Json default_value;       // default as JSON
   Range range;              // Real, Integer, RealList elements
   std::vector<std::string> choices;  // Choice
@@ -61,6 +63,14 @@ struct ParamSpec {
   std::string group() const;  // first path component ("geometry")
   std::string key() const;    // last path component ("length")
 };
+
+// What people read for a field or column: its label, or where the scene declared none, its key made readable
+// ("Segment count" from "discretisation.segment_count"). Scenario files and study paths keep the paths.
+std::string parameterLabel(const ParamSpec& spec);
+
+// The label for people of a table's cell, `row` counted from 0 as in its path ("current.profile[1].speed") and
+// from 1 for people, as the parameter editor's table numbers its rows: "Speed of current profile row 2".
+std::string tableCellLabel(const ParamSpec& table, const ParamSpec& column, std::size_t row);
 
 struct Schema {
   std::vector<ParamSpec> fields;

@@ -7,11 +7,15 @@
 //   };
 //   SchemaBinder<PendulumParameters> b;
 //   b.real("geometry.length", &PendulumParameters::length, "m", Range::positive(1e4), "Rod length");
+//   b.label("geometry.length", "Rod length L");  // what plots and study tables call it (optional)
 //   PendulumParameters p = b.read(json);   // after validateAgainstSchema(b.schema(), json) passed
 #pragma once
 
 #include <functional>
+#include <initializer_list>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/schema.hpp"
@@ -75,6 +79,21 @@ class SchemaBinder {
       for (const auto& r : in.*member) arr.push_back(row.write(r));
       setAtPath(root, p, std::move(arr));
     });
+  }
+
+  // The label for people of the field or column `path` declared above ("Length L"); a study's plots, legends
+  // and tables name the parameter by it. A path not declared is a programming error (std::logic_error).
+  void label(const std::string& path, std::string text) {
+    for (auto& spec : schema_.fields)
+      if (spec.path == path) {
+        spec.label = std::move(text);
+        return;
+      }
+    throw std::logic_error("SchemaBinder::label: no field " + path);
+  }
+
+  void labels(std::initializer_list<std::pair<const char*, const char*>> list) {
+    for (const auto& [path, text] : list) label(path, text);
   }
 
   const Schema& schema() const { return schema_; }

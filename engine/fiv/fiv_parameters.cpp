@@ -125,6 +125,24 @@ SchemaBinder<FivParameters> fivBinder() {
   bindForcing(b);
   bindSurfaceSweepNumerics(b);
   bindOutputCalibrationSeries(b);
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"structure.side", "Side D"},
+      {"structure.length", "Span L"},
+      {"structure.mass", "Mass m"},
+      {"structure.added_mass_coefficient", "Added-mass coefficient C_a"},
+      {"structure.stiffness", "Stiffness k"},
+      {"structure.damping_ratio", "Damping ratio ξ"},
+      {"structure.damping_coefficient", "Damping coefficient c"},
+      {"fluid.density", "Water density ρ"},
+      {"galloping.force_scale", "Force scale"},
+      {"galloping.angle_scale", "Angle scale"},
+      {"viv.strouhal", "Strouhal number St"},
+      {"sweep.speed_min", "Lowest speed"},
+      {"sweep.speed_max", "Highest speed"},
+      {"detail.speed", "Detail speed"},
+      {"detail.submergence_ratio", "Detail submergence h*"},
+  });
   return b;
 }
 

@@ -23,6 +23,13 @@ SchemaBinder<BuoyancyModuleRow> moduleBinder() {
          "Normal drag coefficient on the modules' diameter");
   b.real("added_mass_coefficient", &R::added_mass_coefficient, "-", Range::closed(0, 10),
          "Normal added-mass coefficient on the modules' diameter");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"start", "Start s"},
+      {"end", "End s"},
+      {"outer_diameter", "Module diameter"},
+      {"mass_per_length", "Module mass per length"},
+  });
   return b;
 }
 

@@ -19,6 +19,12 @@ SchemaBinder<CurrentProfileRow> profileRowBinder() {
   b.real("speed", &CurrentProfileRow::speed, "m/s", Range::closed(-20, 20), "Current speed at this depth");
   b.real("heading_deg", &CurrentProfileRow::heading_deg, "deg", Range::closed(-360, 360),
          "Direction the current flows towards, from +x towards +y");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"depth", "Depth"},
+      {"speed", "Speed"},
+      {"heading_deg", "Heading"},
+  });
   return b;
 }
 

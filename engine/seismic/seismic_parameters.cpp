@@ -16,6 +16,14 @@ SchemaBinder<ReefLayer> layerBinder() {
   b.real("density", &ReefLayer::density, "kg/m^3", Range::closed(500.0, 5000.0), "Rock density");
   b.real("vs", &ReefLayer::vs, "m/s", Range::closed(50.0, 6000.0), "S-wave speed");
   b.real("vp", &ReefLayer::vp, "m/s", Range::closed(100.0, 12000.0), "P-wave speed");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"thickness", "Thickness"},
+      {"slope_deg", "Flank slope"},
+      {"density", "Rock density"},
+      {"vs", "S-wave speed v_s"},
+      {"vp", "P-wave speed v_p"},
+  });
   return b;
 }
 
@@ -66,6 +74,21 @@ SchemaBinder<SeismicParameters> seismicBinder() {
             "Lowest natural modes of the reef and seabed, with the water coupled when it is present; 0 skips");
   b.choice("modes.base", &P::modal_base, {"fixed", "springs"},
            "Modal boundary: clamped bottom, or the artificial boundary's springs only");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"geometry.layers", "reef layer"},
+      {"incidence.angle_deg", "Incidence angle"},
+      {"input.ricker_peak_frequency", "Ricker peak frequency"},
+      {"input.amplitude", "Incident amplitude"},
+      {"seabed.density", "Seabed density"},
+      {"seabed.vs", "Seabed S-wave speed"},
+      {"seabed.vp", "Seabed P-wave speed"},
+      {"water.density", "Seawater density"},
+      {"water.sound_speed", "Sound speed in water"},
+      {"water.depth", "Water depth"},
+      {"geometry.flat_width", "Reef-flat width L"},
+      {"solver.cutoff_frequency", "Cutoff frequency f_cut"},
+  });
   return b;
 }
 

@@ -94,6 +94,26 @@ SchemaBinder<ShipParameters> shipSchemaBinder() {
   b.dataPath("measured.file", &P::measured_file,
              "Optional CSV of measured points: columns froude, c_total; builtin:NAME for a data set shipped in "
              "resources/data/ship (e.g. builtin:kcs_tokyo2015_case21_efd.csv)");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"hull.length", "Length Lpp"},
+      {"hull.beam", "Beam B"},
+      {"hull.draft", "Draft T"},
+      {"hull.waterline_exponent", "Waterline exponent p"},
+      {"hull.section_exponent", "Section exponent q"},
+      {"hull.wetted_surface", "Wetted surface S"},
+      {"speed.froude_min", "First Froude number"},
+      {"speed.froude_max", "Last Froude number"},
+      {"speed.count", "Speeds"},
+      {"speed.design_froude", "Design Froude number Fn"},
+      {"water.temperature", "Water temperature"},
+      {"viscous.form_factor", "Form factor 1+k"},
+      {"viscous.correlation_allowance", "Correlation allowance C_A"},
+      {"corrections.trip_position", "Trip position"},
+      {"full_scale.ship_length", "Full-scale length Lpp"},
+      {"numerics.stations", "Stations"},
+      {"numerics.waterlines", "Waterlines"},
+  });
   return b;
 }
 

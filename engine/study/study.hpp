@@ -46,7 +46,12 @@ struct StudyParameter {
   std::string path;  // below "parameters": "geometry.length"
   std::string unit;  // SI unit ("m"), "-" dimensionless, "" for text
   ParamKind kind = ParamKind::Real;
+  // For people (plots, legends, tables): the schema's label ("Length L"), for a cell its column's with the table
+  // and row ("Speed of current profile row 2"); empty for a study folder whose scene this program lacks.
+  std::string label;
 };
+// The parameter's label, or its path where it has none.
+std::string displayLabel(const StudyParameter& parameter);
 
 // Latin hypercube: the interval of one parameter.
 struct SampleBounds {
@@ -138,6 +143,9 @@ std::string tableCellPath(const std::string& table, std::size_t row, const std::
 // (if given), for anything else — the check a study file's parameters get.
 std::optional<ParamSpec> findStudyParameter(const SceneDefinition& scene, const Json& parameters,
                                             const std::string& path, std::string* why = nullptr);
+// The label for people of the field or cell `path` of `schema` (StudyParameter::label), or "" when the schema
+// has no such field or column.
+std::string studyParameterLabel(const Schema& schema, const std::string& path);
 // The value at `path` (a dotted path or a cell) of a scenario's parameters; nullptr if there is none.
 const Json* findParameterValue(const Json& parameters, const std::string& path);
 

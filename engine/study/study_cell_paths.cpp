@@ -1,6 +1,7 @@
 // One cell of a table field as a varied parameter: "current.profile[1].speed" is the speed of the second row
 // of the current profile (rows counted from 0, as the schema's messages count them). The row must exist in the
 // base scenario (after "set"); a study changes that one value and leaves the table's other cells as they are.
+#include <algorithm>
 #include <charconv>
 
 #include "study/study_design.hpp"
@@ -67,6 +68,7 @@ std::optional<ParamSpec> lookupTableCell(const SceneDefinition& scene, const Jso
   }
   ParamSpec spec = *column;
   spec.path = tableCellPath(cell->table, cell->row, cell->column);
+  spec.label = tableCellLabel(*table, *column, cell->row);
   return spec;
 }
 
@@ -104,6 +106,21 @@ std::optional<ParamSpec> findStudyParameter(const SceneDefinition& scene, const 
   auto spec = detail::lookupParameter(scene, parameters, path, path, errors);
   if (why) *why = errors.empty() ? std::string() : errors.front().message;
   return spec;
+}
+
+std::string studyParameterLabel(const Schema& schema, const std::string& path) {
+  const std::string field = path.rfind("parameters.", 0) == 0 ? path.substr(11) : path;
+  bool malformed = false;
+  const auto cell = detail::splitTableCell(field, malformed);
+  if (!cell) {
+    const ParamSpec* spec = malformed ? nullptr : schema.find(field);
+    return spec && spec->kind != ParamKind::Table ? parameterLabel(*spec) : std::string();
+  }
+  const ParamSpec* table = schema.find(cell->table);
+  if (!table || table->kind != ParamKind::Table) return {};
+  for (const auto& c : table->columns)
+    if (c.key() == cell->column) return tableCellLabel(*table, c, cell->row);
+  return {};
 }
 
 const Json* findParameterValue(const Json& parameters, const std::string& path) {

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/csv_field.hpp"
+#include "core/results.hpp"
 #include "core/input_limits.hpp"
 #include "core/run_output.hpp"
 
@@ -245,15 +246,18 @@ std::vector<StudyPlot> studyPlots(const CollectedStudy& collected, const StudyMa
   const bool map = manifest.json.value("design", "") == "grid" && collected.parameters.size() == 2 && numeric.size() == 2;
   for (std::size_t r = 0; r < collected.result_names.size(); ++r) {
     const std::string& result = collected.result_names[r];
-    // Titles name the result by its label where the runs declared one; parameters by their study paths.
+    // Titles name the result and the parameters by their labels for people (the result's as the runs declared
+    // it, the parameters' from the scene's schema), where there are none by their names; file names by paths.
     const std::string shown =
-        r < collected.result_labels.size() && !collected.result_labels[r].empty() ? collected.result_labels[r] : result;
+        r < collected.result_labels.size() && !collected.result_labels[r].empty() ? collected.result_labels[r]
+                                                                                   : readableName(result);
     if (map)
-      plots.push_back({portableStem(result + "_map"), shown + " over " + collected.parameters[0].path + " and " +
-                                            collected.parameters[1].path, r, 1, true});
+      plots.push_back({portableStem(result + "_map"), shown + " over " + displayLabel(collected.parameters[0]) +
+                                                          " and " + displayLabel(collected.parameters[1]),
+                       r, 1, true});
     for (const auto p : numeric)
       plots.push_back({portableStem(result + "_vs_" + collected.parameters[p].path),
-                       shown + " against " + collected.parameters[p].path, r, p, false});
+                       shown + " against " + displayLabel(collected.parameters[p]), r, p, false});
   }
   makeStemsUnique(plots);
   return plots;

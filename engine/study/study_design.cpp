@@ -187,6 +187,7 @@ StudyParameter studyParameter(const ParamSpec& spec) {
   p.path = spec.path;
   p.unit = spec.unit;
   p.kind = spec.kind;
+  p.label = parameterLabel(spec);
   return p;
 }
 
@@ -302,3 +303,11 @@ std::vector<std::vector<Json>> latinHypercubeRows(const Study& study) {
 }
 
 }  // namespace maris::study::detail
+
+namespace maris::study {
+
+std::string displayLabel(const StudyParameter& parameter) {
+  return parameter.label.empty() ? parameter.path : parameter.label;
+}
+
+}  // namespace maris::study

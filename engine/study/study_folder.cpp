@@ -88,7 +88,7 @@ std::optional<CaseOutcome> readCaseOutcome(const StudyFolder& folder, const std:
 Json manifestJson(const Study& study, const std::vector<StudyCase>& cases, const std::filesystem::path& study_file) {
   Json parameters = Json::array();
   for (const auto& p : study.parameters)
-    parameters.push_back({{"path", p.path}, {"unit", p.unit}, {"kind", toString(p.kind)}});
+    parameters.push_back({{"path", p.path}, {"unit", p.unit}, {"kind", toString(p.kind)}, {"label", p.label}});
   Json list = Json::array();
   const bool weighted = !study.weight_column.empty() && study.weights.size() == cases.size();
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -126,9 +126,14 @@ StudyManifest readManifest(const StudyFolder& folder) {
     throw InputError(where, "", std::string("is not a study folder's study.json (format \"") + kStudyRunFormat + "\")");
   try {
     m.scene = m.json.at("scene").get<std::string>();
-    for (const auto& p : m.json.at("parameters"))
+    // study.json of Maris 0.9.0 and earlier records no labels: this program's schema of the scene gives them.
+    const SceneDefinition* scene = catalogSource().scene(m.scene);
+    for (const auto& p : m.json.at("parameters")) {
       m.parameters.push_back({p.at("path").get<std::string>(), p.at("unit").get<std::string>(),
-                              kindFromText(p.at("kind").get<std::string>())});
+                              kindFromText(p.at("kind").get<std::string>()), p.value("label", std::string())});
+      if (m.parameters.back().label.empty() && scene)
+        m.parameters.back().label = studyParameterLabel(scene->schema, m.parameters.back().path);
+    }
     m.results = m.json.at("results").get<std::vector<std::string>>();
     if (const auto sum = m.json.find("weighted_sum"); sum != m.json.end()) {
       m.weight_column = sum->at("weight").get<std::string>();

@@ -93,6 +93,24 @@ SchemaBinder<TetherParameters> tetherBinder() {
   b.real("vision.camera_z", &P::vision_camera_z, "m", Range::closed(-5, 5), "Camera position, follower body z (up)");
   b.integer("vision.points", &P::vision_points, "-", Range::closed(5, 10000), "Tether points imaged per frame");
   b.integer("output.animation_frames", &P::animation_frames, "-", Range::closed(1, 2000), "Maximum number of 3D frames");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"tether.length", "Tether length L"},
+      {"tether.mass_per_length", "Tether mass per length"},
+      {"tether.diameter", "Tether diameter"},
+      {"environment.water_density", "Water density"},
+      {"features.sag_max", "Sag for a = 1, H_max"},
+      {"features.rise_max", "Rise for d = 1, dH_max"},
+      {"target.a", "Desired sag feature a*"},
+      {"target.b", "Desired follower angle feature b*"},
+      {"target.d", "Desired rise feature d*"},
+      {"control.rate", "Control rate"},
+      {"control.max_linear_speed", "Linear speed limit"},
+      {"simulation.duration", "Simulated time"},
+      {"cable.segments", "Cable links N"},
+      {"cable.drag_coefficient", "Cable drag coefficient C_d"},
+      {"vision.noise", "Image noise"},
+  });
   return b;
 }
 

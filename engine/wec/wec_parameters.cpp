@@ -19,6 +19,14 @@ SchemaBinder<FloatRow> floatRowBinder() {
   b.real("inertia_cg", &FloatRow::inertia_cg, "kg*m^2", Range::nonNegative(1e13), "Pitch inertia about the float centre");
   b.real("pto_damping", &FloatRow::pto_damping, "N*m*s/rad", Range::nonNegative(1e12), "Linear PTO damping");
   b.real("pto_stiffness", &FloatRow::pto_stiffness, "N*m/rad", Range::nonNegative(1e12), "PTO spring about the equilibrium angle");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"arm_length", "Arm length L"},
+      {"radius", "Float radius"},
+      {"mass", "Float mass"},
+      {"pto_damping", "PTO damping"},
+      {"pto_stiffness", "PTO stiffness"},
+  });
   return b;
 }
 
@@ -73,6 +81,19 @@ SchemaBinder<WecParameters> wecBinder() {
   b.real("frequency.check_wave_height", &P::check_wave_height, "m", Range::positive(10.0), "Wave height of the RAO runs");
   b.realList("power_matrix.hs", &P::power_hs, "m", Range::positive(30.0), 0, 50, "Significant heights");
   b.realList("power_matrix.tp", &P::power_tp, "s", Range::closed(1.0, 30.0), 0, 50, "Peak periods");
+  // Labels for people: study plots, legends and tables name the parameters by them.
+  b.labels({
+      {"floats", "float"},
+      {"water.density", "Water density"},
+      {"water.depth", "Water depth"},
+      {"waves.height", "Wave height H"},
+      {"waves.frequency", "Wave frequency ω"},
+      {"waves.significant_height", "Significant wave height H_s"},
+      {"waves.peak_period", "Peak period T_p"},
+      {"waves.peak_enhancement", "Peak enhancement γ"},
+      {"time.duration", "Simulated time"},
+      {"time.time_step", "Time step h"},
+  });
   return b;
 }
 

@@ -76,7 +76,7 @@ class DocumentTest : public QObject {
     QVERIFY(!doc.isModified());
     doc.edit("geometry.length", 200.0);
     QVERIFY(doc.isModified());
-    QCOMPARE(doc.undoStack()->undoText(), QStringLiteral("Set length to 200.0 m"));
+    QCOMPARE(doc.undoStack()->undoText(), QStringLiteral("Set Length L to 200.0 m"));
     doc.undoStack()->undo();
     QCOMPARE(doc.value("geometry.length").get<double>(), 100.0);
     QVERIFY(!doc.isModified());

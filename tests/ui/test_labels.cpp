@@ -58,16 +58,17 @@ class LabelsTest : public QObject {
   }
 
   // Messages name fields by their paths (what a scenario file's author needs); the GUI shows them as the editor
-  // names them, group ▸ label, table rows counted from 1. Words that are no parameter of the scene stay.
+  // names them, group ▸ label, a table's cell as a study names it (rows counted from 1). Words that are no
+  // parameter of the scene stay.
   void messagesNameFieldsAsTheEditorDoes() {
     const Schema& ship = requireScene("ship").schema;
     QCOMPARE(withFieldNames("parameters.speed.froude_max = 0.1: must be greater than speed.froude_min = 0.2.", ship),
-             QStringLiteral("Speed ▸ froude max = 0.1: must be greater than Speed ▸ froude min = 0.2."));
+             QStringLiteral("Speed ▸ Last Froude number = 0.1: must be greater than Speed ▸ First Froude number = 0.2."));
     const Schema& riser = requireScene("riser").schema;
     QCOMPARE(withFieldNames("parameters.sections[1].outer_diameter = 0: must be > 0", riser),
-             QStringLiteral("Sections row 2 ▸ outer diameter = 0: must be > 0"));
+             QStringLiteral("Outer diameter D_out of section row 2 = 0: must be > 0"));
     QCOMPARE(withFieldNames("output.probes[0].arc_length beyond geometry.length", riser),
-             QStringLiteral("Output ▸ probes row 1 ▸ arc length beyond Geometry ▸ length"));
+             QStringLiteral("Output ▸ Arc length of probe row 1 beyond Geometry ▸ Length L"));
     QCOMPARE(withFieldNames("see docs/riser.md and solver.no_such_field", riser),
              QStringLiteral("see docs/riser.md and solver.no_such_field"));
     QVERIFY(!looksInternal(withFieldNames("parameters.speed.froude_min", ship).toStdString()));

@@ -96,7 +96,7 @@ class MainWindowTest : public QObject {
     QVERIFY(!window_->isWindowModified());
     QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
     QCOMPARE(window_->document()->value("geometry.length").get<double>(), 120.0);
-    QCOMPARE(window_->document()->undoStack()->undoText(), QStringLiteral("Set length to 120.0 m"));
+    QCOMPARE(window_->document()->undoStack()->undoText(), QStringLiteral("Set Length L to 120.0 m"));
   }
 
   void undoShortcutsInsideAFieldActOnTheDocument() {
@@ -276,7 +276,7 @@ class MainWindowTest : public QObject {
     typeInto("discretisation.point_count", QStringLiteral("20"));
     QVERIFY(runToCompletion());
     const RunRecord* latest = window_->history().latest();
-    QVERIFY2(latest->label.contains(QStringLiteral("point count = 20")), qPrintable(latest->label));
+    QVERIFY2(latest->label.contains(QStringLiteral("Point count = 20")), qPrintable(latest->label));
     const quint64 first = window_->history().runs().front().id;
     window_->plots()->setOverlay(first, true);
     // The overlaid run adds its own graph (50 points) next to the shown one (20 points).

@@ -167,7 +167,7 @@ class RunTest : public QObject {
     RunRecord d = c;
     d.id = 4;
     d.scenario.parameters["geometry"]["length"] = 1.5707963267948966;
-    QCOMPARE(history.add(d, false, &scene_.schema).label, QStringLiteral("run 4 (length = 1.571 m)"));
+    QCOMPARE(history.add(d, false, &scene_.schema).label, QStringLiteral("run 4 (Length L = 1.571 m)"));
   }
 
   void plotsHoldTheExpectedPoints() {

@@ -40,7 +40,10 @@ SchemaBinder<RodParameters> rodBinder() {
   b.boolean("run.fail", &RodParameters::fail, "Make the solver fail half way");
   b.choice("run.method", &RodParameters::method, {"joint", "absolute"}, "Coordinates");
   b.realList("loads.amplitudes", &RodParameters::amplitudes, "m", Range::any(), 1, 10, "Mode amplitudes");
+  row.label("outer_diameter", "Outer diameter D");
   b.table("sections", &RodParameters::sections, row, 1, 20, "Sections from the top");
+  // Labels for people (study plots, legends and tables); the other fields fall back to their keys.
+  b.labels({{"geometry.length", "Length L"}, {"geometry.radius", "Radius r"}, {"sections", "section"}});
   return b;
 }
 

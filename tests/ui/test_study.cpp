@@ -12,7 +12,9 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QPlainTextEdit>
 #include <QRadioButton>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QDir>
@@ -29,6 +31,12 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/run_output.hpp"
+#include "run/run_panel.hpp"
+#include "plots/result_plot.hpp"
+#include "plots/plot_panel.hpp"
+#include "plots/plot_view.hpp"
+#include "view3d/scene_view.hpp"
 #include "document/scenario_document.hpp"
 #include "editor/parameter_editor.hpp"
 #include "editor/table_editor.hpp"
@@ -127,7 +135,7 @@ class StudyTest : public QObject {
     QVERIFY(view->hasData());
     QCOMPARE(view->drawn().points, 5);
     QCOMPARE(view->plot()->graphCount(), 1);
-    QCOMPARE(view->plot()->xAxis->label(), QStringLiteral("length [m]"));
+    QCOMPARE(view->plot()->xAxis->label(), QStringLiteral("Length L [m]"));
     QCOMPARE(view->plot()->yAxis->label(), QStringLiteral("Rod volume [m³]"));
 
     // Each point equals the same case run alone through the single-run controller (bitwise), and
@@ -234,7 +242,7 @@ class StudyTest : public QObject {
     QCOMPARE(view->drawn().points, 6);
     QCOMPARE(view->plot()->xAxis->scaleType(), QCPAxis::stLogarithmic);  // log spacing: log axis
     QVERIFY(std::abs(view->plot()->graph(0)->data()->at(1)->key - 100.0) < 1e-12);  // 10, 100, 1000
-    QCOMPARE(view->plot()->graph(0)->name(), QStringLiteral("radius = 2 m"));
+    QCOMPARE(view->plot()->graph(0)->name(), QStringLiteral("Radius r [m] = 2"));
     QVERIFY(view->kindBox()->isEnabled());
     view->kindBox()->setCurrentIndex(1);
     QCOMPARE(view->drawn().kind, StudyPlotKind::HeatMap);
@@ -254,22 +262,22 @@ class StudyTest : public QObject {
     StudyPlotData data;
     data.result_name = "bending_stress_max";
     data.result_unit = "Pa";
-    data.parameters = {{"geometry.length", "m", false, {10.0, 20.0, 10.0, 20.0}},
-                       {"section.youngs_modulus", "Pa", false, {7e10, 7e10, 1.00957e11, 1.00957e11}}};
+    data.parameters = {{"geometry.length", "Length L", "m", false, {10.0, 20.0, 10.0, 20.0}},
+                       {"section.youngs_modulus", "Young's modulus E", "Pa", false, {7e10, 7e10, 1.00957e11, 1.00957e11}}};
     data.result = {2.0e7, 4.0e7, 1.0e7, 3.0e7};
     QCustomPlot plot;
     plot.resize(600, 400);
     QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
     QStringList names;
     for (int g = 0; g < plot.graphCount(); ++g) names << plot.graph(g)->name();
-    QVERIFY2(names.contains(QStringLiteral("youngs modulus = 1.01e+11 Pa")), qPrintable(names.join(" | ")));
+    QVERIFY2(names.contains(QStringLiteral("Young's modulus E [Pa] = 1.01e+11")), qPrintable(names.join(" | ")));
     data.parameters[1].values = {1.00001, 1.00001, 1.00002, 1.00002};
     data.parameters[1].unit = "-";
     QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
     names.clear();
     for (int g = 0; g < plot.graphCount(); ++g) names << plot.graph(g)->name();
-    QVERIFY2(names.contains(QStringLiteral("youngs modulus = 1.00001")) &&
-                 names.contains(QStringLiteral("youngs modulus = 1.00002")),
+    QVERIFY2(names.contains(QStringLiteral("Young's modulus E = 1.00001")) &&
+                 names.contains(QStringLiteral("Young's modulus E = 1.00002")),
              qPrintable(names.join(" | ")));
   }
 
@@ -280,18 +288,18 @@ class StudyTest : public QObject {
     data.result_name = "bending_stress_max";
     data.result_label = "σ_b max";
     data.result_unit = "Pa";
-    data.parameters = {{"geometry.length", "m", false, {10.0, 20.0, 10.0, 20.0}},
-                       {"geometry.radius", "m", false, {0.5, 0.5, 0.25, 0.25}}};
+    data.parameters = {{"geometry.length", "Length L", "m", false, {10.0, 20.0, 10.0, 20.0}},
+                       {"geometry.radius", "", "m", false, {0.5, 0.5, 0.25, 0.25}}};
     data.result = {2.0e7, 4.0e7, 1.0e7, 3.0e7};
     setDisplayUnit("m", "mm");
     setDisplayUnit("Pa", "MPa");
     QCustomPlot plot;
     plot.resize(600, 400);
     QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::Lines));
-    QCOMPARE(plot.axisRect()->axis(QCPAxis::atBottom)->label(), QStringLiteral("length [mm]"));
+    QCOMPARE(plot.axisRect()->axis(QCPAxis::atBottom)->label(), QStringLiteral("Length L [mm]"));
     QCOMPARE(plot.axisRect()->axis(QCPAxis::atLeft)->label(), QStringLiteral("σ_b max [MPa]"));
     QCOMPARE(plot.graphCount(), 2);  // a line per radius, named in mm
-    QCOMPARE(plot.graph(0)->name(), QStringLiteral("radius = 250 mm"));
+    QCOMPARE(plot.graph(0)->name(), QStringLiteral("geometry.radius [mm] = 250"));  // no label: the path
     QCOMPARE(plot.graph(0)->data()->at(1)->key, 20000.0);
     QCOMPARE(plot.graph(0)->data()->at(1)->value, 30.0);
     QVERIFY(fillStudyPlot(plot, data, 0, StudyPlotKind::HeatMap));
@@ -418,13 +426,13 @@ class StudyTest : public QObject {
     for (const ParamSpec& spec : document->scene()->schema.fields)
       if (spec.path == "geometry.length") length = &spec;
     QVERIFY(length);
-    const auto rows = dialog.table()->findItems(fieldLabel(*length) + QStringLiteral(" [m]"), Qt::MatchExactly);
+    const auto rows = dialog.table()->findItems(QString::fromStdString(parameterLabel(*length)) + QStringLiteral(" [m]"), Qt::MatchExactly);
     QCOMPARE(rows.size(), 1);
     QCOMPARE(dialog.table()->item(rows.first()->row(), 1)->text(), QStringLiteral("50"));
     QCOMPARE(dialog.table()->item(rows.first()->row(), 2)->text(), QStringLiteral("150"));
     QVERIFY(dialog.choose("geometry.length", -5.0, 150.0));
     QVERIFY(!dialog.createButton()->isEnabled());
-    QVERIFY2(dialog.problem().startsWith(fieldLabel(*length) + QStringLiteral(": from")), qPrintable(dialog.problem()));
+    QVERIFY2(dialog.problem().startsWith(QString::fromStdString(parameterLabel(*length)) + QStringLiteral(": from")), qPrintable(dialog.problem()));
     const double bounds[2][2] = {{50.0, 150.0}, {0.2, 0.6}};  // length, radius (the design's path order)
     QVERIFY(dialog.choose("geometry.length", bounds[0][0], bounds[0][1]));
     QVERIFY(dialog.choose("geometry.radius", bounds[1][0], bounds[1][1]));
@@ -558,7 +566,7 @@ class StudyTest : public QObject {
     QVERIFY(chose);
     QCOMPARE(panel()->parameters().size(), std::size_t(1));
     QTableWidget* table = panel()->parameterTable();
-    const QString label = QStringLiteral("outer diameter of sections[1] [m]");
+    const QString label = QStringLiteral("Outer diameter D of section row 2 [m]");
     QCOMPARE(table->item(0, 0)->text(), label);
     QCOMPARE(table->item(0, 0)->toolTip(), QStringLiteral("sections[1].outer_diameter"));  // no problem
     table->item(0, 2)->setText(QStringLiteral("0.6"));  // To
@@ -856,6 +864,116 @@ class StudyTest : public QObject {
     // Not a study folder: refused by name.
     QVERIFY(!panel()->openStudyFolder(dir.path()));
     QVERIFY2(panel()->lastError().contains(QStringLiteral("study.json")), qPrintable(panel()->lastError()));
+  }
+
+  // The Study dock names the varied parameters by the scene's labels and units: the parameter table, the "against"
+  // chooser, the plot's axes and legend (lines and heat map) and an opened case's run label; no dotted path in any
+  // of them (a letter, a dot, a letter).
+  void theStudyDockNamesParametersByTheirLabels() {
+    panel()->setSweepPrompt(answer({"", 2.0, 3.0, 2, false}, true));
+    QVERIFY(chooseSweep(window_->editor(), "geometry.radius"));
+    panel()->setSweepPrompt(answer({"", 10.0, 1000.0, 3, true}, true));
+    QVERIFY(chooseSweep(window_->editor(), "geometry.length"));
+    QTableWidget* table = panel()->parameterTable();
+    QCOMPARE(table->item(0, 0)->text(), QStringLiteral("Radius r [m]"));
+    QCOMPARE(table->item(1, 0)->text(), QStringLiteral("Length L [m]"));
+    QCOMPARE(table->item(1, 0)->toolTip(), QStringLiteral("geometry.length"));  // the path for whoever needs it
+    QVERIFY(panel()->startStudy());
+    QVERIFY(runAndWait());
+    StudyPlotView* view = panel()->plotView();
+    view->resultBox()->setCurrentIndex(view->resultBox()->findData(QStringLiteral("rod_volume")));
+    view->againstBox()->setCurrentIndex(view->againstBox()->findData(QStringLiteral("geometry.length")));
+    QCOMPARE(view->againstBox()->currentText(), QStringLiteral("Length L [m]"));
+    const QRegularExpression dotted(QStringLiteral("[A-Za-z_]\\.[A-Za-z_]"));
+    const auto noPath = [&](const PlotWords& texts) {
+      for (const QString& text : QStringList{texts.title} + texts.axes + texts.legend)
+        if (text.contains(dotted)) return false;
+      return true;
+    };
+    PlotWords texts = plotWords(*view->plot());
+    QCOMPARE(texts.axes.size(), 2);
+    QCOMPARE(texts.axes[0], QStringLiteral("Length L [m]"));
+    QCOMPARE(texts.legend, QStringList({QStringLiteral("Radius r [m] = 2"), QStringLiteral("Radius r [m] = 3")}));
+    QVERIFY2(noPath(texts), qPrintable(texts.title + " | " + texts.axes.join(" | ") + " | " + texts.legend.join(" | ")));
+    view->kindBox()->setCurrentIndex(1);  // heat map over length and radius
+    QCOMPARE(view->drawn().kind, StudyPlotKind::HeatMap);
+    texts = plotWords(*view->plot());
+    QCOMPARE(texts.axes.mid(0, 2), QStringList({QStringLiteral("Length L [m]"), QStringLiteral("Radius r [m]")}));
+    QVERIFY2(noPath(texts), qPrintable(texts.axes.join(" | ")));
+    test::keepScreenshot(window_->grab().toImage(), QStringLiteral("study_labels"));
+    // Cases in the grid's order (alphabetical paths, the last fastest): case 0001 is L = 10 m, r = 2 m.
+    QVERIFY(window_->openStudyCase(0));
+    QCOMPARE(window_->history().runs().back().label,
+             QStringLiteral("study case 0001 (Length L [m] = 10, Radius r [m] = 2)"));
+  }
+
+  // A study folder that the command line ran (each case run by the engine and written by the run folder's writer,
+  // as `maris-cli run --out` writes it): a clicked case opens its full results from its case folder, its plots and
+  // tables equal to the case's CSV files (exactly: 17 significant digits), and the log says that a case folder holds
+  // no 3D view; a failed case says it failed and why.
+  void aCaseOfAnOpenedStudyFolderOpensItsFullResults() {
+    QTemporaryDir dir;
+    const std::filesystem::path root = dir.path().toStdString();
+    const auto library = test::rodLibrary();
+    study::SceneSource source;
+    source.scene = [&library](const std::string& name) { return library->findScene(name); };
+    source.builtin = [](const std::string&) -> const Scenario* { return nullptr; };
+    source.builtin_ids = [] { return std::vector<std::string>(); };
+    const Json document = {{"format", study::kStudyFormat}, {"name", "lengths"},
+                           {"base", scenarioToJson(window_->document()->scenario())},
+                           {"grid", {{"geometry.length", {60, 90, 120}}}}};
+    const study::Study definition = study::studyFromJson(document, root, source);
+    const auto cases = study::expandStudy(definition);
+    const study::StudyFolder folder{root / "out"};
+    study::prepareStudyFolder(folder, definition, cases, root / "lengths.study.json", false);
+    for (int i : {0, 1}) {
+      RunContext context({}, nullptr);
+      const Results results = runScenario(*library->findScene(cases[i].scenario.scene), cases[i].scenario, context);
+      writeRunFolder(folder.caseRun(cases[i].id), cases[i].scenario, results, std::chrono::system_clock::now());
+    }
+    study::CaseOutcome failed;
+    failed.id = "0003";
+    failed.status = study::CaseStatus::Failed;
+    failed.exit_code = 3;
+    failed.message = "node 3 displacement became non-finite";
+    study::writeCaseOutcome(folder, failed);
+    QVERIFY2(panel()->openStudyFolder(QString::fromStdString(folder.root.string())), qPrintable(panel()->lastError()));
+
+    QVERIFY(window_->openStudyCase(1));  // L = 90 m
+    const RunRecord& shown = window_->history().runs().back();
+    QVERIFY2(shown.label.startsWith(QStringLiteral("study case 0002 (Length L [m] = 90)")), qPrintable(shown.label));
+    QVERIFY(!shown.results->plots.empty());
+    QCOMPARE(window_->plots()->count(), static_cast<int>(shown.results->plots.size()));
+    const PlotSpec& spec = shown.results->plots.front();
+    // The case's CSV of the first plot's table, read here on its own: names, units, then the data.
+    std::ifstream csv(folder.caseRun("0002") / (spec.table + ".csv"));
+    std::string names, units, first;
+    std::getline(csv, names);
+    std::getline(csv, units);
+    std::getline(csv, first);
+    const QStringList header = QString::fromStdString(names).split(QLatin1Char(','));
+    const QStringList values = QString::fromStdString(first).split(QLatin1Char(','));
+    const Table* table = shown.results->findTable(spec.table);
+    QVERIFY(table);
+    QCOMPARE(static_cast<int>(table->columns.size()), header.size());
+    const int y = static_cast<int>(header.indexOf(QString::fromStdString(spec.y.front())));
+    QVERIFY(y >= 0);
+    PlotView* plot = nullptr;
+    for (int v = 0; v < window_->plots()->count(); ++v)
+      if (window_->plots()->view(v)->spec().name == spec.name) plot = window_->plots()->view(v);
+    QVERIFY(plot);
+    QVERIFY(plot->plot()->graphCount() > 0);
+    QCOMPARE(plot->plot()->graph(0)->data()->at(0)->value, values[y].toDouble());
+    QCOMPARE(table->columns[y].values.front(), values[y].toDouble());
+    QCOMPARE(window_->sceneView()->frameCount(), 0);  // no 3D view in a case folder, and the log says so
+    QVERIFY2(window_->runPanel()->logView()->toPlainText().contains(QStringLiteral("3D view")),
+             qPrintable(window_->runPanel()->logView()->toPlainText()));
+    test::keepScreenshot(window_->grab().toImage(), QStringLiteral("study_folder_case"));
+
+    QVERIFY(!window_->openStudyCase(2));  // failed: nothing to show, and why
+    QVERIFY2(window_->runPanel()->logView()->toPlainText().contains(
+                 QStringLiteral("study case 0003 (Length L [m] = 120) failed: node 3 displacement became non-finite")),
+             qPrintable(window_->runPanel()->logView()->toPlainText()));
   }
 
   // The dialog: no column, no sum; a column needs at least one result (checked or typed).

@@ -105,12 +105,10 @@ QString fieldNameAt(const std::string& path, const Schema& schema) {
   if (!m.hasMatch()) return owner + fieldLabel(*spec);
   const int row = m.captured(2).toInt() + 1;
   if (spec->kind == ParamKind::Table) {
-    const QString table = owner + (owner.isEmpty() ? groupTitle(spec->key()) : fieldLabel(*spec)) +
-                          QStringLiteral(" row %1").arg(row);
     const std::string column = m.captured(3).toStdString();
-    if (column.empty()) return table;
+    if (column.empty()) return owner + fieldLabel(*spec) + QStringLiteral(" row %1").arg(row);
     for (const ParamSpec& c : spec->columns)
-      if (c.path == column) return table + QStringLiteral(" ▸ ") + fieldLabel(c);
+      if (c.path == column) return owner + QString::fromStdString(tableCellLabel(*spec, c, static_cast<std::size_t>(row - 1)));
     return {};
   }
   if (!m.captured(3).isEmpty()) return {};
@@ -139,11 +137,7 @@ QString withFieldNames(const std::string& text, const Schema& schema) {
   return out + in.mid(done);
 }
 
-QString fieldLabel(const ParamSpec& spec) {
-  QString key = QString::fromStdString(spec.key());
-  key.replace('_', ' ');
-  return key;
-}
+QString fieldLabel(const ParamSpec& spec) { return QString::fromStdString(parameterLabel(spec)); }
 
 QString displayValue(const Json& value) {
   if (value.is_string()) return QString::fromStdString(value.get<std::string>());

@@ -64,15 +64,16 @@ class ScenarioDocument : public QObject {
   std::vector<FieldError> warnings_;
 };
 
-// A field's label for people: "segment count" from "discretisation.segment_count".
+// A field's label for people, as everything in the GUI names it: the scene's declared label ("Length L"), else its
+// key made readable ("Segment count"); parameterLabel as Qt text.
 QString fieldLabel(const ParamSpec& spec);
 // A parameter group's title as the editor shows it: "Free surface" from "free_surface".
 QString groupTitle(const std::string& group);
-// `text` (a message, a warning) with every parameter path of `schema` in it named as the editor shows the field:
-// "parameters.speed.froude_min" → "Speed ▸ froude min", "sections[1].outer_diameter" → "Sections row 2 ▸ outer
-// diameter", "free_surface.submergence_ratios[0]" → "Free surface ▸ submergence ratios, value 1". The engine's
-// messages name fields by their paths, which is what a scenario file's author needs; people in the GUI find
-// fields by their group and label. Words that are not parameter paths stay as they are.
+// `text` (a message, a warning) with every parameter path of `schema` in it named as the editor shows the field,
+// group ▸ label: "parameters.speed.froude_min" → "Speed ▸ First Froude number", "sections[1].outer_diameter" →
+// "Outer diameter D_out of section row 2" (tableCellLabel), a list's element "…, value 1". The engine's messages name fields by their
+// paths, which is what a scenario file's author needs; people in the GUI find fields by their group and label.
+// Words that are not parameter paths stay as they are.
 QString withFieldNames(const std::string& text, const Schema& schema);
 // A value shown in words: numbers in shortest round-trip form, strings unquoted.
 QString displayValue(const Json& value);

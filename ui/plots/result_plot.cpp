@@ -10,6 +10,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QImage>
 #include <QSvgGenerator>
 #include <qcustomplot.h>
 
@@ -456,6 +457,40 @@ int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec) {
   return points;
 }
 
+PlotWords plotWords(QCustomPlot& plot) {
+  PlotWords texts;
+  QList<QCPLegend*> legends;
+  const auto axisLabels = [&](QCPAxisRect* rect) {
+    QList<QCPAxis*> axes = rect->axes(QCPAxis::atBottom) + rect->axes(QCPAxis::atLeft);
+    for (QCPAxis* axis : rect->axes(QCPAxis::atRight) + rect->axes(QCPAxis::atTop))
+      if (axis->visible()) axes << axis;
+    for (QCPAxis* axis : axes)
+      if (!axis->label().isEmpty()) texts.axes << axis->label();
+    for (int i = 0; i < rect->insetLayout()->elementCount(); ++i)
+      if (auto* legend = qobject_cast<QCPLegend*>(rect->insetLayout()->elementAt(i))) legends << legend;
+  };
+  for (QCPLayoutElement* element : plot.plotLayout()->elements(true)) {
+    if (auto* title = qobject_cast<QCPTextElement*>(element)) {
+      if (!texts.title.isEmpty()) texts.title += QLatin1Char(' ');
+      texts.title += title->text();
+    } else if (auto* scale = qobject_cast<QCPColorScale*>(element)) {
+      if (!scale->axis()->label().isEmpty()) texts.axes << scale->axis()->label();
+    } else if (auto* rect = qobject_cast<QCPAxisRect*>(element)) {
+      axisLabels(rect);
+    } else if (auto* legend = qobject_cast<QCPLegend*>(element)) {
+      legends << legend;
+    }
+  }
+  for (QCPLegend* legend : legends) {
+    if (!legend->visible()) continue;
+    for (int i = 0; i < legend->itemCount(); ++i)
+      if (auto* item = qobject_cast<QCPPlottableLegendItem*>(legend->item(i)))
+        texts.legend << fullGraphName(*item->plottable());
+  }
+  texts.legend.removeDuplicates();
+  return texts;
+}
+
 bool savePlotWidget(QCustomPlot& plot, const QString& file, int width_px, int height_px) {
   const QFileInfo info(file);
   const QString suffix = info.suffix().toLower();
@@ -463,7 +498,16 @@ bool savePlotWidget(QCustomPlot& plot, const QString& file, int width_px, int he
   const QString partial = info.dir().filePath(QStringLiteral(".%1.partial.%2").arg(info.completeBaseName(), suffix));
   bool ok = false;
   if (suffix == QLatin1String("png")) {
-    ok = plot.savePng(partial, width_px, height_px);
+    // As QCustomPlot::savePng draws it (96 dpi), with the plot's words as text chunks.
+    QImage image = plot.toPixmap(width_px, height_px).toImage();
+    image.setDotsPerMeterX(static_cast<int>(96 / 0.0254));
+    image.setDotsPerMeterY(static_cast<int>(96 / 0.0254));
+    const PlotWords texts = plotWords(plot);
+    image.setText(QStringLiteral("Software"), QStringLiteral("Maris"));
+    if (!texts.title.isEmpty()) image.setText(QStringLiteral("Title"), texts.title);
+    if (!texts.axes.isEmpty()) image.setText(QStringLiteral("Axes"), texts.axes.join(QLatin1Char('\n')));
+    if (!texts.legend.isEmpty()) image.setText(QStringLiteral("Legend"), texts.legend.join(QLatin1Char('\n')));
+    ok = image.save(partial, "PNG");
   } else if (suffix == QLatin1String("pdf")) {
     ok = plot.savePdf(partial, width_px, height_px);
   } else if (suffix == QLatin1String("svg")) {

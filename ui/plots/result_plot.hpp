@@ -8,6 +8,7 @@
 
 #include <QSizeF>
 #include <QString>
+#include <QStringList>
 
 #include "core/results.hpp"
 
@@ -74,8 +75,19 @@ bool plotCarriesData(const Results& results, const PlotSpec& spec);
 // Number of data points of the graphs drawn from the first source's y columns.
 int primaryPointCount(const QCustomPlot& plot, const PlotSpec& spec);
 
+// What a drawn plot says in words: its title, its axes' labels (bottom, left, then any others and a colour scale's)
+// and its legend's entries (in full), each without the others.
+struct PlotWords {
+  QString title;
+  QStringList axes;
+  QStringList legend;
+};
+PlotWords plotWords(QCustomPlot& plot);
+
 // Writes a drawn plot to a PNG/PDF/SVG file chosen by the suffix, atomically (temporary file in the
-// same folder, then rename). False if the suffix is unknown or writing failed.
+// same folder, then rename). A PNG carries plotWords as text chunks ("Title", "Axes" and "Legend", one entry
+// a line), so a picture can be searched and checked by what it says. False if the suffix is unknown or writing
+// failed.
 bool savePlotWidget(QCustomPlot& plot, const QString& file, int width_px, int height_px);
 
 // Renders one plot off-screen to a PNG/PDF/SVG file chosen by the file suffix.

@@ -16,24 +16,6 @@ namespace maris::ui {
 
 namespace {
 
-std::string readable(std::string name) {
-  std::replace(name.begin(), name.end(), '_', ' ');
-  return name;
-}
-
-// The last part of a path made readable: "length" from "geometry.length". A table cell, "TABLE[ROW].COLUMN",
-// keeps its table and row: "speed of profile[1]" from "current.profile[1].speed".
-std::string shortName(const std::string& path) {
-  const auto open = path.find('[');
-  const auto close = open == std::string::npos ? std::string::npos : path.find("].", open);
-  if (close != std::string::npos) {
-    const auto dot = path.rfind('.', open);
-    const std::size_t start = dot == std::string::npos ? 0 : dot + 1;
-    return readable(path.substr(close + 2)) + " of " + readable(path.substr(start, close + 1 - start));
-  }
-  return readable(path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1));
-}
-
 std::vector<double> distinctValues(const std::vector<double>& values) {
   std::vector<double> out = values;
   std::sort(out.begin(), out.end());
@@ -51,8 +33,8 @@ std::vector<double> shownValues(std::vector<double> values, const std::string& u
 
 // The result's axis label: its label for people (or its name made readable) and its display unit.
 QString resultAxisLabel(const StudyPlotData& data) {
-  if (data.result_label.empty()) return studyAxisLabel(data.result_name, data.result_unit);
-  return axisLabel(data.result_label, displayUnit(data.result_unit).unit);
+  return studyAxisLabel(data.result_label.empty() ? readableName(data.result_name) : data.result_label,
+                        data.result_unit);
 }
 
 int indexOf(const std::vector<double>& sorted, double v) {
@@ -79,19 +61,12 @@ int distinguishingDigits(const std::vector<double>& values) {
   return 17;
 }
 
-// "length = 120 m, method = 2" for the parameters other than `x` of case `c` (4 significant digits, more only
-// where the study's values of a parameter need them to read apart).
-QString groupLabel(const StudyPlotData& data, int x, std::size_t c) {
+// "Length L [m] = 120, Method = 2" for the parameters other than `x` of case `c`, each with its `digits`
+// (studyValueDigits).
+QString groupLabel(const StudyPlotData& data, int x, std::size_t c, const std::vector<int>& digits) {
   QStringList parts;
-  for (int p = 0; p < static_cast<int>(data.parameters.size()); ++p) {
-    if (p == x) continue;
-    const auto& param = data.parameters[p];
-    const DisplayUnit shown = displayUnit(param.unit);
-    const int digits = distinguishingDigits(shownValues(param.values, param.unit));
-    QString value = studyNumber(param.values[c] * shown.factor, digits);
-    if (!shown.unit.empty() && shown.unit != "-") value += QStringLiteral(" ") + QString::fromStdString(shown.unit);
-    parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(shortName(param.name)), value);
-  }
+  for (int p = 0; p < static_cast<int>(data.parameters.size()); ++p)
+    if (p != x) parts << studyParameterValue(data.parameters[p], data.parameters[p].values[c], digits[p]);
   return parts.join(QStringLiteral(", "));
 }
 
@@ -140,7 +115,7 @@ bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPl
   QCPAxisRect* rect = freshAxisRect(plot);
   QCPAxis* x_axis = rect->axis(QCPAxis::atBottom);
   QCPAxis* y_axis = rect->axis(QCPAxis::atLeft);
-  x_axis->setLabel(studyAxisLabel(px.name, px.unit));
+  x_axis->setLabel(studyAxisLabel(px));
   y_axis->setLabel(resultAxisLabel(data));
   // A sample (table, Latin hypercube) shares no combination between cases: its points stand alone.
   const bool scatter = std::all_of(groups.begin(), groups.end(), [](const auto& g) { return g.second.size() == 1; });
@@ -149,6 +124,8 @@ bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPl
     for (const auto& [key, cases] : groups) all.push_back(cases.front());
     groups = {{{}, all}};
   }
+  std::vector<int> digits;
+  for (const auto& p : data.parameters) digits.push_back(studyValueDigits(p));
   int series = 0;
   for (auto& [key, cases] : groups) {
     std::stable_sort(cases.begin(), cases.end(), [&](int a, int b) { return px.values[a] < px.values[b]; });
@@ -160,7 +137,7 @@ bool fillLines(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudyPl
     QCPGraph* g = plot.addGraph(x_axis, y_axis);
     const QColor color = seriesColor(series, plot.palette());
     g->setName(scatter || groups.size() == 1 ? resultAxisLabel(data)
-                                            : groupLabel(data, x, cases.front()));
+                                            : groupLabel(data, x, cases.front(), digits));
     g->setPen(QPen(color, 1.6));
     g->setLineStyle(scatter ? QCPGraph::lsNone : QCPGraph::lsLine);
     g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, color, color, 6));
@@ -208,8 +185,8 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
     }
   }
   if (drawn.points == 0) return false;
-  x_axis->setLabel(studyAxisLabel(data.parameters[x].name, data.parameters[x].unit));
-  y_axis->setLabel(studyAxisLabel(data.parameters[y].name, data.parameters[y].unit));
+  x_axis->setLabel(studyAxisLabel(data.parameters[x]));
+  y_axis->setLabel(studyAxisLabel(data.parameters[y]));
   auto* scale = new QCPColorScale(&plot);
   plot.plotLayout()->addElement(0, 1, scale);
   scale->setType(QCPAxis::atRight);
@@ -246,8 +223,26 @@ bool fillHeatMap(QCustomPlot& plot, const StudyPlotData& data, int x, DrawnStudy
 
 }  // namespace
 
-QString studyAxisLabel(const std::string& name, const std::string& unit) {
-  return axisLabel(shortName(name), displayUnit(unit).unit);
+QString studyAxisLabel(const std::string& label, const std::string& unit) {
+  return axisLabel(label, displayUnit(unit).unit);
+}
+
+QString studyAxisLabel(const StudyParameterData& parameter) {
+  return studyAxisLabel(parameter.label.empty() ? parameter.name : parameter.label, parameter.unit);
+}
+
+int studyValueDigits(const StudyParameterData& parameter) {
+  return distinguishingDigits(shownValues(parameter.values, parameter.unit));
+}
+
+QString studyParameterValue(const StudyParameterData& parameter, double value, int digits) {
+  return QStringLiteral("%1 = %2").arg(studyAxisLabel(parameter),
+                                       studyNumber(value * displayUnit(parameter.unit).factor, digits));
+}
+
+QString studyValueLabel(const StudyParameterData& parameter, std::size_t c) {
+  return studyParameterValue(parameter, c < parameter.values.size() ? parameter.values[c] : std::nan(""),
+                             studyValueDigits(parameter));
 }
 
 bool isFullGrid(const StudyPlotData& data, int a, int b) {

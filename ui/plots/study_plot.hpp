@@ -28,9 +28,17 @@ struct DrawnStudyPlot {
   int points = 0;                      // points (or filled cells) drawn
 };
 
-// The label of a parameter or result for people, in its display unit (plots/display_units.hpp): "length [m]" from
-// "geometry.length", "speed of profile[1] [m/s]" from the table cell "current.profile[1].speed".
-QString studyAxisLabel(const std::string& name, const std::string& unit);
+// A parameter's or result's label for people with its display unit (plots/display_units.hpp): "Length L [m]".
+QString studyAxisLabel(const std::string& label, const std::string& unit);
+// The same for a varied parameter: its label (the path where it has none) and unit.
+QString studyAxisLabel(const StudyParameterData& parameter);
+// "Length L [m] = 120": parameter `parameter` in case `c`, in its display unit, to 4 significant digits (more only
+// where two of its values would read the same; whole numbers below 1e6 in full): legends and run labels.
+QString studyValueLabel(const StudyParameterData& parameter, std::size_t c);
+// The significant digits studyValueLabel gives `parameter`'s values (it sorts them: worth keeping for many labels),
+// and the label of `value` (SI) of that parameter with them.
+int studyValueDigits(const StudyParameterData& parameter);
+QString studyParameterValue(const StudyParameterData& parameter, double value, int digits);
 
 // True when parameters `a` and `b` form a full grid (every pair of their distinct values occurs in
 // exactly one case) and no other parameter varies: what a heat map needs.

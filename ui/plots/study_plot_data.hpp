@@ -11,7 +11,8 @@ namespace maris::ui {
 
 // One varied parameter and its value in each case.
 struct StudyParameterData {
-  std::string name;  // the parameter path, "geometry.length"
+  std::string name;   // the parameter path, "geometry.length"
+  std::string label;  // for people, from the scene's schema ("Length L"); empty: the path is shown
   std::string unit;
   bool log = false;  // varied on a log scale: the x axis is logarithmic
   std::vector<double> values;

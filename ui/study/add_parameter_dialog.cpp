@@ -21,10 +21,10 @@ namespace {
 
 bool isNumberKind(ParamKind kind) { return kind == ParamKind::Real || kind == ParamKind::Integer; }
 
-// "length [m]": a field's or column's label for people with its SI unit.
+// "Length L [m]": a field's or column's label for people (the schema's) with its SI unit.
 QString labelWithUnit(const ParamSpec& spec) {
   const QString unit = spec.unit.empty() || spec.unit == "-" ? QString() : QStringLiteral(" [%1]").arg(QString::fromStdString(spec.unit));
-  return fieldLabel(spec) + unit;
+  return QString::fromStdString(parameterLabel(spec)) + unit;
 }
 
 std::size_t rowCount(const Json& parameters, const std::string& table) {
@@ -145,9 +145,9 @@ void AddParameterDialog::check() {
   } else {
     const Json* value = study::findParameterValue(parameters_, chosen);
     const auto spec = study::findStudyParameter(*scene_, parameters_, chosen);
-    const std::string unit = spec && spec->unit != "-" ? spec->unit : std::string();
     summary_->setText(tr("%1 (%2), now %3")
-                          .arg(studyAxisLabel(chosen, unit), QString::fromStdString(chosen),
+                          .arg(spec ? studyAxisLabel(parameterLabel(*spec), spec->unit) : QString::fromStdString(chosen),
+                               QString::fromStdString(chosen),
                                value ? displayValue(*value) : tr("not set")));
   }
   add_->setEnabled(!chosen.empty());

@@ -50,7 +50,7 @@ LatinHypercubeDialog::LatinHypercubeDialog(const SceneDefinition& scene, const S
     const Json* value = findAtPath(scenario.parameters, spec.path);
     const SweepRange proposed = proposedSampleRange(spec, value ? *value : Json());
     const QString unit = spec.unit.empty() || spec.unit == "-" ? QString() : QStringLiteral(" [%1]").arg(QString::fromStdString(spec.unit));
-    auto* name = new QTableWidgetItem(fieldLabel(spec) + unit);
+    auto* name = new QTableWidgetItem(QString::fromStdString(parameterLabel(spec)) + unit);
     name->setFlags((name->flags() | Qt::ItemIsUserCheckable) & ~Qt::ItemIsEditable);
     name->setCheckState(Qt::Unchecked);
     name->setToolTip(QString::fromStdString(spec.path + (spec.description.empty() ? "" : ": " + spec.description)));
@@ -121,7 +121,7 @@ QString LatinHypercubeDialog::problem() const {
     SweepRange r{specs_[row].path, cellNumber(table_, row, kRangeFrom), cellNumber(table_, row, kRangeTo), 2, false};
     QString why = sweepProblem(specs_[row], r);
     if (why.isEmpty() && !(r.from < r.to)) why = tr("from: must be below to");
-    if (!why.isEmpty()) return QStringLiteral("%1: %2").arg(fieldLabel(specs_[row]), why);
+    if (!why.isEmpty()) return QStringLiteral("%1: %2").arg(QString::fromStdString(parameterLabel(specs_[row])), why);
   }
   return {};
 }

@@ -25,6 +25,7 @@
 #include <QVBoxLayout>
 
 #include "core/errors.hpp"
+#include "core/run_reader.hpp"
 #include "counted.hpp"
 #include "document/scenario_document.hpp"
 #include "scene_library.hpp"
@@ -34,6 +35,7 @@
 #include "study/study_runner.hpp"
 #include "study/add_parameter_dialog.hpp"
 #include "study/study.hpp"
+#include "study/study_folder.hpp"
 #include "study/study_cell_text.hpp"
 
 namespace maris::ui {
@@ -437,15 +439,44 @@ void StudyPanel::onCaseFailed(int index, const QString& message) {
   emit logged(1, tr("case %1 (%2) failed: %3").arg(session_.caseId(index), session_.caseLabel(index), message));
 }
 
-std::optional<RunRecord> StudyPanel::caseRecord(int index, quint64 id) const {
-  if (index < 0 || index >= session_.caseCount() || !session_.outcome(index).results) return std::nullopt;
+std::optional<RunRecord> StudyPanel::caseRecord(int index, quint64 id, QString* note) const {
+  if (note) note->clear();
+  if (index < 0 || index >= session_.caseCount()) return std::nullopt;
+  const StudySession::CaseOutcome& outcome = session_.outcome(index);
+  const QString name = tr("study case %1 (%2)").arg(session_.caseId(index), session_.caseLabel(index));
+  if (!outcome.results) {
+    if (note)
+      *note = outcome.status == StudySession::Status::Failed      ? tr("%1 failed: %2").arg(name, outcome.error)
+              : outcome.status == StudySession::Status::Cancelled ? tr("%1 was cancelled: it has no results.").arg(name)
+                                                                  : tr("%1 has not run: it has no results yet.").arg(name);
+    return std::nullopt;
+  }
   RunRecord record;
   record.id = id;
   record.scenario = session_.caseScenario(index);
-  record.results = session_.outcome(index).results;
-  record.wall_time_s = session_.outcome(index).wall_time_s;
+  record.results = outcome.results;
+  record.wall_time_s = outcome.wall_time_s;
   record.started_at = std::chrono::system_clock::now();
-  record.label = tr("study case %1 (%2)").arg(session_.caseId(index), session_.caseLabel(index));
+  record.label = name;
+  if (!session_.folder().isEmpty()) {
+    // A study opened from its folder keeps only the cases' scalars in memory: the rest of a case is in its run
+    // folder, read when the case is opened.
+    const std::filesystem::path dir =
+        study::StudyFolder{session_.folder().toStdString()}.caseRun(session_.caseId(index).toStdString());
+    try {
+      RunFolderContents contents = readRunFolder(dir);
+      record.results = std::make_shared<const Results>(std::move(contents.results));
+      if (note && !contents.missing.empty()) {
+        QStringList missing;
+        for (const auto& m : contents.missing) missing << QString::fromStdString(m);
+        *note = tr("%1, read from %2; not in the folder: %3")
+                    .arg(name, QString::fromStdString(dir.string()), missing.join(QStringLiteral("; ")));
+      }
+    } catch (const std::exception& e) {
+      if (note)
+        *note = tr("%1: only its scalars are shown; its run folder cannot be read: %2").arg(name, QString::fromUtf8(e.what()));
+    }
+  }
   return record;
 }
 
@@ -730,7 +761,7 @@ void StudyPanel::rebuildTable() {
   {
     QStringList varied;
     if (grid_.empty())
-      for (const std::string& path : session_.parameterPaths()) varied << QString::fromStdString(path).toHtmlEscaped();
+      for (const std::string& label : session_.parameterLabels()) varied << QString::fromStdString(label).toHtmlEscaped();
     base_->setText(tr("Base: <b>%1</b> (a %2 study%3)")
                        .arg(QString::fromStdString(session_.base().name).toHtmlEscaped(), session_.kindName(),
                             varied.isEmpty() ? QString() : tr(" of %1").arg(varied.join(QStringLiteral(", ")))));
@@ -745,11 +776,9 @@ void StudyPanel::rebuildTable() {
     QString problem;
     const auto spec = parameterSpec(r.path, &problem);
     if (spec) problem = sweepProblem(*spec, r);
-    // A field by its path, a table cell by its column, table and row ("speed of profile[1]"): the path in the
-    // tooltip either way.
-    const bool cell = study::tableCell(r.path).has_value();
-    const QString unit = spec && !spec->unit.empty() && spec->unit != "-" ? QStringLiteral(" [%1]").arg(QString::fromStdString(spec->unit)) : QString();
-    auto* name = new QTableWidgetItem((cell ? studyAxisLabel(r.path, "") : QString::fromStdString(r.path)) + unit);
+    // A field by its label, a table cell by its column's, the table and the row ("Speed of current profile row 2"),
+    // with the unit; the path in the tooltip either way (and in place of the label where the scene has none).
+    auto* name = new QTableWidgetItem(spec ? studyAxisLabel(parameterLabel(*spec), spec->unit) : QString::fromStdString(r.path));
     name->setFlags(name->flags() & ~Qt::ItemIsEditable);
     table_->setItem(row, kParameter, name);
     table_->setItem(row, kFrom, new QTableWidgetItem(cellText(r.from)));

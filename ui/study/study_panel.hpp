@@ -62,7 +62,8 @@ class StudyPanel : public QWidget {
   bool openStudy(const QString& file);
   // "Open study folder…": a study that `maris-cli study run` (or a Slurm array) ran, as it stands — its plot,
   // study.csv and weighted sums from the complete cases' summary.json. Nothing runs (Run study is disabled: the
-  // CLI's `study run --resume` finishes it); a clicked point opens the case's scalars. False, with the reason
+  // CLI's `study run --resume` finishes it); a clicked point opens the case's results from its case folder (tables
+  // and plots; caseRecord). False, with the reason
   // logged, when DIR holds no study.
   bool openStudyFolder(const QString& dir);
   // "New Latin hypercube study…": a sample over the open scenario (the engine draws the cases); false, with
@@ -87,9 +88,11 @@ class StudyPanel : public QWidget {
   QLabel* weightedSumHeading() const { return weighted_heading_; }
   QTableWidget* weightedSumTable() const { return weighted_table_; }
 
-  // A finished case as a run record for the results view ("study case 0003 (length = 120 m)").
-  // Its id is `id`; nullopt if the case has no results.
-  std::optional<RunRecord> caseRecord(int index, quint64 id) const;
+  // A finished case as a run record for the results view ("study case 0003 (Length L [m] = 120)"). Its id is `id`.
+  // A case of a study opened from its folder brings its full results from its case folder (tables, plots,
+  // warnings; no 3D view is stored there). Nullopt if the case has no results. `note` (if given) receives in words
+  // why there is nothing (failed, with its message; cancelled; not run) or what the case folder could not give.
+  std::optional<RunRecord> caseRecord(int index, quint64 id, QString* note = nullptr) const;
 
   const StudySession& session() const { return session_; }
   StudyRunner* runner() const { return runner_; }

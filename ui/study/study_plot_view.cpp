@@ -74,7 +74,7 @@ void StudyPlotView::refresh() {
     }
     const StudyPlotData sample = session_->plotData({});
     for (const auto& p : sample.parameters)
-      against_->addItem(studyAxisLabel(p.name, p.unit), QString::fromStdString(p.name));
+      against_->addItem(studyAxisLabel(p), QString::fromStdString(p.name));
   }
   if (const int r = result_->findData(result); r >= 0) result_->setCurrentIndex(r);
   if (const int a = against_->findData(against); a >= 0) against_->setCurrentIndex(a);
@@ -118,7 +118,7 @@ void StudyPlotView::onMouseMove(const QPointF& pixel) {
   }
   const DisplayUnit shown = displayUnit(data_.result_unit);
   const QString unit = shown.unit.empty() || shown.unit == "-" ? QString() : QStringLiteral(" ") + QString::fromStdString(shown.unit);
-  const std::string& label = data_.result_label.empty() ? data_.result_name : data_.result_label;
+  const std::string label = data_.result_label.empty() ? readableName(data_.result_name) : data_.result_label;
   readout_->setText(tr("case %1 (%2): %3 = %4%5 — click to open")
                         .arg(session_->caseId(c), session_->caseLabel(c), QString::fromStdString(label))
                         .arg(data_.result[c] * shown.factor, 0, 'g', 8)

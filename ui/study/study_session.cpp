@@ -22,18 +22,31 @@ QString StudySession::caseLabel(int index) const {
   QStringList parts;
   const auto& c = impl_->cases.at(index);
   const auto& parameters = impl_->study.parameters;
+  // Each value with the digits the plot's legend gives it: enough to tell this study's values apart.
+  const auto valuesOf = [&](std::size_t p) {
+    std::vector<double> values;
+    values.reserve(impl_->cases.size());
+    for (const auto& other : impl_->cases)
+      values.push_back(p < other.values.size() && other.values[p].is_number() ? other.values[p].get<double>()
+                                                                             : std::nan(""));
+    return values;
+  };
+  if (impl_->value_digits.size() != parameters.size()) {
+    impl_->value_digits.clear();
+    for (std::size_t p = 0; p < parameters.size(); ++p)
+      impl_->value_digits.push_back(
+          studyValueDigits(StudyParameterData{parameters[p].path, parameters[p].label, parameters[p].unit, false, valuesOf(p)}));
+  }
   for (std::size_t p = 0; p < parameters.size() && p < c.values.size(); ++p) {
     const auto& param = parameters[p];
-    // The last part of the path; for a table's cell the cell with its table ("profile[1].speed").
-    const auto cut = param.path.rfind('.', param.path.find('['));
-    std::string name = param.path.substr(cut == std::string::npos ? 0 : cut + 1);
-    std::replace(name.begin(), name.end(), '_', ' ');
-    QString value = c.values[p].is_number() ? QString::number(c.values[p].get<double>(), 'g', 6)
-                    : c.values[p].is_string() ? QString::fromStdString(c.values[p].get<std::string>())
-                                              : QString::fromStdString(c.values[p].dump());
-    if (c.values[p].is_number() && !param.unit.empty() && param.unit != "-")
-      value += QStringLiteral(" ") + QString::fromStdString(param.unit);
-    parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(name), value);
+    const StudyParameterData shown{param.path, param.label, param.unit, false, {}};
+    if (c.values[p].is_number()) {
+      parts << studyParameterValue(shown, c.values[p].get<double>(), impl_->value_digits[p]);
+    } else {
+      const QString value = c.values[p].is_string() ? QString::fromStdString(c.values[p].get<std::string>())
+                                                    : QString::fromStdString(c.values[p].dump());
+      parts << QStringLiteral("%1 = %2").arg(studyAxisLabel(shown), value);
+    }
   }
   return parts.join(QStringLiteral(", "));
 }
@@ -86,6 +99,7 @@ StudyPlotData StudySession::plotData(const std::string& result) const {
     if (parameters[p].kind != ParamKind::Real && parameters[p].kind != ParamKind::Integer) continue;  // not on an axis
     StudyParameterData param;
     param.name = parameters[p].path;
+    param.label = parameters[p].label;
     param.unit = parameters[p].unit;
     param.log = p < impl_->log.size() && impl_->log[p];
     for (const auto& c : impl_->cases)

@@ -64,6 +64,8 @@ class StudySession {
   const std::vector<SweepRange>& grid() const { return grid_; }
   // The varied parameters' paths, whatever the design.
   std::vector<std::string> parameterPaths() const;
+  // Their labels for people ("Length L"; the path where the scene has none), in the same order.
+  std::vector<std::string> parameterLabels() const;
   // "grid", "table" or "latin hypercube".
   QString kindName() const;
   bool isTable() const;

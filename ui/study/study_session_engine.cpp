@@ -140,6 +140,7 @@ void StudySession::setWeightedSum(const std::string& column, const std::vector<s
   const bool same_cases = impl->study.rows == impl_->study.rows && impl->study.parameters.size() == impl_->study.parameters.size();
   if (!same_cases) {
     impl->cases.clear();
+    impl->value_digits.clear();
     outcomes_.clear();
   }
   impl_ = std::move(impl);
@@ -207,6 +208,13 @@ std::vector<std::string> StudySession::parameterPaths() const {
   return paths;
 }
 
+std::vector<std::string> StudySession::parameterLabels() const {
+  std::vector<std::string> labels;
+  if (impl_)
+    for (const auto& p : impl_->study.parameters) labels.push_back(study::displayLabel(p));
+  return labels;
+}
+
 void StudySession::load(const QString& file, const SceneLibrary& library) {
   auto impl = std::make_shared<Impl>();
   impl->study = study::loadStudyFile(file.toStdString(), librarySource(library));
@@ -244,6 +252,8 @@ void StudySession::loadFolder(const QString& dir, const SceneLibrary& library) {
            : design == "latin_hypercube" ? study::DesignKind::LatinHypercube
                                          : study::DesignKind::Grid;
   s.parameters = manifest.parameters;
+  for (auto& p : s.parameters)  // a folder whose study.json records no labels: the scene's schema has them
+    if (p.label.empty()) p.label = study::studyParameterLabel(scene->schema, p.path);
   s.results = manifest.results;
   s.weight_column = manifest.weight_column;
   s.weights = manifest.weights;
@@ -322,6 +332,7 @@ QString StudySession::kindName() const {
 void StudySession::expand() {
   if (!impl_ || !scene_) throw std::runtime_error("no study is defined");
   impl_->cases.clear();
+  impl_->value_digits.clear();
   outcomes_.clear();
   std::vector<study::StudyCase> cases = study::expandStudy(impl_->study);
   const std::vector<FieldError> errors = study::caseErrors(impl_->study, cases, false);

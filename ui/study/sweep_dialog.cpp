@@ -77,10 +77,10 @@ SweepDialog::SweepDialog(const ParamSpec& spec, const SweepRange& proposed, QWid
     : QDialog(parent), spec_(spec), from_(new QLineEdit(cellText(proposed.from), this)),
       to_(new QLineEdit(cellText(proposed.to), this)), count_(new QSpinBox(this)), spacing_(new QComboBox(this)),
       problem_(new QLabel(this)) {
-  setWindowTitle(tr("Sweep %1").arg(fieldLabel(spec)));
+  setWindowTitle(tr("Sweep %1").arg(QString::fromStdString(parameterLabel(spec))));
   const QString unit = spec.unit == "-" ? QString() : QString::fromStdString(spec.unit);
   auto* intro = new QLabel(tr("<b>%1</b> (%2)%3<br>allowed: %4 %5")
-                               .arg(fieldLabel(spec), QString::fromStdString(spec.path),
+                               .arg(QString::fromStdString(parameterLabel(spec)), QString::fromStdString(spec.path),
                                     spec.description.empty() ? QString() : QStringLiteral(": ") + QString::fromStdString(spec.description).toHtmlEscaped(),
                                     QString::fromStdString(spec.range.str()), unit), this);
   intro->setWordWrap(true);

@@ -137,6 +137,7 @@ SceneView::SceneView(QWidget* parent)
   slider_->setEnabled(false);
   time_->setMinimumWidth(time_->fontMetrics().horizontalAdvance(QStringLiteral("t = -0000.000 s (000/000)")));
   empty_->setAlignment(Qt::AlignCenter);
+  empty_->setWordWrap(true);  // a longer reason (a study case read from its folder) wraps in a narrow pane
 
   magnify_->addItem(tr("Displacement × 1"), 1.0);
   magnify_->addItem(tr("Displacement × 10"), 10.0);
@@ -219,8 +220,9 @@ double SceneView::frameTime(int index) const {
   return index >= 0 && index < frameCount() ? results_->view.frames[index].time : 0.0;
 }
 
-void SceneView::clear() {
+void SceneView::clear(const QString& why) {
   setPlaying(false);
+  empty_->setText(why.isEmpty() ? tr("No 3D view yet: run the scenario.") : why);
   results_.reset();
   vtkRenderer* renderer = gl_->renderer();
   for (auto& a : frame_actors_) renderer->RemoveActor(a);

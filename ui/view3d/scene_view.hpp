@@ -48,7 +48,8 @@ class SceneView : public QWidget {
   // A run's results, finished or partial (a live run's): the frame shown stays; the camera is placed
   // anew when the model's bounds differ from those it was framed for (framesAnew).
   void showResults(std::shared_ptr<const Results> results);
-  void clear();
+  // Shows no 3D view, saying `why` (empty: that none was run yet).
+  void clear(const QString& why = {});
 
   int frameCount() const;
   int currentFrame() const { return frame_; }

@@ -1,5 +1,6 @@
 // Properties every registered scene and built-in scenario must have, whatever the scene:
-// a complete schema (unit, description, default inside its range) and valid examples.
+// a complete schema (unit, description, default inside its range, a short label where one is declared) and valid
+// examples.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -21,6 +22,14 @@ void expectSpecComplete(const ParamSpec& f, const std::string& scene) {
   if (f.kind == ParamKind::Choice) {
     EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), f.default_value.get<std::string>()), f.choices.end());
   }
+  // A declared label names the field in plots and legends: short, and no path or unit of its own (the unit is
+  // added beside it).
+  if (!f.label.empty()) {
+    EXPECT_LE(f.label.size(), 40u) << f.label;
+    EXPECT_EQ(f.label.find('.'), std::string::npos) << f.label;
+    EXPECT_EQ(f.label.find('['), std::string::npos) << f.label;
+  }
+  EXPECT_FALSE(parameterLabel(f).empty());
   for (const auto& c : f.columns) expectSpecComplete(c, scene);
 }
 

@@ -20,7 +20,7 @@ CollectedCase collectedCase(const std::string& id, CaseStatus status, double val
 }  // namespace
 
 TEST(StudyCollect, OkCasesGiveTheirScalarsOthersEmptyCellsAndTheColumnsAreSorted) {
-  const std::vector<StudyParameter> parameters = {{"hull.length", "m", ParamKind::Real}};
+  const std::vector<StudyParameter> parameters = {{"hull.length", "m", ParamKind::Real, ""}};
   std::vector<CollectedCase> cases = {collectedCase("0001", CaseStatus::Ok, 2.0),
                                       collectedCase("0002", CaseStatus::Failed, 3.0),
                                       collectedCase("0003", CaseStatus::Missing, 0.1)};
@@ -49,14 +49,15 @@ TEST(StudyCollect, OkCasesGiveTheirScalarsOthersEmptyCellsAndTheColumnsAreSorted
 
 // The PNG file names of a study's plots: a table cell's brackets (and any other character outside
 // [A-Za-z0-9._-]) do not reach the file name, every name is unique even where two paths map to the same
-// characters or differ only in case, and the title keeps the parameter's path as written.
+// characters or differ only in case. The title names the parameter by its label, or where it has none (a folder
+// whose scene this program lacks) by its path as written.
 TEST(StudyCollect, PlotFileNamesArePortableAndUnique) {
   CollectedStudy collected;
-  collected.parameters = {{"current.profile[1].speed", "m/s", ParamKind::Real},
-                          {"current.profile_1.speed", "m/s", ParamKind::Real},  // the cell's stem, as a field
-                          {"Current.Profile_1.Speed", "m/s", ParamKind::Real},  // the same but for case
-                          {"hull length (m)", "m", ParamKind::Real},
-                          {"water.kind", "", ParamKind::Choice}};  // text: no plot
+  collected.parameters = {{"current.profile[1].speed", "m/s", ParamKind::Real, ""},
+                          {"current.profile_1.speed", "m/s", ParamKind::Real, ""},  // the cell's stem, as a field
+                          {"Current.Profile_1.Speed", "m/s", ParamKind::Real, ""},  // the same but for case
+                          {"hull length (m)", "m", ParamKind::Real, ""},
+                          {"water.kind", "", ParamKind::Choice, ""}};  // text: no plot
   collected.result_names = {"drag"};
   collected.result_units = {"N"};
   StudyManifest manifest;
@@ -67,7 +68,12 @@ TEST(StudyCollect, PlotFileNamesArePortableAndUnique) {
   EXPECT_EQ(plots[1].file_stem, "drag_vs_current.profile_1.speed-2");
   EXPECT_EQ(plots[2].file_stem, "drag_vs_Current.Profile_1.Speed-3");
   EXPECT_EQ(plots[3].file_stem, "drag_vs_hull_length__m_");
-  EXPECT_EQ(plots[0].title, "drag against current.profile[1].speed");
+  EXPECT_EQ(plots[0].title, "Drag against current.profile[1].speed");
+  collected.parameters[0].label = "Speed of current profile row 2";
+  collected.result_labels = {"Drag D"};
+  const auto labelled = studyPlots(collected, manifest);
+  EXPECT_EQ(labelled[0].title, "Drag D against Speed of current profile row 2");
+  EXPECT_EQ(labelled[0].file_stem, "drag_vs_current.profile_1.speed");  // file names keep the paths
   for (const auto& plot : plots)
     for (const char c : plot.file_stem)
       EXPECT_TRUE(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-') << plot.file_stem;

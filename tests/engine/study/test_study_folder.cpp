@@ -29,7 +29,7 @@ TEST(StudyFolder, ACaseIsCompleteOnlyWhenItsSummaryParsesAsAJsonObject) {
 
   // Collected: the torn cases are missing (run again by --resume), the complete one gives its scalar.
   StudyManifest manifest;
-  manifest.parameters = {{"geometry.length", "m", ParamKind::Real}};
+  manifest.parameters = {{"geometry.length", "m", ParamKind::Real, ""}};
   for (int i = 1; i <= 6; ++i) {
     manifest.ids.push_back("000" + std::to_string(i));
     manifest.values.push_back({Json(10.0 * i)});
@@ -53,7 +53,7 @@ TEST(StudyFolder, CollectedResultsCarryTheLabelsTheirSummariesDeclare) {
                 R"({"results": {"end_z": {"value": -1.5, "unit": "m", "label": "Bottom end z"},)"
                 R"( "steps": {"value": 10, "unit": "-"}}})" "\n");
   StudyManifest manifest;
-  manifest.parameters = {{"geometry.length", "m", ParamKind::Real}};
+  manifest.parameters = {{"geometry.length", "m", ParamKind::Real, ""}};
   manifest.ids = {"0001"};
   manifest.values = {{Json(10.0)}};
   const CollectedStudy collected = collectStudy(folder, manifest);
@@ -63,7 +63,7 @@ TEST(StudyFolder, CollectedResultsCarryTheLabelsTheirSummariesDeclare) {
   const auto plots = studyPlots(collected, manifest);
   ASSERT_EQ(plots.size(), 2u);
   EXPECT_EQ(plots[0].title, "Bottom end z against geometry.length");
-  EXPECT_EQ(plots[1].title, "steps against geometry.length");
+  EXPECT_EQ(plots[1].title, "Steps against geometry.length");  // no labels: the name made readable, the path
   EXPECT_EQ(plots[0].file_stem, "end_z_vs_geometry.length");  // file names keep the result's name
 }
 

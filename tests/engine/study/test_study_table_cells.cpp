@@ -87,4 +87,22 @@ TEST_F(StudyTableCells, BadCellPathsAreRefusedByName) {
             std::string::npos) << text("current.profile");
 }
 
+// A study names its parameters for people by the scene's schema: a field by its label, a cell by its column's
+// label, the table and the row counted from 1 (as the parameter editor numbers rows); the same from the schema
+// alone (what a study folder written without labels gets), and nothing for a path the schema lacks.
+TEST_F(StudyTableCells, ParametersCarryTheSchemasLabelsAndACellItsTableAndRow) {
+  const Study study =
+      read(studyOver(kBase, "grid", {{"parameters.current.profile[1].speed", {0.2, 0.4}},
+                                     {"waves.significant_height", {2.0, 3.0}}}));
+  ASSERT_EQ(study.parameters.size(), 2u);
+  EXPECT_EQ(study.parameters[0].label, "Speed of current profile row 2");
+  EXPECT_EQ(study.parameters[1].label, "Significant wave height H_s");
+  const Schema& schema = study.scene->schema;
+  EXPECT_EQ(studyParameterLabel(schema, "current.profile[1].speed"), "Speed of current profile row 2");
+  EXPECT_EQ(studyParameterLabel(schema, "parameters.waves.significant_height"), "Significant wave height H_s");
+  EXPECT_EQ(studyParameterLabel(schema, "geometry.length"), "Length L");
+  EXPECT_EQ(studyParameterLabel(schema, "no.such_field"), "");
+  EXPECT_EQ(displayLabel(StudyParameter{"no.such_field", "m", ParamKind::Real, ""}), "no.such_field");
+}
+
 }  // namespace maris::study::test
