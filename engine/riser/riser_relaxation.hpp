@@ -5,6 +5,8 @@
 // instead of Newton's linearisation. Statics then finishes by Newton from the shape the motion reaches.
 #pragma once
 
+#include <functional>
+
 #include <Eigen/Core>
 
 #include "core/run_context.hpp"
@@ -24,8 +26,25 @@ class DampedRelaxation {
 
   // Advances the joint state y (riser_dynamics layout of the joint model) by `duration` s of damped motion;
   // `progress` (may be empty) sees the fraction of `duration` done. Throws SolverError if the motion fails
-  // (naming time, step and quantity).
-  void advance(Eigen::VectorXd& y, double duration, RunContext& context, const RunContext::ProgressFn& progress = {});
+  // (naming time, step and quantity). Stops early, with exhausted() true and y at the last chunk's end, once the
+  // steps of all calls reach the limit (limitSteps).
+  // `watch` (may be empty) sees the state every eighth of a period inside the chunks (interpolated; not at their
+  // ends, where the caller sees y) and returns true to stop there: advance then returns with y at that state,
+  // time() at its time and stopped() true, and the relaxation cannot go on.
+  using Watch = std::function<bool(double t, const Eigen::VectorXd& y)>;
+  void advance(Eigen::VectorXd& y, double duration, RunContext& context, const RunContext::ProgressFn& progress = {},
+               const Watch& watch = {});
+  bool stopped() const { return stopped_; }
+
+  // At most `max_steps` accepted steps over all calls (a chunk cut into fresh charts may pass it by one piece's
+  // worth). Without a limit the steps are bounded by the core integrator's own max_steps only.
+  void limitSteps(long max_steps) { max_steps_ = max_steps; }
+  bool exhausted() const { return exhausted_; }
+  // [s] mean step of the chunk the limit stopped (0 before): far below the nominal step, the motion is stiff or
+  // discontinuous there (a load that jumps, such as buoyancy at the water line, makes the error control halve it).
+  double stalledStep() const { return stalled_step_; }
+  double stalledTime() const { return stalled_time_; }  // [s] where the limit stopped it (y stays at time())
+  double nominalStep() const { return step_; }
 
   const RiserModel& model() const { return m_; }  // the joint model with the damper
   double period() const { return period_; }       // [s] 2π√(L/g)
@@ -38,6 +57,9 @@ class DampedRelaxation {
   double period_ = 0.0, step_ = 0.0;
   ChartedGeneralizedAlpha integrator_;  // refers to m_
   double time_ = 0.0;
+  long max_steps_ = 0;  // 0: no limit of its own
+  bool exhausted_ = false, stopped_ = false;
+  double stalled_step_ = 0.0, stalled_time_ = 0.0;
 };
 
 }  // namespace maris::riser

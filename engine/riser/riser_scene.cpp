@@ -4,7 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "core/errors.hpp"
 #include "core/scene.hpp"
+#include "core/text_format.hpp"
 #include "riser/riser_envelope.hpp"
 #include "riser/riser_frequency_sweep.hpp"
 #include "riser/riser_integration.hpp"
@@ -19,8 +21,40 @@
 
 namespace maris::riser {
 
+namespace {
+
+// A riser that floats in statics (FloatingRiserError) is an input the model cannot take: the error is put on the
+// fields that make the floating stretch buoyant, the module rows over it, else the section rows, else the uniform
+// section.
+std::vector<FieldError> floatingRiserFields(const RiserParameters& p, const FloatingRiserError& e) {
+  const std::string remedy =
+      ". Keep the buoyant part below the surface: modules farther along the riser, or fewer, heavier or smaller ones; "
+      "or a deeper top (top.z)";
+  const auto over = [&](double start, double end) { return start <= e.last() && end >= e.first(); };
+  std::vector<FieldError> errors;
+  for (std::size_t k = 0; k < p.buoyancy_modules.size(); ++k)
+    if (const auto& row = p.buoyancy_modules[k]; over(row.start, row.end))
+      errors.push_back(
+          {"buoyancy_modules[" + std::to_string(k) + "].start", numberText(row.start), e.detail() + remedy});
+  if (errors.empty())
+    for (std::size_t k = 0; k < p.sections.size(); ++k)
+      if (const auto& row = p.sections[k]; over(row.start, row.end))
+        errors.push_back({"sections[" + std::to_string(k) + "].outer_diameter", numberText(row.outer_diameter),
+                          e.detail() + remedy});
+  if (errors.empty()) errors.push_back({"section.outer_diameter", numberText(p.outer_diameter), e.detail() + remedy});
+  return errors;
+}
+
+}  // namespace
+
 StaticSolution initialShape(const RiserModel& m, const RiserParameters& p, RunContext& context) {
-  if (p.solve_statics) return solveStatics(m, context);
+  if (p.solve_statics) {
+    try {
+      return solveStatics(m, context);
+    } catch (const FloatingRiserError& e) {
+      throw InputError(floatingRiserFields(p, e));
+    }
+  }
   return StaticSolution{m.initial_orientation, m.initial_top, Vec3::Zero(), 0, 0, 0.0};
 }
 

@@ -55,6 +55,16 @@ class StaticProblem {
 
   int size() const { return size_; }
   double forceReference() const { return force_ref_; }
+
+  // The balance that residual component k scales, in words (error messages).
+  std::string describe(Eigen::Index k) const {
+    const auto tops = static_cast<Eigen::Index>(top_free_.size());
+    if (k < tops) return std::string("the net force on the top along ") + "xyz"[top_free_[k]];
+    if (bottomHeld(m_) && k >= size_ - 3)
+      return std::string("the bottom end's position error along ") + "xyz"[k - (size_ - 3)];
+    const int i = m_.first_dynamic + static_cast<int>((k - tops) / rotation_dofs_);
+    return formatText("the moment about joint %d (s = %.4g m) of the riser below it", i, m_.segments[i].arc_start);
+  }
   double tolerance() const { return tolerance_; }  // of the scaled residual's ∞-norm
 
   void pose(const Configuration& x, RiserPose& pose) {
@@ -333,9 +343,41 @@ bool bandedNewton(const RiserModel& model, StaticProblem& problem, Configuration
   return residual_norm < problem.tolerance();
 }
 
+// Gauss points (riser_loads) of the segments that are buoyant in water held at the still-water level within 1e-6 L
+// (the damped motion pins them there within a millimetre on an 800 m riser: 47 of 51 such points after one
+// period, the last 0.8 µm off). A point crossing the surface without being held is that close only by chance.
+struct SurfaceHold {
+  int points = 0;
+  double first = 0.0, last = 0.0, lift = 0.0;  // [m] arc lengths, [N/m] largest buoyancy − weight
+};
+
+SurfaceHold buoyantPointsAtSurface(const RiserModel& m, const RiserPose& pose) {
+  SurfaceHold hold;
+  const double band = 1e-6 * m.length;
+  for (int i = 0; i <= m.n; ++i) {
+    const Segment& seg = m.segments[i];
+    const double lift = seg.buoyancy_per_length - seg.weight_per_length;
+    if (!(lift > 0)) continue;
+    for (double x : kGaussX) {
+      const double z = pose.position[i].z() + x * seg.length * pose.tangent(i).z();
+      if (!(std::abs(z - m.water_level) <= band)) continue;
+      const double s = seg.arc_start + x * seg.length;
+      hold.first = hold.points == 0 ? s : std::min(hold.first, s);
+      hold.last = hold.points == 0 ? s : std::max(hold.last, s);
+      hold.lift = std::max(hold.lift, lift);
+      ++hold.points;
+    }
+  }
+  return hold;
+}
+
 // Dynamic relaxation (riser_relaxation) when the O(n) Newton fails from the initial shape: damped motion one
 // pendulum period at a time, then the O(n) Newton from the shape reached once its scaled residual is below
-// kHandOver (at most 100 iterations each try). Gives up after kPeriods periods or if the motion fails. The slack
+// kHandOver (at most 100 iterations each try). Gives up after kPeriods periods or if the motion fails; stops with a
+// SolverError after relaxationStepLimit steps (naming the residual component that did not settle, the mean step
+// against the nominal one) and with FloatingRiserError when a buoyant part is held at the water line for half a
+// period (an 800 m lazy-wave riser with its modules from the top: 10 871 steps in the first period instead of 40,
+// then 55 000–62 000 per period, tens of minutes in all; now refused after 0.63 periods). The slack
 // 3D cable held at both ends (n = 200, 1000) reaches a residual of 1e-8 in one period (11 s, 390-490 steps,
 // most of them halved: Newton, not the step, sets their number) and Newton converges in 9-44 iterations.
 bool relaxThenNewton(const RiserModel& m, StaticProblem& problem, Configuration& x, StaticSolution& out,
@@ -343,14 +385,41 @@ bool relaxThenNewton(const RiserModel& m, StaticProblem& problem, Configuration&
   constexpr int kPeriods = 30;
   constexpr double kHandOver = 1e-3;
   DampedRelaxation relax(m);
+  relax.limitSteps(relaxationStepLimit(m));
   Eigen::VectorXd y = restState(relax.model(), x.orientation, x.top);
+  RiserWorkspace ws = makeWorkspace(relax.model(), 0.0);
+  // The floating test every eighth of a period (the first period alone took 5 956–10 871 steps at n = 20–40 on the
+  // jump, and more at larger n), firing when four tests in a row (half a period: longer than a swing of the higher
+  // modes, which the mass-proportional damper leaves underdamped, through the surface) see points held there.
+  SurfaceHold hold;
+  int held = 0;
+  const auto floating = [&](const Eigen::VectorXd& state) {
+    poseFromState(relax.model(), 0.0, state, ws.pose);
+    hold = buoyantPointsAtSurface(m, ws.pose);
+    held = hold.points > 0 ? held + 1 : 0;
+    return held >= 4;
+  };
+  const auto floatingError = [&] {
+    return FloatingRiserError(
+        relax.time(), relax.steps(),
+        formatText("the riser floats: its buoyant part (buoyancy above weight by up to %.4g N/m) is held at the "
+                   "still-water level z = %.4g m between s = %.4g and %.4g m (%d load points) after %.3g s of dynamic "
+                   "relaxation (%.3g pendulum periods, held for the last half). Buoyancy acts on the pipe's centre "
+                   "line, all or nothing, so a pipe floating at the surface has no equilibrium in this model",
+                   hold.lift, m.water_level, hold.first, hold.last, hold.points, relax.time(),
+                   relax.time() / relax.period()),
+        hold.first, hold.last, hold.lift);
+  };
   for (int k = 0; k < kPeriods; ++k) {
     context.progress(0.05 + 0.9 * k / kPeriods, "statics: dynamic relaxation");
     try {
       // A period of a long chain can take minutes of damped motion: its progress is reported inside it too.
-      relax.advance(y, relax.period(), context, [&](double f, const std::string&) {
-        context.progress(0.05 + 0.9 * (k + f) / kPeriods, "statics: dynamic relaxation");
-      });
+      relax.advance(
+          y, relax.period(), context,
+          [&](double f, const std::string&) {
+            context.progress(0.05 + 0.9 * (k + f) / kPeriods, "statics: dynamic relaxation");
+          },
+          [&](double, const Eigen::VectorXd& state) { return floating(state); });
     } catch (const SolverError&) {
       return false;  // the motion itself failed: the dense path may still find the equilibrium
     }
@@ -358,7 +427,31 @@ bool relaxThenNewton(const RiserModel& m, StaticProblem& problem, Configuration&
     out.relaxation_steps = relax.steps();
     Configuration trial = configurationOf(relax.model(), y, x);
     problem.fitEndReaction(trial, 1.0);
-    const double shape_residual = problem.residual(trial, 1.0).lpNorm<Eigen::Infinity>();
+    const Eigen::VectorXd shape = problem.residual(trial, 1.0);
+    Eigen::Index worst = 0;
+    const double shape_residual = shape.cwiseAbs().maxCoeff(&worst);
+    if (relax.stopped() || (!relax.exhausted() && floating(y))) throw floatingError();
+    if (relax.exhausted()) {
+      // The floating test may not have seen half a period yet: say what the last one saw.
+      const std::string surface =
+          hold.points > 0 ? formatText("; its buoyant part was last seen held at the still-water level between s = "
+                                       "%.4g and %.4g m: the riser may float, which this model cannot take (buoyancy "
+                                       "acts on the pipe's centre line, all or nothing)",
+                                       hold.first, hold.last)
+                          : std::string();
+      throw SolverError(
+          "static equilibrium", relax.stalledTime(), relaxationStepLimit(m),
+          formatText("dynamic relaxation did not settle within its limit of %ld steps (%.3g s of damped motion, "
+                     "%.3g pendulum periods of %.3g s): its mean step in the period it stopped in fell to %.3g s "
+                     "against the nominal %.3g s, and the scaled static residual at that period's start is %.3g "
+                     "(largest in %s; Newton takes over below %.0e)%s. A load that jumps (contact with a very stiff "
+                     "sea bed, buoyancy at the water line) or a shape far from equilibrium can cause this: start "
+                     "nearer the equilibrium, or set initial.solve_statics = false to start from the initial shape "
+                     "as it is",
+                     relaxationStepLimit(m), relax.stalledTime(), relax.stalledTime() / relax.period(), relax.period(),
+                     relax.stalledStep(), relax.nominalStep(), shape_residual, problem.describe(worst).c_str(),
+                     kHandOver, surface.c_str()));
+    }
     if (!(shape_residual < kHandOver)) continue;
     int iterations = 0;
     const bool ok = bandedNewton(m, problem, trial, iterations, residual, context, 100);
@@ -427,6 +520,12 @@ RiserModel atRest(const RiserModel& model) {
 }
 
 }  // namespace
+
+long relaxationStepLimit(const RiserModel& m) {
+  constexpr double kSegmentSteps = 1e6;
+  constexpr long kFewest = 2000;
+  return std::max(kFewest, static_cast<long>(kSegmentSteps / (m.n + 1)));
+}
 
 StaticSolution solveStatics(const RiserModel& model, RunContext& context, StaticMethod method) {
   const RiserModel m = atRest(model);

@@ -2,8 +2,10 @@
 // cantilever under tip load). Not in the paper, which starts from given shapes.
 #pragma once
 
+#include <string>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "core/run_context.hpp"
 #include "riser/riser_model.hpp"
 
@@ -20,6 +22,28 @@ struct StaticSolution {
   double relaxation_time = 0.0;    // [s] damped motion before the O(n) Newton converged (0: none needed)
   long relaxation_steps = 0;       // its time steps
 };
+
+// A part of the riser that is buoyant in water (buoyancy per length above its weight per length) held at the
+// still-water level by the damped motion of dynamic relaxation: the riser floats. The model applies buoyancy at
+// the pipe's centre line, all or nothing (riser_loads), so at the water line the load jumps from a net lift below
+// to the weight in air above and a floating pipe has no equilibrium in it: Newton cannot converge there and the
+// relaxation's step collapses on the jump. Thrown by solveStatics as soon as it is seen; the scene turns it into
+// an InputError naming the fields that make that part buoyant (riser_scene).
+class FloatingRiserError : public SolverError {
+ public:
+  FloatingRiserError(double time, long step, std::string detail, double first, double last, double lift)
+      : SolverError("static equilibrium", time, step, std::move(detail)), first_(first), last_(last), lift_(lift) {}
+  double first() const { return first_; }  // [m] arc length of the first and last point held at the surface
+  double last() const { return last_; }
+  double lift() const { return lift_; }     // [N/m] largest net lift (buoyancy − weight) per length among them
+
+ private:
+  double first_, last_, lift_;
+};
+
+// Accepted steps the dynamic relaxation of `m` may take: 10⁶ segment-steps, at least 2000 (24 390 at n = 40,
+// 2000 from n = 500 on). The slack cable held at both ends relaxes in 390–490 steps per period.
+long relaxationStepLimit(const RiserModel& m);
 
 enum class StaticMethod {
   Automatic,  // O(n) Newton first, the dense method only if it fails (with a warning)
@@ -38,7 +62,9 @@ enum class StaticMethod {
 // force on a free top; the bottom position error. Jacobian by forward differences (dense, O(n³):
 // statics runs once); backtracking line search on the scaled residual; if Newton fails at full
 // load, the external loads are applied in steps (halved on failure).
-// Starts from m.initial_orientation. Throws SolverError if no equilibrium is found.
+// Starts from m.initial_orientation. Throws SolverError if no equilibrium is found, also when the dynamic
+// relaxation does not settle within its work limit (relaxationStepLimit: the message names the residual that did
+// not settle, the step and the time), and FloatingRiserError when a buoyant part floats at the water line.
 StaticSolution solveStatics(const RiserModel& m, RunContext& context, StaticMethod method = StaticMethod::Automatic);
 
 }  // namespace maris::riser

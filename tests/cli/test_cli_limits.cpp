@@ -96,5 +96,19 @@ TEST_F(CliLimits, DuplicateKeysLongNamesAndManyErrorsGiveShortMessages) {
   expectRejected({"run", write("many.json", doc.dump()).string()}, {"... and 80 more errors (100 in all)"});
 }
 
+// Input the model cannot take that shows only in the solve: the lazy-wave riser with its modules from the top floats
+// at the surface, where the riser's all-or-nothing buoyancy has no equilibrium (docs/riser.md, "A riser that
+// floats"). Refused with exit 2 on the module row, naming the water level, after half a pendulum period of statics'
+// relaxation (n = 20: 0.6 s in Release); it ran for tens of minutes before.
+TEST_F(CliLimits, FloatingRiserIsRefusedNamingTheModuleRow) {
+  const BuiltinScenario* lazy = findBuiltin("riser_lazy_wave");
+  ASSERT_NE(lazy, nullptr);
+  Json doc = scenarioToJson(lazy->scenario);
+  doc["parameters"]["buoyancy_modules"][0]["start"] = 0.0;
+  doc["parameters"]["geometry"]["segment_count"] = 20;
+  expectRejected({"run", write("floating.json", doc.dump()).string()},
+                 {"buoyancy_modules[0].start = 0", "the riser floats", "still-water level z = 0 m"});
+}
+
 }  // namespace
 }  // namespace maris
