@@ -1,5 +1,7 @@
 #include "ship/ship_wave_field.hpp"
 
+#include "ship/kelvin_source.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -89,7 +91,8 @@ double waterlineHalfBreadth(const HullGrid& grid, double x) {
 
 }  // namespace
 
-ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravity, const WaveFieldRegion& region) {
+ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravity, const WaveFieldRegion& region,
+                                bool with_local, const std::function<bool()>& cancelled) {
   const double k0 = gravity / (speed * speed);
   SourceSheet sheet(grid);
   const double below_stern = sheet.xAft() - 1.0;
@@ -118,19 +121,50 @@ ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravi
   for (int j = 0; j < region.ny; ++j) w.y[j] = -region.half_width + 2.0 * region.half_width * j / (region.ny - 1);
 
   // ζ_ij = Σ_k Re(A_k(x_i) e^{−iκ_k x_i}) · 2 cos(k_y,k y_j): ±θ pair up (the hull is symmetric), one GEMM.
+  // The amplitude A = −(2/π) k0 sec³θ F: the wave term of the Kelvin source (kelvin_source.hpp) summed over the
+  // sheet of density q = −2U ∂Y/∂ξ.
+  // With the local part, the total also needs the wave term where Havelock's form has it, H(−ϖ) (the sources
+  // ahead of x + y tan θ), and not H(−x'): the difference D is added per point and θ wherever that cut and x
+  // fall on different sides of a source, i.e. where the Kochin function ahead of them differs.
   Eigen::MatrixXd along(region.nx, nu + 1), across(nu + 1, region.ny);
+  Eigen::MatrixXd havelock = Eigen::MatrixXd::Zero(region.nx, region.ny);
+  std::vector<Complex> ahead(region.nx);
   for (int k = 0; k <= nu; ++k) {
+    if (k % 64 == 0 && cancelled && cancelled()) break;
     const double u = k * du, lambda = std::cosh(u);
     const double kappa = k0 * lambda, wave_number = k0 * lambda * lambda;
     sheet.prepare(wave_number, kappa);
     const double end = (k == 0 || k == nu) ? 0.5 : 1.0;
-    const Complex weight = Complex(0.0, 2.0 / std::numbers::pi) * k0 * lambda * lambda * lambda * (end * du / lambda);
-    for (int i = 0; i < region.nx; ++i)
-      along(i, k) = (weight * sheet.aheadOf(w.x[i]) * std::polar(1.0, -kappa * w.x[i])).real();
+    const Complex weight = (-2.0 / std::numbers::pi) * k0 * lambda * lambda * lambda * (end * du / lambda);
+    for (int i = 0; i < region.nx; ++i) {
+      ahead[i] = sheet.aheadOf(w.x[i]);
+      along(i, k) = (weight * ahead[i] * std::polar(1.0, -kappa * w.x[i])).real();
+    }
     const double ky = wave_number * std::tanh(u);  // k sin θ (sin θ = tanh u)
     for (int j = 0; j < region.ny; ++j) across(k, j) = 2.0 * std::cos(ky * w.y[j]);
+    if (!with_local) continue;
+    const double tan_theta = std::sinh(u);
+    for (int i = 0; i < region.nx; ++i) {
+      const bool before = w.x[i] < sheet.xAft(), beyond = w.x[i] >= sheet.xFore();
+      const Complex phase_x = weight * std::polar(1.0, -kappa * w.x[i]);
+      for (int j = 0; j < region.ny; ++j) {
+        if (w.y[j] < 0) continue;  // mirrored below
+        for (double sign : {-1.0, 1.0}) {
+          const double cut = w.x[i] + sign * tan_theta * w.y[j];
+          if ((before && cut < sheet.xAft()) || (beyond && cut >= sheet.xFore())) continue;
+          havelock(i, j) += (phase_x * (sheet.aheadOf(cut) - ahead[i]) * std::polar(1.0, -sign * ky * w.y[j])).real();
+        }
+      }
+    }
   }
   w.elevation = along * across;
+  out.wave = w.elevation;
+  if (with_local) {
+    for (int j = 0; j < region.ny; ++j)
+      if (w.y[j] < 0) havelock.col(j) = havelock.col(region.ny - 1 - j);  // the grid is symmetric in y
+    out.local = havelock + thinShipLocalElevation(grid, k0, w.x, w.y, 65, 11, 4, cancelled);
+    w.elevation += out.local;
+  }
 
   // Inside the waterline: the elevation at the hull's side (the nearest point outside on the same side). The
   // tolerance keeps the choice symmetric where ±y_j differ by rounding.
@@ -152,7 +186,10 @@ ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravi
     for (int j = last_out + 1; j < first_out; ++j) {
       const bool port = w.y[j] < 0 && last_out >= 0;
       const int source = port ? last_out : (first_out < region.ny ? first_out : last_out);
-      if (source >= 0 && source < region.ny) w.elevation(i, j) = w.elevation(i, source);
+      if (source < 0 || source >= region.ny) continue;
+      w.elevation(i, j) = w.elevation(i, source);
+      out.wave(i, j) = out.wave(i, source);
+      if (with_local) out.local(i, j) = out.local(i, source);
     }
   }
   return out;
