@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <thread>
 #include <vector>
 
 namespace maris::ship {
@@ -33,19 +34,24 @@ void compositeGauss(double a, double b, int panels, std::vector<double>& nodes, 
   }
 }
 
-// Nodes and weights on (0, 1) graded toward 0: panels [4^{−k−1}, 4^{−k}] for k < panels − 1 and [0, 4^{1−panels}],
-// 8-point Gauss–Legendre on each.
-void gradedGauss(int panels, std::vector<double>& nodes, std::vector<double>& weights) {
+// Nodes and weights on (0, 1) graded toward 0: panels [4^{−k−1}, 4^{−k}] for 0 < k < panels − 1 and
+// [0, 4^{1−panels}], with [1/4, 1] cut into `outer` equal panels; 8-point Gauss–Legendre on each.
+void gradedGauss(int panels, int outer, std::vector<double>& nodes, std::vector<double>& weights) {
   nodes.clear();
   weights.clear();
-  double right = 1.0;
-  for (int p = 0; p < panels; ++p) {
-    const double left = p + 1 < panels ? 0.25 * right : 0.0, mid = 0.5 * (left + right), half = 0.5 * (right - left);
+  auto add = [&](double left, double right) {
+    const double mid = 0.5 * (left + right), half = 0.5 * (right - left);
     for (int q = 0; q < 4; ++q)
       for (double sign : {-1.0, 1.0}) {
         nodes.push_back(mid + sign * half * kGaussNodes[q]);
         weights.push_back(half * kGaussWeights[q]);
       }
+  };
+  for (int k = 0; k < outer; ++k) add(0.25 + 0.75 * k / outer, 0.25 + 0.75 * (k + 1) / outer);
+  double right = 0.25;
+  for (int p = 1; p < panels; ++p) {
+    const double left = p + 1 < panels ? 0.25 * right : 0.0;
+    add(left, right);
     right = left;
   }
 }
@@ -55,23 +61,27 @@ Complex onUpperEdge(Complex w) { return w.imag() == 0.0 ? Complex(w.real(), 0.0)
 
 enum class E1Method { Series, ContinuedFraction, Asymptotic };
 
-// The series converges everywhere but loses digits where |e^{−w}| ≪ e^{|w|} (away from the negative real axis);
-// the continued fraction converges slowly near that axis; the asymptotic series is accurate to e^{−|w|}.
+// The series converges everywhere but loses digits where |e^{−w}| ≪ e^{|w|} (right half-plane, or far from the
+// negative real axis at large |w|): there by at most e^{12} ≈ 2e5 for |w| ≤ 12 in the left half-plane. The
+// continued fraction converges slowly near the negative real axis; the asymptotic series, summed to 24 terms
+// (12 from |w| = 40), is accurate to 1e-11 from |w| = 25.
 E1Method e1Method(Complex w) {
-  const double a = std::abs(w);
-  if (a >= 25.0) return E1Method::Asymptotic;
-  if (a <= 4.0 || (w.real() < 0 && std::abs(w.imag()) < 0.5 * std::abs(w.real()))) return E1Method::Series;
+  const double a2 = std::norm(w);
+  if (a2 >= 625.0) return E1Method::Asymptotic;
+  if (a2 <= 16.0 || (w.real() <= 0 && a2 <= 144.0) || (w.real() < 0 && std::abs(w.imag()) < 0.5 * std::abs(w.real())))
+    return E1Method::Series;
   return E1Method::ContinuedFraction;
 }
 
 // Σ_{n≥1} (−w)^n / (n n!): E1(w) = −γ − ln w − S(w).
 Complex e1Series(Complex w) {
   Complex term = 1.0, sum = 0.0;
+  const double stop = std::norm(w);
   for (int n = 1; n < 400; ++n) {
     term *= -w / static_cast<double>(n);
     const Complex add = term / static_cast<double>(n);
     sum += add;
-    if (std::abs(add) < 1e-17 * std::abs(sum) && n > std::abs(w)) break;
+    if (n * n > stop && std::norm(add) < 1e-34 * std::norm(sum)) break;
   }
   return sum;
 }
@@ -87,25 +97,27 @@ Complex e1ContinuedFraction(Complex w) {
     c = b + an / c;
     const Complex del = c * d;
     h *= del;
-    if (std::abs(del - 1.0) < 1e-15) break;
+    if (std::norm(del - 1.0) < 1e-30) break;
   }
   return h;
 }
 
-// Σ_{n≥first} (−1)^n n! / w^{n+1}, stopped at the smallest term: e^w E1(w) for first = 0, e^w E1(w) − 1/w for 1.
+// Σ_{n=first}^{N−1} (−1)^n n! / w^{n+1} by Horner's rule in 1/w: e^w E1(w) for first = 0, e^w E1(w) − 1/w for
+// first = 1. N = 24 below |w| = 40, 12 above (the terms decrease up to n ≈ |w|).
 Complex e1Asymptotic(Complex w, int first) {
   const Complex inv = 1.0 / w;
-  Complex term = inv, sum = 0.0;
-  double previous = 1e300;
-  for (int n = 0; n < 60; ++n) {
-    if (n > 0) term *= -static_cast<double>(n) * inv;
-    const double size = std::abs(term);
-    if (size > previous) break;
-    previous = size;
-    if (n >= first) sum += term;
-    if (size < 1e-17 * std::abs(sum)) break;
+  const int terms = std::norm(w) >= 1600.0 ? 12 : 24;
+  Complex sum = 0.0;
+  double factorial = 1.0;
+  for (int n = 1; n < terms; ++n) factorial *= n;  // (terms − 1)!
+  for (int n = terms - 1; n >= first; --n) {
+    sum = sum * inv + ((n % 2) ? -factorial : factorial);
+    if (n > 0) factorial /= n;
   }
-  return sum;
+  // sum = Σ (−1)^n n! inv^{n − first}
+  Complex scale = inv;
+  for (int n = 0; n < first; ++n) scale *= inv;
+  return sum * scale;
 }
 
 // e^w E1(w) − 1/w (no cancellation for large |w|, where both are ≈ 1/w).
@@ -204,11 +216,13 @@ double sheetLocalElevation(const SheetNodes& s, double k0, double x, double y, c
     bool any = false;
     for (int j = 0; j < m; ++j) any |= s.slope_jump(i, j) != 0;
     if (!any) continue;
-    const double theta_i = y != 0 ? std::atan(-(x - s.xi[i]) / y) : 0.0;
+    // On the track (y = 0) ϖ_i = (x − ξ_i) cos θ vanishes at both ends, θ = ±π/2: the rules grade toward them.
+    const bool track = y == 0;
+    const double theta_i = track ? 0.0 : std::atan(-(x - s.xi[i]) / y);
     for (double side : {-1.0, 1.0}) {
       const double reach = side > 0 ? 0.5 * pi - theta_i : theta_i + 0.5 * pi;
       for (std::size_t q = 0; q < theta.size(); ++q) {
-        const double th = theta_i + side * reach * theta[q];
+        const double th = theta_i + side * reach * (track ? 1.0 - theta[q] : theta[q]);
         const double c = std::cos(th), sn = std::sin(th), K = k0 / (c * c);
         if (c <= 0) continue;
         double varpi = (x - s.xi[i]) * c + y * sn;
@@ -256,13 +270,15 @@ SourceElevation kelvinSourceElevation(double x_rel, double y, double depth, doub
   // Local part: a rule on each side of the angle where ϖ = 0 (the integrand jumps there with the wave term, and
   // has peaks of width h/r next to it), graded toward it.
   std::vector<double> theta, weight;
-  gradedGauss(10, theta, weight);
-  const double theta0 = y != 0 ? std::atan(-x_rel / y) : 0.0;
+  gradedGauss(10, 8, theta, weight);
+  // On the track (y = 0) ϖ = x' cos θ vanishes at both ends, θ = ±π/2: the rules grade toward them.
+  const bool track = y == 0;
+  const double theta0 = track ? 0.0 : std::atan(-x_rel / y);
   double local = 0;
   for (double side : {-1.0, 1.0}) {
     const double reach = side > 0 ? 0.5 * pi - theta0 : theta0 + 0.5 * pi;
     for (std::size_t q = 0; q < theta.size(); ++q) {
-      const double th = theta0 + side * reach * theta[q], c = std::cos(th);
+      const double th = theta0 + side * reach * (track ? 1.0 - theta[q] : theta[q]), c = std::cos(th);
       if (c <= 0) continue;
       const double sec = 1.0 / c, K = k0 * sec * sec, varpi = x_rel * c + y * std::sin(th);
       // −1/Z + K e^{KZ} E1(KZ) = K (e^w E1(w) − 1/w), w = KZ.
@@ -270,8 +286,13 @@ SourceElevation kelvinSourceElevation(double x_rel, double y, double depth, doub
       local += reach * weight[q] * (-1.0 / (2.0 * pi * pi)) * sec * f.imag();
     }
   }
-  // Wave parts: oscillatory, composite Gauss–Legendre.
-  compositeGauss(-0.5 * pi, 0.5 * pi, theta_panels, theta, weight);
+  // Wave parts: oscillatory, composite Gauss–Legendre on each side of θ0 (where H(−ϖ) switches).
+  std::vector<double> right_nodes, right_weights;
+  const int left_panels = std::max(1, static_cast<int>(std::lround(theta_panels * (theta0 / pi + 0.5))));
+  compositeGauss(-0.5 * pi, theta0, left_panels, theta, weight);
+  compositeGauss(theta0, 0.5 * pi, std::max(1, theta_panels - left_panels), right_nodes, right_weights);
+  theta.insert(theta.end(), right_nodes.begin(), right_nodes.end());
+  weight.insert(weight.end(), right_weights.begin(), right_weights.end());
   double wave_havelock = 0, wave_downstream = 0;
   for (std::size_t q = 0; q < theta.size(); ++q) {
     const double c = std::cos(theta[q]), sec = 1.0 / c, K = k0 * sec * sec;
@@ -285,36 +306,46 @@ SourceElevation kelvinSourceElevation(double x_rel, double y, double depth, doub
 
 Eigen::MatrixXd thinShipLocalElevation(const HullGrid& grid, double k0, const Eigen::VectorXd& x,
                                        const Eigen::VectorXd& y, int stations, int waterlines, int theta_panels,
-                                       const std::function<bool()>& cancelled) {
-  // Three resolutions of the sheet: points within 0.3 L of the hull see its shape, farther ones a smooth field.
+                                       int outer_panels, const std::function<bool()>& cancelled) {
+  // Three resolutions of the sheet: points within 0.2 L of the hull see its shape; beyond 0.5 L the field is smooth
+  // on the scale of the hull.
   const std::array<SheetNodes, 3> sheets{resample(grid, stations, waterlines),
                                          resample(grid, (stations - 1) / 2 + 1, (waterlines - 1) / 2 + 1),
                                          resample(grid, (stations - 1) / 4 + 1, (waterlines - 1) / 4 + 1)};
   std::vector<double> theta, weight;
-  gradedGauss(theta_panels, theta, weight);
+  gradedGauss(theta_panels, outer_panels, theta, weight);
   const double x_aft = grid.x_aft, x_fore = grid.x(grid.nx() - 1), length = x_fore - x_aft;
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(x.size(), y.size());
-  std::vector<Complex> work;
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    if (cancelled && cancelled()) break;
+  // The field is even in y (the hull is symmetric): a point whose mirror is in the grid is copied from it.
+  auto mirrored = [&](Eigen::Index j) {
+    const Eigen::Index mirror = y.size() - 1 - j;
+    return y[j] < 0 && mirror > j && std::abs(y[mirror] + y[j]) <= 1e-12 * (1.0 + std::abs(y[j]));
+  };
+  auto row = [&](Eigen::Index i, std::vector<Complex>& work) {
     const double outside = std::max({x_aft - x[i], x[i] - x_fore, 0.0});
-    const double half = gridHalfBreadth(grid, std::clamp(x[i], x_aft, x_fore), 0.0) *
-                        (x[i] < x_aft || x[i] > x_fore ? 0.0 : 1.0) * (1.0 - 1e-9);
+    const double half = (x[i] < x_aft || x[i] > x_fore) ? 0.0 : gridHalfBreadth(grid, x[i], 0.0) * (1.0 - 1e-9);
     for (Eigen::Index j = 0; j < y.size(); ++j) {
-      if (std::abs(y[j]) < half) continue;
-      // The field is even in y (the hull is symmetric): a mirror point already done is copied.
-      const Eigen::Index mirror = y.size() - 1 - j;
-      if (y[j] < 0 && mirror > j && std::abs(y[mirror] + y[j]) <= 1e-12 * (1.0 + std::abs(y[j]))) continue;
+      if (std::abs(y[j]) < half || mirrored(j)) continue;
       const double distance = std::hypot(outside, std::abs(y[j]));
-      const int level = distance < 0.3 * length ? 0 : (distance < length ? 1 : 2);
+      const int level = distance < 0.2 * length ? 0 : (distance < 0.5 * length ? 1 : 2);
       out(i, j) = sheetLocalElevation(sheets[level], k0, x[i], y[j], theta, weight, work);
     }
-    for (Eigen::Index j = 0; j < y.size(); ++j) {
-      const Eigen::Index mirror = y.size() - 1 - j;
-      if (y[j] < 0 && mirror > j && std::abs(y[mirror] + y[j]) <= 1e-12 * (1.0 + std::abs(y[j])))
-        out(i, j) = out(i, mirror);
+    for (Eigen::Index j = 0; j < y.size(); ++j)
+      if (mirrored(j)) out(i, j) = out(i, y.size() - 1 - j);
+  };
+  // Rows interleaved over the cores (each row writes its own entries only).
+  const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+  auto worker = [&](unsigned first) {
+    std::vector<Complex> work;
+    for (Eigen::Index i = first; i < x.size(); i += threads) {
+      if (cancelled && cancelled()) return;
+      row(i, work);
     }
-  }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker, t);
+  worker(0);
+  for (std::thread& t : pool) t.join();
   return out;
 }
 

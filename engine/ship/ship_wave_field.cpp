@@ -56,6 +56,27 @@ class SourceSheet {
       suffix_[p] = suffix_[p + 1] + panel_depth_[p] * stripIntegral(grid_.x(p), grid_.x(p + 1));
     aft_end_ = grid_.half_breadth.row(0).dot(depth_weights_) * std::polar(1.0, kappa * xAft());
     fore_end_ = -grid_.half_breadth.row(grid_.nx() - 1).dot(depth_weights_) * std::polar(1.0, kappa * xFore());
+    // F(x) = constant_p + slope_p e^{iκx} on panel p (see split).
+    constant_.resize(panels);
+    for (int p = 0; p < panels; ++p)
+      constant_[p] = panel_depth_[p] * std::polar(1.0, kappa * grid_.x(p + 1)) / Complex(0.0, kappa) + suffix_[p + 1] + fore_end_;
+  }
+
+  // F(x) = a + b e^{iκx}: (a, b) for the x given, so that F at many points of one panel costs no exponential.
+  void split(double x, Complex& a, Complex& b) const {
+    if (x >= xFore()) {
+      a = b = 0.0;
+      return;
+    }
+    if (x < xAft()) {
+      a = suffix_[0] + aft_end_ + fore_end_;
+      b = 0.0;
+      return;
+    }
+    const int panels = static_cast<int>(panel_depth_.size());
+    const int p = std::min(static_cast<int>((x - xAft()) / grid_.dx), panels - 1);
+    a = constant_[p];
+    b = Complex(0.0, panel_depth_[p] / kappa_);  // −P/(iκ)
   }
 
   // F(x; θ) [m²]: the Kochin function of the sources ahead of x (ξ > x).
@@ -75,7 +96,7 @@ class SourceSheet {
   const HullGrid& grid_;
   Eigen::MatrixXd slope_;  // (nx − 1) × nz: ∂Y/∂x on each panel at each waterline
   Eigen::VectorXd depth_weights_, panel_depth_;
-  std::vector<Complex> suffix_;
+  std::vector<Complex> suffix_, constant_;
   double kappa_ = 0;
   Complex aft_end_, fore_end_;
 };
@@ -128,7 +149,7 @@ ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravi
   // fall on different sides of a source, i.e. where the Kochin function ahead of them differs.
   Eigen::MatrixXd along(region.nx, nu + 1), across(nu + 1, region.ny);
   Eigen::MatrixXd havelock = Eigen::MatrixXd::Zero(region.nx, region.ny);
-  std::vector<Complex> ahead(region.nx);
+  std::vector<Complex> ahead(region.nx), phase_x(region.nx);
   for (int k = 0; k <= nu; ++k) {
     if (k % 64 == 0 && cancelled && cancelled()) break;
     const double u = k * du, lambda = std::cosh(u);
@@ -138,21 +159,27 @@ ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravi
     const Complex weight = (-2.0 / std::numbers::pi) * k0 * lambda * lambda * lambda * (end * du / lambda);
     for (int i = 0; i < region.nx; ++i) {
       ahead[i] = sheet.aheadOf(w.x[i]);
-      along(i, k) = (weight * ahead[i] * std::polar(1.0, -kappa * w.x[i])).real();
+      phase_x[i] = std::polar(1.0, -kappa * w.x[i]);
+      along(i, k) = (weight * ahead[i] * phase_x[i]).real();
     }
     const double ky = wave_number * std::tanh(u);  // k sin θ (sin θ = tanh u)
     for (int j = 0; j < region.ny; ++j) across(k, j) = 2.0 * std::cos(ky * w.y[j]);
     if (!with_local) continue;
+    // D per point: Re[weight (F(cut) − F(x)) e^{−iκx} e^{∓i k_y y}] with cut = x ± y tan θ; κ tan θ = k_y, so
+    // with F(cut) = a + b e^{iκ cut} this is Re[weight ((a − F(x)) e^{−iκx} e^{∓i k_y y} + b)].
     const double tan_theta = std::sinh(u);
-    for (int i = 0; i < region.nx; ++i) {
-      const bool before = w.x[i] < sheet.xAft(), beyond = w.x[i] >= sheet.xFore();
-      const Complex phase_x = weight * std::polar(1.0, -kappa * w.x[i]);
-      for (int j = 0; j < region.ny; ++j) {
-        if (w.y[j] < 0) continue;  // mirrored below
-        for (double sign : {-1.0, 1.0}) {
+    for (int j = 0; j < region.ny; ++j) {
+      if (w.y[j] <= 0) continue;  // y = 0: no difference; y < 0: mirrored below
+      const Complex ey = std::polar(1.0, -ky * w.y[j]);
+      for (int i = 0; i < region.nx; ++i) {
+        const bool before = w.x[i] < sheet.xAft(), beyond = w.x[i] >= sheet.xFore();
+        const Complex& ex = phase_x[i];
+        for (int sign = -1; sign <= 1; sign += 2) {
           const double cut = w.x[i] + sign * tan_theta * w.y[j];
           if ((before && cut < sheet.xAft()) || (beyond && cut >= sheet.xFore())) continue;
-          havelock(i, j) += (phase_x * (sheet.aheadOf(cut) - ahead[i]) * std::polar(1.0, -sign * ky * w.y[j])).real();
+          Complex a, b;
+          sheet.split(cut, a, b);
+          havelock(i, j) += (weight * ((a - ahead[i]) * ex * (sign > 0 ? ey : std::conj(ey)) + b)).real();
         }
       }
     }
@@ -162,7 +189,7 @@ ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravi
   if (with_local) {
     for (int j = 0; j < region.ny; ++j)
       if (w.y[j] < 0) havelock.col(j) = havelock.col(region.ny - 1 - j);  // the grid is symmetric in y
-    out.local = havelock + thinShipLocalElevation(grid, k0, w.x, w.y, 65, 11, 4, cancelled);
+    out.local = havelock + thinShipLocalElevation(grid, k0, w.x, w.y, 49, 9, 2, 3, cancelled);
     w.elevation += out.local;
   }
 
