@@ -20,7 +20,7 @@ constexpr std::array<double, 4> kGaussWeights{0.3626837833783620, 0.313706645877
                                               0.1012285362903763};
 
 // Nodes and weights of composite 8-point Gauss–Legendre on (a, b).
-void compositeGauss(double a, double b, int panels, std::vector<double>& nodes, std::vector<double>& weights) {
+void compositeGaussRule(double a, double b, int panels, std::vector<double>& nodes, std::vector<double>& weights) {
   nodes.clear();
   weights.clear();
   const double h = (b - a) / panels;
@@ -36,7 +36,7 @@ void compositeGauss(double a, double b, int panels, std::vector<double>& nodes, 
 
 // Nodes and weights on (0, 1) graded toward 0: panels [4^{−k−1}, 4^{−k}] for 0 < k < panels − 1 and
 // [0, 4^{1−panels}], with [1/4, 1] cut into `outer` equal panels; 8-point Gauss–Legendre on each.
-void gradedGauss(int panels, int outer, std::vector<double>& nodes, std::vector<double>& weights) {
+void gradedGaussRule(int panels, int outer, std::vector<double>& nodes, std::vector<double>& weights) {
   nodes.clear();
   weights.clear();
   auto add = [&](double left, double right) {
@@ -127,7 +127,7 @@ Complex scaledE1MinusInverse(Complex w) {
   return scaledExponentialIntegral(w) - 1.0 / w;
 }
 
-// The hull resampled for the local part: stations ξ_i (with a zero-width-free ramp at open ends) and waterlines
+// The hull resampled for the local part: stations ξ_i (with a steep ramp at open ends) and waterlines
 // η_j uniform from 0 down; slope jumps Δs_ij = s_{i−1}(η_j) − s_i(η_j) of ∂Y/∂ξ at the stations.
 struct SheetNodes {
   std::vector<double> xi;
@@ -145,7 +145,7 @@ double gridHalfBreadth(const HullGrid& grid, double x, double z) {
          (1 - a) * b * grid.half_breadth(i, j + 1) + a * b * grid.half_breadth(i + 1, j + 1);
 }
 
-SheetNodes resample(const HullGrid& grid, int stations, int waterlines) {
+SheetNodes resampleSheet(const HullGrid& grid, int stations, int waterlines) {
   stations = std::max(stations, 3);
   waterlines = std::max(waterlines, 2);
   const double x0 = grid.x_aft, x1 = grid.x(grid.nx() - 1), dx = (x1 - x0) / (stations - 1);
@@ -270,7 +270,7 @@ SourceElevation kelvinSourceElevation(double x_rel, double y, double depth, doub
   // Local part: a rule on each side of the angle where ϖ = 0 (the integrand jumps there with the wave term, and
   // has peaks of width h/r next to it), graded toward it.
   std::vector<double> theta, weight;
-  gradedGauss(10, 8, theta, weight);
+  gradedGaussRule(10, 8, theta, weight);
   // On the track (y = 0) ϖ = x' cos θ vanishes at both ends, θ = ±π/2: the rules grade toward them.
   const bool track = y == 0;
   const double theta0 = track ? 0.0 : std::atan(-x_rel / y);
@@ -289,8 +289,8 @@ SourceElevation kelvinSourceElevation(double x_rel, double y, double depth, doub
   // Wave parts: oscillatory, composite Gauss–Legendre on each side of θ0 (where H(−ϖ) switches).
   std::vector<double> right_nodes, right_weights;
   const int left_panels = std::max(1, static_cast<int>(std::lround(theta_panels * (theta0 / pi + 0.5))));
-  compositeGauss(-0.5 * pi, theta0, left_panels, theta, weight);
-  compositeGauss(theta0, 0.5 * pi, std::max(1, theta_panels - left_panels), right_nodes, right_weights);
+  compositeGaussRule(-0.5 * pi, theta0, left_panels, theta, weight);
+  compositeGaussRule(theta0, 0.5 * pi, std::max(1, theta_panels - left_panels), right_nodes, right_weights);
   theta.insert(theta.end(), right_nodes.begin(), right_nodes.end());
   weight.insert(weight.end(), right_weights.begin(), right_weights.end());
   double wave_havelock = 0, wave_downstream = 0;
@@ -309,11 +309,11 @@ Eigen::MatrixXd thinShipLocalElevation(const HullGrid& grid, double k0, const Ei
                                        int outer_panels, const std::function<bool()>& cancelled) {
   // Three resolutions of the sheet: points within 0.2 L of the hull see its shape; beyond 0.5 L the field is smooth
   // on the scale of the hull.
-  const std::array<SheetNodes, 3> sheets{resample(grid, stations, waterlines),
-                                         resample(grid, (stations - 1) / 2 + 1, (waterlines - 1) / 2 + 1),
-                                         resample(grid, (stations - 1) / 4 + 1, (waterlines - 1) / 4 + 1)};
+  const std::array<SheetNodes, 3> sheets{resampleSheet(grid, stations, waterlines),
+                                         resampleSheet(grid, (stations - 1) / 2 + 1, (waterlines - 1) / 2 + 1),
+                                         resampleSheet(grid, (stations - 1) / 4 + 1, (waterlines - 1) / 4 + 1)};
   std::vector<double> theta, weight;
-  gradedGauss(theta_panels, outer_panels, theta, weight);
+  gradedGaussRule(theta_panels, outer_panels, theta, weight);
   const double x_aft = grid.x_aft, x_fore = grid.x(grid.nx() - 1), length = x_fore - x_aft;
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(x.size(), y.size());
   // The field is even in y (the hull is symmetric): a point whose mirror is in the grid is copied from it.
