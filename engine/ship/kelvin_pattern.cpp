@@ -35,7 +35,7 @@ WavePattern kelvinWavePattern(GridKochin& kochin, double speed, double gravity, 
     const double u = k * du, lambda = std::cosh(u);
     const std::complex<double> F = kochin.amplitude(k0, lambda);
     const double end = (k == 0 || k == nu) ? 0.5 : 1.0;
-    weight[k] = std::complex<double>(0.0, 2.0 / std::numbers::pi) * k0 * lambda * lambda * lambda * F * (end * du / lambda);
+    weight[k] = (-2.0 / std::numbers::pi) * k0 * lambda * lambda * lambda * F * (end * du / lambda);
     kappa[k] = k0 * lambda;                       // k cos θ
     ky[k] = k0 * lambda * lambda * std::tanh(u);  // k sin θ (sin θ = tanh u)
   }

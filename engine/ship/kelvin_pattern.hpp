@@ -1,10 +1,11 @@
 // Far-field Kelvin wave pattern behind the ship (paper eq 1; amplitude normalised here as below):
 //   ζ(x, y) = Re ∫_{−π/2}^{π/2} A(θ) exp(−i k(θ) ((x − x_m) cos θ + y sin θ)) dθ,
-//   A(θ) = (2i/π) k0 sec³θ (P + iQ)(θ),  k(θ) = k0 sec²θ,
+//   A(θ) = −(2/π) k0 sec³θ (P + iQ)(θ),  k(θ) = k0 sec²θ,
 // with x_m the mid-length of the Kochin grid (P + iQ is computed with x measured from there). |A| is the
-// normalisation that makes eq 3 (wave-pattern resistance) equal eq 8 (Michell's integral); the overall phase
-// (the factor i) is our choice of convention and is not checked against a measured pattern. Valid only downstream of
-// the stern, a few wavelengths away: the grid starts behind the stern.
+// normalisation that makes eq 3 (wave-pattern resistance) equal eq 8 (Michell's integral); the phase is the wave
+// term of the Kelvin source (kelvin_source.hpp, checked there against the source's Fourier integral) summed over
+// Michell's sheet of density −2U ∂Y/∂x. Valid only downstream of the stern, a few wavelengths away: the grid starts
+// behind the stern.
 #pragma once
 
 #include <Eigen/Core>

@@ -256,20 +256,23 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
   // 3-D view: the hull, both sides, with the still waterline.
   Frame3D frame = hullFrame(m.hull);
   {
-    // The Kelvin pattern around and behind the hull at the design speed (the wave component of the thin-ship
-    // elevation: calm ahead of the bow, the bow's waves along the sides, the whole pattern behind the stern), its
-    // elevation drawn exaggerated (a 5 cm wave beside a 100 m hull would be flat); the caption names the speed
-    // and the exaggeration.
+    // The free surface around and behind the hull at the design speed: the complete linear thin-ship elevation
+    // (ship_wave_field.hpp), i.e. the Kelvin waves and the local disturbance at the hull (the bow's pile-up, the
+    // draw-down along the sides, the rise at the stern), drawn exaggerated (a 5 cm wave beside a 100 m hull would
+    // be flat); the caption names the speed, the exaggeration and what the model leaves out.
     constexpr double kElevationScale = 10.0;
-    context.progress(0.97, "wave pattern");
+    context.progress(0.97, "free surface");
     const double L = m.hull.length_pp;
     const double x_fore = m.grid.x(m.grid.nx() - 1);
     const WaveFieldRegion region{.x_from = m.grid.x_aft - 2.0 * L, .x_to = x_fore + 0.25 * L, .half_width = 0.8 * L,
                                  .nx = 131, .ny = 41};
-    const WavePattern w = thinShipWaveField(m.grid, c.speed[d], p.gravity, region).pattern;
+    const WavePattern w = thinShipWaveField(m.grid, c.speed[d], p.gravity, region, true,
+                                            [&context] { return context.cancelRequested(); })
+                              .pattern;
+    context.throwIfCancelled();
     Shape3D s;
     s.kind = Shape3D::Kind::Surface;
-    s.name = formatText("Kelvin wave pattern (elevation x%g)", kElevationScale);
+    s.name = formatText("Free surface (elevation x%g)", kElevationScale);
     s.grid_u = static_cast<int>(w.y.size());
     s.grid_v = static_cast<int>(w.x.size());
     for (Eigen::Index i = 0; i < w.x.size(); ++i)
@@ -278,15 +281,15 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
         s.scalars.push_back(w.elevation(i, j));
       }
     s.color = {0.2, 0.4, 0.8};
-    s.opacity = 0.75;  // the hull, below the waterline and inside the pattern now, shows through the water
+    s.opacity = 0.75;  // the hull, below the waterline and inside the surface now, shows through the water
     frame.shapes.push_back(std::move(s));
-    // The caption says what the pattern leaves out, so the calm water ahead of the bow and along the hull is not
-    // read as a result: only the waves are drawn, not the local disturbance at the hull.
-    frame.label = formatText("Kelvin wave pattern at Fn = %.4g, U = %.4g m/s\n"
-                             "wave elevation drawn × %g; hull at its real proportions\n"
-                             "waves only: the local disturbance at the hull\n(bow wave heap, side draw-down) is not drawn",
+    frame.label = formatText("Free surface at Fn = %.4g, U = %.4g m/s\n"
+                             "linear thin-ship elevation: Kelvin waves and the local\n"
+                             "bow pile-up, side draw-down and stern rise\n"
+                             "elevation drawn × %g; hull at its real proportions\n"
+                             "approximate: linear theory, thin ship,\nno viscous or wave-breaking effects",
                              c.froude[d], c.speed[d], kElevationScale);
-    r.view.scalar_name = "wave elevation";
+    r.view.scalar_name = "free-surface elevation";
     r.view.scalar_unit = "m";
   }
   r.view.frames.push_back(std::move(frame));

@@ -1,5 +1,7 @@
 #include "ship/ship_wave_field.hpp"
 
+#include "ship/kelvin_source.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -54,6 +56,27 @@ class SourceSheet {
       suffix_[p] = suffix_[p + 1] + panel_depth_[p] * stripIntegral(grid_.x(p), grid_.x(p + 1));
     aft_end_ = grid_.half_breadth.row(0).dot(depth_weights_) * std::polar(1.0, kappa * xAft());
     fore_end_ = -grid_.half_breadth.row(grid_.nx() - 1).dot(depth_weights_) * std::polar(1.0, kappa * xFore());
+    // F(x) = constant_p + slope_p e^{iκx} on panel p (see split).
+    constant_.resize(panels);
+    for (int p = 0; p < panels; ++p)
+      constant_[p] = panel_depth_[p] * std::polar(1.0, kappa * grid_.x(p + 1)) / Complex(0.0, kappa) + suffix_[p + 1] + fore_end_;
+  }
+
+  // F(x) = a + b e^{iκx}: (a, b) for the x given, so that F at many points of one panel costs no exponential.
+  void split(double x, Complex& a, Complex& b) const {
+    if (x >= xFore()) {
+      a = b = 0.0;
+      return;
+    }
+    if (x < xAft()) {
+      a = suffix_[0] + aft_end_ + fore_end_;
+      b = 0.0;
+      return;
+    }
+    const int panels = static_cast<int>(panel_depth_.size());
+    const int p = std::min(static_cast<int>((x - xAft()) / grid_.dx), panels - 1);
+    a = constant_[p];
+    b = Complex(0.0, panel_depth_[p] / kappa_);  // −P/(iκ)
   }
 
   // F(x; θ) [m²]: the Kochin function of the sources ahead of x (ξ > x).
@@ -73,7 +96,7 @@ class SourceSheet {
   const HullGrid& grid_;
   Eigen::MatrixXd slope_;  // (nx − 1) × nz: ∂Y/∂x on each panel at each waterline
   Eigen::VectorXd depth_weights_, panel_depth_;
-  std::vector<Complex> suffix_;
+  std::vector<Complex> suffix_, constant_;
   double kappa_ = 0;
   Complex aft_end_, fore_end_;
 };
@@ -89,7 +112,8 @@ double waterlineHalfBreadth(const HullGrid& grid, double x) {
 
 }  // namespace
 
-ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravity, const WaveFieldRegion& region) {
+ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravity, const WaveFieldRegion& region,
+                                bool with_local, const std::function<bool()>& cancelled) {
   const double k0 = gravity / (speed * speed);
   SourceSheet sheet(grid);
   const double below_stern = sheet.xAft() - 1.0;
@@ -118,19 +142,56 @@ ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravi
   for (int j = 0; j < region.ny; ++j) w.y[j] = -region.half_width + 2.0 * region.half_width * j / (region.ny - 1);
 
   // ζ_ij = Σ_k Re(A_k(x_i) e^{−iκ_k x_i}) · 2 cos(k_y,k y_j): ±θ pair up (the hull is symmetric), one GEMM.
+  // The amplitude A = −(2/π) k0 sec³θ F: the wave term of the Kelvin source (kelvin_source.hpp) summed over the
+  // sheet of density q = −2U ∂Y/∂ξ.
+  // With the local part, the total also needs the wave term where Havelock's form has it, H(−ϖ) (the sources
+  // ahead of x + y tan θ), and not H(−x'): the difference D is added per point and θ wherever that cut and x
+  // fall on different sides of a source, i.e. where the Kochin function ahead of them differs.
   Eigen::MatrixXd along(region.nx, nu + 1), across(nu + 1, region.ny);
+  Eigen::MatrixXd havelock = Eigen::MatrixXd::Zero(region.nx, region.ny);
+  std::vector<Complex> ahead(region.nx), phase_x(region.nx);
   for (int k = 0; k <= nu; ++k) {
+    if (k % 64 == 0 && cancelled && cancelled()) break;
     const double u = k * du, lambda = std::cosh(u);
     const double kappa = k0 * lambda, wave_number = k0 * lambda * lambda;
     sheet.prepare(wave_number, kappa);
     const double end = (k == 0 || k == nu) ? 0.5 : 1.0;
-    const Complex weight = Complex(0.0, 2.0 / std::numbers::pi) * k0 * lambda * lambda * lambda * (end * du / lambda);
-    for (int i = 0; i < region.nx; ++i)
-      along(i, k) = (weight * sheet.aheadOf(w.x[i]) * std::polar(1.0, -kappa * w.x[i])).real();
+    const Complex weight = (-2.0 / std::numbers::pi) * k0 * lambda * lambda * lambda * (end * du / lambda);
+    for (int i = 0; i < region.nx; ++i) {
+      ahead[i] = sheet.aheadOf(w.x[i]);
+      phase_x[i] = std::polar(1.0, -kappa * w.x[i]);
+      along(i, k) = (weight * ahead[i] * phase_x[i]).real();
+    }
     const double ky = wave_number * std::tanh(u);  // k sin θ (sin θ = tanh u)
     for (int j = 0; j < region.ny; ++j) across(k, j) = 2.0 * std::cos(ky * w.y[j]);
+    if (!with_local) continue;
+    // D per point: Re[weight (F(cut) − F(x)) e^{−iκx} e^{∓i k_y y}] with cut = x ± y tan θ; κ tan θ = k_y, so
+    // with F(cut) = a + b e^{iκ cut} this is Re[weight ((a − F(x)) e^{−iκx} e^{∓i k_y y} + b)].
+    const double tan_theta = std::sinh(u);
+    for (int j = 0; j < region.ny; ++j) {
+      if (w.y[j] <= 0) continue;  // y = 0: no difference; y < 0: mirrored below
+      const Complex ey = std::polar(1.0, -ky * w.y[j]);
+      for (int i = 0; i < region.nx; ++i) {
+        const bool before = w.x[i] < sheet.xAft(), beyond = w.x[i] >= sheet.xFore();
+        const Complex& ex = phase_x[i];
+        for (int sign = -1; sign <= 1; sign += 2) {
+          const double cut = w.x[i] + sign * tan_theta * w.y[j];
+          if ((before && cut < sheet.xAft()) || (beyond && cut >= sheet.xFore())) continue;
+          Complex a, b;
+          sheet.split(cut, a, b);
+          havelock(i, j) += (weight * ((a - ahead[i]) * ex * (sign > 0 ? ey : std::conj(ey)) + b)).real();
+        }
+      }
+    }
   }
   w.elevation = along * across;
+  out.wave = w.elevation;
+  if (with_local) {
+    for (int j = 0; j < region.ny; ++j)
+      if (w.y[j] < 0) havelock.col(j) = havelock.col(region.ny - 1 - j);  // the grid is symmetric in y
+    out.local = havelock + thinShipLocalElevation(grid, k0, w.x, w.y, 49, 9, 2, 3, cancelled);
+    w.elevation += out.local;
+  }
 
   // Inside the waterline: the elevation at the hull's side (the nearest point outside on the same side). The
   // tolerance keeps the choice symmetric where ±y_j differ by rounding.
@@ -152,7 +213,10 @@ ShipWaveField thinShipWaveField(const HullGrid& grid, double speed, double gravi
     for (int j = last_out + 1; j < first_out; ++j) {
       const bool port = w.y[j] < 0 && last_out >= 0;
       const int source = port ? last_out : (first_out < region.ny ? first_out : last_out);
-      if (source >= 0 && source < region.ny) w.elevation(i, j) = w.elevation(i, source);
+      if (source < 0 || source >= region.ny) continue;
+      w.elevation(i, j) = w.elevation(i, source);
+      out.wave(i, j) = out.wave(i, source);
+      if (with_local) out.local(i, j) = out.local(i, source);
     }
   }
   return out;

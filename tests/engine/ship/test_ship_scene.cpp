@@ -76,7 +76,7 @@ TEST(ShipScene, ViewShowsTheHullAtItsSizeAndLabelsThePattern) {
   std::snprintf(u, sizeof u, "U = %.4g m/s", speed);
   EXPECT_NE(frame.label.find(u), std::string::npos) << frame.label;
   EXPECT_NE(frame.label.find("elevation drawn × 10"), std::string::npos) << frame.label;
-  EXPECT_EQ(r.view.scalar_name, "wave elevation");
+  EXPECT_EQ(r.view.scalar_name, "free-surface elevation");
 }
 
 TEST(ShipScene, SweepDoesNotDependOnThreadCount) {
