@@ -120,7 +120,7 @@ void ResultsSummary::showRun(const RunRecord& record, const Schema* schema) {
                      .arg(st.rhs_evaluations)
                      .arg(st.wall_time_s, 0, 'g', 3);
   if (st.error_estimate > 0.0)
-    text += tr(" · error estimate %1 %2").arg(st.error_estimate, 0, 'g', 3).arg(QString::fromStdString(st.error_unit));
+    text += tr(" · error estimate %1 %2").arg(st.error_estimate, 0, 'g', 3).arg(unitText(st.error_unit));
   stats_->setText(text);
   // Warnings follow the scalars as full-width rows, so the statistics line stays short.
   for (int i = 0; i < static_cast<int>(r.warnings.size()); ++i) {
