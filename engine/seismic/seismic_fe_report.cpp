@@ -187,14 +187,18 @@ void addFeResults(const SeismicParameters& p, const FeCase& c, const FeCase* dry
   // Box: FE against the analytic free field at B (seabed) and A (water surface).
   if (!c.probe_fe_uy.empty()) {
     double worst = 0.0;
-    auto compare = [&](const std::vector<double>& fe, const std::vector<double>& ff, const char* name, const char* what) {
+    auto compare = [&](const std::vector<double>& fe, const std::vector<double>& ff, const char* name, const char* what,
+                       const char* label) {
       const double e = std::abs(peak(fe) - peak(ff)) / peak(ff);
       worst = std::max(worst, e);
-      results.addScalar(name, e, "-", what);
+      results.addScalar(name, e, "-", what, label);
     };
-    compare(c.seabed_fe_ux, c.seabed_ff_ux, "peak_error_B_ux", "|peak FE − peak free field|/peak free field, B u_x");
-    compare(c.seabed_fe_uy, c.seabed_ff_uy, "peak_error_B_uy", "|peak FE − peak free field|/peak free field, B u_y");
-    compare(c.probe_fe_uy, c.probe_ff_uy, "peak_error_A_uy", "|peak FE − peak free field|/peak free field, A u_y");
+    compare(c.seabed_fe_ux, c.seabed_ff_ux, "peak_error_B_ux", "|peak FE − peak free field|/peak free field, B u_x",
+            "Peak error of u_x at B");
+    compare(c.seabed_fe_uy, c.seabed_ff_uy, "peak_error_B_uy", "|peak FE − peak free field|/peak free field, B u_y",
+            "Peak error of u_y at B");
+    compare(c.probe_fe_uy, c.probe_ff_uy, "peak_error_A_uy", "|peak FE − peak free field|/peak free field, A u_y",
+            "Peak error of u_y at A");
     results.stats.error_estimate = worst;
     results.stats.error_unit = "relative peak error vs analytic free field";
     addVerificationHistories(c, results);

@@ -1,8 +1,8 @@
 // What people read names no internal identifier: every built-in scenario of every scene is run, each of its plots
 // drawn as the GUI draws it (fillPlot) and its title, tab title, axis titles and legend entries, and the labels of
 // its scalars in the results dock, scanned for snake_case words ("c_wave_holtrop") and dotted parameter paths
-// ("speed.froude_min"). The test fails listing every offender. Columns and scalars whose scene declared no label
-// (shown under the readable fallback made from the name) are counted and listed, not failed.
+// ("speed.froude_min"). The test fails listing every offender, and every plotted column or scalar whose scene
+// declared no label (shown under the readable fallback made from the name).
 #include <map>
 #include <memory>
 #include <regex>
@@ -137,6 +137,8 @@ class LabelsTest : public QObject {
           texts, declared, static_cast<long long>(fallbacks.size()));
     for (const QString& f : fallbacks) qInfo("  fallback %s", qPrintable(f));
     QVERIFY2(offenders.isEmpty(), qPrintable(QStringLiteral("internal names shown to people:\n") + offenders.join('\n')));
+    // Every plotted column and every scalar of the built-in scenarios declares its label where it is made.
+    QVERIFY2(fallbacks.isEmpty(), qPrintable(QStringLiteral("no declared label:\n") + fallbacks.join('\n')));
   }
 };
 
