@@ -178,6 +178,7 @@ int cmdRun(const RunOptions& options, int argc, char** argv) {
                              .sync = !options.no_sync,
                              .remove_old_version_leftovers = !options.study_case});
   RunContext context(makeProgressPrinter(), &g_cancel);
+  context.setViewWanted(false);  // a run folder holds no 3D view
   std::fprintf(stderr, "running %s (%s)\n", id.c_str(), scene.title.c_str());
   const auto started_at = std::chrono::system_clock::now();
   Results results = runScenario(scene, scenario, context);

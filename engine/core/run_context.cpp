@@ -23,7 +23,7 @@ RunContext RunContext::part(double from, double to, std::string stage_prefix) {
       [this, from, to, prefix = std::move(stage_prefix)](double f, const std::string& stage) {
         progress(from + f * (to - from), prefix + stage);
       },
-      cancel_, min_progress_interval_s_);
+      cancel_, min_progress_interval_s_, view_wanted_);
 }
 
 void RunContext::throwIfCancelled() const {

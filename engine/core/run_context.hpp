@@ -52,14 +52,21 @@ class RunContext {
   // with it (the caller passes on what it wants); it reports as often as this one. Must not outlive this context.
   RunContext part(double from, double to, std::string stage_prefix);
 
+  // Whether anyone will look at the 3D view (Results::view). The GUI does; maris-cli, which writes no 3D view,
+  // says no, and a scene may then leave out frames that are costly to make (the ship's free surface takes most of
+  // a short ship run). Parts of this context inherit it.
+  void setViewWanted(bool wanted) { view_wanted_ = wanted; }
+  bool wantsView() const { return view_wanted_; }
+
   // Seconds of wall time since the context was created.
   double elapsedSeconds() const;
 
   void setProgressInterval(double seconds) { min_progress_interval_s_ = seconds; }
 
  private:
-  RunContext(ProgressFn progress, const std::atomic<bool>* cancel_flag, double min_progress_interval_s)
-      : progress_(std::move(progress)), cancel_(cancel_flag), min_progress_interval_s_(min_progress_interval_s) {}
+  RunContext(ProgressFn progress, const std::atomic<bool>* cancel_flag, double min_progress_interval_s, bool view_wanted)
+      : progress_(std::move(progress)), cancel_(cancel_flag), min_progress_interval_s_(min_progress_interval_s),
+        view_wanted_(view_wanted) {}
 
   using Clock = std::chrono::steady_clock;
   ProgressFn progress_;
@@ -67,6 +74,7 @@ class RunContext {
   PartialFn partial_;
   double min_progress_interval_s_ = 0.05;
   double min_partial_interval_s_ = 0.25;
+  bool view_wanted_ = true;
   Clock::time_point start_ = Clock::now();
   // Empty until the first call: a default time_point is the clock's epoch (boot time for steady_clock), so
   // "interval since last" would stay false for the first hour after boot with a 3600 s interval.

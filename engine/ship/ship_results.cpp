@@ -255,7 +255,7 @@ Results buildShipResults(const ShipParameters& p, const ShipModel& m, const Resi
 
   // 3-D view: the hull, both sides, with the still waterline.
   Frame3D frame = hullFrame(m.hull);
-  {
+  if (context.wantsView()) {
     // The free surface around and behind the hull at the design speed: the complete linear thin-ship elevation
     // (ship_wave_field.hpp), i.e. the Kelvin waves and the local disturbance at the hull (the bow's pile-up, the
     // draw-down along the sides, the rise at the stern), drawn exaggerated (a 5 cm wave beside a 100 m hull would

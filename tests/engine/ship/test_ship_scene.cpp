@@ -18,20 +18,29 @@ using namespace maris;
 
 namespace {
 
-Results runBuiltin(const std::string& id, const std::vector<std::string>& overrides) {
+// `view`: whether the run is asked for its 3D view (the GUI asks; maris-cli does not).
+Results runBuiltin(const std::string& id, const std::vector<std::string>& overrides, bool view = true) {
   const BuiltinScenario* b = findBuiltin(id);
   EXPECT_NE(b, nullptr) << id;
   Scenario s = b->scenario;
   for (const auto& o : overrides) applyOverride(s, o);
   RunContext ctx;
+  ctx.setViewWanted(view);
   return runScenario(requireScene("ship"), s, ctx);
+}
+
+int freeSurfaceShapes(const Results& r) {
+  int n = 0;
+  for (const Frame3D& frame : r.view.frames)
+    for (const Shape3D& shape : frame.shapes) n += shape.name.rfind("Free surface", 0) == 0;
+  return n;
 }
 
 }  // namespace
 
 TEST(ShipScene, BuiltinScenariosRunAndReportFiniteResults) {
   for (const std::string id : {"ship_default", "ship_series60", "ship_kcs"}) {
-    const Results r = runBuiltin(id, {"speed.count=4", "numerics.stations=129", "numerics.waterlines=25"});
+    const Results r = runBuiltin(id, {"speed.count=4", "numerics.stations=129", "numerics.waterlines=25"}, false);
     const Table* t = r.findTable("resistance_curve");
     ASSERT_NE(t, nullptr) << id;
     EXPECT_EQ(t->rows(), 4u);
@@ -77,6 +86,29 @@ TEST(ShipScene, ViewShowsTheHullAtItsSizeAndLabelsThePattern) {
   EXPECT_NE(frame.label.find(u), std::string::npos) << frame.label;
   EXPECT_NE(frame.label.find("elevation drawn × 10"), std::string::npos) << frame.label;
   EXPECT_EQ(r.view.scalar_name, "free-surface elevation");
+}
+
+// A run nobody will look at in 3D (maris-cli writes no 3D view) leaves out the free surface, the costly part of a
+// short run, and nothing else: every table and scalar is the same to the bit, the hull is still drawn.
+TEST(ShipScene, RunWithoutAViewLeavesOutOnlyTheFreeSurface) {
+  const std::vector<std::string> small{"speed.count=3", "numerics.stations=129", "numerics.waterlines=25"};
+  const Results with = runBuiltin("ship_default", small, true);
+  const Results without = runBuiltin("ship_default", small, false);
+  EXPECT_EQ(freeSurfaceShapes(with), 1);
+  EXPECT_EQ(freeSurfaceShapes(without), 0);
+  ASSERT_EQ(without.view.frames.size(), 1u);
+  EXPECT_EQ(without.view.frames.front().shapes.size() + 1, with.view.frames.front().shapes.size());
+  ASSERT_EQ(with.scalars.size(), without.scalars.size());
+  for (std::size_t i = 0; i < with.scalars.size(); ++i) {
+    EXPECT_EQ(with.scalars[i].name, without.scalars[i].name);
+    EXPECT_EQ(with.scalars[i].value, without.scalars[i].value) << with.scalars[i].name;
+  }
+  ASSERT_EQ(with.tables.size(), without.tables.size());
+  for (std::size_t t = 0; t < with.tables.size(); ++t) {
+    ASSERT_EQ(with.tables[t].columns.size(), without.tables[t].columns.size()) << with.tables[t].name;
+    for (std::size_t c = 0; c < with.tables[t].columns.size(); ++c)
+      EXPECT_EQ(with.tables[t].columns[c].values, without.tables[t].columns[c].values) << with.tables[t].name;
+  }
 }
 
 TEST(ShipScene, SweepDoesNotDependOnThreadCount) {
