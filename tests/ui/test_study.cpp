@@ -713,7 +713,7 @@ class StudyTest : public QObject {
     QVERIFY2(ok, qPrintable(sums->item(0, 1)->text()));
     QVERIFY2(std::abs(shown - expected) <= 1e-12 * expected, qPrintable(QString::number(shown - expected)));
     QCOMPARE(sums->item(0, 2)->text(), QString());
-    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m^3]"));
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m³]"));
     test::keepScreenshot(panel()->grab().toImage(), QStringLiteral("study_weighted_sum"));
     QVERIFY2(panel()->weightedSumHeading()->text().contains(QStringLiteral("add up to 1")),
              qPrintable(panel()->weightedSumHeading()->text()));
@@ -830,7 +830,7 @@ class StudyTest : public QObject {
     QCOMPARE(data.result[0], kPi * radius * radius * 120.0);
     QVERIFY(std::isnan(data.result[1]));
     QTableWidget* sums = panel()->weightedSumTable();
-    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m^3]"));
+    QCOMPARE(sums->item(0, 0)->text(), QStringLiteral("Rod volume [m³]"));
     QCOMPARE(sums->item(0, 1)->text(), QStringLiteral("—"));
     QCOMPARE(sums->item(0, 2)->text(), QStringLiteral("failed: 0002"));
     // A clicked case opens its scalars in the results view (its tables stay in its run folder).

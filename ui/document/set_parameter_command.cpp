@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "document/scenario_document.hpp"
+#include "plots/display_units.hpp"
 
 namespace maris::ui {
 
@@ -49,7 +50,7 @@ void SetParameterCommand::updateText() {
     return;
   }
   QString value = displayValue(new_value_);
-  if (spec && !spec->unit.empty() && spec->unit != "-") value += " " + QString::fromStdString(spec->unit);
+  if (spec && !unitText(spec->unit).isEmpty()) value += " " + unitText(spec->unit);
   setText(QObject::tr("Set %1 to %2").arg(label, value));
 }
 

@@ -14,6 +14,7 @@
 #include "document/scenario_document.hpp"
 #include "plots/study_plot.hpp"
 #include "study/study.hpp"
+#include "plots/display_units.hpp"
 
 namespace maris::ui {
 
@@ -23,7 +24,7 @@ bool isNumberKind(ParamKind kind) { return kind == ParamKind::Real || kind == Pa
 
 // "Length L [m]": a field's or column's label for people (the schema's) with its SI unit.
 QString labelWithUnit(const ParamSpec& spec) {
-  const QString unit = spec.unit.empty() || spec.unit == "-" ? QString() : QStringLiteral(" [%1]").arg(QString::fromStdString(spec.unit));
+  const QString unit = unitText(spec.unit).isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unitText(spec.unit));
   return QString::fromStdString(parameterLabel(spec)) + unit;
 }
 

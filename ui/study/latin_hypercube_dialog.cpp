@@ -13,6 +13,7 @@
 
 #include "document/scenario_document.hpp"
 #include "study/study_cell_text.hpp"
+#include "plots/display_units.hpp"
 
 namespace maris::ui {
 
@@ -49,7 +50,7 @@ LatinHypercubeDialog::LatinHypercubeDialog(const SceneDefinition& scene, const S
     const ParamSpec& spec = specs_[row];
     const Json* value = findAtPath(scenario.parameters, spec.path);
     const SweepRange proposed = proposedSampleRange(spec, value ? *value : Json());
-    const QString unit = spec.unit.empty() || spec.unit == "-" ? QString() : QStringLiteral(" [%1]").arg(QString::fromStdString(spec.unit));
+    const QString unit = unitText(spec.unit).isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unitText(spec.unit));
     auto* name = new QTableWidgetItem(QString::fromStdString(parameterLabel(spec)) + unit);
     name->setFlags((name->flags() | Qt::ItemIsUserCheckable) & ~Qt::ItemIsEditable);
     name->setCheckState(Qt::Unchecked);

@@ -37,6 +37,7 @@
 #include "study/study.hpp"
 #include "study/study_folder.hpp"
 #include "study/study_cell_text.hpp"
+#include "plots/display_units.hpp"
 
 namespace maris::ui {
 
@@ -235,7 +236,7 @@ StudyPanel::StudyPanel(ScenarioDocument* document, std::shared_ptr<const SceneLi
     // The weighted sums in the run log too, as `maris-cli study collect` prints them: a record beside the run's.
     if (from_file_)
       for (const study::WeightedSum& sum : session_.weightedSums()) {
-        const QString unit = sum.unit.empty() || sum.unit == "-" ? QString() : QStringLiteral(" ") + QString::fromStdString(sum.unit);
+        const QString unit = unitText(sum.unit).isEmpty() ? QString() : QStringLiteral(" ") + unitText(sum.unit);
         emit logged(sum.value ? 0 : 1,
                     sum.value ? tr("Weighted sum of %1 over %2: %3%4 (weights add up to %5)")
                                     .arg(QString::fromStdString(sum.result), QString::fromStdString(session_.weightColumn()),
@@ -689,7 +690,7 @@ void StudyPanel::showWeightedSums() {
     named.name = name;
     const std::string text = session_.resultLabel(name);
     QString label = QString::fromStdString(text == name ? displayLabel(named) : text);
-    if (!unit.empty() && unit != "-") label += QStringLiteral(" [%1]").arg(QString::fromStdString(unit));
+    if (!unitText(unit).isEmpty()) label += QStringLiteral(" [%1]").arg(unitText(unit));
     auto* result = new QTableWidgetItem(label);
     result->setToolTip(tr("%1: Σ %2 · %1 over the cases").arg(QString::fromStdString(name), QString::fromStdString(column)));
     // The sum as study.json holds it: the shortest text that reads back to the same double.

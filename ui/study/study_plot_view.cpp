@@ -117,7 +117,7 @@ void StudyPlotView::onMouseMove(const QPointF& pixel) {
     return;
   }
   const DisplayUnit shown = displayUnit(data_.result_unit);
-  const QString unit = shown.unit.empty() || shown.unit == "-" ? QString() : QStringLiteral(" ") + QString::fromStdString(shown.unit);
+  const QString unit = unitText(shown.unit).isEmpty() ? QString() : QStringLiteral(" ") + unitText(shown.unit);
   const std::string label = data_.result_label.empty() ? readableName(data_.result_name) : data_.result_label;
   readout_->setText(tr("case %1 (%2): %3 = %4%5 — click to open")
                         .arg(session_->caseId(c), session_->caseLabel(c), QString::fromStdString(label))

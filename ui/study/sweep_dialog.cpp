@@ -14,6 +14,7 @@
 
 #include "document/scenario_document.hpp"
 #include "study/study_cell_text.hpp"
+#include "plots/display_units.hpp"
 
 namespace maris::ui {
 
@@ -55,7 +56,7 @@ SweepRange proposedSampleRange(const ParamSpec& spec, const Json& current) {
 }
 
 QString sweepProblem(const ParamSpec& spec, const SweepRange& r) {
-  const QString unit = spec.unit == "-" ? QString() : QStringLiteral(" ") + QString::fromStdString(spec.unit);
+  const QString unit = unitText(spec.unit).isEmpty() ? QString() : QStringLiteral(" ") + unitText(spec.unit);
   const QString allowed = QString::fromStdString(spec.range.str());
   if (!std::isfinite(r.from)) return QObject::tr("from: must be a number");
   if (!std::isfinite(r.to)) return QObject::tr("to: must be a number");
@@ -78,7 +79,7 @@ SweepDialog::SweepDialog(const ParamSpec& spec, const SweepRange& proposed, QWid
       to_(new QLineEdit(cellText(proposed.to), this)), count_(new QSpinBox(this)), spacing_(new QComboBox(this)),
       problem_(new QLabel(this)) {
   setWindowTitle(tr("Sweep %1").arg(QString::fromStdString(parameterLabel(spec))));
-  const QString unit = spec.unit == "-" ? QString() : QString::fromStdString(spec.unit);
+  const QString unit = unitText(spec.unit);
   auto* intro = new QLabel(tr("<b>%1</b> (%2)%3<br>allowed: %4 %5")
                                .arg(QString::fromStdString(parameterLabel(spec)), QString::fromStdString(spec.path),
                                     spec.description.empty() ? QString() : QStringLiteral(": ") + QString::fromStdString(spec.description).toHtmlEscaped(),
